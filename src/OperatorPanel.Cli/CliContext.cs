@@ -1,0 +1,33 @@
+using System.Text.Json;
+using System.Text.Json.Serialization;
+using Serilog;
+
+namespace OperatorPanel.Cli;
+
+/// <summary>What every verb gets: where to print, whether to print JSON, and the log.</summary>
+internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, ILogger Log)
+{
+    private static readonly JsonSerializerOptions JsonOptions = new()
+    {
+        WriteIndented = true,
+        PropertyNamingPolicy = JsonNamingPolicy.CamelCase,
+        Converters = { new JsonStringEnumConverter() },
+    };
+
+    public void WriteJson<T>(T value) => Out.WriteLine(JsonSerializer.Serialize(value, JsonOptions));
+
+    /// <summary>Reports bad input: a JSON object on stdout with --json, otherwise the message on stderr.</summary>
+    public int Fail(int exitCode, string message)
+    {
+        if (Json)
+        {
+            WriteJson(new { ok = false, error = message });
+        }
+        else
+        {
+            Error.WriteLine($"opanel: {message}");
+        }
+
+        return exitCode;
+    }
+}

@@ -1,0 +1,73 @@
+using System.CommandLine;
+using OperatorPanel.Cli.Commands;
+using OperatorPanel.Cli.Logging;
+using Serilog.Events;
+
+namespace OperatorPanel.Cli;
+
+/// <summary>Builds the opanel command tree and runs it; Program and the tests both call <see cref="Run"/>.</summary>
+internal static class OpanelApp
+{
+    public static int Run(string[] args, TextWriter output, TextWriter error)
+    {
+        var options = new GlobalOptions();
+        var root = new RootCommand("opanel: operator and diagnostic panel for Siemens S7-200 PLCs (headless front end)");
+        options.AddTo(root);
+
+        foreach (var verb in Verbs(options, output, error))
+        {
+            root.Subcommands.Add(verb);
+        }
+
+        var parse = root.Parse(args);
+        var invocation = new InvocationConfiguration { Output = output, Error = error };
+        return parse.Invoke(invocation);
+    }
+
+    private static IEnumerable<Command> Verbs(GlobalOptions options, TextWriter output, TextWriter error)
+    {
+        Func<ParseResult, CliContext> context = parse => options.CreateContext(parse, output, error);
+        yield return CpusCommand.Create(context);
+        yield return AddressCommand.Create(context);
+    }
+}
+
+/// <summary>Options every verb takes: --json, and the log levels and folder.</summary>
+internal sealed class GlobalOptions
+{
+    private readonly Option<bool> _json = new("--json") { Description = "Print machine-readable JSON on stdout", Recursive = true };
+
+    private readonly Option<LogEventLevel> _logLevel = new("--log-level")
+    {
+        Description = "Level written to the log file (Verbose, Debug, Information, Warning, Error)",
+        DefaultValueFactory = _ => LogEventLevel.Information,
+        Recursive = true,
+    };
+
+    private readonly Option<LogEventLevel> _consoleLevel = new("--console-level")
+    {
+        Description = "Level echoed to stderr",
+        DefaultValueFactory = _ => LogEventLevel.Warning,
+        Recursive = true,
+    };
+
+    private readonly Option<string?> _logDir = new("--log-dir")
+    {
+        Description = "Folder for the rolling log files (default: the user's local application data folder)",
+        Recursive = true,
+    };
+
+    public void AddTo(RootCommand root)
+    {
+        root.Options.Add(_json);
+        root.Options.Add(_logLevel);
+        root.Options.Add(_consoleLevel);
+        root.Options.Add(_logDir);
+    }
+
+    public CliContext CreateContext(ParseResult parse, TextWriter output, TextWriter error)
+    {
+        var log = CliLogging.Create(parse.GetValue(_logLevel), parse.GetValue(_consoleLevel), parse.GetValue(_logDir));
+        return new CliContext(output, error, parse.GetValue(_json), log);
+    }
+}

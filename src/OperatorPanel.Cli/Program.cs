@@ -1,0 +1,3 @@
+using OperatorPanel.Cli;
+
+return OpanelApp.Run(args, Console.Out, Console.Error);

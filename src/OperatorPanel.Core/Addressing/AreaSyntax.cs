@@ -1,0 +1,47 @@
+namespace OperatorPanel.Core.Addressing;
+
+/// <summary>How each area is written in STL: its prefix and the widths it takes.</summary>
+internal static class AreaSyntax
+{
+    /// <summary>Prefixes the panel parses, longest first so "SM" wins over "S" and "AI" over nothing.</summary>
+    public static readonly (string Prefix, MemoryArea Area)[] Parsed =
+    [
+        ("SM", MemoryArea.SM),
+        ("AI", MemoryArea.AI),
+        ("AQ", MemoryArea.AQ),
+        ("I", MemoryArea.I),
+        ("Q", MemoryArea.Q),
+        ("M", MemoryArea.M),
+        ("V", MemoryArea.V),
+        ("S", MemoryArea.S),
+    ];
+
+    /// <summary>Areas that exist on the CPU but are not addressed by byte number in the panel.</summary>
+    public static readonly (string Prefix, string Name)[] Unsupported =
+    [
+        ("AC", "accumulators (AC)"),
+        ("HC", "high-speed counters (HC)"),
+        ("T", "timers (T)"),
+        ("C", "counters (C)"),
+        ("L", "local memory (L)"),
+    ];
+
+    public static string Prefix(MemoryArea area) => area switch
+    {
+        MemoryArea.SM => "SM",
+        MemoryArea.AI => "AI",
+        MemoryArea.AQ => "AQ",
+        _ => area.ToString(),
+    };
+
+    /// <summary>Analog areas are words only; every other parsed area takes bits, bytes, words and double words.</summary>
+    public static bool Allows(MemoryArea area, AccessWidth width) =>
+        IsAnalog(area) ? width == AccessWidth.Word : IsByteAddressed(area);
+
+    public static bool HasBits(MemoryArea area) => Allows(area, AccessWidth.Bit);
+
+    public static bool IsAnalog(MemoryArea area) => area is MemoryArea.AI or MemoryArea.AQ;
+
+    private static bool IsByteAddressed(MemoryArea area) =>
+        area is MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM or MemoryArea.S or MemoryArea.L;
+}
