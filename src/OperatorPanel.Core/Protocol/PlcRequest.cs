@@ -1,0 +1,38 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Link;
+
+namespace OperatorPanel.Core.Protocol;
+
+/// <summary>A request from the panel to one station. <see cref="Sequence"/> is echoed by the reply.</summary>
+public abstract record PlcRequest(Station Station, byte Sequence)
+{
+    public abstract CommandCode Command { get; }
+}
+
+/// <summary>Ask for protocol version, handler configuration, SMB6, mode switch and scan times.</summary>
+public sealed record IdentifyRequest(Station Station, byte Sequence) : PlcRequest(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.Identify;
+}
+
+/// <summary>Read up to <see cref="ProtocolLimits.MaxReadItems"/> blocks in one exchange.</summary>
+public sealed record ReadRequest(Station Station, byte Sequence, ImmutableArray<ReadItem> Items) : PlcRequest(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.Read;
+
+    public int TotalLength => Items.Sum(i => i.Length);
+}
+
+/// <summary>Write a block of bytes; the reply carries the same bytes read back after the write.</summary>
+public sealed record WriteBlockRequest(Station Station, byte Sequence, ProtocolArea Area, int Offset, ImmutableArray<byte> Data)
+    : PlcRequest(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.Write;
+}
+
+/// <summary>Set or reset one bit on the PLC itself, so a bit the PLC program changed meanwhile is never clobbered.</summary>
+public sealed record WriteBitRequest(Station Station, byte Sequence, ProtocolArea Area, int Offset, int Bit, bool Value)
+    : PlcRequest(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.WriteBit;
+}

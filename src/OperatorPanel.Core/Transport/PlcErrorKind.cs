@@ -1,0 +1,20 @@
+namespace OperatorPanel.Core.Transport;
+
+/// <summary>What went wrong on the link, for messages, statistics and retry decisions.</summary>
+public enum PlcErrorKind
+{
+    /// <summary>The station did not complete a reply within the reply-time budget.</summary>
+    Timeout,
+
+    /// <summary>The port is missing, busy, unplugged or refused by the OS.</summary>
+    PortUnavailable,
+
+    /// <summary>Bytes arrived but did not form a valid reply (checksum, hex, length, wrong station or sequence).</summary>
+    FrameCorrupt,
+
+    /// <summary>The station answered with an error status.</summary>
+    NegativeReply,
+
+    /// <summary>Every retry timed out: the station is off the bus, in STOP, or its mode switch is at TERM.</summary>
+    NoAnswer,
+}
