@@ -36,7 +36,7 @@ public readonly partial record struct PlcAddress
 
         if (!AreaSyntax.Allows(area, width))
         {
-            error = WidthRefusal(input, area, width);
+            error = WidthRefusal(input, area);
             return false;
         }
 
@@ -132,7 +132,7 @@ public readonly partial record struct PlcAddress
         address = default;
         if (rest.StartsWith('.'))
         {
-            error = new AddressError(AddressErrorKind.UnexpectedBitNumber, $"'{input}': a {width.ToString().ToLowerInvariant()} address takes no bit number; write {AreaSyntax.Prefix(area)}{byteOffset}{rest} for a bit");
+            error = new AddressError(AddressErrorKind.UnexpectedBitNumber, $"'{input}': a {WidthName(width)} address takes no bit number; write {AreaSyntax.Prefix(area)}{byteOffset}{rest} for a bit");
             return false;
         }
 
@@ -153,13 +153,21 @@ public readonly partial record struct PlcAddress
         return true;
     }
 
-    private static AddressError WidthRefusal(string input, MemoryArea area, AccessWidth width)
+    /// <summary>Only the analog areas restrict widths (words only); every other parsed area takes them all.</summary>
+    private static AddressError WidthRefusal(string input, MemoryArea area)
     {
         var prefix = AreaSyntax.Prefix(area);
-        return AreaSyntax.IsAnalog(area)
-            ? new AddressError(AddressErrorKind.WidthNotAllowed, $"'{input}': analog {(area == MemoryArea.AI ? "inputs" : "outputs")} are addressed as words only ({prefix}W0, {prefix}W2, ...)")
-            : new AddressError(AddressErrorKind.WidthNotAllowed, $"'{input}': {prefix} has no {width} addresses");
+        var kind = area == MemoryArea.AI ? "inputs" : "outputs";
+        return new AddressError(AddressErrorKind.WidthNotAllowed, $"'{input}': analog {kind} are addressed as words only ({prefix}W0, {prefix}W2, ...)");
     }
+
+    private static string WidthName(AccessWidth width) => width switch
+    {
+        AccessWidth.Byte => "byte",
+        AccessWidth.Word => "word",
+        AccessWidth.DoubleWord => "double word",
+        _ => throw new ArgumentOutOfRangeException(nameof(width), width, null),
+    };
 
     private static AddressError Trailing(string input, string rest) =>
         new(AddressErrorKind.TrailingText, $"'{input}': unexpected '{rest}' after the address");

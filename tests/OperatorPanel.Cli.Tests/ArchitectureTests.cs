@@ -1,0 +1,95 @@
+using System.Reflection;
+using System.Text.RegularExpressions;
+using OperatorPanel.Core.Addressing;
+
+namespace OperatorPanel.Cli.Tests;
+
+/// <summary>
+/// The layering rules of house-style.md, checked on the built assemblies and the project files. This project sees every
+/// assembly but the WPF app, which cannot be built on Linux; the app's project file is checked as text.
+/// </summary>
+public sealed partial class ArchitectureTests
+{
+    private static readonly string[] UiAssemblies = ["PresentationFramework", "PresentationCore", "WindowsBase", "System.Xaml"];
+
+    [Fact]
+    public void Core_ReferencesNoUiNoMvvmAndNoOtherProject()
+    {
+        var references = ReferencedNames(typeof(PlcAddress).Assembly);
+
+        references.Should().NotContain(UiAssemblies);
+        references.Should().NotContain(r => r.StartsWith("CommunityToolkit", StringComparison.Ordinal) || r.StartsWith("System.Windows", StringComparison.Ordinal));
+        references.Should().NotContain(r => r.StartsWith("OperatorPanel.", StringComparison.Ordinal) || r == "opanel");
+    }
+
+    [Fact]
+    public void ViewModels_ReferenceNoWpf()
+    {
+        var references = ReferencedNames(Assembly.Load("OperatorPanel.ViewModels"));
+
+        references.Should().NotContain(UiAssemblies);
+        references.Should().NotContain(r => r.StartsWith("System.Windows", StringComparison.Ordinal));
+    }
+
+    [Theory]
+    [InlineData("OperatorPanel.StlGen")]
+    [InlineData("OperatorPanel.Simulator")]
+    public void StlGenAndSimulator_DependOnCoreOnly(string assembly)
+    {
+        var projects = ReferencedNames(Assembly.Load(assembly)).Where(r => r.StartsWith("OperatorPanel.", StringComparison.Ordinal));
+
+        projects.Should().BeSubsetOf(["OperatorPanel.Core"]);
+    }
+
+    [Fact]
+    public void ProjectFiles_NothingButItsTestsReferencesAppOrCli()
+    {
+        foreach (var project in Directory.EnumerateFiles(RepositoryRoot(), "*.csproj", SearchOption.AllDirectories).Where(p => !p.Contains("/obj/", StringComparison.Ordinal)))
+        {
+            var name = Path.GetFileNameWithoutExtension(project);
+            foreach (Match reference in ProjectReference().Matches(File.ReadAllText(project)))
+            {
+                var target = Path.GetFileNameWithoutExtension(reference.Groups[1].Value.Replace('\\', '/'));
+                target.Should().NotBe("OperatorPanel.App", $"{name} must not reference the WPF app");
+                if (name != "OperatorPanel.Cli.Tests")
+                {
+                    target.Should().NotBe("OperatorPanel.Cli", $"{name} must not reference the CLI");
+                }
+            }
+        }
+    }
+
+    [Fact]
+    public void Sources_OnlyTheSerialTransportTalksToTheOsSerialApi()
+    {
+        var src = Path.Combine(RepositoryRoot(), "src");
+        var offenders = Directory.EnumerateFiles(src, "*.cs", SearchOption.AllDirectories)
+            .Where(f => !f.Contains("/obj/", StringComparison.Ordinal) && !f.Contains("/bin/", StringComparison.Ordinal))
+            .Where(f => SerialApi().IsMatch(File.ReadAllText(f)))
+            .Select(f => Path.GetRelativePath(src, f).Replace('\\', '/'))
+            .Where(f => !f.StartsWith("OperatorPanel.Core/Transport/Serial", StringComparison.Ordinal))
+            .ToList();
+
+        offenders.Should().BeEmpty("only Core/Transport/Serial* may open serial devices or P/Invoke the OS");
+    }
+
+    private static List<string> ReferencedNames(Assembly assembly) =>
+        assembly.GetReferencedAssemblies().Select(a => a.Name ?? string.Empty).ToList();
+
+    private static string RepositoryRoot()
+    {
+        var directory = new DirectoryInfo(AppContext.BaseDirectory);
+        while (directory is not null && !File.Exists(Path.Combine(directory.FullName, "OperatorPanel.sln")))
+        {
+            directory = directory.Parent;
+        }
+
+        return directory?.FullName ?? throw new InvalidOperationException("OperatorPanel.sln not found above the test output folder");
+    }
+
+    [GeneratedRegex("<ProjectReference\\s+Include=\"([^\"]+)\"")]
+    private static partial Regex ProjectReference();
+
+    [GeneratedRegex(@"System\.IO\.Ports|DllImport|LibraryImport|SerialPort\b")]
+    private static partial Regex SerialApi();
+}
