@@ -1,0 +1,28 @@
+using OperatorPanel.Core.Cpu;
+
+namespace OperatorPanel.Core.Protocol;
+
+/// <summary>The fixed codes of the IDENTIFY reply (docs/protocol.md, "01 IDENTIFY").</summary>
+public static class HandlerIdentity
+{
+    public const byte ProtocolVersion = 0x01;
+
+    public const byte HandlerRevision = 0x01;
+
+    /// <summary>STATUS_FLAGS bit 0: SM0.7, the mode switch is at RUN.</summary>
+    public const byte ModeSwitchRunFlag = 0x01;
+
+    /// <summary>CPU_MODEL: 1 = 221, 2 = 222, 3 = 224, 4 = 224XP, 5 = 226.</summary>
+    public static byte CpuModelCode(CpuModel model) => model switch
+    {
+        CpuModel.Cpu221 => 1,
+        CpuModel.Cpu222 => 2,
+        CpuModel.Cpu224 => 3,
+        CpuModel.Cpu224XP => 4,
+        CpuModel.Cpu226 => 5,
+        _ => throw new ArgumentOutOfRangeException(nameof(model), model, null),
+    };
+
+    /// <summary>CPU_REVISION: 0 = Early, 1 = Current.</summary>
+    public static byte CpuRevisionCode(CpuRevision revision) => revision == CpuRevision.Early ? (byte)0 : (byte)1;
+}

@@ -1,0 +1,83 @@
+using System.Collections.Immutable;
+
+namespace OperatorPanel.Core.Protocol;
+
+/// <summary>
+/// Requests on the wire (docs/protocol.md, "Commands"): the panel encodes them; a station parses them with
+/// <see cref="TryParse"/>. Encoding a request the protocol forbids (9 items, 119 write bytes, bit 8) is a
+/// programming error and throws.
+/// </summary>
+public static partial class RequestCodec
+{
+    public static byte[] Encode(PlcRequest request) => FrameCodec.Encode(ToFrame(request));
+
+    public static FreeportFrame ToFrame(PlcRequest request)
+    {
+        ArgumentNullException.ThrowIfNull(request);
+        var payload = request switch
+        {
+            IdentifyRequest => ImmutableArray<byte>.Empty,
+            ReadRequest read => ReadPayload(read),
+            WriteBlockRequest write => WritePayload(write),
+            WriteBitRequest bit => BitPayload(bit),
+            _ => throw new ArgumentException($"unknown request type {request.GetType().Name}", nameof(request)),
+        };
+        return new FreeportFrame((byte)request.Station.Address, request.Sequence, (byte)request.Command, payload);
+    }
+
+    private static ImmutableArray<byte> ReadPayload(ReadRequest read)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(read.Items.Length, 1, nameof(read));
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(read.Items.Length, ProtocolLimits.MaxReadItems, nameof(read));
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(read.TotalLength, ProtocolLimits.MaxReadData, nameof(read));
+        var payload = ImmutableArray.CreateBuilder<byte>(1 + (4 * read.Items.Length));
+        payload.Add((byte)read.Items.Length);
+        foreach (var item in read.Items)
+        {
+            ArgumentOutOfRangeException.ThrowIfLessThan(item.Length, 1, nameof(read));
+            AddBlock(payload, item.Area, item.Offset);
+            payload.Add((byte)item.Length);
+        }
+
+        return payload.MoveToImmutable();
+    }
+
+    private static ImmutableArray<byte> WritePayload(WriteBlockRequest write)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(write.Data.Length, 1, nameof(write));
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(write.Data.Length, ProtocolLimits.MaxWriteData, nameof(write));
+        var payload = ImmutableArray.CreateBuilder<byte>(4 + write.Data.Length);
+        AddBlock(payload, write.Area, write.Offset);
+        payload.Add((byte)write.Data.Length);
+        payload.AddRange(write.Data);
+        return payload.MoveToImmutable();
+    }
+
+    private static ImmutableArray<byte> BitPayload(WriteBitRequest bit)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(bit.Bit, nameof(bit));
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(bit.Bit, 7, nameof(bit));
+        var payload = ImmutableArray.CreateBuilder<byte>(5);
+        AddBlock(payload, bit.Area, bit.Offset);
+        payload.Add((byte)bit.Bit);
+        payload.Add(bit.Value ? (byte)1 : (byte)0);
+        return payload.MoveToImmutable();
+    }
+
+    /// <summary>AREA(1) OFFSET(2, big-endian like the S7-200's own words).</summary>
+    private static void AddBlock(ImmutableArray<byte>.Builder payload, ProtocolArea area, int offset)
+    {
+        if (!IsKnownArea((byte)area))
+        {
+            throw new ArgumentOutOfRangeException(nameof(area), area, "not a protocol area");
+        }
+
+        ArgumentOutOfRangeException.ThrowIfNegative(offset);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(offset, ushort.MaxValue);
+        payload.Add((byte)area);
+        payload.Add((byte)(offset >> 8));
+        payload.Add((byte)offset);
+    }
+
+    private static bool IsKnownArea(byte code) => code is >= (byte)ProtocolArea.I and <= (byte)ProtocolArea.SM;
+}

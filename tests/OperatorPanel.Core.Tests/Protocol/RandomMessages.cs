@@ -1,0 +1,68 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+
+namespace OperatorPanel.Core.Tests.Protocol;
+
+/// <summary>Valid requests and matching replies drawn from a seeded <see cref="Random"/>: every command, every area, lengths up to the limits.</summary>
+internal static class RandomMessages
+{
+    private static readonly ProtocolArea[] Areas = Enum.GetValues<ProtocolArea>();
+
+    public static PlcRequest Request(Random rng)
+    {
+        var station = new Station(rng.Next(Station.Min, Station.Max + 1));
+        var sequence = (byte)rng.Next(256);
+        return rng.Next(4) switch
+        {
+            0 => new IdentifyRequest(station, sequence),
+            1 => new ReadRequest(station, sequence, Items(rng)),
+            2 => new WriteBlockRequest(station, sequence, Area(rng), rng.Next(65536), Bytes(rng, rng.Next(1, ProtocolLimits.MaxWriteData + 1))),
+            _ => new WriteBitRequest(station, sequence, Area(rng), rng.Next(65536), rng.Next(8), rng.Next(2) == 1),
+        };
+    }
+
+    /// <summary>A reply to <paramref name="request"/>: mostly OK with random data, sometimes an error code 02-06.</summary>
+    public static PlcResponse ResponseTo(Random rng, PlcRequest request)
+    {
+        var (station, sequence) = (request.Station, request.Sequence);
+        if (rng.Next(5) == 0)
+        {
+            return new ErrorResponse(station, sequence, request.Command, (ProtocolError)rng.Next(2, 7));
+        }
+
+        return request switch
+        {
+            IdentifyRequest => new IdentifyResponse(
+                station, sequence, 1, 1, (byte)rng.Next(1, 6), (byte)rng.Next(2), (byte)rng.Next(256), 121, (byte)rng.Next(1, 256),
+                (byte)rng.Next(256), (byte)rng.Next(2), (ushort)rng.Next(65536), (ushort)rng.Next(65536), (ushort)rng.Next(65536)),
+            ReadRequest read => new ReadResponse(station, sequence, Bytes(rng, read.TotalLength)),
+            WriteBlockRequest write => new WriteBlockResponse(station, sequence, Bytes(rng, write.Data.Length)),
+            _ => new WriteBitResponse(station, sequence, (byte)rng.Next(256)),
+        };
+    }
+
+    public static ImmutableArray<byte> Bytes(Random rng, int count)
+    {
+        var bytes = new byte[count];
+        rng.NextBytes(bytes);
+        return [.. bytes];
+    }
+
+    private static ProtocolArea Area(Random rng) => Areas[rng.Next(Areas.Length)];
+
+    private static ImmutableArray<ReadItem> Items(Random rng)
+    {
+        var count = rng.Next(1, ProtocolLimits.MaxReadItems + 1);
+        var budget = ProtocolLimits.MaxReadData - count;
+        var items = ImmutableArray.CreateBuilder<ReadItem>(count);
+        for (var i = 0; i < count; i++)
+        {
+            var extra = rng.Next(budget + 1);
+            budget -= extra;
+            items.Add(new ReadItem(Area(rng), rng.Next(65536), 1 + extra));
+        }
+
+        return items.MoveToImmutable();
+    }
+}

@@ -1,0 +1,109 @@
+using System.Text;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+
+namespace OperatorPanel.Core.Tests.Protocol;
+
+public sealed class RequestCodecTests
+{
+    private static readonly Station One = new(1);
+
+    [Fact]
+    public void Encode_ReadTwoItems_GivesTheAnnotatedFrame()
+    {
+        // 01 station, 08 seq, 02 READ, 02 items: V(04) 0064 len 04, I(01) 0000 len 02; BCC 08
+        var request = new ReadRequest(One, 0x08, [new(ProtocolArea.V, 100, 4), new(ProtocolArea.I, 0, 2)]);
+
+        Encoding.ASCII.GetString(RequestCodec.Encode(request)).Should().Be("<01080202040064040100000208>");
+    }
+
+    [Fact]
+    public void Encode_WriteBitSet_GivesTheAnnotatedFrame()
+    {
+        // 01 station, 0A seq, 04 WRITE BIT, Q(02) offset 0000, bit 05, value 01; BCC 72
+        var request = new WriteBitRequest(One, 0x0A, ProtocolArea.Q, 0, 5, true);
+
+        Encoding.ASCII.GetString(RequestCodec.Encode(request)).Should().Be("<010A04020000050172>");
+    }
+
+    [Theory]
+    [InlineData(9, 1)]
+    [InlineData(0, 1)]
+    [InlineData(1, 122)]
+    public void Encode_ReadOutsideLimits_Throws(int items, int length)
+    {
+        var request = new ReadRequest(One, 0, [.. Enumerable.Repeat(new ReadItem(ProtocolArea.V, 0, length), items)]);
+
+        var act = () => RequestCodec.Encode(request);
+
+        act.Should().Throw<ArgumentOutOfRangeException>();
+    }
+
+    [Fact]
+    public void Encode_WriteBitAbove7_Throws()
+    {
+        var act = () => RequestCodec.Encode(new WriteBitRequest(One, 0, ProtocolArea.M, 0, 8, true));
+
+        act.Should().Throw<ArgumentOutOfRangeException>();
+    }
+
+    [Theory]
+    [InlineData("01 00 05", "", ProtocolError.UnknownCommand)]
+    [InlineData("01 00 00", "", ProtocolError.UnknownCommand)]
+    [InlineData("01 00 01", "00", ProtocolError.BadLength)] //                  IDENTIFY with a payload
+    [InlineData("01 00 02", "", ProtocolError.BadLength)] //                    READ without COUNT
+    [InlineData("01 00 02", "00", ProtocolError.BadLength)] //                  COUNT 0
+    [InlineData("01 00 02", "09 04000001 04000001 04000001 04000001 04000001 04000001 04000001 04000001 04000001", ProtocolError.BadLength)]
+    [InlineData("01 00 02", "02 04000001", ProtocolError.BadLength)] //         COUNT 2, one item
+    [InlineData("01 00 02", "01 04000000", ProtocolError.BadLength)] //         LENGTH 0
+    [InlineData("01 00 02", "01 06000001", ProtocolError.AddressOutOfRange)] // area 06
+    [InlineData("01 00 02", "01 00000001", ProtocolError.AddressOutOfRange)] // area 00
+    [InlineData("01 00 02", "01 01000F02", ProtocolError.AddressOutOfRange)] // IB15 + 2 bytes > 16
+    [InlineData("01 00 02", "02 01000F02 04000000", ProtocolError.AddressOutOfRange)] // first failing item decides
+    [InlineData("01 00 02", "02 04000000 01000F02", ProtocolError.BadLength)]
+    [InlineData("01 00 02", "02 04000079 04000001", ProtocolError.BadLength)] // 121 + 1 > 121
+    [InlineData("01 00 03", "040000", ProtocolError.BadLength)] //             WRITE shorter than 8 bytes
+    [InlineData("01 00 03", "04000002 AA", ProtocolError.BadLength)] //        LENGTH 2, one data byte
+    [InlineData("01 00 03", "04000000", ProtocolError.BadLength)] //           LENGTH 0
+    [InlineData("01 00 03", "07000001 AA", ProtocolError.AddressOutOfRange)]
+    [InlineData("01 00 03", "04200001 AA", ProtocolError.AddressOutOfRange)] // VB8192 on a CPU 224
+    [InlineData("01 00 03", "01000001 AA", ProtocolError.NotWritable)] //      I
+    [InlineData("01 00 03", "05001C04 AABBCCDD", ProtocolError.NotWritable)] // SMB28-31 touches SMB28, SMB29
+    [InlineData("01 00 04", "0200000501 00", ProtocolError.BadLength)]
+    [InlineData("01 00 04", "02001000 01", ProtocolError.AddressOutOfRange)] // QB16
+    [InlineData("01 00 04", "01000008 01", ProtocolError.NotWritable)] //      I, bit 8: 03 comes before 06
+    [InlineData("01 00 04", "02000008 01", ProtocolError.BadParameter)] //     bit 8
+    [InlineData("01 00 04", "02000000 02", ProtocolError.BadParameter)] //     value 02
+    public void TryParse_RequestBreakingARule_GivesTheErrorCode(string head, string payload, ProtocolError expected)
+    {
+        RequestCodec.TryParse(Frame(head, payload), new FakeTarget(), out var request, out var error).Should().BeFalse();
+
+        error.Should().Be(expected);
+        request.Should().BeNull();
+    }
+
+    [Theory]
+    [InlineData("01 00 81", "")] // a reply overheard on the bus
+    [InlineData("00 00 01", "")] // station 0
+    [InlineData("7F 00 01", "")] // station 127
+    public void TryParse_FrameThatGetsNoReply_FailsWithoutErrorCode(string head, string payload)
+    {
+        RequestCodec.TryParse(Frame(head, payload), new FakeTarget(), out _, out var error).Should().BeFalse();
+
+        error.Should().Be(ProtocolError.None);
+    }
+
+    [Fact]
+    public void TryParse_WithoutTarget_SkipsSizeAndWritabilityChecks()
+    {
+        RequestCodec.TryParse(Frame("01 00 03", "01FFFF01 AA"), null, out var request, out _).Should().BeTrue();
+
+        request.Should().BeOfType<WriteBlockRequest>().Which.Offset.Should().Be(0xFFFF);
+    }
+
+    private static FreeportFrame Frame(string head, string payload)
+    {
+        var h = Convert.FromHexString(head.Replace(" ", string.Empty, StringComparison.Ordinal));
+        return new FreeportFrame(h[0], h[1], h[2], [.. Convert.FromHexString(payload.Replace(" ", string.Empty, StringComparison.Ordinal))]);
+    }
+}
