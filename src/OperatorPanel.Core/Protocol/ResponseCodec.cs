@@ -83,7 +83,8 @@ public static class ResponseCodec
         : frame.Payload.IsEmpty ? FrameError.LengthMismatch
         : FrameError.None;
 
-    private static int ExpectedDataBytes(PlcRequest request) => request switch
+    /// <summary>Data bytes a successful reply to <paramref name="request"/> carries after STATUS.</summary>
+    public static int ExpectedDataBytes(PlcRequest request) => request switch
     {
         IdentifyRequest => IdentifyPayloadBytes,
         ReadRequest read => read.TotalLength,
