@@ -28,15 +28,22 @@ public sealed class SerialPortDiscoveryTests : IDisposable
         Dir("devices/virtual/tty/ttyS0");
         Dir("devices/virtual/tty/tty0");
 
+        // ttyS1 of the 8250 driver with no UART: its device is the "platform" bus placeholder.
+        Dir("bus/platform");
+        Dir("devices/platform/serial8250/tty/ttyS1");
+        Link("devices/platform/serial8250/subsystem", "../../../bus/platform");
+        Link("devices/platform/serial8250/tty/ttyS1/device", "../../../serial8250");
+
         Dir("class/tty");
         Link("class/tty/ttyUSB0", "../../devices/pci0000:00/usb1/1-1/1-1:1.0/ttyUSB0/tty/ttyUSB0");
         Link("class/tty/ttyACM0", "../../devices/pci0000:00/usb1/1-2/1-2:1.0/tty/ttyACM0");
         Link("class/tty/ttyS0", "../../devices/virtual/tty/ttyS0");
         Link("class/tty/tty0", "../../devices/virtual/tty/tty0");
+        Link("class/tty/ttyS1", "../../devices/platform/serial8250/tty/ttyS1");
     }
 
     [Fact]
-    public void ScanSysfs_FakeTree_ListsPortsWithADeviceOnly()
+    public void ScanSysfs_FakeTree_ListsPortsWithRealHardwareOnly()
     {
         var ports = SerialPortDiscovery.ScanSysfs(_root);
 

@@ -36,8 +36,14 @@ internal sealed record UnixTermiosLayout(
         ParEnb: 0x100, ParOdd: 0x200, CLocal: 0x800, CRtsCts: 0x80000000, EAgain: 11, TciFlush: 0,
         Speeds: new Dictionary<int, nuint>
         {
-            [1200] = 0x9, [2400] = 0xB, [4800] = 0xC, [9600] = 0xD, [19200] = 0xE, [38400] = 0xF,
-            [57600] = 0x1001, [115200] = 0x1002,
+            [1200] = 0x9,
+            [2400] = 0xB,
+            [4800] = 0xC,
+            [9600] = 0xD,
+            [19200] = 0xE,
+            [38400] = 0xF,
+            [57600] = 0x1001,
+            [115200] = 0x1002,
         });
 
     public static UnixTermiosLayout MacOS { get; } = new(
@@ -46,8 +52,14 @@ internal sealed record UnixTermiosLayout(
         ParEnb: 0x1000, ParOdd: 0x2000, CLocal: 0x8000, CRtsCts: 0x30000, EAgain: 35, TciFlush: 1,
         Speeds: new Dictionary<int, nuint>
         {
-            [1200] = 1200, [2400] = 2400, [4800] = 4800, [9600] = 9600, [19200] = 19200, [38400] = 38400,
-            [57600] = 57600, [115200] = 115200,
+            [1200] = 1200,
+            [2400] = 2400,
+            [4800] = 4800,
+            [9600] = 9600,
+            [19200] = 19200,
+            [38400] = 38400,
+            [57600] = 57600,
+            [115200] = 115200,
         });
 
     public static UnixTermiosLayout Current => OperatingSystem.IsMacOS() ? MacOS : Linux;
