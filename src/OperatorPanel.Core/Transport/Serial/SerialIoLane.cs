@@ -1,0 +1,62 @@
+using System.Collections.Concurrent;
+
+namespace OperatorPanel.Core.Transport.Serial;
+
+/// <summary>
+/// One dedicated thread running blocking device calls in order, so a read waiting for its timeout never holds a
+/// thread-pool thread (the runtime's System.IO.Ports lesson: on Windows async reads ignore timeouts and cancellation).
+/// </summary>
+internal sealed class SerialIoLane
+{
+    private readonly BlockingCollection<Action> _work = [];
+    private readonly TaskCompletionSource _stopped = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
+    public SerialIoLane(string name)
+    {
+        var thread = new Thread(Run) { IsBackground = true, Name = name };
+        thread.Start();
+    }
+
+    public Task<T> Run<T>(Func<T> operation)
+    {
+        var completion = new TaskCompletionSource<T>(TaskCreationOptions.RunContinuationsAsynchronously);
+        _work.Add(() => Execute(operation, completion));
+        return completion.Task;
+    }
+
+    /// <summary>Lets queued work finish, then ends the thread.</summary>
+    public Task StopAsync()
+    {
+        _work.CompleteAdding();
+        return _stopped.Task;
+    }
+
+    private static void Execute<T>(Func<T> operation, TaskCompletionSource<T> completion)
+    {
+        try
+        {
+            completion.SetResult(operation());
+        }
+        catch (OperationCanceledException canceled)
+        {
+            completion.SetCanceled(canceled.CancellationToken);
+        }
+#pragma warning disable CA1031 // every failure is handed to the awaiting caller, none is swallowed
+        catch (Exception failure)
+#pragma warning restore CA1031
+        {
+            completion.SetException(failure);
+        }
+    }
+
+    private void Run()
+    {
+        foreach (var item in _work.GetConsumingEnumerable())
+        {
+            item();
+        }
+
+        _work.Dispose();
+        _stopped.SetResult();
+    }
+}
