@@ -4,12 +4,30 @@ using OperatorPanel.Core.Transport;
 namespace OperatorPanel.Core.Link;
 
 /// <summary>
-/// Timing and retry rules of a <see cref="PlcLink"/>. The reply timeout follows docs/protocol.md, "Timing":
-/// request time + reply delay + scan allowance + reply time + extra latency + margin.
+/// Timing and retry rules of a <see cref="PlcLink"/>. The reply timeout follows docs/protocol.md, "Timing": request
+/// time + reply delay + scan allowance + reply time + what the medium adds (<see cref="RadioModuleProfile"/>) + margin.
 /// </summary>
 public sealed record LinkOptions
 {
+    /// <summary>Options for a bus with the medium's own retries and inter-frame gap (cable or radio module).</summary>
+    public static LinkOptions For(SerialSettings serial, byte replyDelayMs = 5)
+    {
+        ArgumentNullException.ThrowIfNull(serial);
+        var medium = RadioModuleProfile.For(serial.Kind);
+        return new LinkOptions
+        {
+            Serial = serial,
+            Medium = medium,
+            Retries = medium.Retries,
+            InterFrameGap = medium.InterFrameGap,
+            ReplyDelay = TimeSpan.FromMilliseconds(replyDelayMs),
+        };
+    }
+
     public required SerialSettings Serial { get; init; }
+
+    /// <summary>What the way to the bus adds to each exchange; the cable adds nothing.</summary>
+    public RadioModuleProfile Medium { get; init; } = RadioModuleProfile.Cable;
 
     /// <summary>Further attempts after the first; the identical frame is resent (writes are idempotent).</summary>
     public int Retries { get; init; } = 2;
@@ -19,9 +37,6 @@ public sealed record LinkOptions
 
     /// <summary>Longest time the PLC may take before it starts serving the request (up to one scan).</summary>
     public TimeSpan ScanAllowance { get; init; } = TimeSpan.FromMilliseconds(100);
-
-    /// <summary>Added latency of the medium, e.g. the radio modules' store-and-forward.</summary>
-    public TimeSpan ExtraLatency { get; init; } = TimeSpan.Zero;
 
     /// <summary>Quiet time on the line between the end of one exchange and the next request.</summary>
     public TimeSpan InterFrameGap { get; init; } = TimeSpan.Zero;
@@ -34,6 +49,7 @@ public sealed record LinkOptions
         ArgumentNullException.ThrowIfNull(request);
         var requestChars = RequestCodec.Encode(request).Length;
         var replyChars = 2 + (2 * (FreeportFrame.OverheadBytes + 1 + ResponseCodec.ExpectedDataBytes(request)));
-        return (Serial.CharacterTime * (requestChars + replyChars)) + ReplyDelay + ScanAllowance + ExtraLatency + Margin;
+        return (Serial.CharacterTime * (requestChars + replyChars))
+            + ReplyDelay + ScanAllowance + Medium.ExtraFor(Serial, requestChars, replyChars) + Margin;
     }
 }

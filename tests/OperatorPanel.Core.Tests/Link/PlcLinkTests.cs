@@ -1,0 +1,211 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.TestKit;
+
+namespace OperatorPanel.Core.Tests.Link;
+
+/// <summary>
+/// The link against annotated scripts. Frames are the worked examples' shape: station 02, SEQ 2A, READ of MB0 (1 byte).
+/// </summary>
+public sealed class PlcLinkTests
+{
+    private static readonly Station Station2 = new(2);
+    private static readonly ReadRequest ReadMb0 = new(Station2, 0x2A, [new ReadItem(ProtocolArea.M, 0, 1)]);
+
+    private static string Request => Ascii(RequestCodec.Encode(ReadMb0));
+
+    private static string Reply(byte data, byte sequence = 0x2A) =>
+        Ascii(ResponseCodec.Encode(new ReadResponse(Station2, sequence, [data])));
+
+    [Fact]
+    public async Task Exchange_StationAnswers_ReturnsDecodedReplyAndCountsIt()
+    {
+        var clock = new ManualTimeProvider();
+        var transport = new ScriptedTransport($"""
+            > "{Request}"   // READ MB0
+            < "{Reply(0x81)}"
+            """, clock);
+        var link = NewLink(transport, clock);
+
+        var response = await link.ExchangeAsync(ReadMb0, default);
+
+        response.Should().BeOfType<ReadResponse>().Which.Data.Should().Equal(0x81);
+        link.IsOnline(Station2).Should().BeTrue();
+        link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 1, Replies = 1, Retries = 0, Timeouts = 0 });
+        transport.AssertComplete();
+    }
+
+    [Fact]
+    public async Task Exchange_FirstAttemptTimesOut_ResendsTheIdenticalFrame()
+    {
+        var clock = new ManualTimeProvider();
+        var transport = new ScriptedTransport($"""
+            > "{Request}"
+            < no response
+            > "{Request}"   // the retry: same bytes, same SEQ
+            < "{Reply(0x05)}"
+            """, clock);
+        var link = NewLink(transport, clock);
+
+        var response = await link.ExchangeAsync(ReadMb0, default);
+
+        ((ReadResponse)response).Data.Should().Equal(0x05);
+        transport.Written.Should().HaveCount(2);
+        transport.Written[1].Should().Equal(transport.Written[0]);
+        link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 2, Replies = 1, Retries = 1, Timeouts = 1 });
+    }
+
+    [Fact]
+    public async Task Exchange_NoReplyToAnyAttempt_ThrowsNoAnswerNamingStationAndGoesOffline()
+    {
+        var clock = new ManualTimeProvider();
+        var transport = new ScriptedTransport($"""
+            > "{Request}"
+            < no response
+            > "{Request}"
+            < no response
+            > "{Request}"
+            < no response
+            """, clock);
+        var link = NewLink(transport, clock);
+
+        var act = () => link.ExchangeAsync(ReadMb0, default);
+
+        var thrown = await act.Should().ThrowAsync<PlcCommunicationException>();
+        thrown.Which.Kind.Should().Be(PlcErrorKind.NoAnswer);
+        thrown.Which.Station.Should().Be(Station2);
+        thrown.Which.Message.Should().Contain("station 2 on scripted: no valid reply to Read after 3 attempts");
+        link.IsOnline(Station2).Should().BeFalse();
+        link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 3, Replies = 0, Retries = 2, Timeouts = 3 });
+    }
+
+    [Fact]
+    public async Task Exchange_ReplyWithBadChecksum_CountsCorruptAndRetries()
+    {
+        var clock = new ManualTimeProvider();
+        var good = Reply(0x07);
+        var corrupt = good[..^3] + (good[^3] == '0' ? '1' : '0') + good[^2..];
+        var transport = new ScriptedTransport($"""
+            > "{Request}"
+            < "{corrupt}"   // one BCC digit flipped by noise
+            > "{Request}"
+            < "{good}"
+            """, clock);
+        var link = NewLink(transport, clock);
+
+        var response = await link.ExchangeAsync(ReadMb0, default);
+
+        ((ReadResponse)response).Data.Should().Equal(0x07);
+        link.StatisticsFor(Station2).CorruptFrames.Should().Be(1);
+    }
+
+    [Fact]
+    public async Task Exchange_LateReplyToOlderRequestAndOwnEcho_AreSkipped()
+    {
+        var clock = new ManualTimeProvider();
+        var transport = new ScriptedTransport($"""
+            > "{Request}"
+            < "{Request}"             // RS-485 adapter echoing our own request
+            < "{Reply(0x11, 0x29)}"   // late reply to SEQ 29
+            < "xx{Reply(0x33)}"       // noise, then the real reply
+            """, clock);
+        var link = NewLink(transport, clock);
+
+        var response = await link.ExchangeAsync(ReadMb0, default);
+
+        ((ReadResponse)response).Data.Should().Equal(0x33);
+        link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 1, Replies = 1, CorruptFrames = 0 });
+    }
+
+    [Fact]
+    public async Task Exchange_StationRefuses_ReturnsErrorResponseAndCountsIt()
+    {
+        var clock = new ManualTimeProvider();
+        var refusal = Ascii(ResponseCodec.Encode(new ErrorResponse(Station2, 0x2A, CommandCode.Read, ProtocolError.AddressOutOfRange)));
+        var transport = new ScriptedTransport($"""
+            > "{Request}"
+            < "{refusal}"
+            """, clock);
+        var link = NewLink(transport, clock);
+
+        var response = await link.ExchangeAsync(ReadMb0, default);
+
+        response.Should().BeEquivalentTo(new ErrorResponse(Station2, 0x2A, CommandCode.Read, ProtocolError.AddressOutOfRange));
+        link.IsOnline(Station2).Should().BeTrue();
+        link.StatisticsFor(Station2).NegativeReplies.Should().Be(1);
+    }
+
+    [Fact]
+    public async Task Exchange_PortVanished_ThrowsPortUnavailableWithStationAndGoesOffline()
+    {
+        var clock = new ManualTimeProvider();
+        var pair = new InMemoryTransportPair(clock);
+        await pair.PanelSide.OpenAsync(default);
+        await pair.BusSide.OpenAsync(default);
+        var link = new PlcLink(pair.PanelSide, LinkOptions.For(Some.SerialSettings()), clock);
+        pair.BusSide.Close();
+
+        var act = () => link.ExchangeAsync(ReadMb0, default);
+
+        var thrown = await act.Should().ThrowAsync<PlcCommunicationException>();
+        thrown.Which.Kind.Should().Be(PlcErrorKind.PortUnavailable);
+        thrown.Which.Station.Should().Be(Station2);
+        link.IsOnline(Station2).Should().BeFalse();
+    }
+
+    [Fact]
+    public async Task Exchange_TwoCallersAtOnce_OnlyOneRequestIsOnTheBus()
+    {
+        var clock = new ManualTimeProvider();
+        var pair = new InMemoryTransportPair(clock);
+        await pair.BusSide.OpenAsync(default);
+        var link = new PlcLink(pair.PanelSide, LinkOptions.For(Some.SerialSettings()), clock);
+        var other = ReadMb0 with { Sequence = 0x2B };
+
+        var first = link.ExchangeAsync(ReadMb0, default);
+        var second = link.ExchangeAsync(other, default);
+        var onBus = await ReadFrameAsync(pair.BusSide);
+        var nothingMore = await pair.BusSide.ReadAsync(new byte[64], TimeSpan.Zero, default);
+
+        onBus.Should().Be(Request);
+        nothingMore.Should().Be(0, "the second request waits for the first reply");
+        await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x01)), default);
+        (await first).Should().BeOfType<ReadResponse>();
+        clock.Advance(TimeSpan.FromMilliseconds(5)); // the cable's inter-frame gap
+        (await ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(other)));
+        await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x02, 0x2B)), default);
+        ((ReadResponse)await second).Data.Should().Equal(0x02);
+    }
+
+    [Theory]
+    [InlineData(LinkKind.Cable, 179.17)]
+    [InlineData(LinkKind.RadioModule, 483.33)]
+    public void ReplyTimeout_Identify9600_IsLineTimePlusDelayScanMediumAndMargin(LinkKind kind, double milliseconds)
+    {
+        // IDENTIFY: 10 request + 42 reply characters, 10 bits each at 9600 baud = 54.17 ms; + 5 ms delay + 100 ms scan
+        // + 20 ms margin; a radio module adds 250 ms and the line time once more.
+        var options = LinkOptions.For(Some.SerialSettings(9600, kind));
+
+        options.ReplyTimeoutFor(new IdentifyRequest(Station2, 1)).TotalMilliseconds.Should().BeApproximately(milliseconds, 0.01);
+    }
+
+    private static PlcLink NewLink(ITransport transport, TimeProvider clock) =>
+        new(transport, LinkOptions.For(Some.SerialSettings()) with { Retries = 2, InterFrameGap = TimeSpan.Zero }, clock);
+
+    private static string Ascii(byte[] frame) => System.Text.Encoding.ASCII.GetString(frame);
+
+    private static async Task<string> ReadFrameAsync(InMemoryTransport end)
+    {
+        var text = string.Empty;
+        var buffer = new byte[256];
+        while (!text.EndsWith('>'))
+        {
+            var count = await end.ReadAsync(buffer, TimeSpan.FromSeconds(5), default);
+            text += System.Text.Encoding.ASCII.GetString(buffer, 0, count);
+        }
+
+        return text;
+    }
+}
