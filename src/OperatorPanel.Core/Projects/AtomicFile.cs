@@ -15,14 +15,23 @@ internal static class AtomicFile
         bytes = null;
         try
         {
-            var length = new FileInfo(path).Length;
-            if (length > maxBytes)
+            // Read at most one byte past the limit instead of trusting the reported length: a device or pipe
+            // (/dev/zero) reports 0 and never ends.
+            using var stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.Read);
+            using var buffer = new MemoryStream();
+            var chunk = new byte[81920];
+            int read;
+            while ((read = stream.Read(chunk, 0, chunk.Length)) > 0)
             {
-                error = string.Create(CultureInfo.InvariantCulture, $"the file has {length} bytes; a project file has at most {maxBytes}");
-                return false;
+                buffer.Write(chunk, 0, read);
+                if (buffer.Length > maxBytes)
+                {
+                    error = string.Create(CultureInfo.InvariantCulture, $"the file is larger than {maxBytes} bytes, the most a project file may have");
+                    return false;
+                }
             }
 
-            bytes = File.ReadAllBytes(path);
+            bytes = buffer.ToArray();
             error = null;
             return true;
         }

@@ -137,4 +137,10 @@ public sealed class ProjectFileSyntaxTests
         ProjectFile.Load(path).Errors.Should().Equal(
             new ProjectFileError("file", "not UTF-8 text (invalid byte at offset 1); is this a project file?"));
     }
+
+    [Fact]
+    public void Parse_NestingDeeperThanTheReaderAllows_IsASyntaxProblem()
+    {
+        BadFile.SingleProblem(new string('[', 100_000)).Location.Should().StartWith("line 1, column ");
+    }
 }
