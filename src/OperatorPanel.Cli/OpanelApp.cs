@@ -29,6 +29,7 @@ internal static class OpanelApp
         Func<ParseResult, CliContext> context = parse => options.CreateContext(parse, output, error);
         yield return CpusCommand.Create(context);
         yield return AddressCommand.Create(context);
+        yield return ProjectCommand.Create(context);
     }
 }
 

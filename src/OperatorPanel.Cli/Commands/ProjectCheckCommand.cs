@@ -1,0 +1,56 @@
+using System.CommandLine;
+using OperatorPanel.Core.Projects;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary>
+/// <c>opanel project check FILE</c>: loads a project and prints every problem as <c>FILE: location: message</c>,
+/// or a summary of the line when there is none. Exit code 1 when there is any problem.
+/// </summary>
+internal static class ProjectCheckCommand
+{
+    public static Command Create(Func<ParseResult, CliContext> context)
+    {
+        var file = new Argument<string>("file") { Description = "The .opproj project file to check" };
+        var command = new Command("check", "Check a project file and print every problem with its location") { file };
+        command.SetAction(parse =>
+        {
+            var cli = context(parse);
+            var path = parse.GetValue(file)!;
+            var result = ProjectFile.Load(path);
+            var summary = result.Ok ? ProjectSummaryView.From(result.Project) : null;
+            var problems = result.Errors.Select(e => new ProblemView(e.Location, e.Message)).ToList();
+            if (cli.Json)
+            {
+                cli.WriteJson(new { ok = result.Ok, file = path, problems, project = summary });
+            }
+            else
+            {
+                WriteText(cli.Out, path, problems, summary);
+            }
+
+            cli.Log.Information("Checked {File}: {Count} problems", path, problems.Count);
+            return result.Ok ? ExitCodes.Ok : ExitCodes.BadInput;
+        });
+        return command;
+    }
+
+    private static void WriteText(TextWriter o, string path, List<ProblemView> problems, ProjectSummaryView? summary)
+    {
+        foreach (var problem in problems)
+        {
+            o.WriteLine($"{path}: {problem.Location}: {problem.Message}");
+        }
+
+        if (summary is null)
+        {
+            o.WriteLine($"{path}: {problems.Count} problem{(problems.Count == 1 ? string.Empty : "s")}");
+            return;
+        }
+
+        o.WriteLine($"{path}: ok");
+        summary.WriteText(o);
+    }
+}
+
+internal sealed record ProblemView(string Location, string Message);

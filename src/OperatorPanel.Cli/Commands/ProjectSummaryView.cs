@@ -1,0 +1,43 @@
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary>A project as opanel summarises it after <c>project new</c> and a clean <c>project check</c> (text and JSON).</summary>
+internal sealed record ProjectSummaryView(string Name, string Refresh, int MinimumPeriodMs, IReadOnlyList<StationSummaryView> Stations)
+{
+    public static ProjectSummaryView From(PanelProject project) => new(
+        project.Name,
+        project.Refresh.Mode == RefreshMode.Continuous ? "continuous" : "triggered",
+        (int)project.Refresh.MinimumPeriod.TotalMilliseconds,
+        project.Stations.Select(StationSummaryView.From).ToList());
+
+    public void WriteText(TextWriter o)
+    {
+        var refresh = Refresh == "continuous" ? $"continuous refresh, at least {MinimumPeriodMs} ms apart" : "triggered refresh";
+        o.WriteLine($"project   \"{Name}\", {Stations.Count} station{(Stations.Count == 1 ? string.Empty : "s")}, {refresh}");
+        foreach (var s in Stations)
+        {
+            o.WriteLine($"station   {s.Address} \"{s.Name}\": {s.Cpu} on {s.Port} {s.Line}; "
+                + $"{s.Inputs} inputs, {s.Outputs} outputs, {s.Tags} tags, {s.Alarms} alarms");
+        }
+    }
+}
+
+internal sealed record StationSummaryView(string Name, int Address, string Cpu, string Port, string Line, int Inputs, int Outputs, int Tags, int Alarms)
+{
+    public static StationSummaryView From(ProjectStation s) => new(
+        s.Name,
+        s.Address.Address,
+        s.Cpu.DisplayName,
+        s.Link.PortName,
+        Describe(s.Link),
+        s.Inputs.Length,
+        s.Outputs.Length,
+        s.Tags.Length,
+        s.Alarms.Length);
+
+    /// <summary>"9600 8N1 cable", as technicians write line settings.</summary>
+    private static string Describe(SerialSettings link) =>
+        $"{link.BaudRate} {link.DataBits}{link.Parity.ToString()[0]}{link.StopBits} {(link.Kind == LinkKind.Cable ? "cable" : "radio module")}";
+}

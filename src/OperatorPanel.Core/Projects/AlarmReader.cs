@@ -1,0 +1,66 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+
+namespace OperatorPanel.Core.Projects;
+
+/// <summary>Reads a station's <c>alarms</c>: a flag bit, its text, class and whether it must be acknowledged.</summary>
+internal static class AlarmReader
+{
+    public static ImmutableArray<AlarmDefinition>? ReadAll(JsonFields station, CpuProfile? cpu, EntryRegistry registry)
+    {
+        var elements = station.Array("alarms", required: false);
+        if (elements is null)
+        {
+            return null;
+        }
+
+        var alarms = new List<AlarmDefinition>();
+        var complete = true;
+        foreach (var (element, path) in elements)
+        {
+            var entry = JsonFields.Open(element, path, station.Problems);
+            if (entry is null)
+            {
+                complete = false;
+                continue;
+            }
+
+            entry.ReportUnknown("flag", "text", "class", "acknowledgementRequired");
+            var flag = AddressReader.Read(entry, "flag", cpu, Shape);
+            if (flag is { } f && !registry.ClaimAddress(entry, "flag", "alarms", f))
+            {
+                flag = null;
+            }
+
+            var text = entry.String("text");
+            if (text is not null && string.IsNullOrWhiteSpace(text))
+            {
+                entry.Problem("text", "the alarm text is empty; the operator would see a blank message");
+                text = null;
+            }
+
+            var alarmClass = entry.Word("class", AlarmClass.Fault);
+            var acknowledge = entry.Bool("acknowledgementRequired", fallback: true);
+            if (flag is null || text is null || alarmClass is null || acknowledge is null)
+            {
+                complete = false;
+                continue;
+            }
+
+            alarms.Add(new AlarmDefinition(flag.Value, text, alarmClass.Value, acknowledge.Value));
+        }
+
+        return complete ? [.. alarms] : null;
+    }
+
+    private static string? Shape(PlcAddress address)
+    {
+        if (address.Width != AccessWidth.Bit)
+        {
+            return $"an alarm flag is a bit such as M2.0; {address} is {AddressReader.Kind(address)}";
+        }
+
+        return AddressRules.IsServedByLink(address.Area) ? null : $"{address}: the panel link serves only I, Q, M, V and SM";
+    }
+}

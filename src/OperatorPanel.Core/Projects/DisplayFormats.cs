@@ -1,0 +1,19 @@
+using OperatorPanel.Core.Addressing;
+
+namespace OperatorPanel.Core.Projects;
+
+/// <summary>Which display formats fit which address widths.</summary>
+public static class DisplayFormats
+{
+    /// <summary>True when <paramref name="format"/> can show a value of <paramref name="width"/>.</summary>
+    public static bool Fits(this DisplayFormat format, AccessWidth width) => format switch
+    {
+        DisplayFormat.Bool => width == AccessWidth.Bit,
+        DisplayFormat.Float => width == AccessWidth.DoubleWord,
+        _ => width != AccessWidth.Bit,
+    };
+
+    /// <summary>The format a tag gets when its file entry names none: Bool for a bit, Unsigned otherwise.</summary>
+    public static DisplayFormat DefaultFor(AccessWidth width) =>
+        width == AccessWidth.Bit ? DisplayFormat.Bool : DisplayFormat.Unsigned;
+}

@@ -1,0 +1,25 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.Core.Projects;
+
+/// <summary>One PLC of a line: where it sits on the bus, its CPU, and what the panel shows of it.</summary>
+/// <param name="Name">Unique within the project, e.g. "Filler".</param>
+/// <param name="Address">RS-485 station address; unique among the stations on one port.</param>
+/// <param name="Cpu">The CPU model and revision every address of this station is checked against.</param>
+/// <param name="Link">The PC's serial port and its Freeport settings; stations on one port share them.</param>
+/// <param name="Inputs">Symbols for I bits (the "Input" window).</param>
+/// <param name="Outputs">Symbols for Q bits (the "Output" window, where the operator may also set them).</param>
+/// <param name="Tags">Memory cells shown in the PLC memory window.</param>
+/// <param name="Alarms">Flag bits whose rising state shows a message.</param>
+public sealed record ProjectStation(
+    string Name,
+    Station Address,
+    CpuProfile Cpu,
+    SerialSettings Link,
+    ImmutableArray<IoSymbol> Inputs,
+    ImmutableArray<IoSymbol> Outputs,
+    ImmutableArray<ProjectTag> Tags,
+    ImmutableArray<AlarmDefinition> Alarms);

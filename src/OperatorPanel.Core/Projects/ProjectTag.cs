@@ -1,0 +1,11 @@
+using OperatorPanel.Core.Addressing;
+
+namespace OperatorPanel.Core.Projects;
+
+/// <summary>A memory cell the panel monitors and, when writable, lets the operator change (seed 000 §7, wizard step 3).</summary>
+/// <param name="Symbol">Unique within its station across inputs, outputs and tags (compared ignoring case).</param>
+/// <param name="Address">A bit, byte, word or double word the link serves (M and V, or read-only I, Q and SM).</param>
+/// <param name="Format">How the value is shown; it fits the address width (see <see cref="DisplayFormats.Fits"/>).</param>
+/// <param name="Writable">True when the operator may write the cell; the address then passes AddressRules for writing.</param>
+/// <param name="Description">Free comment for the operator; may be empty.</param>
+public sealed record ProjectTag(string Symbol, PlcAddress Address, DisplayFormat Format, bool Writable, string Description);

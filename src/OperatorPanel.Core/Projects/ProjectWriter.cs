@@ -1,0 +1,112 @@
+using System.Text;
+using System.Text.Encodings.Web;
+using System.Text.Json;
+using OperatorPanel.Core.Cpu;
+
+namespace OperatorPanel.Core.Projects;
+
+/// <summary>
+/// Writes a project as the file format the reader reads: indented, LF line ends, properties always in the same
+/// order and always present (so files diff cleanly), camelCase words for enums, canonical address strings.
+/// </summary>
+internal static class ProjectWriter
+{
+    private static readonly JsonWriterOptions Options = new()
+    {
+        Indented = true,
+        NewLine = "\n",
+        // Keeps alarm texts in any language readable in the file; the file is never embedded in HTML.
+        Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping,
+    };
+
+    public static byte[] Write(PanelProject project)
+    {
+        ArgumentNullException.ThrowIfNull(project);
+        using var buffer = new MemoryStream();
+        using (var json = new Utf8JsonWriter(buffer, Options))
+        {
+            json.WriteStartObject();
+            json.WriteNumber("schemaVersion", ProjectFile.SchemaVersion);
+            json.WriteString("name", project.Name);
+            json.WriteStartObject("refresh");
+            json.WriteString("mode", RefreshModeWords.Of(project.Refresh.Mode));
+            json.WriteNumber("minimumPeriodMs", (int)project.Refresh.MinimumPeriod.TotalMilliseconds);
+            json.WriteEndObject();
+            json.WriteStartArray("stations");
+            foreach (var station in project.Stations)
+            {
+                WriteStation(json, station);
+            }
+
+            json.WriteEndArray();
+            json.WriteEndObject();
+        }
+
+        buffer.WriteByte((byte)'\n');
+        return buffer.ToArray();
+    }
+
+    public static string WriteText(PanelProject project) => Encoding.UTF8.GetString(Write(project));
+
+    private static void WriteStation(Utf8JsonWriter json, ProjectStation station)
+    {
+        json.WriteStartObject();
+        json.WriteString("name", station.Name);
+        json.WriteNumber("address", station.Address.Address);
+        json.WriteStartObject("cpu");
+        json.WriteString("model", CpuModelNames.ShortName(station.Cpu.Model));
+        json.WriteString("revision", JsonWords.Of(station.Cpu.Revision));
+        json.WriteEndObject();
+        json.WriteStartObject("link");
+        json.WriteString("port", station.Link.PortName);
+        json.WriteNumber("baud", station.Link.BaudRate);
+        json.WriteString("parity", JsonWords.Of(station.Link.Parity));
+        json.WriteNumber("dataBits", station.Link.DataBits);
+        json.WriteNumber("stopBits", station.Link.StopBits);
+        json.WriteString("kind", JsonWords.Of(station.Link.Kind));
+        json.WriteEndObject();
+        WriteSymbols(json, "inputs", station.Inputs);
+        WriteSymbols(json, "outputs", station.Outputs);
+        json.WriteStartArray("tags");
+        foreach (var tag in station.Tags)
+        {
+            json.WriteStartObject();
+            json.WriteString("symbol", tag.Symbol);
+            json.WriteString("address", tag.Address.ToString());
+            json.WriteString("format", JsonWords.Of(tag.Format));
+            json.WriteBoolean("writable", tag.Writable);
+            json.WriteString("description", tag.Description);
+            json.WriteEndObject();
+        }
+
+        json.WriteEndArray();
+        json.WriteStartArray("alarms");
+        foreach (var alarm in station.Alarms)
+        {
+            json.WriteStartObject();
+            json.WriteString("flag", alarm.Flag.ToString());
+            json.WriteString("text", alarm.Text);
+            json.WriteString("class", JsonWords.Of(alarm.Class));
+            json.WriteBoolean("acknowledgementRequired", alarm.AcknowledgementRequired);
+            json.WriteEndObject();
+        }
+
+        json.WriteEndArray();
+        json.WriteEndObject();
+    }
+
+    private static void WriteSymbols(Utf8JsonWriter json, string name, IEnumerable<IoSymbol> symbols)
+    {
+        json.WriteStartArray(name);
+        foreach (var symbol in symbols)
+        {
+            json.WriteStartObject();
+            json.WriteString("symbol", symbol.Symbol);
+            json.WriteString("address", symbol.Address.ToString());
+            json.WriteString("description", symbol.Description);
+            json.WriteEndObject();
+        }
+
+        json.WriteEndArray();
+    }
+}

@@ -1,0 +1,72 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+
+namespace OperatorPanel.Core.Projects;
+
+/// <summary>
+/// Reads a station's <c>tags</c>: memory cells of M and V (seed 000 §7), or read-only views of I, Q and SM.
+/// Two tags may share an address, e.g. VD120 shown once as a float and once in hex.
+/// </summary>
+internal static class TagReader
+{
+    public static ImmutableArray<ProjectTag>? ReadAll(JsonFields station, CpuProfile? cpu, EntryRegistry registry)
+    {
+        var elements = station.Array("tags", required: false);
+        if (elements is null)
+        {
+            return null;
+        }
+
+        var tags = new List<ProjectTag>();
+        var complete = true;
+        foreach (var (element, path) in elements)
+        {
+            var tag = Read(element, path, station.Problems, cpu, registry);
+            complete &= tag is not null;
+            if (tag is not null)
+            {
+                tags.Add(tag);
+            }
+        }
+
+        return complete ? [.. tags] : null;
+    }
+
+    private static ProjectTag? Read(System.Text.Json.JsonElement element, string path, ProjectProblems problems, CpuProfile? cpu, EntryRegistry registry)
+    {
+        var entry = JsonFields.Open(element, path, problems);
+        if (entry is null)
+        {
+            return null;
+        }
+
+        entry.ReportUnknown("symbol", "address", "format", "writable", "description");
+        var symbol = registry.ClaimSymbol(entry);
+        var writable = entry.Bool("writable", fallback: false);
+        var use = writable == true ? AddressUse.Write : AddressUse.Read;
+        var address = AddressReader.Read(entry, "address", cpu, Shape, use);
+        var format = entry.Word("format", DisplayFormats.DefaultFor(address?.Width ?? AccessWidth.Bit));
+        if (address is { } a && format is { } f && !f.Fits(a.Width))
+        {
+            entry.Problem("format", $"{JsonWords.Of(f)} cannot show {a}, {AddressReader.Kind(a)}; {FitHint(f)}");
+            format = null;
+        }
+
+        var description = entry.String("description", string.Empty);
+        return symbol is null || address is null || format is null || writable is null || description is null
+            ? null
+            : new ProjectTag(symbol, address.Value, format.Value, writable.Value, description);
+    }
+
+    private static string? Shape(PlcAddress address) => AddressRules.IsServedByLink(address.Area)
+        ? null
+        : $"{address}: the panel link serves only I, Q, M, V and SM";
+
+    private static string FitHint(DisplayFormat format) => format switch
+    {
+        DisplayFormat.Bool => "bool is for bits",
+        DisplayFormat.Float => "float is for double words (VD, MD)",
+        _ => $"{JsonWords.Of(format)} is for bytes, words and double words; use bool for a bit",
+    };
+}
