@@ -33,7 +33,17 @@ public sealed partial class PollingEngine
                 continue;
             }
 
-            await ExecuteWriteAsync(pending, cancellationToken).ConfigureAwait(false);
+            try
+            {
+                await ExecuteWriteAsync(pending, cancellationToken).ConfigureAwait(false);
+            }
+            catch (Exception exception) when (exception is not OperationCanceledException || !cancellationToken.IsCancellationRequested)
+            {
+                // A bug of ours must not leave the caller waiting forever: the write still gets an outcome.
+                _logger.Error(exception, "Write {Request} broke the engine's own handling", pending.Request.ToString());
+                Finish(pending, WriteLog.Unknown, new WriteOutcome.Failed($"internal error: {exception.Message}", WriteFailureKind.UnexpectedReply));
+            }
+
             done++;
         }
 
@@ -50,7 +60,7 @@ public sealed partial class PollingEngine
             return;
         }
 
-        PlcResponse response;
+        PlcResponse? response;
         try
         {
             response = await _link.ExchangeAsync(plcRequest, cancellationToken).ConfigureAwait(false);
@@ -94,6 +104,11 @@ public sealed partial class PollingEngine
 
     private void Finish(PendingWrite pending, string oldValue, WriteOutcome outcome)
     {
+        if (pending.Task.IsCompleted)
+        {
+            return;
+        }
+
         WriteLog.Record(_logger, pending.Request, oldValue, outcome);
         pending.Complete(outcome);
     }

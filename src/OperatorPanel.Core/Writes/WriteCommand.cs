@@ -49,7 +49,7 @@ internal static class WriteCommand
     /// Judges the reply. <paramref name="readBackBytes"/> receives the bytes the PLC now holds from the address's first
     /// byte (the whole byte for a bit), for the value store; default when the reply carried none.
     /// </summary>
-    public static WriteOutcome Interpret(WriteRequest request, PlcResponse response, out ImmutableArray<byte> readBackBytes)
+    public static WriteOutcome Interpret(WriteRequest request, PlcResponse? response, out ImmutableArray<byte> readBackBytes)
     {
         ArgumentNullException.ThrowIfNull(request);
         readBackBytes = default;
@@ -61,6 +61,8 @@ internal static class WriteCommand
             case WriteBitResponse bitReply when request.BitValue is not null:
                 readBackBytes = [bitReply.ReadBack];
                 return Judge(request.Value, ValueStore.Extract(request.Address, [bitReply.ReadBack]));
+            case null:
+                return new WriteOutcome.Failed($"the link returned no reply object for a write to {request.Station}", WriteFailureKind.UnexpectedReply);
             case ErrorResponse refused:
                 return new WriteOutcome.Failed($"{request.Station} refused the write: {refused.Error}", WriteFailureKind.RefusedByPlc);
             default:

@@ -21,16 +21,16 @@ internal static class WriteLog
         {
             case WriteOutcome.Confirmed:
                 logger.Information(
-                    "Write station {Station} {Address}: {OldValue} -> {NewValue} confirmed", station, address, oldValue, newValue);
+                    "Write station {Station} {Address:l}: {OldValue:l} -> {NewValue:l} confirmed", station, address, oldValue, newValue);
                 break;
             case WriteOutcome.ReadBackMismatch mismatch:
                 logger.Warning(
-                    "Write station {Station} {Address}: {OldValue} -> {NewValue} read back {ReadBack}",
+                    "Write station {Station} {Address:l}: {OldValue:l} -> {NewValue:l} read back {ReadBack:l}",
                     station, address, oldValue, newValue, Format(request.Address, mismatch.ReadBack));
                 break;
             case WriteOutcome.Failed failed:
                 logger.Warning(
-                    "Write station {Station} {Address}: {OldValue} -> {NewValue} failed ({Kind}): {Reason}",
+                    "Write station {Station} {Address:l}: {OldValue:l} -> {NewValue:l} failed ({Kind}): {Reason:l}",
                     station, address, oldValue, newValue, failed.Kind, failed.Reason);
                 break;
             default:

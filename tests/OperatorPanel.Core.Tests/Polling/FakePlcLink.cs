@@ -28,6 +28,9 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
     /// <summary>Stations whose program overwrites the panel's writes at once: the write is acknowledged, memory unchanged.</summary>
     public HashSet<Station> IgnoresWrites { get; } = [];
 
+    /// <summary>Stations whose requests a buggy link answers with a null reply object.</summary>
+    public HashSet<Station> RepliesWithNull { get; } = [];
+
     public IReadOnlyList<PlcRequest> Requests
     {
         get { lock (_lock) { return [.. _log.Select(e => e.Request)]; } }
@@ -95,6 +98,11 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
         if (exception is not null)
         {
             throw exception;
+        }
+
+        if (RepliesWithNull.Contains(request.Station))
+        {
+            return Task.FromResult<PlcResponse>(null!);
         }
 
         return Task.FromResult(refusal != ProtocolError.None ? Error(request, refusal) : Serve(request));
