@@ -1,0 +1,12 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+
+namespace OperatorPanel.Core.Polling;
+
+/// <summary>One READ exchange of a poll cycle: up to 8 blocks of one station, read in item order.</summary>
+public sealed record PollFrame(Station Station, ImmutableArray<ReadItem> Items)
+{
+    /// <summary>Bytes in the reply: the lengths of all items.</summary>
+    public int DataBytes => Items.Sum(i => i.Length);
+}

@@ -1,0 +1,16 @@
+namespace OperatorPanel.Core.Polling;
+
+public enum StationState
+{
+    /// <summary>Nothing sent to it yet.</summary>
+    Unknown,
+
+    /// <summary>Its last exchange got a valid reply (an error reply included: it is on the bus and answering).</summary>
+    Online,
+
+    /// <summary>
+    /// Its last exchange got no answer (timeout, no answer after retries, port unavailable) or the link threw an
+    /// unexpected exception. It is still tried once per cycle.
+    /// </summary>
+    Offline,
+}

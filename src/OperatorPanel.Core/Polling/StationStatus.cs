@@ -1,0 +1,19 @@
+using OperatorPanel.Core.Link;
+
+namespace OperatorPanel.Core.Polling;
+
+/// <summary>What the engine knows about one station's link, for the status bar and diagnostics.</summary>
+/// <param name="Station">The station.</param>
+/// <param name="State">Online, offline, or unknown before the first exchange.</param>
+/// <param name="LastError">The latest failure or refusal, kept after recovery so the user can read it; null if none yet.</param>
+/// <param name="ConsecutiveFailures">Exchanges without a valid reply since the last one that had one.</param>
+/// <param name="LastReplyAt">Time of the last valid reply.</param>
+public sealed record StationStatus(
+    Station Station,
+    StationState State,
+    string? LastError,
+    int ConsecutiveFailures,
+    DateTimeOffset? LastReplyAt)
+{
+    public static StationStatus Initial(Station station) => new(station, StationState.Unknown, null, 0, null);
+}

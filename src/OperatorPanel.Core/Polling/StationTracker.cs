@@ -1,0 +1,99 @@
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Transport;
+using Serilog;
+
+namespace OperatorPanel.Core.Polling;
+
+/// <summary>
+/// Per-station link state. Every failure is logged: at Warning when the station goes offline or the error text
+/// changes, at Debug when the same failure repeats cycle after cycle (an unplugged PLC must not flood the log).
+/// </summary>
+internal sealed class StationTracker(TimeProvider time, ILogger logger)
+{
+    private readonly Lock _lock = new();
+    private readonly Dictionary<Station, StationStatus> _statuses = [];
+
+    public StationStatus Get(Station station)
+    {
+        lock (_lock)
+        {
+            return _statuses.GetValueOrDefault(station) ?? StationStatus.Initial(station);
+        }
+    }
+
+    /// <summary>A valid reply came; <paramref name="refusal"/> is set when it was an error reply.</summary>
+    public void RecordReply(Station station, string? refusal = null)
+    {
+        var before = Get(station);
+        var after = before with
+        {
+            State = StationState.Online,
+            LastError = refusal ?? before.LastError,
+            ConsecutiveFailures = 0,
+            LastReplyAt = time.GetUtcNow(),
+        };
+        Store(after);
+        if (before.State == StationState.Offline)
+        {
+            logger.Information("{Station} is back online", station.Address);
+        }
+
+        if (refusal is not null && refusal != before.LastError)
+        {
+            logger.Warning("{Station} refused a request: {Error}", station.Address, refusal);
+        }
+    }
+
+    /// <summary>
+    /// Records a failed exchange and returns its message and whether the station is now offline, in which case the
+    /// cycle skips the station's remaining frames so it costs at most one timeout per cycle.
+    /// </summary>
+    public (string Message, bool Offline) RecordFailure(Station station, Exception exception)
+    {
+        var (message, offline) = exception switch
+        {
+            PlcCommunicationException { Kind: PlcErrorKind.NoAnswer or PlcErrorKind.Timeout or PlcErrorKind.PortUnavailable } e =>
+                ($"{e.Kind}: {e.Message}", true),
+            PlcCommunicationException e => ($"{e.Kind}: {e.Message}", false),
+            _ => ($"link error ({exception.GetType().Name}): {exception.Message}", true),
+        };
+        var before = Get(station);
+        var after = before with
+        {
+            State = offline ? StationState.Offline : before.State,
+            LastError = message,
+            ConsecutiveFailures = before.ConsecutiveFailures + 1,
+        };
+        Store(after);
+        if (exception is not PlcCommunicationException)
+        {
+            logger.Error(exception, "{Station}: unexpected link exception, polling continues", station.Address);
+        }
+        else if (after.State != before.State || message != before.LastError)
+        {
+            logger.Warning("{Station}: {Error} ({State})", station.Address, message, after.State);
+        }
+        else
+        {
+            logger.Debug("{Station}: {Error} again ({Failures} in a row)", station.Address, message, after.ConsecutiveFailures);
+        }
+
+        return (message, offline);
+    }
+
+    /// <summary>A reply came but did not fit the request; the station is answering, so it stays as it was.</summary>
+    public void RecordBadReply(Station station, string message)
+    {
+        var before = Get(station);
+        Store(before with { LastError = message, ConsecutiveFailures = before.ConsecutiveFailures + 1 });
+        logger.Warning("{Station}: {Error}", station.Address, message);
+    }
+
+    private void Store(StationStatus status)
+    {
+        lock (_lock)
+        {
+            _statuses[status.Station] = status;
+        }
+    }
+}

@@ -1,0 +1,7 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Link;
+
+namespace OperatorPanel.Core.Polling;
+
+/// <summary>One address whose value or quality changed; published to subscribers in a batch per cycle or write.</summary>
+public sealed record ValueChange(Station Station, PlcAddress Address, PolledValue Previous, PolledValue Current);

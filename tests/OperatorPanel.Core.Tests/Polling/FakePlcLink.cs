@@ -1,0 +1,153 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+
+namespace OperatorPanel.Core.Tests.Polling;
+
+/// <summary>
+/// A hand-written <see cref="IPlcLink"/> serving requests from in-memory areas per station (256 bytes each, I not
+/// writable), like the handler would. Can throw, refuse, ignore writes, take time on the test clock, and records
+/// every request with the clock time it was sent.
+/// </summary>
+internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
+{
+    public const int AreaSize = 256;
+
+    private readonly Lock _lock = new();
+    private readonly Dictionary<(Station, ProtocolArea), byte[]> _memory = [];
+    private readonly Dictionary<Station, Exception> _throws = [];
+    private readonly Dictionary<Station, ProtocolError> _refusals = [];
+    private readonly List<(PlcRequest Request, DateTimeOffset At)> _log = [];
+
+    /// <summary>Clock time each exchange takes (the clock is advanced before the reply).</summary>
+    public TimeSpan ExchangeDuration { get; set; }
+
+    /// <summary>Called with each request before it is served, e.g. to queue a write in the middle of a cycle.</summary>
+    public Action<PlcRequest>? OnExchange { get; set; }
+
+    /// <summary>Stations whose program overwrites the panel's writes at once: the write is acknowledged, memory unchanged.</summary>
+    public HashSet<Station> IgnoresWrites { get; } = [];
+
+    /// <summary>Stations whose requests a buggy link answers with a null reply object.</summary>
+    public HashSet<Station> RepliesWithNull { get; } = [];
+
+    public IReadOnlyList<PlcRequest> Requests
+    {
+        get { lock (_lock) { return [.. _log.Select(e => e.Request)]; } }
+    }
+
+    public IReadOnlyList<DateTimeOffset> RequestTimes
+    {
+        get { lock (_lock) { return [.. _log.Select(e => e.At)]; } }
+    }
+
+    public int ExchangesWith(Station station) => Requests.Count(r => r.Station == station);
+
+    public void Set(Station station, ProtocolArea area, int offset, params byte[] bytes) =>
+        bytes.CopyTo(Memory(station, area), offset);
+
+    public byte[] Memory(Station station, ProtocolArea area)
+    {
+        lock (_lock)
+        {
+            if (!_memory.TryGetValue((station, area), out var bytes))
+            {
+                bytes = new byte[AreaSize];
+                _memory[(station, area)] = bytes;
+            }
+
+            return bytes;
+        }
+    }
+
+    /// <summary>Every request to the station throws <paramref name="exception"/> (synchronously, as a buggy transport might); null stops it.</summary>
+    public void Throw(Station station, Exception? exception)
+    {
+        lock (_lock)
+        {
+            if (exception is null) { _throws.Remove(station); } else { _throws[station] = exception; }
+        }
+    }
+
+    /// <summary>Every request to the station gets an error reply; null stops it.</summary>
+    public void Refuse(Station station, ProtocolError? error)
+    {
+        lock (_lock)
+        {
+            if (error is { } e) { _refusals[station] = e; } else { _refusals.Remove(station); }
+        }
+    }
+
+    public Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
+    {
+        lock (_lock) { _log.Add((request, clock.GetUtcNow())); }
+        OnExchange?.Invoke(request);
+        if (ExchangeDuration > TimeSpan.Zero)
+        {
+            clock.Advance(ExchangeDuration);
+        }
+
+        Exception? exception;
+        ProtocolError refusal;
+        lock (_lock)
+        {
+            exception = _throws.GetValueOrDefault(request.Station);
+            refusal = _refusals.GetValueOrDefault(request.Station);
+        }
+
+        if (exception is not null)
+        {
+            throw exception;
+        }
+
+        if (RepliesWithNull.Contains(request.Station))
+        {
+            return Task.FromResult<PlcResponse>(null!);
+        }
+
+        return Task.FromResult(refusal != ProtocolError.None ? Error(request, refusal) : Serve(request));
+    }
+
+    public LinkStatistics StatisticsFor(Station station) => LinkStatistics.Empty;
+
+    public bool IsOnline(Station station) => true;
+
+    private static ErrorResponse Error(PlcRequest request, ProtocolError error) => new(request.Station, request.Sequence, request.Command, error);
+
+    private PlcResponse Serve(PlcRequest request)
+    {
+        switch (request)
+        {
+            case ReadRequest read:
+                if (read.Items.Any(i => i.Offset + i.Length > AreaSize))
+                {
+                    return Error(request, ProtocolError.AddressOutOfRange);
+                }
+
+                return new ReadResponse(read.Station, read.Sequence, [.. read.Items.SelectMany(i => Memory(read.Station, i.Area).Skip(i.Offset).Take(i.Length))]);
+            case WriteBlockRequest write:
+                if (write.Area == ProtocolArea.I)
+                {
+                    return Error(request, ProtocolError.NotWritable);
+                }
+
+                var memory = Memory(write.Station, write.Area);
+                if (!IgnoresWrites.Contains(write.Station))
+                {
+                    write.Data.CopyTo(memory, write.Offset);
+                }
+
+                return new WriteBlockResponse(write.Station, write.Sequence, [.. memory.Skip(write.Offset).Take(write.Data.Length)]);
+            case WriteBitRequest bit:
+                var bytes = Memory(bit.Station, bit.Area);
+                if (!IgnoresWrites.Contains(bit.Station))
+                {
+                    bytes[bit.Offset] = (byte)(bit.Value ? bytes[bit.Offset] | (1 << bit.Bit) : bytes[bit.Offset] & ~(1 << bit.Bit));
+                }
+
+                return new WriteBitResponse(bit.Station, bit.Sequence, bytes[bit.Offset]);
+            default:
+                return Error(request, ProtocolError.UnknownCommand);
+        }
+    }
+}
