@@ -1,5 +1,6 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Cpu;
 
 namespace OperatorPanel.Core.Projects;

@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Text.Json;
+using OperatorPanel.Core.Polling;
 
 namespace OperatorPanel.Core.Projects;
 

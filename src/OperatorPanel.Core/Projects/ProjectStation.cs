@@ -1,4 +1,5 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;

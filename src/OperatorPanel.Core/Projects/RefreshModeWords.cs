@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Polling;
 namespace OperatorPanel.Core.Projects;
 
 /// <summary>

@@ -1,6 +1,8 @@
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
 

@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Projects;
@@ -32,7 +33,7 @@ public sealed class StarterProjectTests
         var station = StarterProject.Create("Line", CpuProfiles.For(CpuModel.Cpu226), new Station(5), "/dev/ttyUSB0").Stations[0];
 
         station.Inputs.Should().HaveCount(24);
-        station.Inputs[^1].Should().Be(new IoSymbol("Input_2_7", Addressing.PlcAddress.Parse("I2.7"), "Local input I2.7"));
+        station.Inputs[^1].Should().Be(new IoSymbol("Input_2_7", PlcAddress.Parse("I2.7"), "Local input I2.7"));
         station.Outputs.Should().HaveCount(16);
         station.Outputs[^1].Address.ToString().Should().Be("Q1.7");
         station.Address.Address.Should().Be(5);

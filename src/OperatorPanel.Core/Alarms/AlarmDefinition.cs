@@ -1,6 +1,6 @@
 using OperatorPanel.Core.Addressing;
 
-namespace OperatorPanel.Core.Projects;
+namespace OperatorPanel.Core.Alarms;
 
 /// <summary>
 /// A message shown while a flag bit in the PLC is set (seed 000 §7, wizard step 4: "texts of messages, which will be

@@ -1,4 +1,4 @@
-namespace OperatorPanel.Core.Projects;
+namespace OperatorPanel.Core.Alarms;
 
 /// <summary>How serious an alarm is; the alarm window sorts and colours by it.</summary>
 public enum AlarmClass
