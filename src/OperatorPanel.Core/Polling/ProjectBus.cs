@@ -1,0 +1,36 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.Core.Polling;
+
+/// <summary>
+/// The stations of a project that share one serial port: one RS-485 bus, hence one link and one polling engine.
+/// The project file guarantees they share line settings and have distinct station addresses.
+/// </summary>
+public sealed record ProjectBus(SerialSettings Serial, ImmutableArray<ProjectStation> Stations)
+{
+    /// <summary>The project's stations grouped by port, in the order the ports first appear.</summary>
+    public static ImmutableArray<ProjectBus> Of(PanelProject project)
+    {
+        ArgumentNullException.ThrowIfNull(project);
+        return [.. project.Stations
+            .GroupBy(s => s.Link.PortName, StringComparer.OrdinalIgnoreCase)
+            .Select(g => new ProjectBus(g.First().Link, [.. g]))];
+    }
+
+    /// <summary>Everything the panel shows of these stations: inputs, outputs, tags and alarm flags.</summary>
+    public IEnumerable<WatchedItem> WatchedItems() =>
+        Stations.SelectMany(s =>
+            s.Inputs.Select(i => i.Address)
+                .Concat(s.Outputs.Select(o => o.Address))
+                .Concat(s.Tags.Select(t => t.Address))
+                .Concat(s.Alarms.Select(a => a.Flag))
+                .Select(address => new WatchedItem(s.Address, address)));
+
+    public PollPlan Plan(PollCostModel? costModel = null) =>
+        PollPlanner.Build(WatchedItems(), Stations.ToDictionary(s => s.Address, s => s.Cpu), costModel);
+
+    public ProjectStation? StationAt(Station address) => Stations.FirstOrDefault(s => s.Address == address);
+}
