@@ -8,25 +8,9 @@ namespace OperatorPanel.Core.Projects;
 /// <summary>Reads a station's <c>alarms</c>: a flag bit, its text, class and whether it must be acknowledged.</summary>
 internal static class AlarmReader
 {
-    public static ImmutableArray<AlarmDefinition>? ReadAll(JsonFields station, CpuProfile? cpu, EntryRegistry registry)
-    {
-        var elements = station.Array("alarms", required: false);
-        if (elements is null)
+    public static ImmutableArray<AlarmDefinition>? ReadAll(JsonFields station, CpuProfile? cpu, EntryRegistry registry) =>
+        station.Entries("alarms", entry =>
         {
-            return null;
-        }
-
-        var alarms = new List<AlarmDefinition>();
-        var complete = true;
-        foreach (var (element, path) in elements)
-        {
-            var entry = JsonFields.Open(element, path, station.Problems);
-            if (entry is null)
-            {
-                complete = false;
-                continue;
-            }
-
             entry.ReportUnknown("flag", "text", "class", "acknowledgementRequired");
             var flag = AddressReader.Read(entry, "flag", cpu, Shape);
             if (flag is { } f && !registry.ClaimAddress(entry, "flag", "alarms", f))
@@ -43,17 +27,10 @@ internal static class AlarmReader
 
             var alarmClass = entry.Word("class", AlarmClass.Fault);
             var acknowledge = entry.Bool("acknowledgementRequired", fallback: true);
-            if (flag is null || text is null || alarmClass is null || acknowledge is null)
-            {
-                complete = false;
-                continue;
-            }
-
-            alarms.Add(new AlarmDefinition(flag.Value, text, alarmClass.Value, acknowledge.Value));
-        }
-
-        return complete ? [.. alarms] : null;
-    }
+            return flag is null || text is null || alarmClass is null || acknowledge is null
+                ? null
+                : new AlarmDefinition(flag.Value, text, alarmClass.Value, acknowledge.Value);
+        });
 
     private static string? Shape(PlcAddress address)
     {

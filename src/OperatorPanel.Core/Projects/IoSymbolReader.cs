@@ -9,24 +9,9 @@ internal static class IoSymbolReader
 {
     public static ImmutableArray<IoSymbol>? ReadAll(JsonFields station, string list, MemoryArea area, CpuProfile? cpu, EntryRegistry registry)
     {
-        var elements = station.Array(list, required: false);
-        if (elements is null)
-        {
-            return null;
-        }
-
         var noun = area == MemoryArea.I ? "an input is an I bit such as I0.0" : "an output is a Q bit such as Q0.0";
-        var symbols = new List<IoSymbol>();
-        var complete = true;
-        foreach (var (element, path) in elements)
+        return station.Entries(list, entry =>
         {
-            var entry = JsonFields.Open(element, path, station.Problems);
-            if (entry is null)
-            {
-                complete = false;
-                continue;
-            }
-
             entry.ReportUnknown("symbol", "address", "description");
             var symbol = registry.ClaimSymbol(entry);
             var address = AddressReader.Read(entry, "address", cpu, a => a.Area == area && a.Width == AccessWidth.Bit ? null : $"{noun}, not {a}");
@@ -36,15 +21,7 @@ internal static class IoSymbolReader
                 address = null;
             }
 
-            if (symbol is null || address is null || description is null)
-            {
-                complete = false;
-                continue;
-            }
-
-            symbols.Add(new IoSymbol(symbol, address.Value, description));
-        }
-
-        return complete ? [.. symbols] : null;
+            return symbol is null || address is null || description is null ? null : new IoSymbol(symbol, address.Value, description);
+        });
     }
 }

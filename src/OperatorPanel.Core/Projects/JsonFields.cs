@@ -1,3 +1,4 @@
+using System.Collections.Immutable;
 using System.Diagnostics.CodeAnalysis;
 using System.Text.Json;
 
@@ -138,6 +139,35 @@ internal sealed class JsonFields
         TryValue(name, required: true, out var value) ? Open(value, At(name), _problems) : null;
 
     /// <summary>An array property with each element's path; a missing optional array is empty.</summary>
+    /// <summary>
+    /// Reads an optional array of objects with <paramref name="read"/>, one entry at a time, so every entry's problems
+    /// are reported. Null when the array is missing or malformed, or when any entry had a problem.
+    /// </summary>
+    public ImmutableArray<T>? Entries<T>(string name, Func<JsonFields, T?> read)
+        where T : class
+    {
+        var elements = Array(name, required: false);
+        if (elements is null)
+        {
+            return null;
+        }
+
+        var entries = new List<T>();
+        var complete = true;
+        foreach (var (element, path) in elements)
+        {
+            var entry = Open(element, path, _problems);
+            var value = entry is null ? null : read(entry);
+            complete &= value is not null;
+            if (value is not null)
+            {
+                entries.Add(value);
+            }
+        }
+
+        return complete ? [.. entries] : null;
+    }
+
     public IReadOnlyList<(JsonElement Element, string Path)>? Array(string name, bool required)
     {
         if (!TryValue(name, required, out var value))

@@ -10,37 +10,11 @@ namespace OperatorPanel.Core.Projects;
 /// </summary>
 internal static class TagReader
 {
-    public static ImmutableArray<ProjectTag>? ReadAll(JsonFields station, CpuProfile? cpu, EntryRegistry registry)
+    public static ImmutableArray<ProjectTag>? ReadAll(JsonFields station, CpuProfile? cpu, EntryRegistry registry) =>
+        station.Entries("tags", entry => Read(entry, cpu, registry));
+
+    private static ProjectTag? Read(JsonFields entry, CpuProfile? cpu, EntryRegistry registry)
     {
-        var elements = station.Array("tags", required: false);
-        if (elements is null)
-        {
-            return null;
-        }
-
-        var tags = new List<ProjectTag>();
-        var complete = true;
-        foreach (var (element, path) in elements)
-        {
-            var tag = Read(element, path, station.Problems, cpu, registry);
-            complete &= tag is not null;
-            if (tag is not null)
-            {
-                tags.Add(tag);
-            }
-        }
-
-        return complete ? [.. tags] : null;
-    }
-
-    private static ProjectTag? Read(System.Text.Json.JsonElement element, string path, ProjectProblems problems, CpuProfile? cpu, EntryRegistry registry)
-    {
-        var entry = JsonFields.Open(element, path, problems);
-        if (entry is null)
-        {
-            return null;
-        }
-
         entry.ReportUnknown("symbol", "address", "format", "writable", "description");
         var symbol = registry.ClaimSymbol(entry);
         var writable = entry.Bool("writable", fallback: false);
