@@ -1,3 +1,4 @@
+using System.Text.Encodings.Web;
 using System.Text.Json;
 using System.Text.Json.Serialization;
 using Serilog;
@@ -9,6 +10,8 @@ internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, I
 {
     private static readonly JsonSerializerOptions JsonLineOptions = new()
     {
+        // Lamps (● ○) stay readable; the stream is never embedded in HTML.
+        Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping,
         PropertyNamingPolicy = JsonNamingPolicy.CamelCase,
         Converters = { new JsonStringEnumConverter() },
     };

@@ -35,6 +35,7 @@ internal static class OpanelApp
         yield return WriteCommand.Create(context);
         yield return IdentifyCommand.Create(context);
         yield return SimulateCommand.Create(context);
+        yield return WatchCommand.Create(context);
     }
 }
 
