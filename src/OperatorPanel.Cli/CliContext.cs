@@ -1,3 +1,4 @@
+using System.Text.Encodings.Web;
 using System.Text.Json;
 using System.Text.Json.Serialization;
 using Serilog;
@@ -7,6 +8,14 @@ namespace OperatorPanel.Cli;
 /// <summary>What every verb gets: where to print, whether to print JSON, and the log.</summary>
 internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, ILogger Log)
 {
+    private static readonly JsonSerializerOptions JsonLineOptions = new()
+    {
+        // Lamps (● ○) stay readable; the stream is never embedded in HTML.
+        Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping,
+        PropertyNamingPolicy = JsonNamingPolicy.CamelCase,
+        Converters = { new JsonStringEnumConverter() },
+    };
+
     private static readonly JsonSerializerOptions JsonOptions = new()
     {
         WriteIndented = true,
@@ -14,7 +23,17 @@ internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, I
         Converters = { new JsonStringEnumConverter() },
     };
 
+    /// <summary>True when stdout is the console itself, not a pipe, a file or a test's writer: live views redraw in place.</summary>
+    public bool IsTerminal { get; init; }
+
     public void WriteJson<T>(T value) => Out.WriteLine(JsonSerializer.Serialize(value, JsonOptions));
+
+    /// <summary>One compact JSON object on one line (JSON lines), flushed, for streams such as watch and simulate.</summary>
+    public void WriteJsonLine<T>(T value)
+    {
+        Out.WriteLine(JsonSerializer.Serialize(value, JsonLineOptions));
+        Out.Flush();
+    }
 
     /// <summary>Reports bad input: a JSON object on stdout with --json, otherwise the message on stderr.</summary>
     public int Fail(int exitCode, string message)

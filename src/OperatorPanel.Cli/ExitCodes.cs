@@ -5,9 +5,12 @@ internal static class ExitCodes
 {
     public const int Ok = 0;
 
-    /// <summary>Bad input: a wrong address, an unknown CPU, a project file with problems, a bad option.</summary>
+    /// <summary>
+    /// Bad input: a wrong address or value, an unknown CPU, a project file with problems, a bad option; also a request
+    /// the PLC refused as not writable or out of range, and a CPU that differs from --cpu (identify).
+    /// </summary>
     public const int BadInput = 1;
 
-    /// <summary>The link to the PLC failed: port unavailable, no answer, a negative reply.</summary>
+    /// <summary>The link to the PLC failed: port unavailable, no answer, a corrupt reply, a write read back differently.</summary>
     public const int LinkFailure = 2;
 }

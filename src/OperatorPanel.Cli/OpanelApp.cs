@@ -20,7 +20,8 @@ internal static class OpanelApp
         }
 
         var parse = root.Parse(args);
-        var invocation = new InvocationConfiguration { Output = output, Error = error };
+        // Long-running verbs (simulate, watch) handle Ctrl+C and SIGTERM themselves (Hosting/StopSignals) to print a summary.
+        var invocation = new InvocationConfiguration { Output = output, Error = error, ProcessTerminationTimeout = null };
         return parse.Invoke(invocation);
     }
 
@@ -30,6 +31,11 @@ internal static class OpanelApp
         yield return CpusCommand.Create(context);
         yield return AddressCommand.Create(context);
         yield return ProjectCommand.Create(context);
+        yield return ReadCommand.Create(context);
+        yield return WriteCommand.Create(context);
+        yield return IdentifyCommand.Create(context);
+        yield return SimulateCommand.Create(context);
+        yield return WatchCommand.Create(context);
     }
 }
 
@@ -69,6 +75,9 @@ internal sealed class GlobalOptions
     public CliContext CreateContext(ParseResult parse, TextWriter output, TextWriter error)
     {
         var log = CliLogging.Create(parse.GetValue(_logLevel), parse.GetValue(_consoleLevel), parse.GetValue(_logDir));
-        return new CliContext(output, error, parse.GetValue(_json), log);
+        return new CliContext(output, error, parse.GetValue(_json), log)
+        {
+            IsTerminal = ReferenceEquals(output, Console.Out) && !Console.IsOutputRedirected,
+        };
     }
 }

@@ -1,0 +1,58 @@
+using System.CommandLine;
+using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary><c>opanel identify --device DEV --station N [--cpu M]</c>: what the handler says about itself and its CPU.</summary>
+internal static class IdentifyCommand
+{
+    public static Command Create(Func<ParseResult, CliContext> context)
+    {
+        var link = new LinkOptionSet();
+        var command = new Command(
+            "identify",
+            "Ask a PLC's handler for protocol version, handler revision, the CPU it was generated for, SMB6, mode switch, scan times, "
+            + "write mask and reply delay; with --cpu, compare and print a mismatch line. "
+            + "Exit codes: 0 identified (and matching --cpu), 1 bad input or a CPU mismatch, 2 link failure");
+        link.AddTo(command);
+        command.SetAction(async (parse, cancellationToken) =>
+        {
+            var cli = context(parse);
+            if (!link.TryBind(parse, out var target, out var error))
+            {
+                return cli.Fail(ExitCodes.BadInput, error);
+            }
+
+            await using var session = LinkSession.Open(target, cli.Log);
+            PlcResponse response;
+            try
+            {
+                response = await session.Link.ExchangeAsync(new IdentifyRequest(target.Station, 1), cancellationToken);
+            }
+            catch (PlcCommunicationException ex)
+            {
+                return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: {ex.Kind}: {ex.Message}");
+            }
+
+            if (response is not IdentifyResponse identity)
+            {
+                return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: IDENTIFY answered with {response}");
+            }
+
+            var view = IdentifyView.From(target, identity);
+            if (cli.Json)
+            {
+                cli.WriteJson(view);
+            }
+            else
+            {
+                view.WriteText(cli.Out);
+            }
+
+            return view.CpuMismatch is null ? ExitCodes.Ok : ExitCodes.BadInput;
+        });
+        return command;
+    }
+}

@@ -1,0 +1,78 @@
+using System.CommandLine;
+using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Polling;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary><c>opanel read ADDR... --device DEV --station N</c>: one refresh of the given addresses, one line each.</summary>
+internal static class ReadCommand
+{
+    public static Command Create(Func<ParseResult, CliContext> context)
+    {
+        var addresses = new Argument<string[]>("address")
+        {
+            Description = "Addresses to read: I0.0, QB0, MW10, VD100, SMB28 ...",
+            Arity = ArgumentArity.OneOrMore,
+        };
+        var link = new LinkOptionSet();
+        var command = new Command(
+            "read",
+            "Read addresses from a PLC once and print address, value (unsigned decimal and hex; 0/1 for a bit) and quality. "
+            + "Exit codes: 0 read, 1 bad address or refused by the PLC, 2 link failure")
+        {
+            addresses,
+        };
+        link.AddTo(command);
+        command.SetAction(async (parse, cancellationToken) =>
+        {
+            var cli = context(parse);
+            if (!link.TryBind(parse, out var target, out var error))
+            {
+                return cli.Fail(ExitCodes.BadInput, error);
+            }
+
+            var parsed = new List<PlcAddress>();
+            foreach (var text in parse.GetValue(addresses) ?? [])
+            {
+                if (!AddressArguments.TryParse(text, target.Cpu, AddressUse.Read, out var address, out error))
+                {
+                    return cli.Fail(ExitCodes.BadInput, error);
+                }
+
+                parsed.Add(address);
+            }
+
+            return await ReadAsync(cli, target, parsed, cancellationToken);
+        });
+        return command;
+    }
+
+    private static async Task<int> ReadAsync(CliContext cli, LinkTarget target, List<PlcAddress> addresses, CancellationToken cancellationToken)
+    {
+        await using var session = LinkSession.Open(target, cli.Log);
+        await using var run = EngineRun.OnDemand(session.Link, PlanFor(target, addresses), cli.Log);
+        await run.Engine.RequestRefreshAsync(cancellationToken);
+        var status = run.Engine.GetStationStatus(target.Station);
+        if (status.State != StationState.Online)
+        {
+            return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: {status.LastError}");
+        }
+
+        var views = addresses.Distinct().Select(a => ReadValueView.From(a, run.Engine.TryGetValue(target.Station, a, out var v) ? v : null)).ToList();
+        if (cli.Json)
+        {
+            cli.WriteJson(views);
+        }
+        else
+        {
+            views.ForEach(v => v.WriteText(cli.Out));
+        }
+
+        return views.All(v => v.Quality == "good") ? ExitCodes.Ok : ExitCodes.BadInput;
+    }
+
+    internal static PollPlan PlanFor(LinkTarget target, IEnumerable<PlcAddress> addresses) => PollPlanner.Build(
+        addresses.Select(a => new WatchedItem(target.Station, a)),
+        target.Cpu is null ? null : new Dictionary<Core.Link.Station, Core.Cpu.CpuProfile> { [target.Station] = target.Cpu });
+}

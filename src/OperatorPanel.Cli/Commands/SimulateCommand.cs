@@ -1,0 +1,96 @@
+using System.CommandLine;
+using OperatorPanel.Cli.Hosting;
+using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Reference;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary>
+/// <c>opanel simulate --cpu M --station N [--station N2 ...] --device PATH</c>: simulated PLCs with the protocol handler on
+/// a real serial device (a USB-RS485 adapter, or one end of a socat pty pair), until Ctrl+C, SIGTERM or --duration.
+/// </summary>
+internal static class SimulateCommand
+{
+    public static Command Create(Func<ParseResult, CliContext> context)
+    {
+        var cpu = CpuOptions.Model();
+        var revision = CpuOptions.Revision();
+        var stations = new Option<int[]>("--station") { Description = "Station address to simulate, 1-126; repeat for several PLCs on the bus", Required = true };
+        var serial = new SerialOptionSet(withRadio: false);
+        var replyDelay = new Option<int>("--reply-delay") { Description = "Handler reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
+        var noProcess = new Option<bool>("--no-process") { Description = "Do not run the demo bottling process: memory stays as the panel writes it" };
+        var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
+        var command = new Command("simulate", "Serve simulated S7-200 PLCs running the protocol handler on a serial device. Exit codes: 0 stopped, 1 bad input, 2 port failure")
+        {
+            cpu, revision, stations, replyDelay, noProcess, duration,
+        };
+        serial.AddTo(command);
+        command.SetAction(async parse =>
+        {
+            var cli = context(parse);
+            if (!CpuOptions.TryResolve(parse.GetValue(cpu), parse.GetValue(revision), out var profile, out var error)
+                || !serial.TryBind(parse, null, out var settings, out error))
+            {
+                return cli.Fail(ExitCodes.BadInput, error);
+            }
+
+            var delay = parse.GetValue(replyDelay);
+            if (delay is < 1 or > 255)
+            {
+                return cli.Fail(ExitCodes.BadInput, $"reply delay {delay} ms is outside 1-255 (SMB34, timed interrupt 0)");
+            }
+
+            var configs = new List<HandlerConfig>();
+            foreach (var address in parse.GetValue(stations) ?? [])
+            {
+                if (!Station.TryCreate(address, out var station, out error))
+                {
+                    return cli.Fail(ExitCodes.BadInput, error);
+                }
+
+                if (configs.Any(c => c.Station == station))
+                {
+                    return cli.Fail(ExitCodes.BadInput, $"{station} is given twice; stations on one bus need distinct addresses");
+                }
+
+                configs.Add(new HandlerConfig(station, profile, replyDelayMs: (byte)delay));
+            }
+
+            var seconds = parse.GetValue(duration);
+            if (seconds is <= 0)
+            {
+                return cli.Fail(ExitCodes.BadInput, "--duration must be a positive number of seconds");
+            }
+
+            var line = SimulatedLine.Create(configs, runProcess: !parse.GetValue(noProcess));
+            return await ServeAsync(cli, line, settings, configs, seconds is { } s ? TimeSpan.FromSeconds(s) : null);
+        });
+        return command;
+    }
+
+    private static async Task<int> ServeAsync(CliContext cli, SimulatedLine line, SerialSettings settings, List<HandlerConfig> configs, TimeSpan? duration)
+    {
+        var serving = new SimulationView(configs, settings, line.Processes.Count > 0);
+        serving.WriteStart(cli);
+        await using var port = new SerialPortTransport(settings);
+        var host = line.HostOn(port, TimeProvider.System, cli.Log);
+        using var stop = new StopSignals(duration);
+        try
+        {
+            await host.RunAsync(stop.Token);
+        }
+        catch (OperationCanceledException) when (stop.Token.IsCancellationRequested)
+        {
+            // Ctrl+C, SIGTERM or the duration: the normal end of a simulation.
+        }
+        catch (PlcCommunicationException ex)
+        {
+            return cli.Fail(ExitCodes.LinkFailure, $"{settings.PortName}: {ex.Kind}: {ex.Message}");
+        }
+
+        serving.WriteSummary(cli, host.Replies, line.Bus.Ports.Sum(p => p.ReceivedFrames));
+        return ExitCodes.Ok;
+    }
+}

@@ -1,0 +1,44 @@
+using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Reference;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary>What <c>opanel simulate</c> says when it starts and when it stops (a JSON object each with --json).</summary>
+internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, string Port, string Line, int ReplyDelayMs, bool Process)
+{
+    public SimulationView(List<HandlerConfig> configs, SerialSettings settings, bool process)
+        : this(
+            configs[0].Cpu.DisplayName,
+            configs.Select(c => c.Station.Address).ToList(),
+            settings.PortName,
+            $"{settings.BaudRate} {settings.DataBits}{settings.Parity.ToString()[0]}1",
+            configs[0].ReplyDelayMs,
+            process)
+    {
+    }
+
+    public void WriteStart(CliContext cli)
+    {
+        if (cli.Json)
+        {
+            cli.WriteJsonLine(new { @event = "started", simulation = this });
+            return;
+        }
+
+        var stations = string.Join(", ", Stations);
+        cli.Out.WriteLine($"simulating {Cpu} at station{(Stations.Count == 1 ? string.Empty : "s")} {stations} on {Port} {Line}, "
+            + $"reply delay {ReplyDelayMs} ms, demo process {(Process ? "on" : "off")}; Ctrl+C to stop");
+        cli.Out.Flush();
+    }
+
+    public void WriteSummary(CliContext cli, int replies, int framesReceived)
+    {
+        if (cli.Json)
+        {
+            cli.WriteJsonLine(new { @event = "stopped", port = Port, framesReceived, framesAnswered = replies });
+            return;
+        }
+
+        cli.Out.WriteLine($"stopped serving {Port}: {framesReceived} frames received, {replies} answered");
+    }
+}

@@ -1,0 +1,85 @@
+using System.CommandLine;
+using OperatorPanel.Cli.Hosting;
+using OperatorPanel.Cli.Watch;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Projects;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary>
+/// <c>opanel watch PROJECT [--demo]</c>: the project's stations live in the terminal, over the project's serial ports or
+/// an in-process demo line that simulates every station with its own CPU and the demo process.
+/// </summary>
+internal static class WatchCommand
+{
+    /// <summary>Triggered projects are refreshed on request; the terminal view asks once a second.</summary>
+    private static readonly TimeSpan TriggeredInterval = TimeSpan.FromSeconds(1);
+
+    public static Command Create(Func<ParseResult, CliContext> context)
+    {
+        var file = new Argument<string>("project") { Description = "The .opproj project file" };
+        var demo = new Option<bool>("--demo") { Description = "Simulate every station in-process (its CPU, running the demo process) instead of opening the ports" };
+        var once = new Option<bool>("--once") { Description = "One full refresh, print it and exit" };
+        var cycles = new Option<int?>("--cycles") { Description = "Stop after this many full refreshes" };
+        var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
+        var command = new Command(
+            "watch",
+            "Show a project's stations live: link state and counters, inputs and outputs as lamps, tags, active alarms. "
+            + "Redraws in place on a terminal; appends a snapshot per refresh (--once, --cycles) or per second elsewhere; --json prints JSON lines. "
+            + "Exit codes: 0 done, 1 project problems or bad option, 2 every station offline at the end")
+        {
+            file, demo, once, cycles, duration,
+        };
+        command.SetAction(async parse =>
+        {
+            var cli = context(parse);
+            var path = parse.GetValue(file)!;
+            var load = ProjectFile.Load(path);
+            if (!load.Ok)
+            {
+                return cli.Fail(ExitCodes.BadInput, $"{path} has problems:{Environment.NewLine}" + string.Join(Environment.NewLine, load.Errors.Select(e => $"{path}: {e}")));
+            }
+
+            var limit = parse.GetValue(once) ? 1 : parse.GetValue(cycles);
+            var seconds = parse.GetValue(duration);
+            if (limit is <= 0 || seconds is <= 0)
+            {
+                return cli.Fail(ExitCodes.BadInput, "--cycles and --duration must be positive");
+            }
+
+            await using var session = WatchSession.Open(load.Project, parse.GetValue(demo), cli.Log);
+            using var stop = new StopSignals(seconds is { } s ? TimeSpan.FromSeconds(s) : null);
+            var last = await RunAsync(cli, session, limit, stop.Token);
+            return last.AllOffline ? ExitCodes.LinkFailure : ExitCodes.Ok;
+        });
+        return command;
+    }
+
+    private static async Task<WatchSnapshot> RunAsync(CliContext cli, WatchSession session, int? limit, CancellationToken stop)
+    {
+        var time = TimeProvider.System;
+        var output = new LiveOutput(cli, everyCycle: limit is not null, time);
+        long cycle = 0;
+        WatchSnapshot Snapshot() => SnapshotBuilder.Build(session, cycle, time.GetLocalNow());
+        try
+        {
+            while (cycle < (limit ?? long.MaxValue))
+            {
+                await session.RefreshAsync(stop);
+                cycle++;
+                output.CycleCompleted(Snapshot);
+                if (session.Project.Refresh.Mode == RefreshMode.OnDemand && cycle < (limit ?? long.MaxValue))
+                {
+                    await Task.Delay(TriggeredInterval, time, stop);
+                }
+            }
+        }
+        catch (OperationCanceledException) when (stop.IsCancellationRequested)
+        {
+            // Ctrl+C, SIGTERM or --duration: the normal end of an open-ended watch.
+        }
+
+        output.Finish(Snapshot);
+        return Snapshot();
+    }
+}

@@ -1,0 +1,31 @@
+using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+
+namespace OperatorPanel.Cli.Link;
+
+/// <summary>Addresses typed on the command line, checked before anything goes on the wire.</summary>
+internal static class AddressArguments
+{
+    /// <summary>
+    /// Parses <paramref name="text"/>: the link must serve its area, and with a known CPU it must exist there (and be
+    /// writable for <see cref="AddressUse.Write"/>).
+    /// </summary>
+    public static bool TryParse(string? text, CpuProfile? cpu, AddressUse use, out PlcAddress address, [NotNullWhen(false)] out string? error)
+    {
+        if (!PlcAddress.TryParse(text, out address, out var parseError))
+        {
+            error = parseError.Message;
+            return false;
+        }
+
+        if (!AddressRules.IsServedByLink(address.Area))
+        {
+            error = $"{address}: the panel link serves only I, Q, M, V and SM";
+            return false;
+        }
+
+        error = cpu is null ? null : AddressRules.Check(address, cpu, use)?.Message;
+        return error is null;
+    }
+}

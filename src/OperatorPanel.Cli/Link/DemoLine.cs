@@ -1,0 +1,56 @@
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Reference;
+using Serilog;
+
+namespace OperatorPanel.Cli.Link;
+
+/// <summary>
+/// The in-process demo line behind <c>--demo</c>: simulated PLCs running the demo process on one bus, served by a
+/// <see cref="Simulator.Hosting.SimulatedPlcHost"/> on real time behind an <see cref="InMemoryTransportPair"/>.
+/// The panel talks to <see cref="PanelSide"/> exactly as it would to a serial port.
+/// </summary>
+internal sealed class DemoLine : IAsyncDisposable
+{
+    /// <summary>The demo process starts this far in, so the first reply shows a running line with a bottle counted.</summary>
+    private static readonly TimeSpan WarmUp = TimeSpan.FromSeconds(2);
+
+    private readonly CancellationTokenSource _stop;
+    private readonly Task _host;
+
+    private DemoLine(ITransport panelSide, CancellationTokenSource stop, Task host)
+    {
+        PanelSide = panelSide;
+        _stop = stop;
+        _host = host;
+    }
+
+    public ITransport PanelSide { get; }
+
+    public static DemoLine Start(string portName, IEnumerable<(Station Station, CpuProfile Cpu)> stations, ILogger log)
+    {
+        var line = SimulatedLine.Create(stations.Select(s => new HandlerConfig(s.Station, s.Cpu)), runProcess: true);
+        line.WarmUp(WarmUp);
+        var pair = new InMemoryTransportPair(TimeProvider.System, $"{portName} (demo)", $"{portName} (demo bus)");
+        var host = line.HostOn(pair.BusSide, TimeProvider.System, log);
+        var stop = new CancellationTokenSource();
+        return new DemoLine(pair.PanelSide, stop, Task.Run(() => host.RunAsync(stop.Token)));
+    }
+
+    /// <summary>Stops the simulated stations; call before the panel side is closed, or the host sees an unplugged line.</summary>
+    public async ValueTask DisposeAsync()
+    {
+        await _stop.CancelAsync();
+        try
+        {
+            await _host;
+        }
+        catch (OperationCanceledException) when (_stop.IsCancellationRequested)
+        {
+            // The host ends by cancellation; that is the normal way out.
+        }
+
+        _stop.Dispose();
+    }
+}

@@ -1,0 +1,71 @@
+using System.CommandLine;
+using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Cli.Commands;
+using OperatorPanel.Core.Cpu;
+
+namespace OperatorPanel.Cli.Link;
+
+/// <summary>
+/// The options every link verb (read, write, identify) shares: the serial line, the station, --demo, and --cpu, which
+/// checks addresses before anything is sent and, with --demo, picks the simulated CPU (default 224).
+/// </summary>
+internal sealed class LinkOptionSet
+{
+    private const string DemoPort = "demo";
+    private readonly SerialOptionSet _serial = new(withRadio: true);
+
+    public Option<int> Station { get; } = new("--station")
+    {
+        Description = "RS-485 station address of the PLC, 1-126 (default 2, the S7-200 factory setting)",
+        DefaultValueFactory = _ => 2,
+    };
+
+    public Option<bool> Demo { get; } = new("--demo")
+    {
+        Description = "Talk to an in-process simulated PLC of --cpu running the demo bottling process (no hardware)",
+    };
+
+    public Option<string?> Cpu { get; } = new("--cpu")
+    {
+        Description = "CPU model 221, 222, 224, 224XP or 226: addresses are checked against it (with --demo: the simulated CPU, default 224)",
+    };
+
+    public Option<string?> Revision { get; } = CpuOptions.Revision();
+
+    public void AddTo(Command command)
+    {
+        _serial.AddTo(command);
+        command.Options.Add(Station);
+        command.Options.Add(Cpu);
+        command.Options.Add(Revision);
+        command.Options.Add(Demo);
+    }
+
+    public bool TryBind(ParseResult parse, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error)
+    {
+        target = null;
+        var demo = parse.GetValue(Demo);
+        if (demo && parse.GetValue(_serial.Device) is not null)
+        {
+            error = "--demo talks to the in-process simulated PLC; leave out --device";
+            return false;
+        }
+
+        if (!Core.Link.Station.TryCreate(parse.GetValue(Station), out var station, out error)
+            || !_serial.TryBind(parse, demo ? DemoPort : null, out var serial, out error))
+        {
+            return false;
+        }
+
+        CpuProfile? cpu = null;
+        var model = parse.GetValue(Cpu) ?? (demo ? "224" : null);
+        if (model is not null && !CpuOptions.TryResolve(model, parse.GetValue(Revision), out cpu, out error))
+        {
+            return false;
+        }
+
+        target = new LinkTarget(station, serial, cpu, demo);
+        error = null;
+        return true;
+    }
+}

@@ -1,0 +1,15 @@
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.Cli.Link;
+
+/// <summary>Where a link verb talks to: one station on a serial line, or on the in-process demo line.</summary>
+/// <param name="Station">The PLC's RS-485 station address.</param>
+/// <param name="Serial">The port and its Freeport settings; for the demo line only the name and timing matter.</param>
+/// <param name="Cpu">The station's CPU when known (--cpu, or the demo's); addresses are then checked against it.</param>
+/// <param name="Demo">True for the in-process simulated PLC.</param>
+internal sealed record LinkTarget(Station Station, SerialSettings Serial, CpuProfile? Cpu, bool Demo)
+{
+    public string Describe() => $"{Station} on {Serial.PortName}";
+}

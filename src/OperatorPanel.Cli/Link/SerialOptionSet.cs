@@ -1,0 +1,79 @@
+using System.CommandLine;
+using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.Cli.Link;
+
+/// <summary>--device, --baud, --parity, --data-bits (and --radio for the panel side): one serial line's settings.</summary>
+internal sealed class SerialOptionSet
+{
+    /// <summary>S7-200 Freeport rates (SMB30 bits 4-2; 57600 and 115200 need a Current CPU; docs/cpu-profiles.md).</summary>
+    private static readonly int[] FreeportRates = [1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200];
+
+    private readonly bool _withRadio;
+
+    public SerialOptionSet(bool withRadio) => _withRadio = withRadio;
+
+    public Option<string?> Device { get; } = new("--device")
+    {
+        Description = "Serial port: COM3 on Windows, /dev/ttyUSB0 or /dev/pts/N on Linux",
+    };
+
+    public Option<int> Baud { get; } = new("--baud") { Description = "Baud rate, a Freeport rate (default 9600)", DefaultValueFactory = _ => 9600 };
+
+    public Option<Parity> Parity { get; } = new("--parity") { Description = "none (default), even or odd", DefaultValueFactory = _ => Core.Transport.Parity.None };
+
+    public Option<int> DataBits { get; } = new("--data-bits") { Description = "7 or 8 (default 8); one stop bit always", DefaultValueFactory = _ => 8 };
+
+    public Option<bool> Radio { get; } = new("--radio") { Description = "The port is the 433 MHz radio module (longer timeouts, more retries)" };
+
+    public void AddTo(Command command)
+    {
+        command.Options.Add(Device);
+        command.Options.Add(Baud);
+        command.Options.Add(Parity);
+        command.Options.Add(DataBits);
+        if (_withRadio)
+        {
+            command.Options.Add(Radio);
+        }
+    }
+
+    /// <summary>The line settings; <paramref name="fallbackPort"/> names the port when --device is absent (the demo line).</summary>
+    public bool TryBind(ParseResult parse, string? fallbackPort, [NotNullWhen(true)] out SerialSettings? serial, [NotNullWhen(false)] out string? error)
+    {
+        serial = null;
+        var device = parse.GetValue(Device);
+        var port = string.IsNullOrWhiteSpace(device) ? fallbackPort : device.Trim();
+        if (port is null)
+        {
+            error = "give the serial port with --device (e.g. --device COM3 or --device /dev/ttyUSB0), or --demo for the simulated PLC";
+            return false;
+        }
+
+        var baud = parse.GetValue(Baud);
+        if (!FreeportRates.Contains(baud))
+        {
+            error = $"baud {baud} is not a Freeport rate; use one of {string.Join(", ", FreeportRates)}";
+            return false;
+        }
+
+        var dataBits = parse.GetValue(DataBits);
+        if (dataBits is not (7 or 8))
+        {
+            error = $"{dataBits} data bits: S7-200 Freeport sends 7 or 8";
+            return false;
+        }
+
+        serial = new SerialSettings
+        {
+            PortName = port,
+            BaudRate = baud,
+            Parity = parse.GetValue(Parity),
+            DataBits = dataBits,
+            Kind = _withRadio && parse.GetValue(Radio) ? LinkKind.RadioModule : LinkKind.Cable,
+        };
+        error = null;
+        return true;
+    }
+}

@@ -1,0 +1,72 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Values;
+
+namespace OperatorPanel.Cli.Watch;
+
+/// <summary>Reads the engines and links of a <see cref="WatchSession"/> into a <see cref="WatchSnapshot"/>.</summary>
+internal static class SnapshotBuilder
+{
+    public static WatchSnapshot Build(WatchSession session, long cycle, DateTimeOffset time)
+    {
+        var refresh = session.Project.Refresh;
+        var refreshText = refresh.Mode == RefreshMode.Continuous
+            ? $"continuous, at least {refresh.MinimumPeriod.TotalMilliseconds:0} ms apart"
+            : "triggered, one refresh a second";
+        var stations = session.Buses
+            .SelectMany(b => b.Bus.Stations.Select(s => Station(s, b.Engine.Engine, b.Link.Link)))
+            .ToList();
+        return new WatchSnapshot(session.Project.Name, refreshText, cycle, time, stations);
+    }
+
+    private static StationSnapshot Station(ProjectStation station, PollingEngine engine, PlcLink link)
+    {
+        var status = engine.GetStationStatus(station.Address);
+        var statistics = link.StatisticsFor(station.Address);
+        PolledValue? Value(PlcAddress address) => engine.TryGetValue(station.Address, address, out var v) && v.HasValue ? v : null;
+        return new StationSnapshot(
+            station.Name,
+            station.Address.Address,
+            station.Cpu.DisplayName,
+            $"{link.PortName} {station.Link.BaudRate} {station.Link.DataBits}{station.Link.Parity.ToString()[0]}1",
+            status.State.ToString().ToLowerInvariant(),
+            status.LastError,
+            new LinkView(statistics.Requests, statistics.Replies, statistics.Retries, statistics.Timeouts, statistics.RoundTripAverage?.TotalMilliseconds),
+            Lamps(station.Inputs, Value),
+            Lamps(station.Outputs, Value),
+            [.. station.Tags.Select(t => Tag(t, Value(t.Address), engine, station.Address))],
+            [.. station.Alarms.Where(a => Value(a.Flag)?.AsBit == true).Select(a => new AlarmRow(a.Flag.ToString(), a.Text, a.Class.ToString().ToLowerInvariant()))]);
+    }
+
+    private static List<LampByte> Lamps(IEnumerable<IoSymbol> symbols, Func<PlcAddress, PolledValue?> value) =>
+        [.. symbols
+            .GroupBy(s => s.Address.ByteOffset)
+            .OrderBy(g => g.Key)
+            .Select(g =>
+            {
+                var bits = g.OrderBy(s => s.Address.Bit).Select(s => new LampBit(s.Address.ToString(), s.Symbol, value(s.Address)?.AsBit)).ToList();
+                var first = g.First().Address;
+                var lamps = new char[8];
+                for (var bit = 0; bit < 8; bit++)
+                {
+                    var symbol = g.FirstOrDefault(s => s.Address.Bit == bit);
+                    lamps[bit] = symbol is null ? LampByte.Unused : value(symbol.Address)?.AsBit switch
+                    {
+                        true => LampByte.On,
+                        false => LampByte.Off,
+                        null => LampByte.Unknown,
+                    };
+                }
+
+                return new LampByte(PlcAddress.ForBytes(first.Area, first.ByteOffset, AccessWidth.Byte).ToString(), new string(lamps), bits);
+            })];
+
+    private static TagRow Tag(ProjectTag tag, PolledValue? value, PollingEngine engine, Station station)
+    {
+        var quality = engine.TryGetValue(station, tag.Address, out var polled) ? polled.Quality.ToString().ToLowerInvariant() : "bad";
+        var text = value is null ? "-" : ValueFormatter.Format(value.Raw.AsSpan(), tag.Address.Width, tag.Format);
+        return new TagRow(tag.Symbol, tag.Address.ToString(), text, quality);
+    }
+}

@@ -1,0 +1,44 @@
+using System.Text.Json;
+
+namespace OperatorPanel.Cli.Tests.Commands;
+
+/// <summary><c>opanel identify</c> against the in-process demo PLC.</summary>
+public sealed class IdentifyCommandTests
+{
+    [Fact]
+    public void Identify_Demo_DecodesTheReply()
+    {
+        var run = CliRunner.Run("identify", "--demo", "--station", "7");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Should().Contain("station       7 on demo")
+            .And.Contain("protocol      version 1, handler revision 1, at most 121 bytes per READ")
+            .And.Contain("generated for CPU 224 (Current)")
+            .And.Contain("SMB6          16#20: CPU 224 or CPU 224XP")
+            .And.Contain("mode switch   RUN")
+            .And.Contain("write mask    16#3C: Q M V SM")
+            .And.Contain("reply delay   5 ms")
+            .And.Contain("cpu check     ok: matches CPU 224");
+        run.Out.Should().MatchRegex(@"scan          last \d ms, min \d ms, max \d ms");
+    }
+
+    [Fact]
+    public void Identify_DemoJson_HasTheFields()
+    {
+        var run = CliRunner.Run("identify", "--demo", "--cpu", "222", "--json");
+
+        using var json = JsonDocument.Parse(run.Out);
+        json.RootElement.GetProperty("smb6").GetString().Should().Be("16#00");
+        json.RootElement.GetProperty("writableAreas").EnumerateArray().Select(a => a.GetString()).Should().Equal("Q", "M", "V", "SM");
+        json.RootElement.GetProperty("cpuMismatch").ValueKind.Should().Be(JsonValueKind.Null);
+    }
+
+    [Fact]
+    public void Identify_MissingDevice_ExitsTwo()
+    {
+        var run = CliRunner.Run("identify", "--device", "/dev/opanel-no-such-port");
+
+        run.ExitCode.Should().Be(2);
+        run.Error.Should().Contain("station 2 on /dev/opanel-no-such-port: PortUnavailable");
+    }
+}

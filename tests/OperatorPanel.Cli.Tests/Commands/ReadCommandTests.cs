@@ -1,0 +1,75 @@
+using System.Text.Json;
+
+namespace OperatorPanel.Cli.Tests.Commands;
+
+/// <summary><c>opanel read</c> against the in-process demo PLC (real time, a few exchanges of 5 ms reply delay).</summary>
+public sealed class ReadCommandTests
+{
+    [Fact]
+    public void Read_Demo_PrintsCanonicalAddressValueHexAndQuality()
+    {
+        var run = CliRunner.Run("read", "vw200", "I0.4", "SMB6", "--demo");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            "VW200    0           16#0000      good",
+            "I0.4     1                        good", //    demo process: mode selector in AUTO, always on
+            "SMB6     32          16#20        good"); //   CPU 224 identifies as 16#20
+    }
+
+    [Fact]
+    public void Read_DemoJson_PrintsAnArray()
+    {
+        var run = CliRunner.Run("read", "SMB6", "Q0.0", "--demo", "--cpu", "226", "--json");
+
+        using var json = JsonDocument.Parse(run.Out);
+        json.RootElement.GetArrayLength().Should().Be(2);
+        json.RootElement[0].GetProperty("address").GetString().Should().Be("SMB6");
+        json.RootElement[0].GetProperty("value").GetInt32().Should().Be(0x90);
+        json.RootElement[0].GetProperty("hex").GetString().Should().Be("16#90");
+        json.RootElement[1].GetProperty("quality").GetString().Should().Be("good");
+    }
+
+    [Theory]
+    [InlineData("VB99999", "byte number")]
+    [InlineData("AIW0", "serves only I, Q, M, V and SM")]
+    [InlineData("VB8192", "VB8192")]
+    public void Read_BadAddress_ExitsOneWithTheMessage(string address, string message)
+    {
+        var run = CliRunner.Run("read", address, "--demo");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Contain(message);
+        run.Out.Should().BeEmpty();
+    }
+
+    [Fact]
+    public void Read_MissingDevice_ExitsTwoNamingStationPortAndKind()
+    {
+        var device = Path.Combine(Path.GetTempPath(), "opanel-no-such-port-" + Guid.NewGuid().ToString("N"));
+
+        var run = CliRunner.Run("read", "VB0", "--device", device, "--station", "5");
+
+        run.ExitCode.Should().Be(2);
+        run.Error.Should().Contain($"station 5 on {device}").And.Contain("PortUnavailable");
+    }
+
+    [Theory]
+    [InlineData("--station", "0")]
+    [InlineData("--baud", "9601")]
+    [InlineData("--data-bits", "6")]
+    [InlineData("--cpu", "225")]
+    public void Read_BadLinkOption_ExitsOne(string option, string value)
+    {
+        CliRunner.Run("read", "VB0", "--demo", option, value).ExitCode.Should().Be(1);
+    }
+
+    [Fact]
+    public void Read_NoDeviceNoDemo_ExitsOneSayingHow()
+    {
+        var run = CliRunner.Run("read", "VB0");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Contain("--device").And.Contain("--demo");
+    }
+}

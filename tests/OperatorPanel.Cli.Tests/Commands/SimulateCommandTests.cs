@@ -1,0 +1,90 @@
+using System.Diagnostics;
+using System.Text.RegularExpressions;
+using OperatorPanel.Cli;
+
+namespace OperatorPanel.Cli.Tests.Commands;
+
+/// <summary>
+/// <c>opanel simulate</c> on one end of a socat pty pair and the link verbs on the other: the whole serial path in real
+/// time (bounded: the simulation stops itself after --duration).
+/// </summary>
+public sealed class SimulateCommandTests
+{
+    private static readonly TimeSpan StartLimit = TimeSpan.FromSeconds(3);
+
+    [Fact]
+    public async Task Simulate_OnAPty_AnswersIdentifyWriteAndReadFromTheOtherEnd()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        using var simulatorOut = new StringWriter();
+        var output = TextWriter.Synchronized(simulatorOut);
+        string[] args = ["simulate", "--cpu", "226", "--station", "3", "--station", "4", "--device", pty.PathA, "--baud", "19200", "--duration", "3", "--log-dir", LogDir];
+        var simulator = Task.Run(() => OpanelApp.Run(args, output, TextWriter.Null));
+        await WaitForAsync(() => Text(output, simulatorOut).Contains("simulating", StringComparison.Ordinal));
+        string[] line = ["--device", pty.PathB, "--baud", "19200"];
+
+        var identify = CliRunner.Run(["identify", "--station", "4", "--cpu", "224", .. line]);
+        var write = CliRunner.Run(["write", "VW200=4660", "Q1.1=on", "--station", "3", .. line]);
+        var read = CliRunner.Run(["read", "VW200", "SMB6", "Q1.1", "--station", "3", .. line]);
+        var silent = CliRunner.Run(["read", "VB0", "--station", "9", .. line]);
+
+        identify.ExitCode.Should().Be(1, identify.Error); // a CPU 226 asked for as 224: mismatch
+        identify.Out.Should().Contain("generated for CPU 226 (Current)").And.Contain("SMB6          16#90: CPU 226")
+            .And.Contain("cpu check     MISMATCH with CPU 224: the PLC reports SMB6 16#90 (CPU 226), CPU 224 has 16#20");
+        write.ExitCode.Should().Be(0, write.Error);
+        write.Out.Should().Be($"VW200    0 -> 4660  confirmed{Environment.NewLine}Q1.1     0 -> 1  confirmed{Environment.NewLine}");
+        read.ExitCode.Should().Be(0, read.Error);
+        read.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            "VW200    4660        16#1234      good",
+            "SMB6     144         16#90        good",
+            "Q1.1     1                        good"); // the panel owns Q1.1 now; the demo process leaves it alone
+        silent.ExitCode.Should().Be(2);
+        silent.Error.Should().Contain($"station 9 on {pty.PathB}: NoAnswer");
+
+        (await simulator).Should().Be(0);
+        var summary = Text(output, simulatorOut);
+        summary.Should().StartWith($"simulating CPU 226 at stations 3, 4 on {pty.PathA} 19200 8N1, reply delay 5 ms, demo process on");
+        summary.Should().MatchRegex($@"stopped serving {Regex.Escape(pty.PathA)}: \d+ frames received, \d+ answered");
+    }
+
+    [Fact]
+    public void Simulate_MissingDevice_ExitsTwo()
+    {
+        var run = CliRunner.Run("simulate", "--cpu", "224", "--station", "2", "--device", "/dev/opanel-no-such-port", "--duration", "1");
+
+        run.ExitCode.Should().Be(2);
+        run.Error.Should().Contain("/dev/opanel-no-such-port").And.Contain("PortUnavailable");
+    }
+
+    [Theory]
+    [InlineData("--station", "2", "--station", "2")]
+    [InlineData("--station", "127", "--reply-delay", "5")]
+    [InlineData("--station", "2", "--reply-delay", "0")]
+    [InlineData("--station", "2", "--duration", "-1")]
+    public void Simulate_BadOption_ExitsOne(string option1, string value1, string option2, string value2)
+    {
+        CliRunner.Run("simulate", "--cpu", "224", "--device", "/dev/null", option1, value1, option2, value2).ExitCode.Should().Be(1);
+    }
+
+    private static string LogDir => Path.Combine(Path.GetTempPath(), "opanel-tests-logs");
+
+    private static string Text(TextWriter synchronized, StringWriter inner)
+    {
+        // TextWriter.Synchronized locks the wrapper itself; read under the same lock.
+        lock (synchronized)
+        {
+            return inner.ToString();
+        }
+    }
+
+    private static async Task WaitForAsync(Func<bool> condition)
+    {
+        // Process start-up only: the one place real waiting is allowed, bounded by StartLimit.
+        var watch = Stopwatch.StartNew();
+        while (!condition())
+        {
+            watch.Elapsed.Should().BeLessThan(StartLimit, "the simulator should have started");
+            await Task.Delay(20);
+        }
+    }
+}

@@ -1,0 +1,83 @@
+using System.Diagnostics;
+
+namespace OperatorPanel.Cli.Tests.Commands;
+
+/// <summary>
+/// Two pseudo-terminals joined by socat, a null-modem cable in software: what is written to <see cref="PathA"/>
+/// comes out of <see cref="PathB"/> and back. A missing socat fails the test; it never skips (house style). A copy of
+/// the IntegrationTests fixture, which this project cannot reference.
+/// </summary>
+internal sealed class SocatPtyPair : IDisposable
+{
+    private static readonly TimeSpan StartupLimit = TimeSpan.FromSeconds(5);
+
+    private readonly Process _socat;
+
+    private SocatPtyPair(Process socat, string pathA, string pathB)
+    {
+        _socat = socat;
+        PathA = pathA;
+        PathB = pathB;
+    }
+
+    public string PathA { get; }
+
+    public string PathB { get; }
+
+    /// <summary>Starts socat and waits (real time, bounded) until both links exist.</summary>
+    public static async Task<SocatPtyPair> StartAsync()
+    {
+        var socat = FindSocat() ?? throw new InvalidOperationException("socat not found: install Debian package socat");
+        var stem = Path.Combine(Path.GetTempPath(), "opanel-pty-" + Guid.NewGuid().ToString("N")[..12]);
+        var (pathA, pathB) = (stem + "-a", stem + "-b");
+        var start = new ProcessStartInfo(socat)
+        {
+            ArgumentList = { "-d", "-d", $"pty,raw,echo=0,link={pathA}", $"pty,raw,echo=0,link={pathB}" },
+            RedirectStandardError = true,
+            RedirectStandardOutput = true,
+            UseShellExecute = false,
+        };
+        var process = Process.Start(start) ?? throw new InvalidOperationException("socat did not start");
+        var pair = new SocatPtyPair(process, pathA, pathB);
+
+        // Process start-up only: the one place real waiting is allowed, bounded by StartupLimit.
+        var watch = Stopwatch.StartNew();
+        while (!(File.Exists(pathA) && File.Exists(pathB)))
+        {
+            if (process.HasExited || watch.Elapsed > StartupLimit)
+            {
+                var error = process.HasExited ? await process.StandardError.ReadToEndAsync() : "(still running)";
+                pair.Dispose();
+                throw new InvalidOperationException($"socat did not create {pathA} and {pathB} within {StartupLimit.TotalSeconds} s: {error}");
+            }
+
+            await Task.Delay(20);
+        }
+
+        return pair;
+    }
+
+    /// <summary>Kills socat: both pseudo-terminals vanish, like an unplugged USB adapter.</summary>
+    public void Kill()
+    {
+        if (!_socat.HasExited)
+        {
+            _socat.Kill(entireProcessTree: true);
+            _socat.WaitForExit();
+        }
+    }
+
+    public void Dispose()
+    {
+        Kill();
+        _socat.Dispose();
+        File.Delete(PathA);
+        File.Delete(PathB);
+    }
+
+    private static string? FindSocat() =>
+        (Environment.GetEnvironmentVariable("PATH") ?? "")
+            .Split(Path.PathSeparator, StringSplitOptions.RemoveEmptyEntries)
+            .Select(dir => Path.Combine(dir, "socat"))
+            .FirstOrDefault(File.Exists);
+}

@@ -1,0 +1,99 @@
+using System.Text.Json;
+
+namespace OperatorPanel.Cli.Tests.Commands;
+
+/// <summary>
+/// <c>opanel watch</c> on the sample line with the in-process demo line (real time: a refresh or two, well under a
+/// second). The demo process starts 2 s in, where alarm M2.6 is on (it stays on until 6 s; DemoProcess).
+/// </summary>
+public sealed class WatchCommandTests : IDisposable
+{
+    private readonly string _folder = Path.Combine(Path.GetTempPath(), "opanel-watch-tests-" + Guid.NewGuid().ToString("N"));
+
+    public WatchCommandTests() => Directory.CreateDirectory(_folder);
+
+    private static string Sample => Path.Combine(RepositoryRoot(), "samples", "bottling-line.opproj");
+
+    [Fact]
+    public void Watch_DemoOnce_ShowsStationOnlineLampsTagsAndAlarms()
+    {
+        var run = CliRunner.Run("watch", Sample, "--demo", "--once");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Should().StartWith("Bottling line 1  (continuous, at least 100 ms apart)  cycle 1  ")
+            .And.Contain("Filler  station 2  CPU 224  COM3 (demo) 9600 8N1  online")
+            .And.Contain("Fill time exceeded: check the fill valve");
+        run.Out.Should().MatchRegex(@"link     requests \d+  replies \d+  retries 0  timeouts 0  rtt avg \d+\.\d ms");
+        run.Out.Should().MatchRegex(@"    IB0   ●[●○]{7}  I0\.0 EStopHealthy  I0\.1 StartButton"); // e-stop chain healthy in the demo
+        run.Out.Should().MatchRegex(@"    QB1   [●○]{2}······  Q1\.0 Horn  Q1\.1 RejectPusher");
+        run.Out.Should().MatchRegex(@"    BottleCount      VD100 +\d+  good");
+        run.Out.Should().MatchRegex(@"    FillSetpoint     VD120 +\d+(\.\d+)?  good"); // REAL shown as a number
+        run.Out.Should().MatchRegex(@"    StatusWord       MW10 +2#\d{4}_\d{4}_\d{4}_\d{4}  good");
+        run.Out.Should().MatchRegex(@"    M2\.6 +warning +Fill time exceeded");
+    }
+
+    [Fact]
+    public void Watch_DemoCyclesJson_PrintsOneObjectPerCycle()
+    {
+        var run = CliRunner.Run("watch", Sample, "--demo", "--cycles", "2", "--json");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        var lines = run.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        lines.Should().HaveCount(2);
+        for (var i = 0; i < lines.Length; i++)
+        {
+            using var json = JsonDocument.Parse(lines[i]);
+            json.RootElement.GetProperty("cycle").GetInt64().Should().Be(i + 1);
+            var station = json.RootElement.GetProperty("stations")[0];
+            station.GetProperty("state").GetString().Should().Be("online");
+            station.GetProperty("inputs")[0].GetProperty("bits")[0].GetProperty("symbol").GetString().Should().Be("EStopHealthy");
+            station.GetProperty("tags").EnumerateArray().Should().Contain(t => t.GetProperty("address").GetString() == "VD100");
+        }
+    }
+
+    [Fact]
+    public void Watch_BadProject_ExitsOneListingTheProblems()
+    {
+        var file = Path.Combine(_folder, "bad.opproj");
+        File.WriteAllText(file, File.ReadAllText(Sample).Replace("\"VD100\"", "\"VD8191\"", StringComparison.Ordinal));
+
+        var run = CliRunner.Run("watch", file, "--demo", "--once");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Contain($"{file}: $.stations[0].tags[0].address: VD8191");
+        run.Out.Should().BeEmpty();
+    }
+
+    [Fact]
+    public void Watch_MissingProject_ExitsOne()
+    {
+        CliRunner.Run("watch", Path.Combine(_folder, "none.opproj"), "--once").ExitCode.Should().Be(1);
+    }
+
+    [Fact]
+    public void Watch_PortMissingOnce_ShowsOfflineAndExitsTwo()
+    {
+        var file = Path.Combine(_folder, "line.opproj");
+        var port = Path.Combine(_folder, "no-such-port");
+        CliRunner.Run("project", "new", "--cpu", "222", "--port", port, "-o", file).ExitCode.Should().Be(0);
+
+        var run = CliRunner.Run("watch", file, "--once");
+
+        run.ExitCode.Should().Be(2);
+        run.Out.Should().Contain("offline").And.Contain("last error: PortUnavailable");
+        run.Out.Should().MatchRegex(@"IB0   \?{8}");
+    }
+
+    public void Dispose() => Directory.Delete(_folder, recursive: true);
+
+    private static string RepositoryRoot()
+    {
+        var directory = new DirectoryInfo(AppContext.BaseDirectory);
+        while (directory is not null && !File.Exists(Path.Combine(directory.FullName, "OperatorPanel.sln")))
+        {
+            directory = directory.Parent;
+        }
+
+        return directory?.FullName ?? throw new InvalidOperationException("OperatorPanel.sln not found above the test folder");
+    }
+}
