@@ -30,6 +30,7 @@ internal static class OpanelApp
         yield return CpusCommand.Create(context);
         yield return AddressCommand.Create(context);
         yield return ProjectCommand.Create(context);
+        yield return BenchCommand.Create(context);
     }
 }
 
