@@ -1,5 +1,6 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Bench;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Cli.Commands;
 
@@ -7,7 +8,7 @@ namespace OperatorPanel.Cli.Commands;
 /// <c>opanel bench link [--cycles N]</c>: the modeled cost of a full refresh of the reference line against one item per
 /// request and the data-only lower bound, the targets judged PASS/FAIL, then the round trip measured over a socat pty.
 /// Exit 0 when both parts ran (a FAIL target is a finding, printed, not an error); 1 when socat is missing or
-/// --cycles is bad; 2 when the measured link lost frames.
+/// --cycles is bad; 2 when the measured run failed or lost frames.
 /// </summary>
 internal static class BenchCommand
 {
@@ -43,9 +44,21 @@ internal static class BenchCommand
             var line = ReferenceLine.Create();
             var report = LinkBenchReport.Create(line, ExchangeTiming.Default);
             var socat = SocatPty.Find();
-            var measured = socat is null
-                ? null
-                : await LinkRoundTrip.MeasureAsync(line, count, socat, TimeProvider.System, cancellationToken);
+            MeasuredRoundTrip? measured = null;
+            try
+            {
+                measured = socat is null ? null : await LinkRoundTrip.MeasureAsync(line, count, socat, TimeProvider.System, cancellationToken);
+            }
+            catch (Exception exception) when (exception is PlcCommunicationException or InvalidOperationException or TimeoutException)
+            {
+                if (!cli.Json)
+                {
+                    LinkBenchText.WriteModeled(cli.Out, report);
+                }
+
+                return cli.Fail(ExitCodes.LinkFailure, $"measured round trip failed: {exception.Message}");
+            }
+
             Print(cli, report, measured);
             cli.Log.Information("bench link: {Targets}", string.Join(", ", report.Targets.Select(t => $"{t.Name} {t.Verdict}")));
             return measured is null ? ExitCodes.BadInput

@@ -16,6 +16,9 @@ internal sealed class PlcPortTap(ITransport inner) : ITransport
     /// <summary>Given the number of the reply about to be sent (from 0), the garbage to send ahead of it, or empty.</summary>
     public Func<int, byte[]>? NoiseBeforeReply { get; set; }
 
+    /// <summary>Replies written so far, counted before the first character leaves, so a reply the PC has is counted.</summary>
+    public int Replies => Volatile.Read(ref _writes);
+
     public string Name => inner.Name;
 
     public bool IsOpen => inner.IsOpen;
@@ -24,7 +27,8 @@ internal sealed class PlcPortTap(ITransport inner) : ITransport
 
     public async Task WriteAsync(ReadOnlyMemory<byte> data, CancellationToken cancellationToken)
     {
-        var noise = NoiseBeforeReply?.Invoke(_writes++) ?? [];
+        var number = Interlocked.Increment(ref _writes) - 1;
+        var noise = NoiseBeforeReply?.Invoke(number) ?? [];
         if (noise.Length > 0)
         {
             await inner.WriteAsync(noise, cancellationToken);

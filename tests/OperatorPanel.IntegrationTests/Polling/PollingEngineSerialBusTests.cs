@@ -28,7 +28,7 @@ public sealed class PollingEngineSerialBusTests
 
         result.FramesSent.Should().Be(3);
         result.FramesFailed.Should().Be(0);
-        rig.Host.Replies.Should().Be(3, "one reply per frame: no station answered another's request");
+        rig.Tap.Replies.Should().Be(3, "one reply per frame: no station answered another's request");
         foreach (var plc in plcs)
         {
             var station = plc.Config.Station.Address;
