@@ -8,7 +8,7 @@ namespace OperatorPanel.Cli.Commands;
 /// <c>opanel bench link [--cycles N]</c>: the modeled cost of a full refresh of the reference line against one item per
 /// request and the data-only lower bound, the targets judged PASS/FAIL, then the round trip measured over a socat pty.
 /// Exit 0 when both parts ran (a FAIL target is a finding, printed, not an error); 1 when socat is missing or
-/// --cycles is bad; 2 when the measured run failed or lost frames.
+/// --cycles is bad; 2 when the measured run failed or no frame got a reply (lost frames are counted in the output).
 /// </summary>
 internal static class BenchCommand
 {
@@ -62,7 +62,7 @@ internal static class BenchCommand
             Print(cli, report, measured);
             cli.Log.Information("bench link: {Targets}", string.Join(", ", report.Targets.Select(t => $"{t.Name} {t.Verdict}")));
             return measured is null ? ExitCodes.BadInput
-                : measured.FramesFailed > 0 ? ExitCodes.LinkFailure
+                : measured.FramesFailed == measured.Cycles * measured.FramesPerRefresh ? ExitCodes.LinkFailure
                 : ExitCodes.Ok;
         });
         return command;

@@ -20,7 +20,7 @@ public sealed class PollingEngineSerialTests
         (m.V[100], m.V[101], m.V[102], m.V[103], m.V[2000], m.V[2001], m.V[3000], m.SM[28]) = (0xDE, 0xAD, 0xBE, 0xEF, 0x0B, 0xB8, 0x20, 0x99);
         await using var rig = await SerialLineRig.StartAsync([plc], ["IB0", "IB1", "QW0", "MB3", "MW10", "VD100", "VW2000", "V3000.5", "V3000.4", "SMB28"]);
 
-        var result = await rig.RefreshAsync();
+        var result = await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
 
         result.FramesFailed.Should().Be(0);
         rig.Value(plc, "IB0").Raw.Should().Equal(0xA5);
@@ -36,7 +36,7 @@ public sealed class PollingEngineSerialTests
         rig.Value(plc, "VD100").Quality.Should().Be(ValueQuality.Good);
 
         m.WriteDoubleWord(ProtocolArea.V, 100, 1_000_000);
-        await rig.RefreshAsync();
+        await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
 
         rig.Value(plc, "VD100").Raw.Should().Equal(0x00, 0x0F, 0x42, 0x40);
     }
@@ -94,7 +94,7 @@ public sealed class PollingEngineSerialTests
             var scan = Interlocked.Increment(ref scans);
             plc.Memory.M[5] = (byte)((plc.Memory.M[5] & 0x0F) | (((scan % 15) + 1) << 4));
         };
-        await rig.RefreshAsync();
+        await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
         var polled = rig.Value(plc, "MB5").Raw[0];
 
         var set = await rig.Engine.WriteAsync(WriteRequest.Bit(station, m5, true)).WaitAsync(SerialLineRig.Limit);

@@ -65,6 +65,23 @@ internal sealed class SerialLineRig : IAsyncDisposable
     /// <summary>One full cycle, bounded.</summary>
     public Task<PollResult> RefreshAsync() => Engine.RequestRefreshAsync().WaitAsync(Limit);
 
+    /// <summary>
+    /// Full cycles until <paramref name="done"/> holds after one, within <see cref="Limit"/>; the last result either way.
+    /// A busy test machine can make one exchange miss its reply timeout, and the next cycle must then show the state.
+    /// </summary>
+    public async Task<PollResult> RefreshUntilAsync(Func<PollResult, bool> done)
+    {
+        var started = TimeProvider.System.GetTimestamp();
+        while (true)
+        {
+            var result = await RefreshAsync();
+            if (done(result) || TimeProvider.System.GetElapsedTime(started) > Limit)
+            {
+                return result;
+            }
+        }
+    }
+
     public PolledValue Value(ReferencePlc plc, string address) =>
         Engine.TryGetValue(plc.Config.Station, PlcAddress.Parse(address), out var value)
             ? value
