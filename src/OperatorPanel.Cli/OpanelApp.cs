@@ -36,6 +36,7 @@ internal static class OpanelApp
         yield return IdentifyCommand.Create(context);
         yield return SimulateCommand.Create(context);
         yield return WatchCommand.Create(context);
+        yield return BenchCommand.Create(context);
     }
 }
 

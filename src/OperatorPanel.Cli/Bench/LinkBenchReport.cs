@@ -1,0 +1,27 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Polling;
+
+namespace OperatorPanel.Cli.Bench;
+
+/// <summary>The modeled part of `opanel bench link`: the line, its poll plan, the figures of every strategy and the targets.</summary>
+internal sealed record LinkBenchReport(
+    BenchLine Line,
+    PollPlan Plan,
+    ExchangeTiming Timing,
+    ImmutableArray<TrafficFigures> Rows,
+    ImmutableArray<TargetResult> Targets)
+{
+    public static LinkBenchReport Create(BenchLine line, ExchangeTiming timing)
+    {
+        ArgumentNullException.ThrowIfNull(line);
+        ArgumentNullException.ThrowIfNull(timing);
+        var plan = line.Plan();
+        var planned = TrafficModels.FromPlan(plan);
+        var perItem = TrafficModels.OneItemPerRequest(line, plan.CostModel);
+        var seed = TrafficModels.SeedOneItemPerRequest(line);
+        var hex = TrafficModels.LowerBoundAsHex(line);
+        var binary = TrafficModels.LowerBoundAsBinary(line);
+        var targets = BenchTargets.Evaluate(planned, perItem, seed, hex, binary, timing);
+        return new LinkBenchReport(line, plan, timing, [planned, perItem, seed, hex, binary], targets);
+    }
+}

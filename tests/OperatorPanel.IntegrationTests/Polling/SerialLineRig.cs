@@ -1,0 +1,110 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.IntegrationTests.Transport;
+using OperatorPanel.Simulator.Hosting;
+using OperatorPanel.Simulator.Reference;
+
+namespace OperatorPanel.IntegrationTests.Polling;
+
+/// <summary>
+/// A whole serial line in one process: socat pty pair; on one end SerialPortTransport + SimulatedPlcHost serving
+/// reference PLCs on one bus; on the other SerialPortTransport + PlcLink + PollingEngine, triggered mode, so each test
+/// decides when a cycle runs. Real time throughout; every wait is bounded by <see cref="Limit"/>.
+/// </summary>
+internal sealed class SerialLineRig : IAsyncDisposable
+{
+    public static readonly TimeSpan Limit = TimeSpan.FromSeconds(3);
+
+    private readonly SocatPtyPair _pty;
+    private readonly CancellationTokenSource _stop = new();
+    private Task _hostRun = Task.CompletedTask;
+    private Task _engineRun = Task.CompletedTask;
+
+    private SerialLineRig(SocatPtyPair pty, PlcPortTap tap, PlcLink link, PollingEngine engine, SimulatedPlcHost host)
+    {
+        (_pty, Tap, Link, Engine, Host) = (pty, tap, link, engine, host);
+    }
+
+    public PlcPortTap Tap { get; }
+
+    public PlcLink Link { get; }
+
+    public PollingEngine Engine { get; }
+
+    public SimulatedPlcHost Host { get; }
+
+    public static async Task<SerialLineRig> StartAsync(IReadOnlyList<ReferencePlc> plcs, IEnumerable<string> watched, int baud = 19200)
+    {
+        var pty = await SocatPtyPair.StartAsync();
+        var plcSerial = new SerialSettings { PortName = pty.PathB, BaudRate = baud };
+        var panelSerial = new SerialSettings { PortName = pty.PathA, BaudRate = baud };
+        var tap = new PlcPortTap(new SerialPortTransport(plcSerial));
+        await tap.OpenAsync(default);
+        var bus = new BusSimulator();
+        foreach (var plc in plcs)
+        {
+            bus.Attach(plc);
+        }
+
+        var items = plcs.SelectMany(p => watched.Select(a => new WatchedItem(p.Config.Station, PlcAddress.Parse(a))));
+        var cpus = plcs.ToDictionary(p => p.Config.Station, p => p.Config.Cpu);
+        var link = new PlcLink(new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial));
+        var engine = new PollingEngine(link, PollPlanner.Build(items, cpus)) { Mode = RefreshMode.OnDemand };
+        var rig = new SerialLineRig(pty, tap, link, engine, new SimulatedPlcHost(tap, bus, [], TimeProvider.System));
+        rig._hostRun = Task.Run(() => rig.Host.RunAsync(rig._stop.Token));
+        rig._engineRun = Task.Run(() => rig.Engine.RunAsync(rig._stop.Token));
+        return rig;
+    }
+
+    public static ReferencePlc Plc(int station) =>
+        new(new HandlerConfig(new Station(station), CpuProfiles.For(CpuModel.Cpu226)));
+
+    /// <summary>One full cycle, bounded.</summary>
+    public Task<PollResult> RefreshAsync() => Engine.RequestRefreshAsync().WaitAsync(Limit);
+
+    /// <summary>
+    /// Full cycles until <paramref name="done"/> holds after one, within <see cref="Limit"/>; the last result either way.
+    /// A busy test machine can make one exchange miss its reply timeout, and the next cycle must then show the state.
+    /// </summary>
+    public async Task<PollResult> RefreshUntilAsync(Func<PollResult, bool> done)
+    {
+        var started = TimeProvider.System.GetTimestamp();
+        while (true)
+        {
+            var result = await RefreshAsync();
+            if (done(result) || TimeProvider.System.GetElapsedTime(started) > Limit)
+            {
+                return result;
+            }
+        }
+    }
+
+    public PolledValue Value(ReferencePlc plc, string address) =>
+        Engine.TryGetValue(plc.Config.Station, PlcAddress.Parse(address), out var value)
+            ? value
+            : throw new InvalidOperationException($"{address} is not watched");
+
+    public StationState State(ReferencePlc plc) => Engine.GetStationStatus(plc.Config.Station).State;
+
+    public async ValueTask DisposeAsync()
+    {
+        await _stop.CancelAsync();
+        await _engineRun.WaitAsync(Limit);
+        try
+        {
+            await _hostRun.WaitAsync(Limit);
+        }
+        catch (OperationCanceledException)
+        {
+            // The host ends its run with the cancellation: the expected way to stop it.
+        }
+
+        await Link.DisposeAsync();
+        await Tap.DisposeAsync();
+        _pty.Dispose();
+        _stop.Dispose();
+    }
+}
