@@ -1,6 +1,7 @@
 using System.Diagnostics;
 using System.Text.RegularExpressions;
 using OperatorPanel.Cli;
+using OperatorPanel.TestKit;
 
 namespace OperatorPanel.Cli.Tests.Commands;
 

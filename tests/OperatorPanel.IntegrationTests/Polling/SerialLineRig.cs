@@ -6,6 +6,7 @@ using OperatorPanel.Core.Transport;
 using OperatorPanel.IntegrationTests.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
+using OperatorPanel.TestKit;
 
 namespace OperatorPanel.IntegrationTests.Polling;
 

@@ -1,13 +1,12 @@
 using System.Diagnostics;
 
-namespace OperatorPanel.Cli.Tests.Commands;
+namespace OperatorPanel.TestKit;
 
 /// <summary>
 /// Two pseudo-terminals joined by socat, a null-modem cable in software: what is written to <see cref="PathA"/>
-/// comes out of <see cref="PathB"/> and back. A missing socat fails the test; it never skips (house style). A copy of
-/// the IntegrationTests fixture, which this project cannot reference.
+/// comes out of <see cref="PathB"/> and back. A missing socat fails the test; it never skips (house style).
 /// </summary>
-internal sealed class SocatPtyPair : IDisposable
+public sealed class SocatPtyPair : IDisposable
 {
     private static readonly TimeSpan StartupLimit = TimeSpan.FromSeconds(5);
 
