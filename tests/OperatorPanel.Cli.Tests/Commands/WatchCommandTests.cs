@@ -24,7 +24,8 @@ public sealed class WatchCommandTests : IDisposable
         run.Out.Should().StartWith("Bottling line 1  (continuous, at least 100 ms apart)  cycle 1  ")
             .And.Contain("Filler  station 2  CPU 224  COM3 (demo) 9600 8N1  online")
             .And.Contain("Low product level in tank");
-        run.Out.Should().MatchRegex(@"link     requests \d+  replies \d+  retries 0  timeouts 0  rtt avg \d+\.\d ms");
+        // Real time: a loaded machine may cost a retry, so the counters are checked for shape, not for zero.
+        run.Out.Should().MatchRegex(@"link     requests \d+  replies [1-9]\d*  retries \d+  timeouts \d+  rtt avg \d+\.\d ms");
         run.Out.Should().MatchRegex(@"    IB0   ●[●○]{7}  I0\.0 EStopHealthy  I0\.1 StartButton"); // e-stop chain healthy in the demo
         run.Out.Should().MatchRegex(@"    QB1   [●○]{2}······  Q1\.0 Horn  Q1\.1 RejectPusher");
         run.Out.Should().MatchRegex(@"    BottleCount      VD100 +[1-9]\d*  good"); // the 2 s warm-up counts a bottle or two
