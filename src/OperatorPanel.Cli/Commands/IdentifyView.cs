@@ -80,7 +80,7 @@ internal sealed record IdentifyView(
     public void WriteText(TextWriter o)
     {
         o.WriteLine($"station       {Station} on {Port}");
-        o.WriteLine($"protocol      version {ProtocolVersion}, handler revision {HandlerRevision}, at most {MaxReadData} bytes per READ");
+        o.WriteLine($"protocol      version {ProtocolVersion}, handler revision {HandlerRevision}, at most {MaxReadData} bytes per READ (2 fewer per further item)");
         o.WriteLine($"generated for {GeneratedFor}");
         o.WriteLine($"SMB6          {Smb6}: {Smb6Means}");
         o.WriteLine($"mode switch   {ModeSwitch}");

@@ -7,15 +7,16 @@ namespace OperatorPanel.Core.Polling;
 internal static class FramePacker
 {
     /// <summary>
-    /// Frames of at most <see cref="PollCostModel.MaxItemsPerFrame"/> items and
-    /// <see cref="PollCostModel.MaxDataPerFrame"/> bytes; items inside a frame, and frames, in area and offset order.
+    /// Frames that each fit <see cref="PollCostModel.Fits"/>: at most <see cref="PollCostModel.MaxItemsPerFrame"/>
+    /// items, and a data capacity that shrinks by 2 bytes with every further item (2D + 4N &lt;= 243). Items inside a
+    /// frame, and frames, in area and offset order.
     /// </summary>
     public static List<ImmutableArray<ReadItem>> Pack(IReadOnlyCollection<ReadItem> blocks, PollCostModel model)
     {
         var frames = new List<List<ReadItem>>();
         foreach (var block in blocks.OrderByDescending(b => b.Length).ThenBy(b => b.Area).ThenBy(b => b.Offset))
         {
-            var frame = frames.Find(f => f.Count < model.MaxItemsPerFrame && f.Sum(i => i.Length) + block.Length <= model.MaxDataPerFrame);
+            var frame = frames.Find(f => model.Fits(f.Count + 1, f.Sum(i => i.Length) + block.Length));
             if (frame is null)
             {
                 frame = [];

@@ -31,11 +31,25 @@ public sealed record PollCostModel
     /// </summary>
     public int TurnaroundChars { get; init; } = 20;
 
-    /// <summary>Items one READ may carry (docs/protocol.md: COUNT 1-8).</summary>
+    /// <summary>Items one READ may carry (docs/protocol.md: COUNT 1-20).</summary>
     public int MaxItemsPerFrame { get; init; } = ProtocolLimits.MaxReadItems;
 
-    /// <summary>Data bytes one READ reply may carry (docs/protocol.md: sum of LENGTHs &lt;= 121).</summary>
+    /// <summary>
+    /// Data bytes one READ reply may carry at most, whatever its item count (docs/protocol.md: 119, a one-item READ).
+    /// A frame's real capacity is <see cref="MaxDataFor"/> its item count.
+    /// </summary>
     public int MaxDataPerFrame { get; init; } = ProtocolLimits.MaxReadData;
+
+    /// <summary>
+    /// Data bytes a READ of <paramref name="items"/> items may carry: the protocol's 2D + 4N &lt;= 243 rule
+    /// (<see cref="ProtocolLimits.MaxReadDataFor"/>; each item's descriptor takes buffer space from the reply),
+    /// capped by <see cref="MaxDataPerFrame"/>; 0 above <see cref="MaxItemsPerFrame"/>.
+    /// </summary>
+    public int MaxDataFor(int items) =>
+        items > MaxItemsPerFrame ? 0 : Math.Min(MaxDataPerFrame, ProtocolLimits.MaxReadDataFor(items));
+
+    /// <summary>Whether one READ may carry <paramref name="items"/> items with <paramref name="dataBytes"/> bytes in all.</summary>
+    public bool Fits(int items, int dataBytes) => items >= 1 && dataBytes <= MaxDataFor(items);
 
     public int RequestChars(int items) => RequestFixedChars + (ItemChars * items);
 

@@ -10,7 +10,8 @@ namespace OperatorPanel.Core.Polling;
 /// Turns watched items into READ frames. Per station and area the byte ranges are coalesced, then gaps are bridged
 /// smallest first while that lowers the <see cref="PollCostModel"/> cost of the whole station (one item saves
 /// 8 request characters and a frame saves its framing and turnaround; a gap byte costs 2 reply characters), ranges
-/// longer than a reply are split, and the blocks are packed into frames of at most 8 items and 121 data bytes.
+/// longer than a one-item reply (119 bytes) are split, and the blocks are packed into frames of at most 20 items whose
+/// data obeys the protocol's 2D + 4N &lt;= 243 rule (119 bytes with one item, 81 with twenty).
 /// </summary>
 public static class PollPlanner
 {

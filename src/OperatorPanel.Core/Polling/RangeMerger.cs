@@ -22,7 +22,7 @@ internal static class RangeMerger
         for (var k = 0; k <= gaps.Count; k++)
         {
             var bridged = gaps.Take(k).ToHashSet();
-            var blocks = Split(Bridge(ranges, bridged), model.MaxDataPerFrame);
+            var blocks = Split(Bridge(ranges, bridged), model.MaxDataFor(1));
             var cost = FramePacker.Pack(blocks, model).Sum(f => model.FrameCost(f.Length, f.Sum(i => i.Length)));
             if (cost < bestCost)
             {
@@ -74,7 +74,7 @@ internal static class RangeMerger
         return result;
     }
 
-    /// <summary>Cuts ranges longer than one reply into full-size pieces and a remainder.</summary>
+    /// <summary>Cuts ranges longer than a one-item reply into full-size pieces and a remainder.</summary>
     private static ImmutableArray<ReadItem> Split(List<ReadItem> ranges, int maxLength)
     {
         var result = ImmutableArray.CreateBuilder<ReadItem>();

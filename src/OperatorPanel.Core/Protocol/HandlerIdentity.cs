@@ -9,6 +9,12 @@ public static class HandlerIdentity
 
     public const byte HandlerRevision = 0x01;
 
+    /// <summary>
+    /// MAX_READ_DATA: 119 = 16#77, the data a one-item READ may carry. A READ of N items carries at most
+    /// <see cref="ProtocolLimits.MaxReadDataFor"/>(N) = floor((243 - 4N) / 2) bytes.
+    /// </summary>
+    public const byte MaxReadData = ProtocolLimits.MaxReadData;
+
     /// <summary>STATUS_FLAGS bit 0: SM0.7, the mode switch is at RUN.</summary>
     public const byte ModeSwitchRunFlag = 0x01;
 

@@ -15,7 +15,10 @@ public sealed record IdentifyRequest(Station Station, byte Sequence) : PlcReques
     public override CommandCode Command => CommandCode.Identify;
 }
 
-/// <summary>Read up to <see cref="ProtocolLimits.MaxReadItems"/> blocks in one exchange.</summary>
+/// <summary>
+/// Read up to <see cref="ProtocolLimits.MaxReadItems"/> blocks in one exchange, at most
+/// <see cref="ProtocolLimits.MaxReadDataFor"/>(item count) bytes in all.
+/// </summary>
 public sealed record ReadRequest(Station Station, byte Sequence, ImmutableArray<ReadItem> Items) : PlcRequest(Station, Sequence)
 {
     public override CommandCode Command => CommandCode.Read;

@@ -9,12 +9,25 @@ public static class ProtocolLimits
     /// <summary>Longest body in bytes: (255 - 2) characters, rounded down to whole hex pairs.</summary>
     public const int MaxBodyBytes = 126;
 
-    /// <summary>Items in one READ request; the handler keeps their descriptors in 32 bytes of L memory.</summary>
-    public const int MaxReadItems = 8;
+    /// <summary>
+    /// Items in one READ request. The handler converts the 8N descriptor characters (buffer bytes 10 .. 9 + 8N) with
+    /// one ATH into the 4N bytes at the end of its 256-byte buffer (256 - 4N .. 255); source and destination stay
+    /// apart while 9 + 8N &lt; 256 - 4N, that is N &lt;= 20.
+    /// </summary>
+    public const int MaxReadItems = 20;
 
-    /// <summary>Data bytes in one READ reply: 126 - station, sequence, command, status, block check.</summary>
-    public const int MaxReadData = 121;
+    /// <summary>Data bytes in the largest READ reply, the one-item case of <see cref="MaxReadDataFor"/>: (243 - 4) / 2.</summary>
+    public const int MaxReadData = 119;
 
     /// <summary>Data bytes in one WRITE request: 126 - station, sequence, command, area, offset (2), length, block check.</summary>
     public const int MaxWriteData = 118;
+
+    /// <summary>
+    /// Data bytes a READ reply may carry for <paramref name="itemCount"/> items: floor((243 - 4N) / 2). The reply is
+    /// built from buffer byte 1 on and takes 12 + 2D characters ('&lt;', STATION, SEQ, CMD, STATUS, data, BCC, '&gt;');
+    /// it must end before the binary descriptors at 256 - 4N, so 12 + 2D &lt;= 255 - 4N, i.e. 2D + 4N &lt;= 243.
+    /// N = 1: 119, N = 8: 105, N = 20: 81. Zero for a count outside 1 .. <see cref="MaxReadItems"/>.
+    /// </summary>
+    public static int MaxReadDataFor(int itemCount) =>
+        itemCount is < 1 or > MaxReadItems ? 0 : (243 - (4 * itemCount)) / 2;
 }

@@ -74,8 +74,10 @@ public static partial class RequestCodec
             items.Add(item);
         }
 
-        request = new ReadRequest(station, frame.Sequence, items.MoveToImmutable());
-        return ((ReadRequest)request).TotalLength > ProtocolLimits.MaxReadData ? ProtocolError.BadLength : ProtocolError.None;
+        // Last check of step 6: the reply must end before the descriptors at the buffer's end (2D + 4N <= 243).
+        var read = new ReadRequest(station, frame.Sequence, items.MoveToImmutable());
+        request = read;
+        return read.TotalLength > ProtocolLimits.MaxReadDataFor(read.Items.Length) ? ProtocolError.BadLength : ProtocolError.None;
     }
 
     private static ProtocolError ParseWrite(Station station, FreeportFrame frame, ReadOnlySpan<byte> p, IRequestTarget? target, out PlcRequest request)

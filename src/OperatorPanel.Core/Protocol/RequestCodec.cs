@@ -4,8 +4,9 @@ namespace OperatorPanel.Core.Protocol;
 
 /// <summary>
 /// Requests on the wire (docs/protocol.md, "Commands"): the panel encodes them; a station parses them with
-/// <see cref="TryParse"/>. Encoding a request the protocol forbids (9 items, 119 write bytes, bit 8) is a
-/// programming error and throws.
+/// <see cref="TryParse"/>. Encoding a request the protocol forbids (21 items, more READ data than
+/// <see cref="ProtocolLimits.MaxReadDataFor"/> allows for the item count, 119 write bytes, bit 8) is a programming
+/// error and throws.
 /// </summary>
 public static partial class RequestCodec
 {
@@ -29,7 +30,7 @@ public static partial class RequestCodec
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(read.Items.Length, 1, nameof(read));
         ArgumentOutOfRangeException.ThrowIfGreaterThan(read.Items.Length, ProtocolLimits.MaxReadItems, nameof(read));
-        ArgumentOutOfRangeException.ThrowIfGreaterThan(read.TotalLength, ProtocolLimits.MaxReadData, nameof(read));
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(read.TotalLength, ProtocolLimits.MaxReadDataFor(read.Items.Length), nameof(read));
         var payload = ImmutableArray.CreateBuilder<byte>(1 + (4 * read.Items.Length));
         payload.Add((byte)read.Items.Length);
         foreach (var item in read.Items)

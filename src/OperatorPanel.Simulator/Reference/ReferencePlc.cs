@@ -146,7 +146,7 @@ public sealed class ReferencePlc : IRequestTarget
         HandlerIdentity.CpuModelCode(Config.Cpu.Model),
         HandlerIdentity.CpuRevisionCode(Config.Cpu.Revision),
         Config.WriteMask,
-        ProtocolLimits.MaxReadData,
+        HandlerIdentity.MaxReadData,
         Config.ReplyDelayMs,
         Memory.SM[Smb6],
         Memory.GetBit(ProtocolArea.SM, 0, 7) ? HandlerIdentity.ModeSwitchRunFlag : (byte)0,

@@ -1,6 +1,7 @@
 using OperatorPanel.Cli.Bench;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Cli.Tests.Bench;
 
@@ -47,5 +48,18 @@ public sealed class ReferenceLineTests
         plan.Rejected.Should().BeEmpty();
         plan.Values.Should().HaveCount(101);
         Line.DistinctDataBytes.Should().Be(74, "IB0-2, QB0-1, MB0-MB17 and 51 V bytes");
+    }
+
+    [Fact]
+    public void Plan_ReferenceLine_TwoFramesWithinTheReadRuleAndTheFewestCharacters()
+    {
+        // 26 byte ranges weigh D + 2N = 74 + 52 = 126 > 121 (2D + 4N <= 243), and bridging never lowers that: two frames.
+        // Bridging the four gaps under 4 bytes (2, 2, 2, 3) leaves 22 items and 83 bytes, the fewest characters any plan
+        // can have: 2 x (12 + 12) + 8 x 22 + 2 x 83 = 390.
+        var plan = Line.Plan();
+
+        plan.Frames.Select(f => (f.Items.Length, f.DataBytes)).Should().Equal((20, 81), (2, 2));
+        plan.Frames.Should().OnlyContain(f => f.DataBytes <= ProtocolLimits.MaxReadDataFor(f.Items.Length));
+        (plan.RequestChars + plan.ReplyChars).Should().Be(390);
     }
 }

@@ -46,60 +46,89 @@ public sealed class PollPlannerTests
     }
 
     [Fact]
-    public void Build_RangeLongerThanOneReply_IsSplitAt121Bytes()
+    public void Build_RangeLongerThanOneReply_IsSplitAt119Bytes()
     {
         var dwords = Enumerable.Range(0, 50).Select(i => $"VD{i * 4}").ToArray();
 
         var plan = PollPlanner.Build(Items(One, dwords));
 
-        Frames(plan).Should().Equal("1: V0+121", "1: V121+79");
-        plan.Values.Single(v => v.Item == Item(One, "VD120")).Slices.Should().Equal(new ReplySlice(0, 120, 1), new ReplySlice(1, 0, 3));
+        Frames(plan).Should().Equal("1: V0+119", "1: V119+81");
+        plan.Values.Single(v => v.Item == Item(One, "VD116")).Slices.Should().Equal(new ReplySlice(0, 116, 3), new ReplySlice(1, 0, 1));
     }
 
     [Fact]
-    public void Build_NineFarApartBytes_BridgesOneGapToSaveAFrame()
+    public void Build_TwelveFarApartBytes_ReadAsTwelveItemsOfOneFrameWithoutBridging()
     {
-        // Nine items need two frames; bridging one 10-byte gap (20 reply chars) saves an item (8) and a frame
-        // (12 + 12 + 20 turnaround + 8 for its item): 178 -> 146 characters. A second bridge would only add cost.
-        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 9).Select(i => $"VB{i * 11}")]));
+        // 19-byte gaps cost 38 reply chars each, an item 8: with up to 20 items per READ nothing is worth bridging.
+        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 12).Select(i => $"VB{i * 20}")]));
 
-        Frames(plan).Should().Equal("1: V0+12 V22+1 V33+1 V44+1 V55+1 V66+1 V77+1 V88+1");
-        plan.CostChars.Should().Be(146);
+        Frames(plan).Should().Equal("1: " + Singles("V", 0, 20, 12));
+        plan.CostChars.Should().Be(12 + (12 * 8) + 12 + (12 * 2) + 20);
     }
 
     [Fact]
-    public void Build_SeventeenFarApartBytes_PacksEightItemsPerFrame()
+    public void Build_TwentyOneFarApartBytes_BridgesOneGapToSaveAFrame()
+    {
+        // 21 items need two frames (298 chars); bridging one 10-byte gap (20 reply chars) saves an item (8) and a frame
+        // (12 + 12 + 20 turnaround): 266 characters. A second bridge would only add cost (278).
+        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 21).Select(i => $"VB{i * 11}")]));
+
+        Frames(plan).Should().Equal("1: V0+12 " + Singles("V", 22, 11, 19));
+        plan.CostChars.Should().Be(266);
+    }
+
+    [Fact]
+    public void Build_FortyOneFarApartBytes_PacksTwentyItemsPerFrame()
     {
         // 29-byte gaps cost 58 reply chars, more than the 52 an item and a frame cost: nothing is bridged.
-        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 17).Select(i => $"VB{i * 30}")]));
+        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 41).Select(i => $"VB{i * 30}")]));
 
-        Frames(plan).Should().Equal(
-            "1: V0+1 V30+1 V60+1 V90+1 V120+1 V150+1 V180+1 V210+1",
-            "1: V240+1 V270+1 V300+1 V330+1 V360+1 V390+1 V420+1 V450+1",
-            "1: V480+1");
+        Frames(plan).Should().Equal("1: " + Singles("V", 0, 30, 20), "1: " + Singles("V", 600, 30, 20), "1: V1200+1");
     }
 
     [Fact]
-    public void Build_SeventeenBytesWithSmallerGaps_BridgesOneGapToDropAFrame()
+    public void Build_FortyOneBytesWithSmallerGaps_BridgesOneGapToDropAFrame()
     {
-        // 14-byte gaps cost 28 chars: one bridge leaves 16 items in two frames, saving 52.
-        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 17).Select(i => $"MB{i * 15}")]));
+        // 14-byte gaps cost 28 chars: one bridge leaves 40 items in two frames, saving 52.
+        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 41).Select(i => $"MB{i * 15}")]));
 
-        Frames(plan).Should().Equal(
-            "1: M0+16 M30+1 M45+1 M60+1 M75+1 M90+1 M105+1 M120+1",
-            "1: M135+1 M150+1 M165+1 M180+1 M195+1 M210+1 M225+1 M240+1");
+        Frames(plan).Should().Equal("1: M0+16 " + Singles("M", 30, 15, 19), "1: " + Singles("M", 315, 15, 20));
+    }
+
+    [Fact]
+    public void Build_ElevenTenByteBlocks_SplitByTheDataRuleBeforeTheItemLimit()
+    {
+        // Ten 10-byte blocks fill a reply (2 x 100 + 4 x 10 = 240 <= 243); an eleventh would need 264, though 11 items
+        // are far below 20. 90-byte gaps are never worth bridging.
+        var plan = PollPlanner.Build(
+            [.. Enumerable.Range(0, 11).SelectMany(i => new[] { Item(One, $"VD{i * 100}"), Item(One, $"VD{(i * 100) + 4}"), Item(One, $"VW{(i * 100) + 8}") })]);
+
+        Frames(plan).Should().Equal("1: " + string.Join(' ', Enumerable.Range(0, 10).Select(i => $"V{i * 100}+10")), "1: V1000+10");
+        plan.Frames.Should().OnlyContain(f => plan.CostModel.Fits(f.Items.Length, f.DataBytes));
     }
 
     [Fact]
     public void Build_BlocksOverflowingOneReply_PackedLongestFirst()
     {
-        // 100 + 30 + 20 bytes: the 100-byte block and the 20-byte block fill one reply (120), the 30-byte block gets its own.
+        // 96 + 30 + 20 bytes: the 96-byte block and the 20-byte block fill a two-item reply (116 of at most 117), the
+        // 30-byte block gets its own.
         var plan = PollPlanner.Build(
-            [.. Enumerable.Range(0, 25).Select(i => Item(One, $"VD{i * 4}")),
+            [.. Enumerable.Range(0, 24).Select(i => Item(One, $"VD{i * 4}")),
             .. Enumerable.Range(0, 15).Select(i => Item(One, $"MW{i * 2}")),
             .. Enumerable.Range(0, 20).Select(i => Item(One, $"QB{i}"))]);
 
-        Frames(plan).Should().Equal("1: Q0+20 V0+100", "1: M0+30");
+        Frames(plan).Should().Equal("1: Q0+20 V0+96", "1: M0+30");
+    }
+
+    [Fact]
+    public void Build_TwoBlocksJustOverTheTwoItemLimit_TakeTwoFrames()
+    {
+        // 100 + 18 = 118 bytes would fit one item's 119 but not two items' 117.
+        var plan = PollPlanner.Build(
+            [.. Enumerable.Range(0, 25).Select(i => Item(One, $"VD{i * 4}")),
+            .. Enumerable.Range(0, 9).Select(i => Item(One, $"MW{i * 2}"))]);
+
+        Frames(plan).Should().Equal("1: M0+18", "1: V0+100");
     }
 
     [Fact]
@@ -157,15 +186,19 @@ public sealed class PollPlannerTests
     public void Build_HigherTurnaroundCost_BridgesWiderGapsToSaveFrames()
     {
         var slowBus = PollCostModel.Default with { TurnaroundChars = 200 };
-        var items = Items(One, [.. Enumerable.Range(0, 9).Select(i => $"VB{i * 41}")]);
+        var items = Items(One, [.. Enumerable.Range(0, 21).Select(i => $"VB{i * 41}")]);
 
-        // Default: 178 chars in two frames beats 206 in one (40 gap bytes = 80 chars). At 200 chars of turnaround: 538 vs 386.
+        // Default: 298 chars in two frames beats 326 in one (40 gap bytes = 80 chars). At 200 chars of turnaround: 658 vs 506.
         Frames(PollPlanner.Build(items)).Should().HaveCount(2);
-        Frames(PollPlanner.Build(items, costModel: slowBus)).Should().Equal("1: V0+42 V82+1 V123+1 V164+1 V205+1 V246+1 V287+1 V328+1");
+        Frames(PollPlanner.Build(items, costModel: slowBus)).Should().Equal("1: V0+42 " + Singles("V", 82, 41, 19));
     }
 
     private static List<string> Frames(PollPlan plan) =>
         [.. plan.Frames.Select(f => $"{f.Station.Address}: {string.Join(' ', f.Items.Select(Describe))}")];
 
     private static string Describe(ReadItem item) => $"{item.Area}{item.Offset}+{item.Length}";
+
+    /// <summary>"V0+1 V20+1 …": <paramref name="count"/> one-byte blocks from <paramref name="first"/>, <paramref name="step"/> apart.</summary>
+    private static string Singles(string area, int first, int step, int count) =>
+        string.Join(' ', Enumerable.Range(0, count).Select(i => $"{area}{first + (i * step)}+1"));
 }

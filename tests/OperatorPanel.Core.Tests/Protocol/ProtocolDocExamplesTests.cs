@@ -14,12 +14,16 @@ public sealed partial class ProtocolDocExamplesTests
     private const string NoReply = "(no reply)";
     private static readonly Station One = new(1);
 
+    /// <summary>COUNT 20: VD0, VD8 … VD144 and VB160-VB165, 82 bytes: 2 x 82 + 4 x 20 = 244 &gt; 243.</summary>
+    private static readonly byte[] DataRuleItems =
+        [20, .. Enumerable.Range(0, 19).SelectMany(i => new byte[] { 0x04, 0x00, (byte)(i * 8), 4 }), 0x04, 0x00, 0xA0, 6];
+
     /// <summary>The stated request and reply of each example; null reply = silence.</summary>
     private static readonly Dictionary<string, (byte[] Request, byte[]? Reply)> Stated = new()
     {
         ["identify"] = (
             RequestCodec.Encode(new IdentifyRequest(One, 0x07)),
-            ResponseCodec.Encode(new IdentifyResponse(One, 0x07, 1, 1, 3, 1, 0x3C, 121, 5, 0x20, 1, 3, 2, 9))),
+            ResponseCodec.Encode(new IdentifyResponse(One, 0x07, 1, 1, 3, 1, 0x3C, 119, 5, 0x20, 1, 3, 2, 9))),
         ["read-multi"] = (
             RequestCodec.Encode(new ReadRequest(One, 0x08, [new(ProtocolArea.V, 100, 4), new(ProtocolArea.I, 0, 2), new(ProtocolArea.M, 2, 1)])),
             ResponseCodec.Encode(new ReadResponse(One, 0x08, [0x00, 0x00, 0x04, 0x57, 0xA5, 0x03, 0x05]))),
@@ -39,6 +43,7 @@ public sealed partial class ProtocolDocExamplesTests
             RequestCodec.Encode(new WriteBlockRequest(One, 0x0D, ProtocolArea.I, 0, [0xFF])),
             Error(0x0D, CommandCode.Write, ProtocolError.NotWritable)),
         ["error-04"] = (Raw(0x0E, 0x02, 0x00), Error(0x0E, CommandCode.Read, ProtocolError.BadLength)),
+        ["error-04-data"] = (Raw(0x12, 0x02, DataRuleItems), Error(0x12, CommandCode.Read, ProtocolError.BadLength)),
         ["error-05"] = (Raw(0x0F, 0x07), Error(0x0F, (CommandCode)0x07, ProtocolError.UnknownCommand)),
         ["error-06"] = (Raw(0x10, 0x04, 0x03, 0x00, 0x02, 0x08, 0x01), Error(0x10, CommandCode.WriteBit, ProtocolError.BadParameter)),
         ["silence-bad-bcc"] = ("<01070108>"u8.ToArray(), null),
@@ -81,6 +86,16 @@ public sealed partial class ProtocolDocExamplesTests
                 }
             }
         }
+    }
+
+    [Fact]
+    public void Doc_DataRuleExample_IsRefusedWithBadLengthByTheParser()
+    {
+        var frame = new FreeportFrame(1, 0x12, 0x02, [.. DataRuleItems]);
+
+        RequestCodec.TryParse(frame, new FakeTarget(), out _, out var error).Should().BeFalse();
+
+        error.Should().Be(ProtocolError.BadLength);
     }
 
     private static byte[] Raw(byte sequence, byte command, params byte[] payload) =>

@@ -34,7 +34,7 @@ internal static class RandomMessages
         return request switch
         {
             IdentifyRequest => new IdentifyResponse(
-                station, sequence, 1, 1, (byte)rng.Next(1, 6), (byte)rng.Next(2), (byte)rng.Next(256), 121, (byte)rng.Next(1, 256),
+                station, sequence, 1, 1, (byte)rng.Next(1, 6), (byte)rng.Next(2), (byte)rng.Next(256), HandlerIdentity.MaxReadData, (byte)rng.Next(1, 256),
                 (byte)rng.Next(256), (byte)rng.Next(2), (ushort)rng.Next(65536), (ushort)rng.Next(65536), (ushort)rng.Next(65536)),
             ReadRequest read => new ReadResponse(station, sequence, Bytes(rng, read.TotalLength)),
             WriteBlockRequest write => new WriteBlockResponse(station, sequence, Bytes(rng, write.Data.Length)),
@@ -54,7 +54,7 @@ internal static class RandomMessages
     private static ImmutableArray<ReadItem> Items(Random rng)
     {
         var count = rng.Next(1, ProtocolLimits.MaxReadItems + 1);
-        var budget = ProtocolLimits.MaxReadData - count;
+        var budget = ProtocolLimits.MaxReadDataFor(count) - count;
         var items = ImmutableArray.CreateBuilder<ReadItem>(count);
         for (var i = 0; i < count; i++)
         {

@@ -1,3 +1,4 @@
+using System.Collections.Immutable;
 using System.Text;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
@@ -27,16 +28,51 @@ public sealed class RequestCodecTests
     }
 
     [Theory]
-    [InlineData(9, 1)]
-    [InlineData(0, 1)]
-    [InlineData(1, 122)]
-    public void Encode_ReadOutsideLimits_Throws(int items, int length)
+    [InlineData(21, 21)] // one item more than 20
+    [InlineData(0, 0)]
+    [InlineData(1, 120)] // 2 x 120 + 4 = 244 > 243
+    [InlineData(8, 106)] // 212 + 32 = 244
+    [InlineData(20, 82)] // 164 + 80 = 244
+    public void Encode_ReadOutsideLimits_Throws(int items, int totalLength)
     {
-        var request = new ReadRequest(One, 0, [.. Enumerable.Repeat(new ReadItem(ProtocolArea.V, 0, length), items)]);
+        var request = new ReadRequest(One, 0, ReadItems(items, totalLength));
 
         var act = () => RequestCodec.Encode(request);
 
         act.Should().Throw<ArgumentOutOfRangeException>();
+    }
+
+    [Theory]
+    [InlineData(1, 119)]
+    [InlineData(8, 105)]
+    [InlineData(20, 81)] // 2 x 81 + 4 x 20 = 242 <= 243
+    public void Encode_ReadAtTheDataLimitForItsItemCount_ParsesBackUnchanged(int items, int totalLength)
+    {
+        var request = new ReadRequest(One, 0x21, ReadItems(items, totalLength));
+
+        FrameCodec.TryDecode(RequestCodec.Encode(request), out var frame, out _).Should().BeTrue();
+
+        RequestCodec.TryParse(frame, new FakeTarget(), out var parsed, out var error).Should().BeTrue();
+        error.Should().Be(ProtocolError.None);
+        parsed.Should().BeOfType<ReadRequest>().Which.Items.Should().Equal(request.Items);
+    }
+
+    [Theory]
+    [InlineData(1, 119, ProtocolError.None)]
+    [InlineData(1, 120, ProtocolError.BadLength)]
+    [InlineData(2, 117, ProtocolError.None)]
+    [InlineData(2, 118, ProtocolError.BadLength)]
+    [InlineData(20, 81, ProtocolError.None)]
+    [InlineData(20, 82, ProtocolError.BadLength)]
+    [InlineData(21, 21, ProtocolError.BadLength)] // COUNT > 20, whatever the lengths
+    public void TryParse_ReadAgainstTheTwoDPlusFourNRule_RefusesWithBadLengthPastTheLimit(int items, int totalLength, ProtocolError expected)
+    {
+        var payload = ReadItems(items, totalLength).SelectMany(i => new[] { (byte)i.Area, (byte)(i.Offset >> 8), (byte)i.Offset, (byte)i.Length });
+
+        RequestCodec.TryParse(new FreeportFrame(1, 0, 2, [(byte)items, .. payload]), new FakeTarget(), out _, out var error)
+            .Should().Be(expected == ProtocolError.None);
+
+        error.Should().Be(expected);
     }
 
     [Fact]
@@ -53,7 +89,6 @@ public sealed class RequestCodecTests
     [InlineData("01 00 01", "00", ProtocolError.BadLength)] //                  IDENTIFY with a payload
     [InlineData("01 00 02", "", ProtocolError.BadLength)] //                    READ without COUNT
     [InlineData("01 00 02", "00", ProtocolError.BadLength)] //                  COUNT 0
-    [InlineData("01 00 02", "09 04000001 04000001 04000001 04000001 04000001 04000001 04000001 04000001 04000001", ProtocolError.BadLength)]
     [InlineData("01 00 02", "02 04000001", ProtocolError.BadLength)] //         COUNT 2, one item
     [InlineData("01 00 02", "01 04000000", ProtocolError.BadLength)] //         LENGTH 0
     [InlineData("01 00 02", "01 06000001", ProtocolError.AddressOutOfRange)] // area 06
@@ -61,7 +96,7 @@ public sealed class RequestCodecTests
     [InlineData("01 00 02", "01 01000F02", ProtocolError.AddressOutOfRange)] // IB15 + 2 bytes > 16
     [InlineData("01 00 02", "02 01000F02 04000000", ProtocolError.AddressOutOfRange)] // first failing item decides
     [InlineData("01 00 02", "02 04000000 01000F02", ProtocolError.BadLength)]
-    [InlineData("01 00 02", "02 04000079 04000001", ProtocolError.BadLength)] // 121 + 1 > 121
+    [InlineData("01 00 02", "02 04000075 04000001", ProtocolError.BadLength)] // 117 + 1 > 117 for two items
     [InlineData("01 00 03", "040000", ProtocolError.BadLength)] //             WRITE shorter than 8 bytes
     [InlineData("01 00 03", "04000002 AA", ProtocolError.BadLength)] //        LENGTH 2, one data byte
     [InlineData("01 00 03", "04000000", ProtocolError.BadLength)] //           LENGTH 0
@@ -100,6 +135,10 @@ public sealed class RequestCodecTests
 
         request.Should().BeOfType<WriteBlockRequest>().Which.Offset.Should().Be(0xFFFF);
     }
+
+    /// <summary>V blocks 128 bytes apart: the first takes what the others (1 byte each) leave of the total.</summary>
+    private static ImmutableArray<ReadItem> ReadItems(int count, int totalLength) =>
+        [.. Enumerable.Range(0, count).Select(i => new ReadItem(ProtocolArea.V, i * 128, i == 0 ? totalLength - (count - 1) : 1))];
 
     private static FreeportFrame Frame(string head, string payload)
     {

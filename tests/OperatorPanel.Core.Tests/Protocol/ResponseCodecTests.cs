@@ -23,9 +23,9 @@ public sealed class ResponseCodecTests
     {
         var request = new IdentifyRequest(new Station(1), 0x07);
 
-        ResponseCodec.TryDecode("<01078100010103010F790520010003000200097B>"u8, request, out var response, out _).Should().BeTrue();
+        ResponseCodec.TryDecode("<01078100010103010F7705200100030002000975>"u8, request, out var response, out _).Should().BeTrue();
 
-        response.Should().Be(new IdentifyResponse(new Station(1), 0x07, 1, 1, 3, 1, 0x0F, 121, 5, 0x20, 1, 3, 2, 9));
+        response.Should().Be(new IdentifyResponse(new Station(1), 0x07, 1, 1, 3, 1, 0x0F, 119, 5, 0x20, 1, 3, 2, 9));
     }
 
     [Fact]

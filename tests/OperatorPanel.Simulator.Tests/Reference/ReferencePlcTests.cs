@@ -42,7 +42,7 @@ public sealed class ReferencePlcTests
     [InlineData("01 00 02", "01 09000001", 0x02)] //     area 09
     [InlineData("01 00 02", "01 04200001", 0x02)] //     VB8192 on a 224
     [InlineData("01 00 02", "01 05022502", 0x02)] //     SMB549 + 2 > 550
-    [InlineData("01 00 02", "02 04000040 0400003A", 0x04)] // 64 + 58 = 122 > 121
+    [InlineData("01 00 02", "02 04000040 04000036", 0x04)] // 64 + 54 = 118 > 117 for two items
     [InlineData("01 00 03", "04000077" + "00", 0x04)] // WRITE LENGTH 119
     [InlineData("01 00 03", "04000002 00", 0x04)] //     body does not match LENGTH
     [InlineData("01 00 03", "01000001 00", 0x03)] //     I is never writable
@@ -134,6 +134,23 @@ public sealed class ReferencePlcTests
         Send(plc, "01 02 02", "02 04006404 04006302")!.Payload.Should().Equal(0x00, 0x00, 0x00, 0x04, 0x57, 0x00, 0x00);
     }
 
+    [Theory]
+    [InlineData(1, 119, 0x00)]
+    [InlineData(1, 120, 0x04)] // 2 x 120 + 4 x 1 = 244 > 243
+    [InlineData(20, 81, 0x00)]
+    [InlineData(20, 82, 0x04)] // 164 + 80 = 244 > 243
+    [InlineData(21, 21, 0x04)] // COUNT above 20
+    public void HandleFrame_ReadAgainstTheTwoDPlusFourNRule_AnswersUpToTheLimitAndRefusesPastIt(int items, int totalLength, byte status)
+    {
+        // V blocks 128 bytes apart; the first takes what the others (1 byte each) leave of the total.
+        var payload = $"{items:X2}" + string.Concat(Enumerable.Range(0, items).Select(i => $"04{i * 128:X4}{(i == 0 ? totalLength - items + 1 : 1):X2}"));
+
+        var reply = Send(Plc224(), "01 00 02", payload)!;
+
+        reply.Payload[0].Should().Be(status);
+        reply.Payload.Length.Should().Be(status == 0x00 ? 1 + totalLength : 1);
+    }
+
     [Fact]
     public void HandleFrame_Reply_EchoesStationSequenceAndCommandWithBit7()
     {
@@ -157,7 +174,7 @@ public sealed class ReferencePlcTests
 
         var reply = Send(plc, "01 07 01")!;
 
-        reply.Payload.Should().Equal(0x00, 0x01, 0x01, code, 0x01, 0x1C, 0x79, 0x07, smb6, 0x01, 0x00, 0x02, 0x00, 0x02, 0x00, 0x09);
+        reply.Payload.Should().Equal(0x00, 0x01, 0x01, code, 0x01, 0x1C, 0x77, 0x07, smb6, 0x01, 0x00, 0x02, 0x00, 0x02, 0x00, 0x09);
     }
 
     [Fact]

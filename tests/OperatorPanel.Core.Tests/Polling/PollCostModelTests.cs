@@ -1,0 +1,37 @@
+using OperatorPanel.Core.Polling;
+
+namespace OperatorPanel.Core.Tests.Polling;
+
+public sealed class PollCostModelTests
+{
+    [Theory]
+    [InlineData(1, 119)]
+    [InlineData(2, 117)]
+    [InlineData(8, 105)]
+    [InlineData(20, 81)]
+    [InlineData(21, 0)] // more items than one READ may carry
+    public void MaxDataFor_ItemCount_FollowsTheTwoDPlusFourNRule(int items, int expected)
+    {
+        PollCostModel.Default.MaxDataFor(items).Should().Be(expected);
+    }
+
+    [Theory]
+    [InlineData(20, 81, true)]
+    [InlineData(20, 82, false)]
+    [InlineData(21, 21, false)]
+    [InlineData(1, 119, true)]
+    [InlineData(1, 120, false)]
+    [InlineData(0, 0, false)]
+    public void Fits_ItemsAndData_TrueOnlyWithinBothLimits(int items, int dataBytes, bool expected)
+    {
+        PollCostModel.Default.Fits(items, dataBytes).Should().Be(expected);
+    }
+
+    [Fact]
+    public void MaxDataFor_LowerCustomCap_CapsTheRule()
+    {
+        var model = PollCostModel.Default with { MaxDataPerFrame = 64, MaxItemsPerFrame = 4 };
+
+        (model.MaxDataFor(1), model.MaxDataFor(4), model.MaxDataFor(5)).Should().Be((64, 64, 0));
+    }
+}
