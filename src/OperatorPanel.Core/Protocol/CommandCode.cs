@@ -7,4 +7,10 @@ public enum CommandCode : byte
     Read = 0x02,
     Write = 0x03,
     WriteBit = 0x04,
+
+    /// <summary>Store a READ's item list in the handler's buffer tail under a list id (1-4).</summary>
+    DefineList = 0x05,
+
+    /// <summary>Read a stored list: a 12-character request instead of 12 + 8N.</summary>
+    ReadList = 0x06,
 }

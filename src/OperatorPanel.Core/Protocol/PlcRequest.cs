@@ -39,3 +39,20 @@ public sealed record WriteBitRequest(Station Station, byte Sequence, ProtocolAre
 {
     public override CommandCode Command => CommandCode.WriteBit;
 }
+
+/// <summary>
+/// Store <see cref="Items"/> in the handler under <see cref="List"/> (1-4), so <see cref="ReadListRequest"/> can read
+/// them with a 12-character request. Checked like a READ, plus the tail capacity rule (docs/protocol.md, "Lists").
+/// </summary>
+public sealed record DefineListRequest(Station Station, byte Sequence, int List, ImmutableArray<ReadItem> Items) : PlcRequest(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.DefineList;
+
+    public int TotalLength => Items.Sum(i => i.Length);
+}
+
+/// <summary>Read the items stored under <see cref="List"/>; the reply is that of a READ of them.</summary>
+public sealed record ReadListRequest(Station Station, byte Sequence, int List) : PlcRequest(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.ReadList;
+}

@@ -55,3 +55,15 @@ public sealed record ErrorResponse(Station Station, byte Sequence, CommandCode R
 {
     public override CommandCode Command => RequestCommand;
 }
+
+/// <summary>The list is stored (STATUS 00, no payload).</summary>
+public sealed record DefineListResponse(Station Station, byte Sequence) : PlcResponse(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.DefineList;
+}
+
+/// <summary>The data of every item of the list, concatenated in item order, exactly like a READ reply.</summary>
+public sealed record ReadListResponse(Station Station, byte Sequence, ImmutableArray<byte> Data) : PlcResponse(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.ReadList;
+}

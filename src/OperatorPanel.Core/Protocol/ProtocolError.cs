@@ -12,4 +12,7 @@ public enum ProtocolError : byte
     BadLength = 0x04,
     UnknownCommand = 0x05,
     BadParameter = 0x06,
+
+    /// <summary>READ LIST of a list that was never defined, or was cleared (invalidation, STOP, power-up).</summary>
+    ListNotDefined = 0x07,
 }

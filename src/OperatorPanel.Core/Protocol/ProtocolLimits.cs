@@ -30,4 +30,21 @@ public static class ProtocolLimits
     /// </summary>
     public static int MaxReadDataFor(int itemCount) =>
         itemCount is < 1 or > MaxReadItems ? 0 : (243 - (4 * itemCount)) / 2;
+
+    /// <summary>List ids 1-4 of DEFINE LIST / READ LIST.</summary>
+    public const int MaxLists = 4;
+
+    /// <summary>
+    /// Whether READ lists of (items, data bytes) can all be stored in one handler's buffer tail together: their
+    /// descriptors (4 bytes per item) take the buffer's end, and every list's reply (12 + 2D characters from byte 1)
+    /// must end before them: sum of 4N + the largest 12 + 2D &lt;= 255 (docs/protocol.md, "Lists").
+    /// </summary>
+    public static bool ListsFit(IEnumerable<(int Items, int DataBytes)> lists)
+    {
+        ArgumentNullException.ThrowIfNull(lists);
+        var all = lists.ToList();
+        return all.Count <= MaxLists
+            && all.All(l => l.Items is >= 1 and <= MaxReadItems)
+            && (all.Count == 0 || all.Sum(l => 4 * l.Items) + all.Max(l => 12 + (2 * l.DataBytes)) <= MaxFrameChars);
+    }
 }

@@ -31,6 +31,8 @@ public static partial class RequestCodec
             (byte)CommandCode.Read => ParseRead(station, frame, p, target, out request),
             (byte)CommandCode.Write => ParseWrite(station, frame, p, target, out request),
             (byte)CommandCode.WriteBit => ParseWriteBit(station, frame, p, target, out request),
+            (byte)CommandCode.DefineList => ParseDefineList(station, frame, p, target, out request),
+            (byte)CommandCode.ReadList => ParseReadList(station, frame, p, out request),
             _ => ProtocolError.UnknownCommand,
         };
         if (error != ProtocolError.None)
@@ -56,10 +58,26 @@ public static partial class RequestCodec
             return ProtocolError.BadLength;
         }
 
-        var items = ImmutableArray.CreateBuilder<ReadItem>(p[0]);
-        for (var i = 0; i < p[0]; i++)
+        var error = ParseItems(p[1..], p[0], target, out var items);
+        if (error == ProtocolError.None)
         {
-            var at = 1 + (4 * i);
+            request = new ReadRequest(station, frame.Sequence, items);
+        }
+
+        return error;
+    }
+
+    /// <summary>
+    /// COUNT items in order: LENGTH 0 -> 04, unknown area or past its end -> 02 (first failing item decides); then the
+    /// last check of step 6, 2D + 4N &lt;= 243 (the reply must end before the descriptors at the buffer's end) -> 04.
+    /// </summary>
+    private static ProtocolError ParseItems(ReadOnlySpan<byte> p, int count, IRequestTarget? target, out ImmutableArray<ReadItem> items)
+    {
+        items = default;
+        var builder = ImmutableArray.CreateBuilder<ReadItem>(count);
+        for (var i = 0; i < count; i++)
+        {
+            var at = 4 * i;
             var item = new ReadItem((ProtocolArea)p[at], (p[at + 1] << 8) | p[at + 2], p[at + 3]);
             if (item.Length == 0)
             {
@@ -71,13 +89,11 @@ public static partial class RequestCodec
                 return ProtocolError.AddressOutOfRange;
             }
 
-            items.Add(item);
+            builder.Add(item);
         }
 
-        // Last check of step 6: the reply must end before the descriptors at the buffer's end (2D + 4N <= 243).
-        var read = new ReadRequest(station, frame.Sequence, items.MoveToImmutable());
-        request = read;
-        return read.TotalLength > ProtocolLimits.MaxReadDataFor(read.Items.Length) ? ProtocolError.BadLength : ProtocolError.None;
+        items = builder.MoveToImmutable();
+        return items.Sum(i => i.Length) > ProtocolLimits.MaxReadDataFor(count) ? ProtocolError.BadLength : ProtocolError.None;
     }
 
     private static ProtocolError ParseWrite(Station station, FreeportFrame frame, ReadOnlySpan<byte> p, IRequestTarget? target, out PlcRequest request)

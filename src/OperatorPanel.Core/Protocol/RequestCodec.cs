@@ -21,6 +21,8 @@ public static partial class RequestCodec
             ReadRequest read => ReadPayload(read),
             WriteBlockRequest write => WritePayload(write),
             WriteBitRequest bit => BitPayload(bit),
+            DefineListRequest define => [ListId(define.List), .. ReadPayload(new ReadRequest(define.Station, define.Sequence, define.Items))],
+            ReadListRequest list => [ListId(list.List)],
             _ => throw new ArgumentException($"unknown request type {request.GetType().Name}", nameof(request)),
         };
         return new FreeportFrame((byte)request.Station.Address, request.Sequence, (byte)request.Command, payload);
@@ -41,6 +43,13 @@ public static partial class RequestCodec
         }
 
         return payload.MoveToImmutable();
+    }
+
+    private static byte ListId(int list)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(list, 1);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(list, ProtocolLimits.MaxLists);
+        return (byte)list;
     }
 
     private static ImmutableArray<byte> WritePayload(WriteBlockRequest write)

@@ -24,6 +24,8 @@ public static class ResponseCodec
             ReadResponse read => [0, .. read.Data],
             WriteBlockResponse write => [0, .. write.ReadBack],
             WriteBitResponse bit => [0, bit.ReadBack],
+            DefineListResponse => [0],
+            ReadListResponse list => [0, .. list.Data],
             _ => throw new ArgumentException($"unknown response type {response.GetType().Name}", nameof(response)),
         };
         var command = (byte)((byte)response.Command | FreeportFrame.ReplyBit);
@@ -52,14 +54,15 @@ public static class ResponseCodec
         var data = frame.Payload.AsSpan()[1..];
         if (status != 0)
         {
-            error = status is < (byte)ProtocolError.AddressOutOfRange or > (byte)ProtocolError.BadParameter ? FrameError.UnknownStatus
+            error = status is < (byte)ProtocolError.AddressOutOfRange or > (byte)ProtocolError.ListNotDefined ? FrameError.UnknownStatus
                 : data.Length != 0 ? FrameError.LengthMismatch
                 : FrameError.None;
             response = new ErrorResponse(request.Station, request.Sequence, request.Command, (ProtocolError)status);
             return error == FrameError.None;
         }
 
-        if (data.Length != ExpectedDataBytes(request))
+        // A READ LIST request does not say how long its list is: any READ-sized reply is taken; the caller checks it.
+        if (request is ReadListRequest ? data.Length > ProtocolLimits.MaxReadData : data.Length != ExpectedDataBytes(request))
         {
             error = FrameError.LengthMismatch;
             return false;
@@ -70,6 +73,8 @@ public static class ResponseCodec
             IdentifyRequest => Identify(request, data),
             ReadRequest => new ReadResponse(request.Station, request.Sequence, [.. data]),
             WriteBlockRequest => new WriteBlockResponse(request.Station, request.Sequence, [.. data]),
+            DefineListRequest => new DefineListResponse(request.Station, request.Sequence),
+            ReadListRequest => new ReadListResponse(request.Station, request.Sequence, [.. data]),
             _ => new WriteBitResponse(request.Station, request.Sequence, data[0]),
         };
         return true;
@@ -83,13 +88,18 @@ public static class ResponseCodec
         : frame.Payload.IsEmpty ? FrameError.LengthMismatch
         : FrameError.None;
 
-    /// <summary>Data bytes a successful reply to <paramref name="request"/> carries after STATUS.</summary>
+    /// <summary>
+    /// Data bytes a successful reply to <paramref name="request"/> carries after STATUS; for READ LIST, whose length only
+    /// the stored list knows, the most a reply can carry (<see cref="ProtocolLimits.MaxReadData"/>).
+    /// </summary>
     public static int ExpectedDataBytes(PlcRequest request) => request switch
     {
         IdentifyRequest => IdentifyPayloadBytes,
         ReadRequest read => read.TotalLength,
         WriteBlockRequest write => write.Data.Length,
         WriteBitRequest => 1,
+        DefineListRequest => 0,
+        ReadListRequest => ProtocolLimits.MaxReadData,
         _ => throw new ArgumentException($"unknown request type {request.GetType().Name}", nameof(request)),
     };
 

@@ -16,7 +16,9 @@ public sealed class ReferencePlc : IRequestTarget
     private const int Smw22 = 22;
 
     private readonly byte[] _panelOwnedOutputs;
+    private readonly ListStore _lists = new();
     private ModeSwitch _switch;
+    private OperatingMode _mode = OperatingMode.Run;
     private bool _scanned;
 
     public ReferencePlc(HandlerConfig config)
@@ -33,7 +35,19 @@ public sealed class ReferencePlc : IRequestTarget
 
     public PlcMemory Memory { get; }
 
-    public OperatingMode Mode { get; set; } = OperatingMode.Run;
+    /// <summary>STOP (and the first scan after it) clears every READ list.</summary>
+    public OperatingMode Mode
+    {
+        get => _mode;
+        set
+        {
+            _mode = value;
+            _lists.Clear();
+        }
+    }
+
+    /// <summary>The READ lists in the handler buffer's tail.</summary>
+    public ListStore Lists => _lists;
 
     /// <summary>The mode switch; SM0.7 follows it.</summary>
     public ModeSwitch Switch
@@ -42,6 +56,7 @@ public sealed class ReferencePlc : IRequestTarget
         set
         {
             _switch = value;
+            _lists.Clear();
             Memory.SetBit(ProtocolArea.SM, 0, 7, value == ModeSwitch.Run);
         }
     }
@@ -55,21 +70,48 @@ public sealed class ReferencePlc : IRequestTarget
             return null;
         }
 
+        // Step 1: the received characters sit in buffer bytes 1 .. count; reaching the list tail clears every list.
+        _lists.ClearIfReached(frameChars.Length);
+
         // Steps 2-4: malformed, another station's, or a reply overheard on the bus -> silence.
         if (!FrameCodec.TryDecode(frameChars, out var frame, out _) || frame.Station != Config.Station.Address || frame.IsReply)
         {
             return null;
         }
 
-        // Steps 5-6.
+        // Steps 5-6. A READ whose descriptors, ATH'd just below the floor, would overlap their source clears the lists.
+        if (ReadCount(frame) is { } n)
+        {
+            _lists.ClearIfReached(9 + (8 * n), 4 * n);
+        }
+
         if (!RequestCodec.TryParse(frame, this, out var request, out var error))
         {
             return error == ProtocolError.None ? null : Reply(frame, [(byte)error]);
         }
 
-        // Step 7: execute; the caller sends the reply after the configured delay.
-        return Reply(frame, [0, .. Execute(request)]);
+        error = request switch
+        {
+            DefineListRequest define => _lists.Define(define),
+            ReadListRequest list when !_lists.IsDefined(list.List) => ProtocolError.ListNotDefined,
+            _ => ProtocolError.None,
+        };
+        if (error != ProtocolError.None)
+        {
+            return Reply(frame, [(byte)error]);
+        }
+
+        // Step 7: execute; the caller sends the reply after the configured delay. A reply (12 + 2P characters) that
+        // would reach the floor, or a READ's descriptors below it, clears every list first.
+        var payload = Execute(request);
+        _lists.ClearIfReached(12 + (2 * payload.Length), request is ReadRequest read ? 4 * read.Items.Length : 0);
+        return Reply(frame, [0, .. payload]);
     }
+
+    /// <summary>COUNT of a READ whose COUNT and body length passed: the handler ATHs its descriptors now.</summary>
+    private static int? ReadCount(FreeportFrame frame) =>
+        frame.Command == (byte)CommandCode.Read && frame.BodyBytes >= 5 && frame.Payload[0] is >= 1 and <= ProtocolLimits.MaxReadItems
+            && frame.BodyBytes == 5 + (4 * frame.Payload[0]) ? frame.Payload[0] : null;
 
     /// <summary>Records one finished scan of <paramref name="milliseconds"/> in SMW22/SMW24/SMW26.</summary>
     public void CompleteScan(ushort milliseconds)
@@ -116,7 +158,11 @@ public sealed class ReferencePlc : IRequestTarget
         switch (request)
         {
             case ReadRequest read:
-                return [.. read.Items.SelectMany(item => Memory.Area(item.Area).Skip(item.Offset).Take(item.Length))];
+                return ReadItems(read.Items);
+            case ReadListRequest list:
+                return ReadItems(_lists.Items(list.List));
+            case DefineListRequest:
+                return [];
             case WriteBlockRequest write:
                 write.Data.CopyTo(Memory.Area(write.Area), write.Offset);
                 if (write.Area == ProtocolArea.Q)
@@ -138,6 +184,9 @@ public sealed class ReferencePlc : IRequestTarget
                 return Identify();
         }
     }
+
+    private byte[] ReadItems(IEnumerable<ReadItem> items) =>
+        [.. items.SelectMany(item => Memory.Area(item.Area).Skip(item.Offset).Take(item.Length))];
 
     private byte[] Identify() =>
     [

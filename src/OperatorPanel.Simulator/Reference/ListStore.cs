@@ -1,0 +1,83 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Protocol;
+
+namespace OperatorPanel.Simulator.Reference;
+
+/// <summary>
+/// The READ lists in the tail of the handler's one 256-byte buffer, kept as the STL handler keeps them
+/// (docs/protocol.md, "Lists"): binary descriptors (AREA, OFFSET high, OFFSET low, LENGTH) packed downward from byte
+/// 255 in definition order, and in the work bytes a start and count per list id plus the tail floor, the lowest start
+/// (256 when no list is stored). Whatever reaches the floor has overwritten descriptors, so every list is cleared.
+/// </summary>
+public sealed class ListStore
+{
+    private const int BufferBytes = 256;
+    private readonly byte[] _buffer = new byte[BufferBytes];
+    private readonly int[] _start = new int[ProtocolLimits.MaxLists + 1];
+    private readonly int[] _count = new int[ProtocolLimits.MaxLists + 1];
+
+    /// <summary>The lowest buffer byte holding a descriptor; 256 when no list is stored.</summary>
+    public int Floor { get; private set; } = BufferBytes;
+
+    public bool IsDefined(int list) => list is >= 1 and <= ProtocolLimits.MaxLists && _count[list] > 0;
+
+    /// <summary>Clears every list (invalidation, STOP, power-up, redefinition).</summary>
+    public void Clear()
+    {
+        Array.Clear(_start);
+        Array.Clear(_count);
+        Floor = BufferBytes;
+    }
+
+    /// <summary>
+    /// Clears every list when buffer bytes 1 .. <paramref name="lastByte"/> plus <paramref name="scratchBytes"/> below the
+    /// floor (a READ's own descriptors) reach the floor.
+    /// </summary>
+    public void ClearIfReached(int lastByte, int scratchBytes = 0)
+    {
+        if (lastByte > Floor - 1 - scratchBytes)
+        {
+            Clear();
+        }
+    }
+
+    /// <summary>
+    /// Stores a checked DEFINE LIST: an id already defined clears all lists first; then the descriptors' ATH source
+    /// (bytes 12 .. 11 + 8N) must end before the new floor and every list's reply (12 + 2D characters) must end before
+    /// it too, else 04 and nothing is stored.
+    /// </summary>
+    public ProtocolError Define(DefineListRequest define)
+    {
+        ArgumentNullException.ThrowIfNull(define);
+        if (IsDefined(define.List))
+        {
+            Clear();
+        }
+
+        var n = define.Items.Length;
+        var floor = Floor - (4 * n);
+        var replies = Enumerable.Range(1, ProtocolLimits.MaxLists).Where(IsDefined).Select(DataBytes).Append(define.TotalLength);
+        if (11 + (8 * n) >= floor || replies.Any(d => 12 + (2 * d) > floor - 1))
+        {
+            return ProtocolError.BadLength;
+        }
+
+        for (var i = 0; i < n; i++)
+        {
+            var item = define.Items[i];
+            var at = floor + (4 * i);
+            (_buffer[at], _buffer[at + 1], _buffer[at + 2], _buffer[at + 3]) =
+                ((byte)item.Area, (byte)(item.Offset >> 8), (byte)item.Offset, (byte)item.Length);
+        }
+
+        (_start[define.List], _count[define.List], Floor) = (floor, n, floor);
+        return ProtocolError.None;
+    }
+
+    /// <summary>The stored items of a defined list, read back from the buffer tail.</summary>
+    public ImmutableArray<ReadItem> Items(int list) =>
+        [.. Enumerable.Range(0, _count[list]).Select(i => _start[list] + (4 * i))
+            .Select(at => new ReadItem((ProtocolArea)_buffer[at], (_buffer[at + 1] << 8) | _buffer[at + 2], _buffer[at + 3]))];
+
+    private int DataBytes(int list) => Items(list).Sum(i => i.Length);
+}
