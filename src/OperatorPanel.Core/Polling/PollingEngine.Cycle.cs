@@ -61,7 +61,7 @@ public sealed partial class PollingEngine
                 }
 
                 sent++;
-                reads[i] = await ReadFrameAsync(_plan.Frames[i], cancellationToken).ConfigureAwait(false);
+                reads[i] = await ReadFrameAsync(i, cancellationToken).ConfigureAwait(false);
                 failed += reads[i].Succeeded ? 0 : 1;
                 offlineError = reads[i].StationOffline ? reads[i].Error : null;
             }
@@ -73,12 +73,13 @@ public sealed partial class PollingEngine
         return new PollResult(cycle, started, _time.GetUtcNow(), sent, failed, writes, changes.Count);
     }
 
-    private async Task<FrameRead> ReadFrameAsync(PollFrame frame, CancellationToken cancellationToken)
+    private async Task<FrameRead> ReadFrameAsync(int index, CancellationToken cancellationToken)
     {
+        var frame = _plan.Frames[index];
         PlcResponse? response;
         try
         {
-            response = await _link.ExchangeAsync(new ReadRequest(frame.Station, NextSequence(), frame.Items), cancellationToken).ConfigureAwait(false);
+            response = await ExchangeFrameAsync(index, cancellationToken).ConfigureAwait(false);
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {
@@ -95,6 +96,9 @@ public sealed partial class PollingEngine
             case ReadResponse read when read.Data.Length == frame.DataBytes:
                 _stations.RecordReply(frame.Station);
                 return FrameRead.Success(read.Data);
+            case ReadListResponse list when list.Data.Length == frame.DataBytes:
+                _stations.RecordReply(frame.Station);
+                return FrameRead.Success(list.Data);
             case ErrorResponse refused:
                 var refusal = $"{frame.Station} refused READ {Describe(frame)}: {refused.Error}";
                 _stations.RecordReply(frame.Station, refusal);
@@ -149,6 +153,8 @@ public sealed partial class PollingEngine
     {
         null => "no reply object",
         ReadResponse read => $"{read.Data.Length} data bytes",
+        ReadListResponse list => $"{list.Data.Length} data bytes",
+        ErrorResponse error => $"error {(byte)error.Error:X2} {error.Error}",
         _ => $"{response.GetType().Name}",
     };
 }

@@ -47,4 +47,16 @@ public static class ProtocolLimits
             && all.All(l => l.Items is >= 1 and <= MaxReadItems)
             && (all.Count == 0 || all.Sum(l => 4 * l.Items) + all.Max(l => 12 + (2 * l.DataBytes)) <= MaxFrameChars);
     }
+
+    /// <summary>
+    /// Whether a plain READ of <paramref name="items"/> items and <paramref name="dataBytes"/> bytes leaves lists
+    /// holding <paramref name="tailBytes"/> descriptor bytes intact: its request (12 + 8N characters) ends before the
+    /// floor F = 256 - tail, its descriptors ATH'd just below the floor do not overlap their source (9 + 8N &lt; F - 4N),
+    /// and its reply ends before them (12 + 2D &lt;= F - 1 - 4N).
+    /// </summary>
+    public static bool ReadKeepsLists(int tailBytes, int items, int dataBytes)
+    {
+        var floor = 256 - tailBytes;
+        return 12 + (8 * items) <= floor - 1 && 9 + (8 * items) < floor - (4 * items) && 12 + (2 * dataBytes) <= floor - 1 - (4 * items);
+    }
 }

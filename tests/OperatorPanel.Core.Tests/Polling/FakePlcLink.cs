@@ -18,6 +18,7 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
     private readonly Dictionary<Station, Exception> _throws = [];
     private readonly Dictionary<Station, ProtocolError> _refusals = [];
     private readonly List<(PlcRequest Request, DateTimeOffset At)> _log = [];
+    private readonly Dictionary<(Station, int), ImmutableArray<ReadItem>> _lists = [];
 
     /// <summary>Clock time each exchange takes (the clock is advanced before the reply).</summary>
     public TimeSpan ExchangeDuration { get; set; }
@@ -39,6 +40,21 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
     public IReadOnlyList<DateTimeOffset> RequestTimes
     {
         get { lock (_lock) { return [.. _log.Select(e => e.At)]; } }
+    }
+
+    /// <summary>Stations that refuse DEFINE LIST with 04 (the lists do not fit), like a handler whose tail is full.</summary>
+    public HashSet<Station> RefusesLists { get; } = [];
+
+    /// <summary>Forgets every list of the station, as a handler does when a long frame reaches its buffer tail.</summary>
+    public void ClearLists(Station station)
+    {
+        lock (_lock)
+        {
+            foreach (var key in _lists.Keys.Where(k => k.Item1 == station).ToList())
+            {
+                _lists.Remove(key);
+            }
+        }
     }
 
     public int ExchangesWith(Station station) => Requests.Count(r => r.Station == station);
@@ -125,6 +141,25 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
                 }
 
                 return new ReadResponse(read.Station, read.Sequence, [.. read.Items.SelectMany(i => Memory(read.Station, i.Area).Skip(i.Offset).Take(i.Length))]);
+            case DefineListRequest define:
+                if (RefusesLists.Contains(define.Station))
+                {
+                    return Error(request, ProtocolError.BadLength);
+                }
+
+                lock (_lock) { _lists[(define.Station, define.List)] = define.Items; }
+                return new DefineListResponse(define.Station, define.Sequence);
+            case ReadListRequest list:
+                ImmutableArray<ReadItem> items;
+                lock (_lock)
+                {
+                    if (!_lists.TryGetValue((list.Station, list.List), out items))
+                    {
+                        return Error(request, ProtocolError.ListNotDefined);
+                    }
+                }
+
+                return new ReadListResponse(list.Station, list.Sequence, [.. items.SelectMany(i => Memory(list.Station, i.Area).Skip(i.Offset).Take(i.Length))]);
             case WriteBlockRequest write:
                 if (write.Area == ProtocolArea.I)
                 {

@@ -84,7 +84,7 @@ public sealed class RequestCodecTests
     }
 
     [Theory]
-    [InlineData("01 00 05", "", ProtocolError.UnknownCommand)]
+    [InlineData("01 00 08", "", ProtocolError.UnknownCommand)]
     [InlineData("01 00 00", "", ProtocolError.UnknownCommand)]
     [InlineData("01 00 01", "00", ProtocolError.BadLength)] //                  IDENTIFY with a payload
     [InlineData("01 00 02", "", ProtocolError.BadLength)] //                    READ without COUNT

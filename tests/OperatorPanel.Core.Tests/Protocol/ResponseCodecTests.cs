@@ -48,7 +48,7 @@ public sealed class ResponseCodecTests
     [InlineData("01 08 82", "", FrameError.LengthMismatch)] //                no STATUS
     [InlineData("01 08 82", "02 00", FrameError.LengthMismatch)] //           an error status carries no data
     [InlineData("01 08 82", "01", FrameError.UnknownStatus)] //               01 is never sent
-    [InlineData("01 08 82", "07", FrameError.UnknownStatus)]
+    [InlineData("01 08 82", "08", FrameError.UnknownStatus)]
     public void TryDecode_ReplyNotAnsweringTheRequest_ReportsTheError(string head, string payload, FrameError expected)
     {
         var h = Convert.FromHexString(head.Replace(" ", string.Empty, StringComparison.Ordinal));

@@ -141,7 +141,7 @@ public sealed class PollingEngineWritesTests
         var outcome = await WriteThroughCycle(engine, WriteRequest.Bytes(One, PlcAddress.Parse(address), [0x01]));
 
         outcome.Should().BeEquivalentTo(new WriteOutcome.Failed(reason, WriteFailureKind.InvalidRequest));
-        _link.Requests.Should().AllBeOfType<ReadRequest>();
+        _link.Requests.Should().NotContain(r => r is WriteBlockRequest || r is WriteBitRequest);
     }
 
     [Fact]
@@ -153,7 +153,7 @@ public sealed class PollingEngineWritesTests
         var outcome = await WriteThroughCycle(engine, WriteRequest.Bytes(One, PlcAddress.Parse("SMB5"), [0x01]));
 
         outcome.Should().BeOfType<WriteOutcome.Failed>().Which.Kind.Should().Be(WriteFailureKind.InvalidRequest);
-        _link.Requests.Should().AllBeOfType<ReadRequest>();
+        _link.Requests.Should().NotContain(r => r is WriteBlockRequest || r is WriteBitRequest);
     }
 
     [Fact]
@@ -163,7 +163,7 @@ public sealed class PollingEngineWritesTests
         Task<WriteOutcome>? write = null;
         _link.OnExchange = request =>
         {
-            if (request.Station == One && request is ReadRequest)
+            if (request.Station == One && request is ReadListRequest)
             {
                 write = engine.WriteAsync(WriteRequest.Bytes(Two, PlcAddress.Parse("VB0"), [0x42]));
             }
@@ -172,7 +172,7 @@ public sealed class PollingEngineWritesTests
         await engine.RunCycleAsync(CancellationToken.None);
 
         _link.Requests.Select(r => (r.Station.Address, r.Command)).Should().Equal(
-            (1, CommandCode.Read), (2, CommandCode.Write), (2, CommandCode.Read));
+            (1, CommandCode.DefineList), (1, CommandCode.ReadList), (2, CommandCode.Write), (2, CommandCode.DefineList), (2, CommandCode.ReadList));
         (await write!.Guarded()).Should().BeOfType<WriteOutcome.Confirmed>();
         engine.TryGetValue(Two, PlcAddress.Parse("VB0"), out var value).Should().BeTrue();
         value.Raw.Should().Equal(0x42);
@@ -189,7 +189,7 @@ public sealed class PollingEngineWritesTests
         await engine.RunCycleAsync(CancellationToken.None);
 
         write.IsCanceled.Should().BeTrue();
-        _link.Requests.Should().AllBeOfType<ReadRequest>();
+        _link.Requests.Should().NotContain(r => r is WriteBlockRequest || r is WriteBitRequest);
     }
 
     private PollingEngine Engine(IEnumerable<WatchedItem> items) =>

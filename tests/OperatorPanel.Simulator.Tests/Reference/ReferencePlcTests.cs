@@ -33,7 +33,7 @@ public sealed class ReferencePlcTests
     public void HandleFrame_OverheardReply_IsSilent() => Send(Plc224(), "01 07 81", "00").Should().BeNull();
 
     [Theory]
-    [InlineData("01 00 05", "", 0x05)] //                unknown command
+    [InlineData("01 00 08", "", 0x05)] //                unknown command
     [InlineData("01 00 7F", "", 0x05)]
     [InlineData("01 00 01", "00", 0x04)] //              IDENTIFY with payload
     [InlineData("01 00 02", "00", 0x04)] //              COUNT 0
