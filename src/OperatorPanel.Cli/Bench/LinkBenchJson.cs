@@ -33,6 +33,14 @@ internal static class LinkBenchJson
                 totalChars = r.TotalChars,
                 refreshMs = LineSetting.Modeled.Select(s => new { setting = s.ToString(), ms = r.RefreshMs(s, report.Timing) }),
             }),
+            defineListsOnce = new
+            {
+                note = "once per connection and after an invalidation; the targets use the steady-state refresh",
+                exchanges = report.DefineLists.Frames,
+                pcToPlcChars = report.DefineLists.RequestChars,
+                plcToPcChars = report.DefineLists.ReplyChars,
+                ms = LineSetting.Modeled.Select(s => new { setting = s.ToString(), ms = report.DefineLists.RefreshMs(s, report.Timing) }),
+            },
             targets = report.Targets.Select(t => new { name = t.Name, verdict = t.Verdict, pass = t.Pass, ratio = t.Ratio, limit = t.Limit, detail = t.Detail }),
             measured = measured is null ? null : new
             {

@@ -1,4 +1,5 @@
 using System.Globalization;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Cli.Bench;
@@ -30,16 +31,26 @@ internal static class LinkBenchText
         o.WriteLine("  bytes each way = characters PC->PLC and PLC->PC, framing included");
         o.WriteLine("  one item per request = one READ per tag, per alarm bit and per I/Q byte (this protocol), or the seed");
         o.WriteLine("    paper's Table 1 commands with its binary frames (<MWxx?> 7 chars, reply <MWxx=zz> 9)");
+        o.WriteLine("  READ LIST (steady state) = each frame of the plan stored once in the PLC with DEFINE LIST, then polled with");
+        o.WriteLine("    a 12-character READ LIST; plain READ = the same frames sending their item descriptors every refresh");
+        o.WriteLine("  the targets are evaluated on the steady-state refresh; the DEFINE LISTs are priced separately below");
         o.WriteLine("  lower bound = only the distinct data bytes (a bit costs its byte once): no request, no framing, no delays");
         o.WriteLine();
         o.WriteLine($"Poll plan (PollPlanner, CPU known): {report.Plan.FrameCount} READ frames, {report.Plan.DataBytes} data bytes with bridged gaps");
+        var lists = ReadListAssignment.For(report.Plan);
         for (var i = 0; i < report.Plan.Frames.Length; i++)
         {
-            o.WriteLine($"  frame {i + 1}: {string.Join(", ", report.Plan.Frames[i].Items.Select(Describe))}");
+            var frame = report.Plan.Frames[i];
+            var how = lists.TryGetValue(i, out var list) ? $"list {list}" : "plain READ";
+            o.WriteLine($"  frame {i + 1} ({how}, {frame.Items.Length} items, {frame.DataBytes} bytes): {string.Join(", ", frame.Items.Select(Describe))}");
         }
 
         o.WriteLine();
         WriteFigures(o, report);
+        var define = report.DefineLists;
+        var defineTimes = string.Join(", ", LineSetting.Modeled.Select(s => Invariant($"{define.RefreshMs(s, report.Timing):0.0} ms at {s}")));
+        o.WriteLine($"  one-time cost, once per connection and after an invalidation: {define.Frames} DEFINE LIST exchange{(define.Frames == 1 ? string.Empty : "s")},");
+        o.WriteLine($"    {define.RequestChars} characters PC->PLC + {define.ReplyChars} PLC->PC = {define.TotalChars}: {defineTimes}");
         o.WriteLine();
         o.WriteLine("Targets");
         foreach (var target in report.Targets)

@@ -55,6 +55,12 @@ public sealed record PollCostModel
 
     public int ReplyChars(int dataBytes) => ReplyFixedChars + (DataByteChars * dataBytes);
 
+    /// <summary>READ LIST: '&lt;', STATION, SEQ, CMD, LIST, BCC, '&gt;' = 12 characters whatever the list holds.</summary>
+    public int ReadListRequestChars { get; init; } = 12;
+
+    /// <summary>DEFINE LIST: '&lt;' STATION SEQ CMD LIST COUNT (AREA OFFSET LENGTH)×n BCC '&gt;' = 14 + 8n characters.</summary>
+    public int DefineListRequestChars(int items) => RequestFixedChars + 2 + (ItemChars * items);
+
     /// <summary>Request, reply and turnaround of one READ exchange.</summary>
     public int FrameCost(int items, int dataBytes) => RequestChars(items) + ReplyChars(dataBytes) + TurnaroundChars;
 }

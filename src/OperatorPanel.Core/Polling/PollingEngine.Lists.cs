@@ -21,34 +21,6 @@ public sealed partial class PollingEngine
     /// </summary>
     public bool UseReadLists { get; init; } = true;
 
-    /// <summary>
-    /// Per station, in frame order, the frames that get a list id (1-4): a frame is added while all the station's lists
-    /// still fit the buffer tail together (<see cref="ProtocolLimits.ListsFit"/>) and every frame left to plain READs
-    /// keeps them intact (<see cref="ProtocolLimits.ReadKeepsLists"/>).
-    /// </summary>
-    private static ImmutableDictionary<int, int> AssignLists(PollPlan plan)
-    {
-        var ids = ImmutableDictionary.CreateBuilder<int, int>();
-        foreach (var station in plan.Stations)
-        {
-            var frames = Enumerable.Range(0, plan.Frames.Length).Where(i => plan.Frames[i].Station == station).ToList();
-            var lists = new List<int>();
-            foreach (var candidate in frames)
-            {
-                var chosen = lists.Append(candidate).ToList();
-                var tail = chosen.Sum(i => 4 * plan.Frames[i].Items.Length);
-                if (ProtocolLimits.ListsFit(chosen.Select(i => (plan.Frames[i].Items.Length, plan.Frames[i].DataBytes)))
-                    && frames.Except(chosen).All(i => ProtocolLimits.ReadKeepsLists(tail, plan.Frames[i].Items.Length, plan.Frames[i].DataBytes)))
-                {
-                    lists.Add(candidate);
-                    ids.Add(candidate, lists.Count);
-                }
-            }
-        }
-
-        return ids.ToImmutable();
-    }
-
     /// <summary>READ LIST when the frame has a list (defining it first when needed), else a plain READ.</summary>
     private async Task<PlcResponse> ExchangeFrameAsync(int index, CancellationToken cancellationToken)
     {

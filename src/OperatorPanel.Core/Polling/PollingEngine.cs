@@ -44,7 +44,7 @@ public sealed partial class PollingEngine
         _logger = (logger ?? Logger.None).ForContext<PollingEngine>();
         _values = new ValueStore(plan.Values.Select(v => v.Item), _time.GetUtcNow());
         _stations = new StationTracker(_time, _logger);
-        _listIds = AssignLists(plan);
+        _listIds = ReadListAssignment.For(plan);
     }
 
     public PollPlan Plan => _plan;

@@ -16,7 +16,10 @@ public sealed class BenchCommandTests
             .And.Contain("Assumptions")
             .And.Contain("per exchange: PLC reply delay 5 ms + one PLC scan 10 ms = 15 ms")
             .And.Contain("Poll plan (PollPlanner, CPU known)")
-            .And.Contain("this panel (poll plan)")
+            .And.Contain("this panel, READ LIST (steady state)")
+            .And.Contain("this panel, plain READ")
+            .And.Contain("the targets are evaluated on the steady-state refresh")
+            .And.Contain("one-time cost, once per connection and after an invalidation: 1 DEFINE LIST exchange,")
             .And.Contain("one item per request, this protocol")
             .And.Contain("one item per request, seed frames")
             .And.Contain("lower bound, hex (2 chars/byte)")
@@ -37,7 +40,8 @@ public sealed class BenchCommandTests
         exit.Should().Be(0, $"stdout: {output} stderr: {error}");
         using var json = JsonDocument.Parse(output);
         var root = json.RootElement;
-        root.GetProperty("rows").GetArrayLength().Should().Be(5);
+        root.GetProperty("rows").GetArrayLength().Should().Be(6);
+        root.GetProperty("defineListsOnce").GetProperty("exchanges").GetInt32().Should().Be(1);
         root.GetProperty("targets").EnumerateArray().Select(t => t.GetProperty("verdict").GetString())
             .Should().HaveCount(3).And.OnlyContain(v => v == "PASS" || v == "FAIL");
         root.GetProperty("measured").GetProperty("cycles").GetInt32().Should().Be(2);

@@ -1,6 +1,7 @@
 using OperatorPanel.Cli.Bench;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Cli.Tests.Bench;
@@ -61,5 +62,26 @@ public sealed class ReferenceLineTests
         plan.Frames.Select(f => (f.Items.Length, f.DataBytes)).Should().Equal((20, 81), (2, 2));
         plan.Frames.Should().OnlyContain(f => f.DataBytes <= ProtocolLimits.MaxReadDataFor(f.Items.Length));
         (plan.RequestChars + plan.ReplyChars).Should().Be(390);
+    }
+
+    [Fact]
+    public void FromPlan_ReferenceLine_FirstFrameIsAListTheSecondAPlainRead()
+    {
+        // Both lists would need a tail of 4 x 22 = 88 bytes plus the 174-character reply of frame 1: 262 > 255. Frame 1
+        // alone: 80 + 174 = 254; frame 2 as a plain READ (28 characters, 2 descriptors, 16-character reply) keeps it.
+        var plan = Line.Plan();
+
+        ReadListAssignment.For(plan).Should().Equal(new Dictionary<int, int> { [0] = 1 });
+        TrafficModels.FromPlan(plan).Should().Be(new TrafficFigures(TrafficModels.Planned, 2, 12 + 28, 190));
+        TrafficModels.DefineListsOnce(plan).Should().Be(new TrafficFigures(TrafficModels.DefineLists, 1, 14 + 160, 12));
+    }
+
+    [Fact]
+    public void Report_ReferenceLine_SteadyStatePassesTheTimeTargetAt9600()
+    {
+        var report = LinkBenchReport.Create(Line, ExchangeTiming.Default);
+
+        report.Targets.Should().OnlyContain(t => t.Pass);
+        report.Targets.Single(t => t.Name == "refresh time 9600 8N1").Ratio.Should().BeApproximately(269.583 / 154.167, 0.001);
     }
 }

@@ -19,14 +19,38 @@ public sealed class TrafficModelsTests
     private static readonly string[] Overlapping = ["M2.0", "M2.7", "MB2", "VW100", "VD100"];
 
     [Fact]
-    public void FromPlan_TinyLine_OneFrameOfThreeItems()
+    public void FromPlan_TinyLine_OneReadListOfTwelveCharacters()
     {
         var plan = Tiny.Plan();
         var figures = TrafficModels.FromPlan(plan);
 
+        // Request: '<' STATION SEQ CMD LIST BCC '>' = 1 + 8 + 2 + 1 = 12; the reply is that of the READ (20).
+        figures.Should().Be(new TrafficFigures(TrafficModels.Planned, 1, 12, 20));
+        RequestCodec.Encode(new ReadListRequest(Tiny.Station, 1, 1)).Should().HaveCount(12);
+        ResponseCodec.Encode(new ReadListResponse(Tiny.Station, 1, [1, 2, 3, 4])).Should().HaveCount(20);
+    }
+
+    [Fact]
+    public void DefineListsOnce_TinyLine_OneDefineOfThreeItems()
+    {
+        var plan = Tiny.Plan();
+        var figures = TrafficModels.DefineListsOnce(plan);
+
+        // Request: '<' STATION SEQ CMD LIST COUNT + 3 × 8 + BCC '>' = 1 + 10 + 24 + 2 + 1 = 38; reply 12 (STATUS 00 only).
+        figures.Should().Be(new TrafficFigures(TrafficModels.DefineLists, 1, 38, 12));
+        RequestCodec.Encode(new DefineListRequest(Tiny.Station, 1, 1, plan.Frames[0].Items)).Should().HaveCount(38);
+        ResponseCodec.Encode(new DefineListResponse(Tiny.Station, 1)).Should().HaveCount(12);
+    }
+
+    [Fact]
+    public void PlainReads_TinyLine_OneFrameOfThreeItems()
+    {
+        var plan = Tiny.Plan();
+        var figures = TrafficModels.PlainReads(plan);
+
         // Request: '<' STATION SEQ CMD COUNT + 3 × (AREA OFFSET LENGTH) + BCC '>' = 1 + 8 + 24 + 2 + 1 = 36.
         // Reply: '<' STATION SEQ CMD STATUS + 4 data bytes + BCC '>' = 1 + 8 + 8 + 2 + 1 = 20.
-        figures.Should().Be(new TrafficFigures(TrafficModels.Planned, 1, 36, 20));
+        figures.Should().Be(new TrafficFigures(TrafficModels.PlainRead, 1, 36, 20));
         RequestCodec.Encode(new ReadRequest(Tiny.Station, 1, plan.Frames[0].Items)).Should().HaveCount(36);
         ResponseCodec.Encode(new ReadResponse(Tiny.Station, 1, [1, 2, 3, 4])).Should().HaveCount(20);
     }
@@ -75,7 +99,7 @@ public sealed class TrafficModelsTests
     [InlineData(38400, "8N1", 10, 29.583)]  // 56 × 0.2604 ms + 15 ms
     public void RefreshMs_TinyPlan_CharactersTimesCharacterTimePlusDeadTime(int baud, string format, int bits, double expected)
     {
-        var figures = TrafficModels.FromPlan(Tiny.Plan());
+        var figures = TrafficModels.PlainReads(Tiny.Plan());
 
         figures.RefreshMs(new LineSetting(baud, format, bits), ExchangeTiming.Default).Should().BeApproximately(expected, 0.001);
     }
@@ -88,13 +112,16 @@ public sealed class TrafficModelsTests
     }
 
     [Fact]
-    public void FromPlan_ReferenceLine_MatchesTheEncodedFrames()
+    public void FromPlan_ReferenceLine_MatchesTheEncodedReadListAndReadFrames()
     {
         var line = ReferenceLine.Create();
         var plan = line.Plan();
         var figures = TrafficModels.FromPlan(plan);
+        var lists = ReadListAssignment.For(plan);
 
-        var requests = plan.Frames.Sum(f => RequestCodec.Encode(new ReadRequest(line.Station, 0, f.Items)).Length);
+        var requests = Enumerable.Range(0, plan.FrameCount).Sum(i => RequestCodec.Encode(lists.TryGetValue(i, out var list)
+            ? new ReadListRequest(line.Station, 0, list)
+            : new ReadRequest(line.Station, 0, plan.Frames[i].Items)).Length);
         var replies = plan.Frames.Sum(f => ResponseCodec.Encode(new ReadResponse(line.Station, 0, ImmutableArray.Create(new byte[f.DataBytes]))).Length);
         figures.RequestChars.Should().Be(requests);
         figures.ReplyChars.Should().Be(replies);
