@@ -46,6 +46,15 @@ public sealed partial class ProtocolDocExamplesTests
         ["error-04-data"] = (Raw(0x12, 0x02, DataRuleItems), Error(0x12, CommandCode.Read, ProtocolError.BadLength)),
         ["error-05"] = (Raw(0x0F, 0x07), Error(0x0F, (CommandCode)0x07, ProtocolError.UnknownCommand)),
         ["error-06"] = (Raw(0x10, 0x04, 0x03, 0x00, 0x02, 0x08, 0x01), Error(0x10, CommandCode.WriteBit, ProtocolError.BadParameter)),
+        ["define-list"] = (
+            RequestCodec.Encode(new DefineListRequest(One, 0x13, 1, [new(ProtocolArea.V, 100, 4), new(ProtocolArea.M, 2, 1)])),
+            ResponseCodec.Encode(new DefineListResponse(One, 0x13))),
+        ["read-list"] = (
+            RequestCodec.Encode(new ReadListRequest(One, 0x14, 1)),
+            ResponseCodec.Encode(new ReadListResponse(One, 0x14, [0x00, 0x00, 0x04, 0x57, 0x05]))),
+        ["error-07"] = (
+            RequestCodec.Encode(new ReadListRequest(One, 0x15, 2)),
+            Error(0x15, CommandCode.ReadList, ProtocolError.ListNotDefined)),
         ["silence-bad-bcc"] = ("<01070108>"u8.ToArray(), null),
         ["silence-other-station"] = (RequestCodec.Encode(new IdentifyRequest(new Station(2), 0x11)), null),
         ["silence-overheard-reply"] = (Error(0x0F, (CommandCode)0x07, ProtocolError.UnknownCommand), null),
