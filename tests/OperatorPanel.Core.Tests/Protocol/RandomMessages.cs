@@ -13,8 +13,10 @@ internal static class RandomMessages
     {
         var station = new Station(rng.Next(Station.Min, Station.Max + 1));
         var sequence = (byte)rng.Next(256);
-        return rng.Next(4) switch
+        return rng.Next(6) switch
         {
+            4 => new DefineListRequest(station, sequence, rng.Next(1, ProtocolLimits.MaxLists + 1), Items(rng)),
+            5 => new ReadListRequest(station, sequence, rng.Next(1, ProtocolLimits.MaxLists + 1)),
             0 => new IdentifyRequest(station, sequence),
             1 => new ReadRequest(station, sequence, Items(rng)),
             2 => new WriteBlockRequest(station, sequence, Area(rng), rng.Next(65536), Bytes(rng, rng.Next(1, ProtocolLimits.MaxWriteData + 1))),
@@ -22,13 +24,13 @@ internal static class RandomMessages
         };
     }
 
-    /// <summary>A reply to <paramref name="request"/>: mostly OK with random data, sometimes an error code 02-06.</summary>
+    /// <summary>A reply to <paramref name="request"/>: mostly OK with random data, sometimes an error code 02-07.</summary>
     public static PlcResponse ResponseTo(Random rng, PlcRequest request)
     {
         var (station, sequence) = (request.Station, request.Sequence);
         if (rng.Next(5) == 0)
         {
-            return new ErrorResponse(station, sequence, request.Command, (ProtocolError)rng.Next(2, 7));
+            return new ErrorResponse(station, sequence, request.Command, (ProtocolError)rng.Next(2, 8));
         }
 
         return request switch
@@ -38,6 +40,8 @@ internal static class RandomMessages
                 (byte)rng.Next(256), (byte)rng.Next(2), (ushort)rng.Next(65536), (ushort)rng.Next(65536), (ushort)rng.Next(65536)),
             ReadRequest read => new ReadResponse(station, sequence, Bytes(rng, read.TotalLength)),
             WriteBlockRequest write => new WriteBlockResponse(station, sequence, Bytes(rng, write.Data.Length)),
+            DefineListRequest => new DefineListResponse(station, sequence),
+            ReadListRequest => new ReadListResponse(station, sequence, Bytes(rng, rng.Next(1, ProtocolLimits.MaxReadData + 1))),
             _ => new WriteBitResponse(station, sequence, (byte)rng.Next(256)),
         };
     }

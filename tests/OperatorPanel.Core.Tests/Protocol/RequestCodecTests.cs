@@ -109,6 +109,18 @@ public sealed class RequestCodecTests
     [InlineData("01 00 04", "01000008 01", ProtocolError.NotWritable)] //      I, bit 8: 03 comes before 06
     [InlineData("01 00 04", "02000008 01", ProtocolError.BadParameter)] //     bit 8
     [InlineData("01 00 04", "02000000 02", ProtocolError.BadParameter)] //     value 02
+    [InlineData("01 00 05", "01", ProtocolError.BadLength)] //                 DEFINE LIST without COUNT
+    [InlineData("01 00 05", "01 00", ProtocolError.BadLength)] //              COUNT 0
+    [InlineData("01 00 05", "01 15", ProtocolError.BadLength)] //              COUNT 21
+    [InlineData("01 00 05", "01 02 04000001", ProtocolError.BadLength)] //     COUNT 2, one item
+    [InlineData("01 00 05", "00 01 04000001", ProtocolError.BadParameter)] //  LIST 0
+    [InlineData("01 00 05", "05 01 04000001", ProtocolError.BadParameter)] //  LIST 5
+    [InlineData("01 00 05", "00 01 04000000", ProtocolError.BadParameter)] //  LIST before the items
+    [InlineData("01 00 05", "01 01 04000000", ProtocolError.BadLength)] //     LENGTH 0
+    [InlineData("01 00 05", "01 02 01000F02 04000000", ProtocolError.AddressOutOfRange)] // first failing item decides
+    [InlineData("01 00 05", "01 02 04000075 04000001", ProtocolError.BadLength)] // 117 + 1 > 117 for two items
+    [InlineData("01 00 06", "", ProtocolError.BadLength)] //                   READ LIST without LIST
+    [InlineData("01 00 06", "01 01", ProtocolError.BadLength)] //              READ LIST with an extra byte
     public void TryParse_RequestBreakingARule_GivesTheErrorCode(string head, string payload, ProtocolError expected)
     {
         RequestCodec.TryParse(Frame(head, payload), new FakeTarget(), out var request, out var error).Should().BeFalse();
@@ -144,5 +156,25 @@ public sealed class RequestCodecTests
     {
         var h = Convert.FromHexString(head.Replace(" ", string.Empty, StringComparison.Ordinal));
         return new FreeportFrame(h[0], h[1], h[2], [.. Convert.FromHexString(payload.Replace(" ", string.Empty, StringComparison.Ordinal))]);
+    }
+
+    [Fact]
+    public void TryParse_DefineListAndReadList_GiveTheRequests()
+    {
+        RequestCodec.TryParse(Frame("01 07 05", "02 02 04006404 03000201"), new FakeTarget(), out var define, out _).Should().BeTrue();
+        RequestCodec.TryParse(Frame("01 08 06", "03"), new FakeTarget(), out var read, out _).Should().BeTrue();
+
+        define.Should().BeEquivalentTo(new DefineListRequest(One, 7, 2, [new(ProtocolArea.V, 100, 4), new(ProtocolArea.M, 2, 1)]));
+        read.Should().Be(new ReadListRequest(One, 8, 3));
+    }
+
+    [Theory]
+    [InlineData(0)]
+    [InlineData(5)]
+    public void Encode_ListIdOutsideOneToFour_Throws(int list)
+    {
+        var act = () => RequestCodec.Encode(new ReadListRequest(One, 0, list));
+
+        act.Should().Throw<ArgumentOutOfRangeException>();
     }
 }
