@@ -1,0 +1,101 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Protocol;
+using Serilog.Events;
+using static OperatorPanel.Core.Tests.Polling.PollingSome;
+
+namespace OperatorPanel.Core.Tests.Polling;
+
+/// <summary>READ lists: defined once per frame, polled with READ LIST, redefined on 07, plain READ when refused.</summary>
+public sealed class PollingEngineListTests
+{
+    private readonly PollingTestClock _clock = new();
+    private readonly PollingLogSink _log = new();
+    private readonly FakePlcLink _link;
+
+    public PollingEngineListTests() => _link = new FakePlcLink(_clock);
+
+    [Fact]
+    public async Task RunCycle_TwoStations_DefinesEachListOnceThenPollsWithReadList()
+    {
+        _link.Set(One, ProtocolArea.V, 10, 0x12, 0x34);
+        _link.Set(Two, ProtocolArea.M, 3, 0x08);
+        var engine = Engine([Item(One, "VW10"), Item(Two, "M3.3")]);
+
+        await engine.RunCycleAsync(CancellationToken.None);
+        await engine.RunCycleAsync(CancellationToken.None);
+
+        _link.Requests.Select(r => (r.Station.Address, r.Command)).Should().Equal(
+            (1, CommandCode.DefineList), (1, CommandCode.ReadList), (2, CommandCode.DefineList), (2, CommandCode.ReadList),
+            (1, CommandCode.ReadList), (2, CommandCode.ReadList));
+        _link.Requests.OfType<DefineListRequest>().Select(d => (d.List, d.Items.Single()))
+            .Should().Equal((1, new ReadItem(ProtocolArea.V, 10, 2)), (1, new ReadItem(ProtocolArea.M, 3, 1)));
+        Value(engine, One, "VW10").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x12 && v.Raw[1] == 0x34);
+        Value(engine, Two, "M3.3").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 1);
+    }
+
+    [Fact]
+    public async Task RunCycle_StationLostItsLists_RedefinesAndReadsAgainInTheSameCycle()
+    {
+        var engine = Engine(Items(One, "VB0"));
+        await engine.RunCycleAsync(CancellationToken.None);
+        _link.ClearLists(One);
+        _link.Set(One, ProtocolArea.V, 0, 0x5A);
+
+        var result = await engine.RunCycleAsync(CancellationToken.None);
+
+        _link.Requests.Skip(2).Select(r => r.Command).Should().Equal(CommandCode.ReadList, CommandCode.DefineList, CommandCode.ReadList);
+        result.Should().Match<PollResult>(r => r.FramesSent == 1 && r.FramesFailed == 0);
+        Value(engine, One, "VB0").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x5A);
+    }
+
+    [Fact]
+    public async Task RunCycle_DefineRefused_ReadsThatFrameWithPlainReadAndLogsOnce()
+    {
+        _link.RefusesLists.Add(One);
+        _link.Set(One, ProtocolArea.V, 0, 0x21);
+        var engine = Engine(Items(One, "VB0"));
+
+        await engine.RunCycleAsync(CancellationToken.None);
+        await engine.RunCycleAsync(CancellationToken.None);
+
+        _link.Requests.Select(r => r.Command).Should().Equal(CommandCode.DefineList, CommandCode.Read, CommandCode.Read);
+        Value(engine, One, "VB0").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x21);
+        _log.Events.Where(e => e.Level == LogEventLevel.Warning && e.MessageTemplate.Text.Contains("DEFINE LIST", StringComparison.Ordinal))
+            .Should().ContainSingle();
+    }
+
+    [Fact]
+    public async Task RunCycle_ReadListsSwitchedOff_UsesPlainReadOnly()
+    {
+        var engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock) { UseReadLists = false };
+
+        await engine.RunCycleAsync(CancellationToken.None);
+
+        _link.Requests.Should().ContainSingle().Which.Should().BeOfType<ReadRequest>();
+    }
+
+    [Fact]
+    public void ReadListAssignment_FramesThatDoNotFitTogether_ListsOnlyTheFrameThatKeepsItsList()
+    {
+        // Frame 1: 20 single bytes (tail 80, reply 52); frame 2: VB600-VB718 (tail 4, reply 250). Together 84 + 250 > 255.
+        // Frame 1 as the list would be wiped every cycle by frame 2's plain READ (12 + 238 > 175 - 4); frame 2 as the
+        // list (floor 252) survives frame 1's plain READ (172 <= 251, 169 < 172, 52 <= 171).
+        ReadItem[] singles = [.. Enumerable.Range(0, 20).Select(i => new ReadItem(ProtocolArea.V, i * 30, 1))];
+        var plan = PollPlan.Empty with
+        {
+            Frames = [new PollFrame(One, [.. singles]), new PollFrame(One, [new ReadItem(ProtocolArea.V, 600, 119)])],
+        };
+
+        ReadListAssignment.For(plan).Should().Equal(new Dictionary<int, int> { [1] = 1 });
+    }
+
+    private static PolledValue Value(PollingEngine engine, Core.Link.Station station, string address)
+    {
+        engine.TryGetValue(station, PlcAddress.Parse(address), out var value).Should().BeTrue();
+        return value;
+    }
+
+    private PollingEngine Engine(IEnumerable<WatchedItem> items) =>
+        new(_link, PollPlanner.Build(items), _clock, _log.CreateLogger());
+}
