@@ -9,6 +9,8 @@ namespace OperatorPanel.IntegrationTests.Polling;
 /// </summary>
 internal sealed class PlcPortTap(ITransport inner) : ITransport
 {
+    private readonly Lock _lock = new();
+    private readonly System.Text.StringBuilder _received = new();
     private int _writes;
 
     public Action? OnReceived { get; set; }
@@ -18,6 +20,12 @@ internal sealed class PlcPortTap(ITransport inner) : ITransport
 
     /// <summary>Replies written so far, counted before the first character leaves, so a reply the PC has is counted.</summary>
     public int Replies => Volatile.Read(ref _writes);
+
+    /// <summary>Every character the PLC end has received so far, as ASCII.</summary>
+    public string Received
+    {
+        get { lock (_lock) { return _received.ToString(); } }
+    }
 
     public string Name => inner.Name;
 
@@ -42,6 +50,7 @@ internal sealed class PlcPortTap(ITransport inner) : ITransport
         var count = await inner.ReadAsync(buffer, timeout, cancellationToken);
         if (count > 0)
         {
+            lock (_lock) { _received.Append(System.Text.Encoding.ASCII.GetString(buffer.Span[..count])); }
             OnReceived?.Invoke();
         }
 
