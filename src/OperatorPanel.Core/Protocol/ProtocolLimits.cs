@@ -35,17 +35,27 @@ public static class ProtocolLimits
     public const int MaxLists = 4;
 
     /// <summary>
-    /// Whether READ lists of (items, data bytes) can all be stored in one handler's buffer tail together: their
-    /// descriptors (4 bytes per item) take the buffer's end, and every list's reply (12 + 2D characters from byte 1)
-    /// must end before them: sum of 4N + the largest 12 + 2D &lt;= 255 (docs/protocol.md, "Lists").
+    /// Whether READ lists of (items, data bytes), defined in this order, can all be stored in one handler's buffer tail
+    /// together (docs/protocol.md, "Lists"): each list's descriptors are converted by one ATH from request bytes
+    /// 12 .. 11 + 8N to just below the current floor F, which must not overlap (11 + 8N &lt; F - 4N); and every list's
+    /// reply (12 + 2D characters from byte 1) must end before the final floor: sum of 4N + the largest 12 + 2D &lt;= 255.
     /// </summary>
     public static bool ListsFit(IEnumerable<(int Items, int DataBytes)> lists)
     {
         ArgumentNullException.ThrowIfNull(lists);
         var all = lists.ToList();
-        return all.Count <= MaxLists
-            && all.All(l => l.Items is >= 1 and <= MaxReadItems)
-            && (all.Count == 0 || all.Sum(l => 4 * l.Items) + all.Max(l => 12 + (2 * l.DataBytes)) <= MaxFrameChars);
+        var floor = 256;
+        foreach (var (items, _) in all)
+        {
+            if (items is < 1 or > MaxReadItems || 11 + (8 * items) >= floor - (4 * items))
+            {
+                return false;
+            }
+
+            floor -= 4 * items;
+        }
+
+        return all.Count <= MaxLists && (all.Count == 0 || all.Max(l => 12 + (2 * l.DataBytes)) <= floor - 1);
     }
 
     /// <summary>

@@ -42,22 +42,31 @@ public sealed class ListStore
     }
 
     /// <summary>
-    /// Stores a checked DEFINE LIST: an id already defined clears all lists first; then the descriptors' ATH source
-    /// (bytes 12 .. 11 + 8N) must end before the new floor and every list's reply (12 + 2D characters) must end before
-    /// it too, else 04 and nothing is stored.
+    /// The part of DEFINE LIST that comes before its item checks, once COUNT, body length and LIST have passed: an id
+    /// already defined clears all lists; then the descriptors' ATH to just below the floor must not overlap its source
+    /// (bytes 12 .. 11 + 8N): 11 + 8N &lt; F - 4N, else 04.
     /// </summary>
-    public ProtocolError Define(DefineListRequest define)
+    public ProtocolError PrepareDefine(int list, int itemCount)
     {
-        ArgumentNullException.ThrowIfNull(define);
-        if (IsDefined(define.List))
+        if (IsDefined(list))
         {
             Clear();
         }
 
+        return 11 + (8 * itemCount) >= Floor - (4 * itemCount) ? ProtocolError.BadLength : ProtocolError.None;
+    }
+
+    /// <summary>
+    /// Stores a checked DEFINE LIST (after <see cref="PrepareDefine"/>) under the capacity rule: every list's reply,
+    /// the new one included (12 + 2D characters), must end before the new floor F - 4N, else 04 and nothing is stored.
+    /// </summary>
+    public ProtocolError Define(DefineListRequest define)
+    {
+        ArgumentNullException.ThrowIfNull(define);
         var n = define.Items.Length;
         var floor = Floor - (4 * n);
         var replies = Enumerable.Range(1, ProtocolLimits.MaxLists).Where(IsDefined).Select(DataBytes).Append(define.TotalLength);
-        if (11 + (8 * n) >= floor || replies.Any(d => 12 + (2 * d) > floor - 1))
+        if (replies.Any(d => 12 + (2 * d) > floor - 1))
         {
             return ProtocolError.BadLength;
         }

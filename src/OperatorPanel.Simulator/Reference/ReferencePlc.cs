@@ -85,6 +85,12 @@ public sealed class ReferencePlc : IRequestTarget
             _lists.ClearIfReached(9 + (8 * n), 4 * n);
         }
 
+        // DEFINE LIST: a defined id clears all lists, and its descriptors' ATH must fit below the floor, before the items.
+        if (DefineHeader(frame) is { } header && _lists.PrepareDefine(header.List, header.Count) is var refused && refused != ProtocolError.None)
+        {
+            return Reply(frame, [(byte)refused]);
+        }
+
         if (!RequestCodec.TryParse(frame, this, out var request, out var error))
         {
             return error == ProtocolError.None ? null : Reply(frame, [(byte)error]);
@@ -107,6 +113,12 @@ public sealed class ReferencePlc : IRequestTarget
         _lists.ClearIfReached(12 + (2 * payload.Length), request is ReadRequest read ? 4 * read.Items.Length : 0);
         return Reply(frame, [0, .. payload]);
     }
+
+    /// <summary>LIST and COUNT of a DEFINE LIST whose COUNT, body length and LIST passed (step 6 up to the items).</summary>
+    private static (int List, int Count)? DefineHeader(FreeportFrame frame) =>
+        frame.Command == (byte)CommandCode.DefineList && frame.BodyBytes >= 6 && frame.Payload[1] is >= 1 and <= ProtocolLimits.MaxReadItems
+            && frame.BodyBytes == 6 + (4 * frame.Payload[1]) && frame.Payload[0] is >= 1 and <= ProtocolLimits.MaxLists
+            ? (frame.Payload[0], frame.Payload[1]) : null;
 
     /// <summary>COUNT of a READ whose COUNT and body length passed: the handler ATHs its descriptors now.</summary>
     private static int? ReadCount(FreeportFrame frame) =>

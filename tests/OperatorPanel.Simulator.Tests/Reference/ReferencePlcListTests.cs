@@ -101,6 +101,31 @@ public sealed class ReferencePlcListTests
     }
 
     [Fact]
+    public void DefineList_DescriptorsWhoseAthWouldOverlapTheirSource_Refuses04BeforeTheItems()
+    {
+        // List 1 of 20 single bytes: floor 176. A list 2 of 14 items: 11 + 112 >= 176 - 56, so 04 comes before the
+        // unknown area 09 of its first item could give 02 (its replies alone would fit: 52 <= 119).
+        Send(_plc, "01 01 05", "01 14" + string.Concat(Enumerable.Range(0, 20).Select(i => $"04{i:X4}01")))!.Payload.Should().Equal(0x00);
+
+        Send(_plc, "01 02 05", "02 0E 09000001" + string.Concat(Enumerable.Range(1, 13).Select(i => $"04{i:X4}01")))!
+            .Payload.Should().Equal(0x04);
+
+        _plc.Lists.Floor.Should().Be(176);
+        Send(_plc, "01 03 05", "02 0D" + string.Concat(Enumerable.Range(0, 13).Select(i => $"04{i:X4}01")))!
+            .Payload.Should().Equal(new byte[] { 0x00 }, "13 items: 11 + 104 < 176 - 52");
+    }
+
+    [Fact]
+    public void DefineList_RedefinitionWithABadItem_HasClearedEveryListAnyway()
+    {
+        Send(_plc, "01 01 05", "01 " + TwoItems);
+
+        Send(_plc, "01 02 05", "01 01 09000001")!.Payload.Should().Equal(0x02);
+
+        _plc.Lists.Floor.Should().Be(256);
+    }
+
+    [Fact]
     public void Stop_ClearsEveryList()
     {
         Send(_plc, "01 01 05", "01 " + TwoItems);
