@@ -21,8 +21,12 @@ internal sealed class EngineRun : IAsyncDisposable
     public static EngineRun Start(IPlcLink link, PollPlan plan, RefreshMode mode, TimeSpan minimumPeriod, ILogger log) =>
         new(new PollingEngine(link, plan, TimeProvider.System, log) { Mode = mode, MinimumPeriod = minimumPeriod });
 
-    /// <summary>One engine cycling on demand: what read and write need.</summary>
-    public static EngineRun OnDemand(IPlcLink link, PollPlan plan, ILogger log) => Start(link, plan, RefreshMode.OnDemand, TimeSpan.Zero, log);
+    /// <summary>
+    /// One engine cycling on demand: what read and write need. They refresh once or twice, so registering read lists
+    /// (one more exchange each) would only cost time: plain READs.
+    /// </summary>
+    public static EngineRun OnDemand(IPlcLink link, PollPlan plan, ILogger log) =>
+        new(new PollingEngine(link, plan, TimeProvider.System, log) { Mode = RefreshMode.OnDemand, MinimumPeriod = TimeSpan.Zero, UseReadLists = false });
 
     public async ValueTask DisposeAsync()
     {
