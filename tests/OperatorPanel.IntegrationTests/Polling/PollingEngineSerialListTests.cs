@@ -51,10 +51,25 @@ public sealed partial class PollingEngineSerialListTests
         rig.Value(plc, "VW2000").Raw.Should().Equal(0x12, 0x34);
     }
 
-    private static List<CommandCode> Commands(string received) =>
-        [.. Request().Matches(received).Select(m => (CommandCode)Convert.ToByte(m.Groups[1].Value, 16))];
+    /// <summary>The commands the PLC end heard, one per request: a link retry resends the same SEQ and counts once.</summary>
+    private static List<CommandCode> Commands(string received)
+    {
+        var commands = new List<CommandCode>();
+        string? lastSequence = null;
+        foreach (Match match in Request().Matches(received))
+        {
+            if (match.Groups[1].Value != lastSequence)
+            {
+                commands.Add((CommandCode)Convert.ToByte(match.Groups[2].Value, 16));
+            }
+
+            lastSequence = match.Groups[1].Value;
+        }
+
+        return commands;
+    }
 
     /// <summary>'&lt;' STATION SEQ CMD of a request (CMD bit 7 clear): the PLC end hears requests only.</summary>
-    [GeneratedRegex("<[0-9A-F]{4}([0-7][0-9A-F])")]
+    [GeneratedRegex("<[0-9A-F]{2}([0-9A-F]{2})([0-7][0-9A-F])")]
     private static partial Regex Request();
 }

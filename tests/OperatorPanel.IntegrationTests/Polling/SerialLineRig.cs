@@ -52,7 +52,9 @@ internal sealed class SerialLineRig : IAsyncDisposable
 
         var items = plcs.SelectMany(p => watched.Select(a => new WatchedItem(p.Config.Station, PlcAddress.Parse(a))));
         var cpus = plcs.ToDictionary(p => p.Config.Station, p => p.Config.Cpu);
-        var link = new PlcLink(new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial));
+        // A loaded 2-core CI machine can stall a thread for longer than one PLC scan; the wider allowance keeps the link from
+        // retrying there, so the tests see one exchange per request (retries have their own tests with a manual clock).
+        var link = new PlcLink(new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial) with { ScanAllowance = TimeSpan.FromMilliseconds(400) });
         var engine = new PollingEngine(link, PollPlanner.Build(items, cpus)) { Mode = RefreshMode.OnDemand };
         var rig = new SerialLineRig(pty, tap, link, engine, new SimulatedPlcHost(tap, bus, [], TimeProvider.System));
         rig._hostRun = Task.Run(() => rig.Host.RunAsync(rig._stop.Token));
