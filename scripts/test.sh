@@ -12,4 +12,5 @@ if ! command -v socat >/dev/null 2>&1; then
   $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq socat >/dev/null
 fi
 
-dotnet test OperatorPanel.sln --nologo -v minimal "$@"
+# A hung test host is killed and named after 3 minutes rather than holding CI until its limit.
+dotnet test OperatorPanel.sln --nologo -v minimal --blame-hang-timeout 3m "$@"

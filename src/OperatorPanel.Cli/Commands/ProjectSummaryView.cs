@@ -40,5 +40,5 @@ internal sealed record StationSummaryView(string Name, int Address, string Cpu, 
 
     /// <summary>"9600 8N1 cable", as technicians write line settings.</summary>
     private static string Describe(SerialSettings link) =>
-        $"{link.BaudRate} {link.DataBits}{link.Parity.ToString()[0]}{link.StopBits} {(link.Kind == LinkKind.Cable ? "cable" : "radio module")}";
+        $"{link.LineText} {(link.Kind == LinkKind.Cable ? "cable" : "radio module")}";
 }

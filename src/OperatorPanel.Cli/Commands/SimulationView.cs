@@ -11,7 +11,7 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
             configs[0].Cpu.DisplayName,
             configs.Select(c => c.Station.Address).ToList(),
             settings.PortName,
-            $"{settings.BaudRate} {settings.DataBits}{settings.Parity.ToString()[0]}1",
+            settings.LineText,
             configs[0].ReplyDelayMs,
             process)
     {

@@ -30,7 +30,7 @@ internal static class SnapshotBuilder
             station.Name,
             station.Address.Address,
             station.Cpu.DisplayName,
-            $"{link.PortName} {station.Link.BaudRate} {station.Link.DataBits}{station.Link.Parity.ToString()[0]}1",
+            $"{link.PortName} {station.Link.LineText}",
             status.State.ToString().ToLowerInvariant(),
             status.LastError,
             new LinkView(statistics.Requests, statistics.Replies, statistics.Retries, statistics.Timeouts, statistics.RoundTripAverage?.TotalMilliseconds),

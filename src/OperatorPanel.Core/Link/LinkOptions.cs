@@ -44,10 +44,12 @@ public sealed record LinkOptions
     /// <summary>Slack for OS and converter buffering.</summary>
     public TimeSpan Margin { get; init; } = TimeSpan.FromMilliseconds(20);
 
-    public TimeSpan ReplyTimeoutFor(PlcRequest request)
+    public TimeSpan ReplyTimeoutFor(PlcRequest request) => ReplyTimeoutFor(request, RequestCodec.Encode(request).Length);
+
+    /// <summary>The reply timeout when the request's frame is already encoded (<paramref name="requestChars"/> long).</summary>
+    public TimeSpan ReplyTimeoutFor(PlcRequest request, int requestChars)
     {
         ArgumentNullException.ThrowIfNull(request);
-        var requestChars = RequestCodec.Encode(request).Length;
         var replyChars = 2 + (2 * (FreeportFrame.OverheadBytes + 1 + ResponseCodec.ExpectedDataBytes(request)));
         return (Serial.CharacterTime * (requestChars + replyChars))
             + ReplyDelay + ScanAllowance + Medium.ExtraFor(Serial, requestChars, replyChars) + Margin;

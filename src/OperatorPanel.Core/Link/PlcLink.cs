@@ -46,7 +46,7 @@ public sealed class PlcLink : IPlcLink, IAsyncDisposable
         using var turn = await _arbiter.AcquireAsync(cancellationToken).ConfigureAwait(false);
         var statistics = _statistics.GetOrAdd(request.Station, _ => new StationStatistics());
         var frame = RequestCodec.Encode(request);
-        var timeout = _options.ReplyTimeoutFor(request);
+        var timeout = _options.ReplyTimeoutFor(request, frame.Length);
         PlcCommunicationException? lastFailure = null;
 
         for (var attempt = 0; attempt <= _options.Retries; attempt++)

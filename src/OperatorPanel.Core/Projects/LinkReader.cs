@@ -66,7 +66,5 @@ internal static class LinkReader
     }
 
     /// <summary>"9600 8N1 cable", as technicians write line settings.</summary>
-    public static string Describe(SerialSettings link) => string.Create(
-        CultureInfo.InvariantCulture,
-        $"{link.BaudRate} {link.DataBits}{link.Parity.ToString()[0]}{link.StopBits} {JsonWords.Of(link.Kind)}");
+    public static string Describe(SerialSettings link) => $"{link.LineText} {JsonWords.Of(link.Kind)}";
 }

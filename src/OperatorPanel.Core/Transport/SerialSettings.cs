@@ -19,6 +19,10 @@ public sealed record SerialSettings
 
     public LinkKind Kind { get; init; } = LinkKind.Cable;
 
+    /// <summary>The line settings as technicians write them: "9600 8N1".</summary>
+    public string LineText => string.Create(
+        System.Globalization.CultureInfo.InvariantCulture, $"{BaudRate} {DataBits}{Parity.ToString()[0]}{StopBits}");
+
     /// <summary>Bits on the wire per character: start + data + parity + stop.</summary>
     public int BitsPerCharacter => 1 + DataBits + (Parity == Parity.None ? 0 : 1) + StopBits;
 
