@@ -32,6 +32,12 @@ internal sealed class LinkOptionSet
 
     public Option<string?> Revision { get; } = CpuOptions.Revision();
 
+    public Option<int> ScanMs { get; } = new("--scan-ms")
+    {
+        Description = "Longest PLC scan time in ms the reply timeout allows for (default 100); raise it for long programs",
+        DefaultValueFactory = _ => 100,
+    };
+
     public void AddTo(Command command)
     {
         _serial.AddTo(command);
@@ -39,6 +45,7 @@ internal sealed class LinkOptionSet
         command.Options.Add(Cpu);
         command.Options.Add(Revision);
         command.Options.Add(Demo);
+        command.Options.Add(ScanMs);
     }
 
     public bool TryBind(ParseResult parse, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error)
@@ -57,6 +64,13 @@ internal sealed class LinkOptionSet
             return false;
         }
 
+        var scanMs = parse.GetValue(ScanMs);
+        if (scanMs is < 1 or > 60_000)
+        {
+            error = $"--scan-ms {scanMs} is outside 1-60000";
+            return false;
+        }
+
         CpuProfile? cpu = null;
         var model = parse.GetValue(Cpu) ?? (demo ? "224" : null);
         if (model is not null && !CpuOptions.TryResolve(model, parse.GetValue(Revision), out cpu, out error))
@@ -64,7 +78,7 @@ internal sealed class LinkOptionSet
             return false;
         }
 
-        target = new LinkTarget(station, serial, cpu, demo);
+        target = new LinkTarget(station, serial, cpu, demo, TimeSpan.FromMilliseconds(scanMs));
         error = null;
         return true;
     }

@@ -21,15 +21,18 @@ internal sealed class LinkSession : IAsyncDisposable
     public string PortName => Link.PortName;
 
     /// <summary>Opens <paramref name="serial"/>, or with <paramref name="demoStations"/> a demo line simulating them.</summary>
-    public static LinkSession Open(SerialSettings serial, IReadOnlyList<(Station Station, CpuProfile Cpu)>? demoStations, ILogger log)
+    public static LinkSession Open(
+        SerialSettings serial, IReadOnlyList<(Station Station, CpuProfile Cpu)>? demoStations, ILogger log, TimeSpan? scanAllowance = null)
     {
         var demo = demoStations is null ? null : DemoLine.Start(serial.PortName, demoStations, log);
         ITransport transport = demo is null ? new SerialPortTransport(serial) : demo.PanelSide;
-        return new LinkSession(new PlcLink(transport, LinkOptions.For(serial), TimeProvider.System, log), demo);
+        var options = LinkOptions.For(serial);
+        options = scanAllowance is { } scan ? options with { ScanAllowance = scan } : options;
+        return new LinkSession(new PlcLink(transport, options, TimeProvider.System, log), demo);
     }
 
     public static LinkSession Open(LinkTarget target, ILogger log) =>
-        Open(target.Serial, target.Demo ? [(target.Station, target.Cpu!)] : null, log);
+        Open(target.Serial, target.Demo ? [(target.Station, target.Cpu!)] : null, log, target.ScanAllowance);
 
     public async ValueTask DisposeAsync()
     {

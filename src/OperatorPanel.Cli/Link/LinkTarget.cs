@@ -9,7 +9,8 @@ namespace OperatorPanel.Cli.Link;
 /// <param name="Serial">The port and its Freeport settings; for the demo line only the name and timing matter.</param>
 /// <param name="Cpu">The station's CPU when known (--cpu, or the demo's); addresses are then checked against it.</param>
 /// <param name="Demo">True for the in-process simulated PLC.</param>
-internal sealed record LinkTarget(Station Station, SerialSettings Serial, CpuProfile? Cpu, bool Demo)
+/// <param name="ScanAllowance">The PLC scan time the reply timeout allows for (--scan-ms).</param>
+internal sealed record LinkTarget(Station Station, SerialSettings Serial, CpuProfile? Cpu, bool Demo, TimeSpan ScanAllowance)
 {
     public string Describe() => $"{Station} on {Serial.PortName}";
 }

@@ -72,4 +72,15 @@ public sealed class ReadCommandTests
         run.ExitCode.Should().Be(1);
         run.Error.Should().Contain("--device").And.Contain("--demo");
     }
+
+    [Theory]
+    [InlineData("0")]
+    [InlineData("60001")]
+    public void Read_ScanAllowanceOutOfRange_ExitsOneNamingTheOption(string scanMs)
+    {
+        var run = CliRunner.Run("read", "VB0", "--demo", "--scan-ms", scanMs);
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Contain($"--scan-ms {scanMs} is outside 1-60000");
+    }
 }

@@ -19,15 +19,16 @@ public sealed class SimulateCommandTests
         using var pty = await SocatPtyPair.StartAsync();
         using var simulatorOut = new StringWriter();
         var output = TextWriter.Synchronized(simulatorOut);
-        string[] args = ["simulate", "--cpu", "226", "--station", "3", "--station", "4", "--device", pty.PathA, "--baud", "19200", "--duration", "3", "--log-dir", LogDir];
+        string[] args = ["simulate", "--cpu", "226", "--station", "3", "--station", "4", "--device", pty.PathA, "--baud", "19200", "--duration", "5", "--log-dir", LogDir];
         var simulator = Task.Run(() => OpanelApp.Run(args, output, TextWriter.Null));
         await WaitForAsync(() => Text(output, simulatorOut).Contains("simulating", StringComparison.Ordinal));
-        string[] line = ["--device", pty.PathB, "--baud", "19200"];
+        // Real time on a possibly loaded machine: allow a long "scan" so a stalled thread costs no retry.
+        string[] line = ["--device", pty.PathB, "--baud", "19200", "--scan-ms", "1000"];
 
         var identify = CliRunner.Run(["identify", "--station", "4", "--cpu", "224", .. line]);
         var write = CliRunner.Run(["write", "VW200=4660", "Q1.1=on", "--station", "3", .. line]);
         var read = CliRunner.Run(["read", "VW200", "SMB6", "Q1.1", "--station", "3", .. line]);
-        var silent = CliRunner.Run(["read", "VB0", "--station", "9", .. line]);
+        var silent = CliRunner.Run(["read", "VB0", "--station", "9", "--device", pty.PathB, "--baud", "19200"]);
 
         identify.ExitCode.Should().Be(1, identify.Error); // a CPU 226 asked for as 224: mismatch
         identify.Out.Should().Contain("generated for CPU 226 (Current)").And.Contain("SMB6          16#90: CPU 226")

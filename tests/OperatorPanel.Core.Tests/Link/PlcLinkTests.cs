@@ -161,7 +161,7 @@ public sealed class PlcLinkTests
         var clock = new ManualTimeProvider();
         var pair = new InMemoryTransportPair(clock);
         await pair.BusSide.OpenAsync(default);
-        var link = new PlcLink(pair.PanelSide, LinkOptions.For(Some.SerialSettings()), clock);
+        var link = new PlcLink(pair.PanelSide, LinkOptions.For(Some.SerialSettings()) with { InterFrameGap = TimeSpan.Zero }, clock);
         var other = ReadMb0 with { Sequence = 0x2B };
 
         var first = link.ExchangeAsync(ReadMb0, default);
@@ -173,7 +173,6 @@ public sealed class PlcLinkTests
         nothingMore.Should().Be(0, "the second request waits for the first reply");
         await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x01)), default);
         (await first).Should().BeOfType<ReadResponse>();
-        clock.Advance(TimeSpan.FromMilliseconds(5)); // the cable's inter-frame gap
         (await ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(other)));
         await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x02, 0x2B)), default);
         ((ReadResponse)await second).Data.Should().Equal(0x02);
