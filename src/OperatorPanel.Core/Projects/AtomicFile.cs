@@ -4,11 +4,11 @@ using System.Globalization;
 namespace OperatorPanel.Core.Projects;
 
 /// <summary>
-/// File access for project files with the environment's failures (missing folder, access denied, disk full, a file
+/// File access for project files (and the panel's other saved files: layout, alarm history, generated code) with the environment's failures (missing folder, access denied, disk full, a file
 /// locked by another program) turned into messages. Writing never leaves a half-written target: the bytes go to a
 /// temporary file in the same folder (same volume, so the final step is a rename) and replace the target at once.
 /// </summary>
-internal static class AtomicFile
+public static class AtomicFile
 {
     public static bool TryReadAll(string path, long maxBytes, [NotNullWhen(true)] out byte[]? bytes, [NotNullWhen(false)] out string? error)
     {
@@ -26,7 +26,7 @@ internal static class AtomicFile
                 buffer.Write(chunk, 0, read);
                 if (buffer.Length > maxBytes)
                 {
-                    error = string.Create(CultureInfo.InvariantCulture, $"the file is larger than {maxBytes} bytes, the most a project file may have");
+                    error = string.Create(CultureInfo.InvariantCulture, $"the file is larger than {maxBytes} bytes, the most this kind of file may have");
                     return false;
                 }
             }

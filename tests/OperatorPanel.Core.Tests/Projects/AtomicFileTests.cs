@@ -14,6 +14,6 @@ public sealed class AtomicFileTests
         AtomicFile.TryReadAll(path, maxBytes: 10, out var bytes, out var error).Should().BeFalse();
 
         bytes.Should().BeNull();
-        error.Should().Be("the file is larger than 10 bytes, the most a project file may have");
+        error.Should().Be("the file is larger than 10 bytes, the most this kind of file may have");
     }
 }

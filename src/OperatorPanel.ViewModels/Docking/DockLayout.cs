@@ -1,0 +1,38 @@
+using System.Collections.Immutable;
+
+namespace OperatorPanel.ViewModels.Docking;
+
+/// <summary>The arrangement of every pane; saved per user and restored at start.</summary>
+public sealed record DockLayout(ImmutableArray<PaneLayout> Panes)
+{
+    /// <summary>Smallest docked width/height kept from a layout file.</summary>
+    public const double MinimumDockedSize = 80;
+
+    /// <summary>Inputs and Outputs side by side on the left and right, Memory in the centre, Alarms below, Diagnostics hidden.</summary>
+    public static DockLayout Default { get; } = new(
+    [
+        new PaneLayout(DockPaneId.Inputs, true, DockPlacement.Left, 260, FloatBounds.Default, 0),
+        new PaneLayout(DockPaneId.Outputs, true, DockPlacement.Right, 260, FloatBounds.Default, 0),
+        new PaneLayout(DockPaneId.Memory, true, DockPlacement.Center, 300, FloatBounds.Default, 0),
+        new PaneLayout(DockPaneId.Alarms, true, DockPlacement.Bottom, 200, FloatBounds.Default, 0),
+        new PaneLayout(DockPaneId.Diagnostics, false, DockPlacement.Center, 300, FloatBounds.Default, 1),
+    ]);
+
+    /// <summary>
+    /// Every pane exactly once, with usable sizes: panes missing from a saved layout (an older version) come from
+    /// <see cref="Default"/>, duplicates after the first are dropped.
+    /// </summary>
+    public DockLayout Normalized()
+    {
+        var panes = new List<PaneLayout>();
+        foreach (var id in Enum.GetValues<DockPaneId>())
+        {
+            var saved = Panes.FirstOrDefault(p => p.Id == id) ?? Default.Panes.First(p => p.Id == id);
+            var size = double.IsFinite(saved.DockedSize) ? Math.Max(saved.DockedSize, MinimumDockedSize) : MinimumDockedSize;
+            var placement = Enum.IsDefined(saved.Placement) ? saved.Placement : DockPlacement.Center;
+            panes.Add(saved with { DockedSize = size, Placement = placement, Float = saved.Float.Normalized() });
+        }
+
+        return new DockLayout([.. panes]);
+    }
+}

@@ -1,0 +1,11 @@
+namespace OperatorPanel.ViewModels.Docking;
+
+/// <summary>The panel's dockable windows (seed 000, section 7: Input, Output, Memory, Alarms; plus Diagnostics).</summary>
+public enum DockPaneId
+{
+    Inputs,
+    Outputs,
+    Memory,
+    Alarms,
+    Diagnostics,
+}
