@@ -1,0 +1,208 @@
+using System.ComponentModel;
+using System.Windows;
+using System.Windows.Automation;
+using System.Windows.Controls;
+using OperatorPanel.ViewModels.Docking;
+
+namespace OperatorPanel.App.Docking;
+
+/// <summary>
+/// Plain-WPF docking (the registry copy serves no AvalonDock): four regions (left, right, bottom, centre) with tabs and
+/// splitters, and a window of its own for each floating pane. All state is in <see cref="DockingViewModel"/>; this
+/// class only places the views where the view model says and writes back what the mouse did (splitters, moves).
+/// </summary>
+public sealed class DockHost : ContentControl
+{
+    private const double SplitterSize = 5;
+
+    private readonly Grid _grid = new();
+    private readonly Dictionary<DockPlacement, TabControl> _regions = [];
+    private readonly Dictionary<DockPaneId, TabItem> _tabs = [];
+    private readonly Dictionary<DockPaneId, FloatingPaneWindow> _floating = [];
+    private DockingViewModel? _docking;
+    private Window? _owner;
+
+    public DockHost()
+    {
+        foreach (var placement in new[] { DockPlacement.Left, DockPlacement.Right, DockPlacement.Bottom, DockPlacement.Center })
+        {
+            var tabs = new TabControl { TabStripPlacement = placement == DockPlacement.Center ? Dock.Top : Dock.Bottom };
+            AutomationProperties.SetAutomationId(tabs, $"Dock{placement}Region");
+            _regions[placement] = tabs;
+        }
+
+        BuildGrid();
+        Content = _grid;
+    }
+
+    /// <summary>Shows the panes of <paramref name="docking"/>, each with the view <paramref name="createView"/> makes for it once.</summary>
+    public void Initialize(DockingViewModel docking, Func<DockPaneId, FrameworkElement> createView, Window owner)
+    {
+        ArgumentNullException.ThrowIfNull(docking);
+        ArgumentNullException.ThrowIfNull(createView);
+        _docking = docking;
+        _owner = owner;
+        foreach (var pane in docking.Panes)
+        {
+            var tab = new TabItem { Header = new DockPaneHeader(pane), Content = createView(pane.Id), DataContext = pane };
+            AutomationProperties.SetAutomationId(tab, pane.AutomationId);
+            _tabs[pane.Id] = tab;
+            pane.PropertyChanged += OnPaneChanged;
+        }
+
+        Arrange();
+    }
+
+    /// <summary>At exit, after the layout is saved: closes floating windows without hiding their panes.</summary>
+    public void CloseFloatingWindows()
+    {
+        foreach (var id in _floating.Keys.ToList())
+        {
+            CloseFloating(id, _tabs[id]);
+        }
+    }
+
+    private void OnPaneChanged(object? sender, PropertyChangedEventArgs e)
+    {
+        if (e.PropertyName is nameof(DockPaneViewModel.IsVisible) or nameof(DockPaneViewModel.Placement) or nameof(DockPaneViewModel.Order))
+        {
+            Arrange();
+        }
+    }
+
+    private void Arrange()
+    {
+        if (_docking is null)
+        {
+            return;
+        }
+
+        foreach (var region in _regions.Values)
+        {
+            region.Items.Clear();
+        }
+
+        foreach (var pane in _docking.Panes.OrderBy(p => p.Order))
+        {
+            var tab = _tabs[pane.Id];
+            if (pane.IsVisible && pane.IsFloating)
+            {
+                Float(pane, tab);
+                continue;
+            }
+
+            CloseFloating(pane.Id, tab);
+            if (pane.IsVisible)
+            {
+                _regions[pane.Placement].Items.Add(tab);
+            }
+        }
+
+        foreach (var region in _regions.Values.Where(r => r.Items.Count > 0 && r.SelectedIndex < 0))
+        {
+            region.SelectedIndex = 0;
+        }
+
+        SizeRegions();
+    }
+
+    private void Float(DockPaneViewModel pane, TabItem tab)
+    {
+        if (_floating.ContainsKey(pane.Id))
+        {
+            return;
+        }
+
+        var view = (UIElement)tab.Content;
+        tab.Content = null;
+        var window = new FloatingPaneWindow(pane, view) { Owner = _owner };
+        _floating[pane.Id] = window;
+        window.Show();
+    }
+
+    private void CloseFloating(DockPaneId id, TabItem tab)
+    {
+        if (!_floating.Remove(id, out var window))
+        {
+            return;
+        }
+
+        tab.Content = window.Release();
+        window.Close();
+    }
+
+    private void SizeRegions()
+    {
+        var columns = _grid.ColumnDefinitions;
+        var rows = _grid.RowDefinitions;
+        columns[0].Width = new GridLength(RegionSize(DockPlacement.Left));
+        columns[1].Width = new GridLength(_regions[DockPlacement.Left].Items.Count > 0 ? SplitterSize : 0);
+        columns[3].Width = new GridLength(_regions[DockPlacement.Right].Items.Count > 0 ? SplitterSize : 0);
+        columns[4].Width = new GridLength(RegionSize(DockPlacement.Right));
+        rows[1].Height = new GridLength(_regions[DockPlacement.Bottom].Items.Count > 0 ? SplitterSize : 0);
+        rows[2].Height = new GridLength(RegionSize(DockPlacement.Bottom));
+    }
+
+    private double RegionSize(DockPlacement placement) =>
+        _regions[placement].Items.Count == 0
+            ? 0
+            : _regions[placement].Items.Cast<TabItem>().Select(t => ((DockPaneViewModel)t.DataContext).DockedSize).Max();
+
+    private void BuildGrid()
+    {
+        foreach (var _ in Enumerable.Range(0, 5))
+        {
+            _grid.ColumnDefinitions.Add(new ColumnDefinition());
+        }
+
+        _grid.ColumnDefinitions[2].Width = new GridLength(1, GridUnitType.Star);
+        _grid.RowDefinitions.Add(new RowDefinition { Height = new GridLength(1, GridUnitType.Star) });
+        _grid.RowDefinitions.Add(new RowDefinition());
+        _grid.RowDefinitions.Add(new RowDefinition());
+
+        Place(_regions[DockPlacement.Left], 0, 0);
+        Place(_regions[DockPlacement.Center], 0, 2);
+        Place(_regions[DockPlacement.Right], 0, 4);
+        Place(_regions[DockPlacement.Bottom], 2, 0, columnSpan: 5);
+        AddSplitter(0, 1, DockPlacement.Left, vertical: true);
+        AddSplitter(0, 3, DockPlacement.Right, vertical: true);
+        AddSplitter(1, 0, DockPlacement.Bottom, vertical: false);
+    }
+
+    private void Place(UIElement element, int row, int column, int columnSpan = 1)
+    {
+        Grid.SetRow(element, row);
+        Grid.SetColumn(element, column);
+        Grid.SetColumnSpan(element, columnSpan);
+        _grid.Children.Add(element);
+    }
+
+    private void AddSplitter(int row, int column, DockPlacement region, bool vertical)
+    {
+        var splitter = new GridSplitter
+        {
+            HorizontalAlignment = HorizontalAlignment.Stretch,
+            VerticalAlignment = VerticalAlignment.Stretch,
+            ResizeDirection = vertical ? GridResizeDirection.Columns : GridResizeDirection.Rows,
+            ResizeBehavior = GridResizeBehavior.PreviousAndNext,
+        };
+        AutomationProperties.SetAutomationId(splitter, $"Dock{region}Splitter");
+        splitter.DragCompleted += (_, _) => RememberSize(region);
+        Place(splitter, row, column, vertical ? 1 : 5);
+    }
+
+    /// <summary>A splitter moved: every pane in that region takes the region's new size.</summary>
+    private void RememberSize(DockPlacement region)
+    {
+        var size = region switch
+        {
+            DockPlacement.Left => _grid.ColumnDefinitions[0].ActualWidth,
+            DockPlacement.Right => _grid.ColumnDefinitions[4].ActualWidth,
+            _ => _grid.RowDefinitions[2].ActualHeight,
+        };
+        foreach (var tab in _regions[region].Items.Cast<TabItem>())
+        {
+            ((DockPaneViewModel)tab.DataContext).DockedSize = size;
+        }
+    }
+}
