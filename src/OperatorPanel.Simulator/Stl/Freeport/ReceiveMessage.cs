@@ -73,6 +73,13 @@ internal sealed class ReceiveMessage
         var armed = (_setup.UseIdleLine && character.Start - _idleFrom >= _setup.IdleTime)
             || (_setup.UseBreak && _breakSeen)
             || (!_setup.UseIdleLine && !_setup.UseBreak);
+        if (armed && !_setup.UseStartCharacter && character.Error)
+        {
+            // Without a start character the message began when the line was armed: the bad character ends it.
+            StartMessage(_idleFrom + _setup.IdleTime);
+            return ReceiveStatus.ParityError;
+        }
+
         var wanted = !_setup.UseStartCharacter || character.Value == _setup.StartCharacter;
         if (!armed || !wanted || character.Error)
         {
