@@ -79,7 +79,12 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
 
     internal SerialSettings Build() => new()
     {
-        PortName = PortName.Trim(), BaudRate = BaudRate, Parity = Parity, DataBits = DataBits, StopBits = 1, Kind = Kind,
+        PortName = PortName.Trim(),
+        BaudRate = BaudRate,
+        Parity = Parity,
+        DataBits = DataBits,
+        StopBits = 1,
+        Kind = Kind,
     };
 
     internal override IEnumerable<string> Check(WizardContext context)
