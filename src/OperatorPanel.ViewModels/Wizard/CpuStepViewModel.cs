@@ -1,0 +1,61 @@
+using System.Globalization;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
+
+namespace OperatorPanel.ViewModels.Wizard;
+
+/// <summary>Step 1: the CPU model and revision (one list of every supported pair), the station's name and bus address.</summary>
+public sealed class CpuStepViewModel : WizardStepViewModel
+{
+    private string _projectName;
+    private CpuProfile _cpu;
+    private string _stationName;
+    private string _stationAddress;
+
+    internal CpuStepViewModel(string projectName, CpuProfile cpu, string stationName, Station station)
+    {
+        _projectName = projectName;
+        _cpu = cpu;
+        _stationName = stationName;
+        _stationAddress = station.Address.ToString(CultureInfo.InvariantCulture);
+    }
+
+    public override int Number => 1;
+
+    public override string Title => "CPU and station";
+
+    /// <summary>Every model and revision; <see cref="CpuProfile.DisplayName"/> is the text to show ("CPU 224 (early)").</summary>
+    public IReadOnlyList<CpuProfile> Cpus { get; } = CpuProfiles.All;
+
+    public string ProjectName { get => _projectName; set => Edit(ref _projectName, value ?? string.Empty); }
+
+    public CpuProfile Cpu { get => _cpu; set => Edit(ref _cpu, value ?? throw new ArgumentNullException(nameof(value))); }
+
+    public string StationName { get => _stationName; set => Edit(ref _stationName, value ?? string.Empty); }
+
+    /// <summary>The RS-485 station address as typed, 1-126 (S7-200 ports default to 2).</summary>
+    public string StationAddress { get => _stationAddress; set => Edit(ref _stationAddress, value ?? string.Empty); }
+
+    /// <summary>The typed station address when valid.</summary>
+    internal Station? Station =>
+        int.TryParse(StationAddress.Trim(), NumberStyles.Integer, CultureInfo.InvariantCulture, out var n) && Core.Link.Station.TryCreate(n, out var s, out _)
+            ? s
+            : null;
+
+    internal override IEnumerable<string> Check(WizardContext context)
+    {
+        if (string.IsNullOrWhiteSpace(StationName))
+        {
+            yield return "The station needs a name, e.g. \"Filler\".";
+        }
+
+        if (!int.TryParse(StationAddress.Trim(), NumberStyles.Integer, CultureInfo.InvariantCulture, out var number))
+        {
+            yield return $"Station address '{StationAddress}' is not a number; use {Core.Link.Station.Min}-{Core.Link.Station.Max}.";
+        }
+        else if (!Core.Link.Station.TryCreate(number, out _, out var error))
+        {
+            yield return $"The {error}.";
+        }
+    }
+}

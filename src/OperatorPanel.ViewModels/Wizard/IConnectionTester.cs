@@ -1,0 +1,18 @@
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.ViewModels.Wizard;
+
+/// <summary>
+/// Sends one IDENTIFY for the wizard's "test connection" (docs/protocol.md, "01 IDENTIFY"). The App passes a
+/// <see cref="LinkConnectionTester"/> over the serial port (or the demo line); tests pass a fake or the simulated PLC.
+/// </summary>
+public interface IConnectionTester
+{
+    /// <summary>
+    /// The station's reply (an <see cref="IdentifyResponse"/>, or an <see cref="ErrorResponse"/>). Throws
+    /// <see cref="PlcCommunicationException"/> when the port cannot be opened or no valid reply came.
+    /// </summary>
+    Task<PlcResponse> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken);
+}

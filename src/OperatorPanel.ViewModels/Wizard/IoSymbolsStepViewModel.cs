@@ -1,0 +1,147 @@
+using System.Collections.Immutable;
+using System.Collections.ObjectModel;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.ViewModels.Mvvm;
+
+namespace OperatorPanel.ViewModels.Wizard;
+
+/// <summary>
+/// Step 2: names for input and output bits, typed in two tables or pasted from a Micro/WIN symbol table
+/// (<see cref="SymbolTableImport"/>). A pasted symbol for an address already listed replaces that row's symbol and comment.
+/// </summary>
+public sealed class IoSymbolsStepViewModel : WizardStepViewModel
+{
+    private readonly Func<CpuProfile> _cpu;
+    private string? _pasteReport;
+
+    internal IoSymbolsStepViewModel(IEnumerable<IoSymbol> inputs, IEnumerable<IoSymbol> outputs, Func<CpuProfile> cpu)
+    {
+        _cpu = cpu;
+        Inputs = new ObservableCollection<IoSymbolRowViewModel>(inputs.Select(s => new IoSymbolRowViewModel(s)));
+        Outputs = new ObservableCollection<IoSymbolRowViewModel>(outputs.Select(s => new IoSymbolRowViewModel(s)));
+        Track(Inputs);
+        Track(Outputs);
+        AddInputCommand = new RelayCommand(() => Inputs.Add(new IoSymbolRowViewModel()));
+        AddOutputCommand = new RelayCommand(() => Outputs.Add(new IoSymbolRowViewModel()));
+        RemoveCommand = new RelayCommand<IoSymbolRowViewModel>(row => _ = Inputs.Remove(row) || Outputs.Remove(row));
+        FillLocalPointsCommand = new RelayCommand(FillLocalPoints);
+        PasteCommand = new RelayCommand<string>(Paste);
+    }
+
+    public override int Number => 2;
+
+    public override string Title => "Input and output symbols";
+
+    public ObservableCollection<IoSymbolRowViewModel> Inputs { get; }
+
+    public ObservableCollection<IoSymbolRowViewModel> Outputs { get; }
+
+    public RelayCommand AddInputCommand { get; }
+
+    public RelayCommand AddOutputCommand { get; }
+
+    public RelayCommand<IoSymbolRowViewModel> RemoveCommand { get; }
+
+    /// <summary>Replaces both tables with the CPU's on-board points and placeholder symbols (I0.0 Input_0_0 ...).</summary>
+    public RelayCommand FillLocalPointsCommand { get; }
+
+    /// <summary>Takes the clipboard text of a Micro/WIN symbol table.</summary>
+    public RelayCommand<string> PasteCommand { get; }
+
+    /// <summary>What the last paste did, e.g. "Pasted 3 inputs and 2 outputs; 1 line rejected."</summary>
+    public string? PasteReport { get => _pasteReport; private set => SetProperty(ref _pasteReport, value); }
+
+    /// <summary>The lines the last paste rejected: "line 4: VW100 is not an input or output bit; ...".</summary>
+    public ObservableCollection<string> RejectedLines { get; } = [];
+
+    public void Paste(string text)
+    {
+        ArgumentNullException.ThrowIfNull(text);
+        var import = SymbolTableImport.Parse(text);
+        Merge(Inputs, import.Inputs);
+        Merge(Outputs, import.Outputs);
+        RejectedLines.Clear();
+        foreach (var rejection in import.Rejected)
+        {
+            RejectedLines.Add(rejection.ToString());
+        }
+
+        var rejected = import.Rejected.Length;
+        PasteReport = $"Pasted {import.Inputs.Length} input{Plural(import.Inputs.Length)} and {import.Outputs.Length} output{Plural(import.Outputs.Length)}; "
+            + $"{rejected} line{Plural(rejected)} rejected.";
+    }
+
+    internal IReadOnlySet<string> Symbols() =>
+        Inputs.Concat(Outputs).Select(r => r.Symbol.Trim()).Where(s => s.Length > 0).ToHashSet(StringComparer.OrdinalIgnoreCase);
+
+    internal ImmutableArray<IoSymbol> BuildInputs() => [.. Inputs.Select(r => Build(r))];
+
+    internal ImmutableArray<IoSymbol> BuildOutputs() => [.. Outputs.Select(r => Build(r))];
+
+    internal override IEnumerable<string> Check(WizardContext context)
+    {
+        var symbols = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
+        return CheckTable("Input", Inputs, MemoryArea.I, context, symbols).Concat(CheckTable("Output", Outputs, MemoryArea.Q, context, symbols)).ToList();
+    }
+
+    private static IEnumerable<string> CheckTable(
+        string noun, ObservableCollection<IoSymbolRowViewModel> rows, MemoryArea area, WizardContext context, HashSet<string> symbols)
+    {
+        var addresses = new HashSet<PlcAddress>();
+        var kind = area == MemoryArea.I ? "an input is an I bit such as I0.0" : "an output is a Q bit such as Q0.0";
+        for (var i = 0; i < rows.Count; i++)
+        {
+            var row = rows[i];
+            var error = WizardAddress.Check(row.Address, context.Cpu, AddressUse.Read, a => WizardAddress.IsBitOf(a, area) ? null : $"{kind}, not {a}", out var address);
+            error ??= addresses.Add(address) ? null : $"{address} is listed twice";
+            error ??= string.IsNullOrWhiteSpace(row.Symbol) ? "the symbol is empty" : null;
+            error ??= symbols.Add(row.Symbol.Trim()) ? null : $"symbol '{row.Symbol.Trim()}' is used twice";
+            row.Error = error;
+            if (error is not null)
+            {
+                yield return $"{noun} row {i + 1} ({Shown(row.Address)}): {error}.";
+            }
+        }
+    }
+
+    private static string Shown(string text) => string.IsNullOrWhiteSpace(text) ? "no address" : text.Trim();
+
+    private static IoSymbol Build(IoSymbolRowViewModel row) => new(row.Symbol.Trim(), PlcAddress.Parse(row.Address.Trim()), row.Description.Trim());
+
+    private static void Merge(ObservableCollection<IoSymbolRowViewModel> rows, IEnumerable<IoSymbol> pasted)
+    {
+        foreach (var symbol in pasted)
+        {
+            var existing = rows.FirstOrDefault(r => PlcAddress.TryParse(r.Address.Trim(), out var a, out _) && a == symbol.Address);
+            if (existing is null)
+            {
+                rows.Add(new IoSymbolRowViewModel(symbol));
+            }
+            else
+            {
+                existing.Symbol = symbol.Symbol;
+                existing.Description = symbol.Description;
+            }
+        }
+    }
+
+    private void FillLocalPoints()
+    {
+        var starter = StarterProject.Create(string.Empty, _cpu(), new Core.Link.Station(2), "COM1").Stations[0];
+        Inputs.Clear();
+        Outputs.Clear();
+        foreach (var input in starter.Inputs)
+        {
+            Inputs.Add(new IoSymbolRowViewModel(input));
+        }
+
+        foreach (var output in starter.Outputs)
+        {
+            Outputs.Add(new IoSymbolRowViewModel(output));
+        }
+    }
+
+    private static string Plural(int count) => count == 1 ? string.Empty : "s";
+}

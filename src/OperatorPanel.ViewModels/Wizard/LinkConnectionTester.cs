@@ -1,0 +1,32 @@
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.ViewModels.Wizard;
+
+/// <summary>
+/// Tests a link the way the panel will use it: a <see cref="PlcLink"/> with the medium's timeouts and retries
+/// (<see cref="LinkOptions.For"/>), over a transport opened for the test and closed after it. The port must not be in use
+/// by a running session: disconnect before testing the port the panel is connected on.
+/// </summary>
+public sealed class LinkConnectionTester : IConnectionTester
+{
+    private readonly Func<SerialSettings, ITransport> _openTransport;
+    private readonly TimeProvider _time;
+
+    /// <param name="openTransport">Makes the transport, e.g. <c>s =&gt; new SerialPortTransport(s)</c>; the link opens it.</param>
+    /// <param name="time">The clock of the reply timeouts.</param>
+    public LinkConnectionTester(Func<SerialSettings, ITransport> openTransport, TimeProvider time)
+    {
+        ArgumentNullException.ThrowIfNull(openTransport);
+        ArgumentNullException.ThrowIfNull(time);
+        (_openTransport, _time) = (openTransport, time);
+    }
+
+    public async Task<PlcResponse> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
+    {
+        ArgumentNullException.ThrowIfNull(link);
+        await using var plcLink = new PlcLink(_openTransport(link), LinkOptions.For(link), _time);
+        return await plcLink.ExchangeAsync(new IdentifyRequest(station, 1), cancellationToken);
+    }
+}

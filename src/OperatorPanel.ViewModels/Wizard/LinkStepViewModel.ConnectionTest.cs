@@ -1,0 +1,65 @@
+using System.Globalization;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.ViewModels.Wizard;
+
+/// <summary>The link step's "test connection": one IDENTIFY, its answer decoded and compared with step 1's CPU.</summary>
+public sealed partial class LinkStepViewModel
+{
+    private string? _testResult;
+    private bool? _testSucceeded;
+
+    /// <summary>What the test found, for the operator; null before the first test.</summary>
+    public string? TestResult { get => _testResult; private set => SetProperty(ref _testResult, value); }
+
+    /// <summary>True when the station answered and matches the chosen CPU; false on a failure or mismatch; null while untested or running.</summary>
+    public bool? TestSucceeded { get => _testSucceeded; private set => SetProperty(ref _testSucceeded, value); }
+
+    private async Task TestConnectionAsync()
+    {
+        var cpu = _cpuStep.Cpu;
+        if (_cpuStep.Station is not { } station || Problems.Length > 0 || string.IsNullOrWhiteSpace(PortName))
+        {
+            TestSucceeded = false;
+            TestResult = "Fix the station address (step 1) and the link settings before testing.";
+            return;
+        }
+
+        var link = Build();
+        var where = string.Create(CultureInfo.InvariantCulture, $"Station {station.Address} on {link.PortName} at {link.LineText}");
+        TestSucceeded = null;
+        TestResult = where + ": asking...";
+        try
+        {
+            var reply = await _tester.IdentifyAsync(link, station, CancellationToken.None);
+            (TestSucceeded, TestResult) = reply switch
+            {
+                IdentifyResponse identity => Describe(where, identity, cpu),
+                ErrorResponse refusal => (false, $"{where} refused IDENTIFY ({refusal.Error}): the handler is too old or not ours; regenerate it."),
+                _ => (false, $"{where} answered IDENTIFY with a {reply.Command} reply; is another device on the bus?"),
+            };
+        }
+        catch (PlcCommunicationException ex)
+        {
+            TestSucceeded = false;
+            TestResult = ex.Kind switch
+            {
+                PlcErrorKind.PortUnavailable => $"{link.PortName} could not be used: {ex.Message}",
+                PlcErrorKind.FrameCorrupt => $"{where}: garbled replies; check that baud rate and parity match the handler. ({ex.Message})",
+                _ => $"{where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
+                    + $"mode switch at RUN (not TERM) and that the handler is loaded. ({ex.Message})",
+            };
+        }
+    }
+
+    private static (bool, string) Describe(string where, IdentifyResponse identity, Core.Cpu.CpuProfile cpu)
+    {
+        var answer = string.Create(CultureInfo.InvariantCulture,
+            $"{where} answered: handler for {IdentifyCheck.DescribeGeneratedFor(identity)}, protocol {identity.ProtocolVersion}, "
+            + $"handler revision {identity.HandlerRevision}, mode switch {(identity.ModeSwitchRun ? "RUN" : "TERM")}, last scan {identity.LastScanMs} ms.");
+        return IdentifyCheck.Mismatch(identity, cpu) is { } mismatch
+            ? (false, $"{answer} CPU mismatch with {cpu.DisplayName}: {mismatch}.")
+            : (true, $"{answer} Matches {cpu.DisplayName}.");
+    }
+}

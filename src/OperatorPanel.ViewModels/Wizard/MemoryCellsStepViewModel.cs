@@ -1,0 +1,69 @@
+using System.Collections.Immutable;
+using System.Collections.ObjectModel;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.ViewModels.Mvvm;
+
+namespace OperatorPanel.ViewModels.Wizard;
+
+/// <summary>
+/// Step 3: the memory cells the PLC memory window watches (seed 000 §7: any bit, byte, word or double word of M and V;
+/// I, Q and SM read-only as the project file allows). Each address is checked against the CPU, for writing when writable.
+/// </summary>
+public sealed class MemoryCellsStepViewModel : WizardStepViewModel
+{
+    internal MemoryCellsStepViewModel(IEnumerable<ProjectTag> tags)
+    {
+        Cells = new ObservableCollection<MemoryCellRowViewModel>(tags.Select(t => new MemoryCellRowViewModel(t)));
+        Track(Cells);
+        AddCommand = new RelayCommand(() => Cells.Add(new MemoryCellRowViewModel()));
+        RemoveCommand = new RelayCommand<MemoryCellRowViewModel>(row => Cells.Remove(row));
+        MoveUpCommand = new RelayCommand<MemoryCellRowViewModel>(row => Cells.Move(Cells.IndexOf(row), Cells.IndexOf(row) - 1), row => Cells.IndexOf(row) > 0);
+        MoveDownCommand = new RelayCommand<MemoryCellRowViewModel>(
+            row => Cells.Move(Cells.IndexOf(row), Cells.IndexOf(row) + 1), row => Cells.IndexOf(row) is var i && i >= 0 && i < Cells.Count - 1);
+    }
+
+    public override int Number => 3;
+
+    public override string Title => "Memory cells";
+
+    public ObservableCollection<MemoryCellRowViewModel> Cells { get; }
+
+    public RelayCommand AddCommand { get; }
+
+    public RelayCommand<MemoryCellRowViewModel> RemoveCommand { get; }
+
+    public RelayCommand<MemoryCellRowViewModel> MoveUpCommand { get; }
+
+    public RelayCommand<MemoryCellRowViewModel> MoveDownCommand { get; }
+
+    internal ImmutableArray<ProjectTag> Build() =>
+        [.. Cells.Select(r => new ProjectTag(r.Symbol.Trim(), PlcAddress.Parse(r.Address.Trim()), r.Format, r.Writable, r.Description.Trim()))];
+
+    internal override IEnumerable<string> Check(WizardContext context)
+    {
+        var symbols = new HashSet<string>(context.EarlierSymbols, StringComparer.OrdinalIgnoreCase);
+        var problems = new List<string>();
+        for (var i = 0; i < Cells.Count; i++)
+        {
+            var row = Cells[i];
+            var use = row.Writable ? AddressUse.Write : AddressUse.Read;
+            var error = WizardAddress.Check(row.Address, context.Cpu, use, Served, out var address);
+            error ??= row.Format.Fits(address.Width) ? null : $"{row.Format} cannot show {address}";
+            error ??= string.IsNullOrWhiteSpace(row.Symbol) ? "the symbol is empty" : null;
+            error ??= symbols.Add(row.Symbol.Trim()) ? null : $"symbol '{row.Symbol.Trim()}' is already used";
+            row.Error = error;
+            if (error is not null)
+            {
+                problems.Add($"Cell {i + 1} ({(string.IsNullOrWhiteSpace(row.Address) ? "no address" : row.Address.Trim())}): {error}.");
+            }
+        }
+
+        MoveUpCommand.NotifyCanExecuteChanged();
+        MoveDownCommand.NotifyCanExecuteChanged();
+        return problems;
+    }
+
+    private static string? Served(PlcAddress address) =>
+        AddressRules.IsServedByLink(address.Area) ? null : $"{address}: the panel link serves only I, Q, M, V and SM";
+}

@@ -1,0 +1,160 @@
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.ViewModels.Mvvm;
+
+namespace OperatorPanel.ViewModels.Wizard;
+
+/// <summary>
+/// The project wizard (seed 000 §7): five pages, Back/Next with each page checked before Next, and Finish building a
+/// <see cref="PanelProject"/> that <see cref="ProjectFile.Check"/> accepts. Constructed from an existing project it edits
+/// one station of it with every field prefilled ("the project can be freely edited later at any time"), and Finish may
+/// be pressed on any page. The result is in <see cref="Result"/> once <see cref="IsFinished"/>.
+/// </summary>
+public sealed class ProjectWizardViewModel : ObservableObject
+{
+    private readonly PanelProject _original;
+    private readonly int _stationIndex;
+    private int _currentIndex;
+    private string? _finishMessage;
+    private PanelProject? _result;
+
+    /// <summary>A new project: one CPU 224 at station 2 with its on-board I/O named, 9600 8N1 over a cable.</summary>
+    public ProjectWizardViewModel(IConnectionTester tester, ISerialPortCatalog ports)
+        : this(NewProject(ports), 0, tester, ports, isEditing: false)
+    {
+    }
+
+    /// <summary>Edits station <paramref name="stationIndex"/> of <paramref name="project"/>; the other stations are kept as they are.</summary>
+    public ProjectWizardViewModel(PanelProject project, int stationIndex, IConnectionTester tester, ISerialPortCatalog ports)
+        : this(project, stationIndex, tester, ports, isEditing: true)
+    {
+    }
+
+    private ProjectWizardViewModel(PanelProject project, int stationIndex, IConnectionTester tester, ISerialPortCatalog ports, bool isEditing)
+    {
+        ArgumentNullException.ThrowIfNull(project);
+        ArgumentNullException.ThrowIfNull(tester);
+        ArgumentNullException.ThrowIfNull(ports);
+        ArgumentOutOfRangeException.ThrowIfNegative(stationIndex);
+        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(stationIndex, project.Stations.Length);
+        (_original, _stationIndex, IsEditing) = (project, stationIndex, isEditing);
+        var station = project.Stations[stationIndex];
+        CpuStep = new CpuStepViewModel(project.Name, station.Cpu, station.Name, station.Address);
+        IoStep = new IoSymbolsStepViewModel(station.Inputs, station.Outputs, () => CpuStep.Cpu);
+        MemoryStep = new MemoryCellsStepViewModel(station.Tags);
+        AlarmStep = new AlarmTextsStepViewModel(station.Alarms);
+        LinkStep = new LinkStepViewModel(station.Link, CpuStep, ports, tester);
+        Steps = [CpuStep, IoStep, MemoryStep, AlarmStep, LinkStep];
+        foreach (var step in Steps)
+        {
+            step.Edited += OnEdited;
+        }
+
+        BackCommand = new RelayCommand(() => CurrentIndex--, () => CurrentIndex > 0);
+        NextCommand = new RelayCommand(() => CurrentIndex++, () => CurrentIndex < Steps.Count - 1 && CurrentStep.IsValid);
+        FinishCommand = new RelayCommand(Finish, () => (IsEditing || CurrentIndex == Steps.Count - 1) && CurrentStep.IsValid);
+        Revalidate();
+    }
+
+    public bool IsEditing { get; }
+
+    public IReadOnlyList<WizardStepViewModel> Steps { get; }
+
+    public CpuStepViewModel CpuStep { get; }
+
+    public IoSymbolsStepViewModel IoStep { get; }
+
+    public MemoryCellsStepViewModel MemoryStep { get; }
+
+    public AlarmTextsStepViewModel AlarmStep { get; }
+
+    public LinkStepViewModel LinkStep { get; }
+
+    public RelayCommand BackCommand { get; }
+
+    public RelayCommand NextCommand { get; }
+
+    public RelayCommand FinishCommand { get; }
+
+    public int CurrentIndex
+    {
+        get => _currentIndex;
+        set
+        {
+            if (SetProperty(ref _currentIndex, Math.Clamp(value, 0, Steps.Count - 1)))
+            {
+                OnPropertyChanged(nameof(CurrentStep));
+                Revalidate();
+            }
+        }
+    }
+
+    public WizardStepViewModel CurrentStep => Steps[CurrentIndex];
+
+    /// <summary>Why Next or Finish is refused: the current page's first problem, or what Finish found; null when all is well.</summary>
+    public string? Message => _finishMessage ?? CurrentStep.Message;
+
+    public PanelProject? Result { get => _result; private set => SetProperty(ref _result, value); }
+
+    public bool IsFinished => Result is not null;
+
+    private static PanelProject NewProject(ISerialPortCatalog ports)
+    {
+        ArgumentNullException.ThrowIfNull(ports);
+        var present = ports.List();
+        var port = present.Count > 0 ? present[0].PortName : OperatingSystem.IsWindows() ? "COM1" : "/dev/ttyUSB0";
+        var project = StarterProject.Create("New line", CpuProfiles.For(CpuModel.Cpu224), new Station(2), port);
+        return project with { Stations = [project.Stations[0] with { Name = "PLC 2" }] };
+    }
+
+    private void OnEdited()
+    {
+        _finishMessage = null;
+        Result = null;
+        OnPropertyChanged(nameof(IsFinished));
+        Revalidate();
+    }
+
+    private void Revalidate()
+    {
+        CurrentStep.Validate(ContextFor(CurrentStep));
+        OnPropertyChanged(nameof(Message));
+        BackCommand.NotifyCanExecuteChanged();
+        NextCommand.NotifyCanExecuteChanged();
+        FinishCommand.NotifyCanExecuteChanged();
+    }
+
+    private WizardContext ContextFor(WizardStepViewModel step) =>
+        new(CpuStep.Cpu, step == MemoryStep ? IoStep.Symbols() : new HashSet<string>());
+
+    private void Finish()
+    {
+        foreach (var step in Steps)
+        {
+            step.Validate(ContextFor(step));
+            if (!step.IsValid)
+            {
+                CurrentIndex = step.Number - 1;
+                _finishMessage = $"Step {step.Number} ({step.Title}) needs attention: {step.Message}";
+                OnPropertyChanged(nameof(Message));
+                return;
+            }
+        }
+
+        var station = new ProjectStation(
+            CpuStep.StationName.Trim(), CpuStep.Station!.Value, CpuStep.Cpu, LinkStep.Build(),
+            IoStep.BuildInputs(), IoStep.BuildOutputs(), MemoryStep.Build(), AlarmStep.Build());
+        var project = _original with { Name = CpuStep.ProjectName.Trim(), Stations = _original.Stations.SetItem(_stationIndex, station) };
+        var problems = ProjectFile.Check(project);
+        if (!problems.IsEmpty)
+        {
+            _finishMessage = "The project cannot be saved yet: " + string.Join("; ", problems.Select(p => p.ToString()));
+            OnPropertyChanged(nameof(Message));
+            return;
+        }
+
+        Result = project;
+        OnPropertyChanged(nameof(IsFinished));
+    }
+}

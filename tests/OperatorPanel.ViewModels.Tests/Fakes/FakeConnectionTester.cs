@@ -1,0 +1,22 @@
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.ViewModels.Wizard;
+
+namespace OperatorPanel.ViewModels.Tests.Fakes;
+
+/// <summary>Answers IDENTIFY with a set reply or throws a set failure; records what it was asked.</summary>
+internal sealed class FakeConnectionTester : IConnectionTester
+{
+    public PlcResponse? Reply { get; set; }
+
+    public PlcCommunicationException? Failure { get; set; }
+
+    public List<(SerialSettings Link, Station Station)> Asked { get; } = [];
+
+    public Task<PlcResponse> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
+    {
+        Asked.Add((link, station));
+        return Failure is not null ? Task.FromException<PlcResponse>(Failure) : Task.FromResult(Reply ?? throw new InvalidOperationException("no reply scripted"));
+    }
+}

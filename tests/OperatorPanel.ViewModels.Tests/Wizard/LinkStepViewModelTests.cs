@@ -1,0 +1,125 @@
+using System.Text;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Reference;
+using OperatorPanel.TestKit;
+using OperatorPanel.ViewModels.Tests.Fakes;
+using OperatorPanel.ViewModels.Wizard;
+
+namespace OperatorPanel.ViewModels.Tests.Wizard;
+
+public sealed class LinkStepViewModelTests
+{
+    private const string Where = "Station 2 on COM3 at 9600 8N1";
+    private readonly FakeConnectionTester _tester = new();
+
+    [Fact]
+    public void Ports_PresentOnes_AreListedWithTheFtdiModuleMarked()
+    {
+        var link = Wizard().LinkStep;
+
+        link.Ports.Select(p => p.Label).Should().Equal("COM3", "COM7 - FTDI USB serial (radio module or USB cable)");
+        link.IsFtdiPort.Should().BeFalse();
+        link.PortName = "COM7";
+        link.IsFtdiPort.Should().BeTrue();
+    }
+
+    [Fact]
+    public void BaudRate_NotAFreeportRateOfTheCpu_IsRefused()
+    {
+        var wizard = Wizard();
+        wizard.CpuStep.Cpu = CpuProfiles.For(CpuModel.Cpu224, CpuRevision.Early);
+        wizard.CurrentIndex = 4;
+
+        wizard.LinkStep.BaudRate = 115200;
+
+        wizard.FinishCommand.CanExecute(null).Should().BeFalse();
+        wizard.Message.Should().Be("CPU 224 (early) cannot run Freeport at 115200 baud; use one of 300, 600, 1200, 2400, 4800, 9600, 19200, 38400.");
+        wizard.LinkStep.BaudRates.Should().Equal(300, 600, 1200, 2400, 4800, 9600, 19200, 38400);
+    }
+
+    [Fact]
+    public async Task TestConnection_MatchingHandler_ShowsTheAnswerAsSuccess()
+    {
+        var link = Wizard().LinkStep;
+        _tester.Reply = Identify(CpuModel.Cpu224, smb6: 0x20);
+
+        await link.TestConnectionCommand.ExecuteAsync();
+
+        link.TestSucceeded.Should().BeTrue();
+        link.TestResult.Should().Be($"{Where} answered: handler for CPU 224, protocol 1, handler revision 1, mode switch RUN, last scan 3 ms. Matches CPU 224.");
+        _tester.Asked.Should().ContainSingle().Which.Should().Be((new SerialSettings { PortName = "COM3" }, new Station(2)));
+    }
+
+    [Fact]
+    public async Task TestConnection_HandlerForAnotherCpu_ShowsTheMismatch()
+    {
+        var link = Wizard().LinkStep;
+        _tester.Reply = Identify(CpuModel.Cpu226, smb6: 0x90);
+
+        await link.TestConnectionCommand.ExecuteAsync();
+
+        link.TestSucceeded.Should().BeFalse();
+        link.TestResult.Should().EndWith("CPU mismatch with CPU 224: the PLC reports SMB6 16#90 (CPU 226), CPU 224 has 16#20; "
+            + "the handler was generated for CPU 226, not CPU 224: regenerate it.");
+    }
+
+    [Fact]
+    public async Task TestConnection_NoAnswer_ShowsWhatToCheck()
+    {
+        var link = Wizard().LinkStep;
+        _tester.Failure = new PlcCommunicationException(PlcErrorKind.NoAnswer, new Station(2), "no valid reply to Identify after 2 attempts");
+
+        await link.TestConnectionCommand.ExecuteAsync();
+
+        link.TestSucceeded.Should().BeFalse();
+        link.TestResult.Should().Be($"{Where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
+            + "mode switch at RUN (not TERM) and that the handler is loaded. (no valid reply to Identify after 2 attempts)");
+    }
+
+    [Fact]
+    public async Task TestConnection_SimulatedPlc_IdentifiesItOverARealLink()
+    {
+        var clock = new ManualTimeProvider();
+        var plc = new ReferencePlc(new HandlerConfig(new Station(2), CpuProfiles.For(CpuModel.Cpu224)));
+        var link = Wizard(new LinkConnectionTester(_ => new ReferencePlcTransport(plc), clock)).LinkStep;
+
+        await link.TestConnectionCommand.ExecuteAsync();
+
+        link.TestResult.Should().StartWith($"{Where} answered: handler for CPU 224, protocol 1").And.EndWith("Matches CPU 224.");
+        link.TestSucceeded.Should().BeTrue();
+    }
+
+    [Fact]
+    public async Task TestConnection_RealLinkTimesOut_ShowsNoAnswer()
+    {
+        var clock = new ManualTimeProvider();
+        var request = Encoding.ASCII.GetString(RequestCodec.Encode(new IdentifyRequest(new Station(2), 1)));
+        var transport = new ScriptedTransport($"""
+            > "{request}"   // IDENTIFY station 2
+            < no response
+            > "{request}"   // the cable's one retry
+            < no response
+            """, clock, "COM3");
+        var link = Wizard(new LinkConnectionTester(_ => transport, clock)).LinkStep;
+
+        var test = link.TestConnectionCommand.ExecuteAsync();
+        for (var step = 0; step < 1000 && !test.IsCompleted; step++)
+        {
+            clock.Advance(TimeSpan.FromMilliseconds(5));
+            await Task.Yield();
+        }
+
+        await test;
+        link.TestSucceeded.Should().BeFalse();
+        link.TestResult.Should().StartWith($"{Where}: no answer.").And.Contain("no valid reply to Identify after 2 attempts");
+        transport.AssertComplete();
+    }
+
+    private ProjectWizardViewModel Wizard(IConnectionTester? tester = null) => new(tester ?? _tester, new FakePortCatalog());
+
+    private static IdentifyResponse Identify(CpuModel model, byte smb6) =>
+        new(new Station(2), 1, 1, 1, HandlerIdentity.CpuModelCode(model), 1, 0x3C, 119, 5, smb6, 0x01, 3, 2, 9);
+}

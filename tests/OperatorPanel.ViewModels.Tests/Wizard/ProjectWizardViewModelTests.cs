@@ -1,0 +1,156 @@
+using OperatorPanel.Core.Alarms;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.ViewModels.Tests.Fakes;
+using OperatorPanel.ViewModels.Wizard;
+
+namespace OperatorPanel.ViewModels.Tests.Wizard;
+
+public sealed class ProjectWizardViewModelTests
+{
+    public static TheoryData<CpuModel, CpuRevision> EveryCpu()
+    {
+        var data = new TheoryData<CpuModel, CpuRevision>();
+        foreach (var profile in CpuProfiles.All)
+        {
+            data.Add(profile.Model, profile.Revision);
+        }
+
+        return data;
+    }
+
+    [Theory]
+    [MemberData(nameof(EveryCpu))]
+    public void Finish_EveryCpuModelAndRevision_BuildsAProjectThatPassesCheckAndRoundTrips(CpuModel model, CpuRevision revision)
+    {
+        var wizard = NewWizard();
+        wizard.CpuStep.Cpu = CpuProfiles.For(model, revision);
+        wizard.CpuStep.StationName = "Filler";
+        wizard.CpuStep.StationAddress = "5";
+        Next(wizard);
+        wizard.IoStep.FillLocalPointsCommand.Execute(null);
+        Next(wizard);
+        wizard.MemoryStep.Cells.Add(new MemoryCellRowViewModel("Speed", "VW100", DisplayFormat.Signed, writable: true, "Line speed"));
+        wizard.MemoryStep.Cells.Add(new MemoryCellRowViewModel("Batch", "MD4", DisplayFormat.Float));
+        Next(wizard);
+        wizard.AlarmStep.Alarms.Add(new AlarmTextRowViewModel("M0.0", "Conveyor jam"));
+        wizard.AlarmStep.Alarms.Add(new AlarmTextRowViewModel("V100.3", "Glue low", AlarmClass.Warning, acknowledgementRequired: false));
+        Next(wizard);
+        wizard.LinkStep.BaudRate = wizard.LinkStep.BaudRates[^1];
+        wizard.LinkStep.Kind = LinkKind.RadioModule;
+
+        wizard.FinishCommand.CanExecute(null).Should().BeTrue(wizard.Message);
+        wizard.FinishCommand.Execute(null);
+
+        wizard.Message.Should().BeNull();
+        var project = wizard.Result!;
+        ProjectFile.Check(project).Should().BeEmpty();
+        var reparsed = ProjectFile.Parse(ProjectFile.Format(project));
+        reparsed.Ok.Should().BeTrue();
+        ProjectFile.Format(reparsed.Project!).Should().Be(ProjectFile.Format(project));
+        var station = project.Stations.Should().ContainSingle().Subject;
+        station.Cpu.Should().Be(CpuProfiles.For(model, revision));
+        station.Address.Address.Should().Be(5);
+        station.Inputs.Should().HaveCount(station.Cpu.LocalDigitalInputs);
+        station.Tags.Select(t => t.Symbol).Should().Equal("Speed", "Batch");
+        station.Alarms.Select(a => a.Text).Should().Equal("Conveyor jam", "Glue low");
+        station.Link.Should().Be(new SerialSettings { PortName = "COM3", BaudRate = wizard.LinkStep.BaudRates[^1], Kind = LinkKind.RadioModule });
+    }
+
+    [Fact]
+    public void NewWizard_Defaults_CpuTwentyFourStationTwoFirstPortPresent()
+    {
+        var wizard = NewWizard();
+
+        wizard.CpuStep.Cpu.Should().Be(CpuProfiles.For(CpuModel.Cpu224));
+        wizard.CpuStep.StationAddress.Should().Be("2");
+        wizard.IoStep.Inputs.Should().HaveCount(14);
+        wizard.LinkStep.PortName.Should().Be("COM3");
+        wizard.IsEditing.Should().BeFalse();
+        wizard.FinishCommand.CanExecute(null).Should().BeFalse();
+    }
+
+    [Theory]
+    [InlineData("200", "The station address 200 is outside 1-126.")]
+    [InlineData("two", "Station address 'two' is not a number; use 1-126.")]
+    public void Next_StationAddressInvalid_IsDisabledWithAMessage(string address, string message)
+    {
+        var wizard = NewWizard();
+
+        wizard.CpuStep.StationAddress = address;
+
+        wizard.NextCommand.CanExecute(null).Should().BeFalse();
+        wizard.Message.Should().Be(message);
+        wizard.CpuStep.StationAddress = "3";
+        wizard.NextCommand.CanExecute(null).Should().BeTrue();
+        wizard.Message.Should().BeNull();
+    }
+
+    [Fact]
+    public void Back_FromSecondStep_ReturnsToTheFirst()
+    {
+        var wizard = NewWizard();
+        Next(wizard);
+
+        wizard.BackCommand.Execute(null);
+
+        wizard.CurrentStep.Should().BeSameAs(wizard.CpuStep);
+        wizard.BackCommand.CanExecute(null).Should().BeFalse();
+    }
+
+    [Fact]
+    public void Edit_ExistingProject_IsPrefilledAndFinishReturnsTheEditedProject()
+    {
+        var original = AlarmProject.Create();
+        var wizard = new ProjectWizardViewModel(original, 0, new FakeConnectionTester(), new FakePortCatalog());
+
+        wizard.CpuStep.StationName.Should().Be("Filler");
+        wizard.CpuStep.ProjectName.Should().Be("Bottling");
+        wizard.AlarmStep.Alarms.Select(a => a.Flag).Should().Equal("M0.0", "V10.1", "M0.1");
+        wizard.LinkStep.PortName.Should().Be("COM3");
+        wizard.IoStep.Outputs.Should().HaveCount(10);
+
+        wizard.AlarmStep.Alarms[1].Text = "Glue level low: refill";
+        wizard.FinishCommand.Execute(null);
+
+        var edited = wizard.Result!.Stations[0];
+        edited.Alarms[1].Text.Should().Be("Glue level low: refill");
+        ProjectFile.Format(wizard.Result with { Stations = [edited with { Alarms = original.Stations[0].Alarms }] })
+            .Should().Be(ProjectFile.Format(original));
+    }
+
+    [Fact]
+    public void Finish_EarlierStepBrokenAfterLeavingIt_GoesBackThereWithAMessage()
+    {
+        var wizard = new ProjectWizardViewModel(AlarmProject.Create(), 0, new FakeConnectionTester(), new FakePortCatalog());
+        wizard.CurrentIndex = 4;
+        wizard.AlarmStep.Alarms[0].Text = " ";
+
+        wizard.FinishCommand.Execute(null);
+
+        wizard.IsFinished.Should().BeFalse();
+        wizard.CurrentStep.Should().BeSameAs(wizard.AlarmStep);
+        wizard.Message.Should().Be("Step 4 (Alarm texts) needs attention: Alarm 1 (M0.0): the alarm text is empty; the operator would see a blank message.");
+    }
+
+    [Fact]
+    public void Finish_SymbolOfACellAlsoUsedByAnOutput_IsRefusedOnTheMemoryStep()
+    {
+        var wizard = NewWizard();
+        wizard.MemoryStep.Cells.Add(new MemoryCellRowViewModel("output_0_0", "MB1"));
+        wizard.CurrentIndex = 2;
+
+        wizard.NextCommand.CanExecute(null).Should().BeFalse();
+        wizard.Message.Should().Be("Cell 1 (MB1): symbol 'output_0_0' is already used.");
+        wizard.MemoryStep.Cells[0].Error.Should().Be("symbol 'output_0_0' is already used");
+    }
+
+    internal static ProjectWizardViewModel NewWizard() => new(new FakeConnectionTester(), new FakePortCatalog());
+
+    private static void Next(ProjectWizardViewModel wizard)
+    {
+        wizard.NextCommand.CanExecute(null).Should().BeTrue(wizard.Message);
+        wizard.NextCommand.Execute(null);
+    }
+}
