@@ -99,7 +99,10 @@ public sealed partial record AwlOperand
         error = null;
         operand = new AwlOperand
         {
-            Kind = AwlOperandKind.Constant, Text = input, ConstantKind = AwlConstantKind.String, Name = input[1..^1],
+            Kind = AwlOperandKind.Constant,
+            Text = input,
+            ConstantKind = AwlConstantKind.String,
+            Name = input[1..^1],
         };
         return true;
     }
