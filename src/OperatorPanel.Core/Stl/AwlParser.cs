@@ -1,0 +1,82 @@
+using System.Collections.Immutable;
+
+namespace OperatorPanel.Core.Stl;
+
+/// <summary>
+/// Reads the .awl text Micro/WIN exports (File > Export) and imports: blocks, headers, variable tables, networks and
+/// instruction lines (docs: /work/briefs/stl-dialect.md, "File format"). Tolerates blank lines, <c>//</c> comments
+/// anywhere, CRLF or LF. Never throws on bad text: every line it cannot place becomes a diagnostic.
+/// </summary>
+public static class AwlParser
+{
+    public static AwlParseResult Parse(string text)
+    {
+        ArgumentNullException.ThrowIfNull(text);
+        var reader = new AwlReader();
+        var lines = text.Split('\n');
+        for (var i = 0; i < lines.Length; i++)
+        {
+            reader.Read(lines[i].TrimEnd('\r'), i + 1);
+        }
+
+        reader.Finish(lines.Length);
+        return new AwlParseResult(new AwlProgram(reader.Blocks.ToImmutable()), reader.Diagnostics.ToImmutable());
+    }
+
+    /// <summary>Splits "text // comment" at the first <c>//</c> outside a quoted string.</summary>
+    internal static (string Code, string Comment) SplitComment(string line)
+    {
+        var quote = '\0';
+        for (var i = 0; i < line.Length; i++)
+        {
+            var c = line[i];
+            if (quote != '\0')
+            {
+                quote = c == quote ? '\0' : quote;
+            }
+            else if (c is '\'' or '"')
+            {
+                quote = c;
+            }
+            else if (c == '/' && i + 1 < line.Length && line[i + 1] == '/')
+            {
+                return (line[..i].Trim(), line[(i + 2)..].Trim());
+            }
+        }
+
+        return (line.Trim(), string.Empty);
+    }
+
+    /// <summary>Splits an operand list at commas outside quoted strings.</summary>
+    internal static ImmutableArray<string> SplitOperands(string text)
+    {
+        var operands = ImmutableArray.CreateBuilder<string>();
+        if (text.Trim().Length == 0)
+        {
+            return operands.ToImmutable();
+        }
+
+        var quote = '\0';
+        var start = 0;
+        for (var i = 0; i < text.Length; i++)
+        {
+            var c = text[i];
+            if (quote != '\0')
+            {
+                quote = c == quote ? '\0' : quote;
+            }
+            else if (c is '\'' or '"')
+            {
+                quote = c;
+            }
+            else if (c == ',')
+            {
+                operands.Add(text[start..i].Trim());
+                start = i + 1;
+            }
+        }
+
+        operands.Add(text[start..].Trim());
+        return operands.ToImmutable();
+    }
+}

@@ -1,0 +1,243 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Stl;
+
+namespace OperatorPanel.Simulator.Stl;
+
+/// <summary>Compiles the instructions of one block into ops: operands resolved, jumps and FOR/NEXT pairs linked, costs set.</summary>
+internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlock> blocks, List<AwlDiagnostic> diagnostics)
+{
+    private readonly StlOperandResolver _resolver = new(cpu);
+
+    public int EdgeCount { get; private set; }
+
+    public StlOp[] Compile(StlBlock block, IReadOnlyDictionary<string, (StlLoc Loc, int Bytes, bool IsBit)> locals)
+    {
+        var ops = new List<StlOp>();
+        var labels = new Dictionary<int, int>();
+        var forStack = new Stack<StlOp>();
+        foreach (var instruction in block.Source.Instructions)
+        {
+            if (CompileOne(block, instruction, locals) is not { } op)
+            {
+                continue;
+            }
+
+            if (op.Code == StlOpCode.Lbl && !labels.TryAdd(op.N, ops.Count))
+            {
+                Report(instruction.Line, $"LBL {op.N} appears twice in {block.Name}");
+            }
+            else if (op.Code == StlOpCode.For)
+            {
+                forStack.Push(op);
+                op.N = ops.Count + 1;
+            }
+            else if (op.Code == StlOpCode.Next)
+            {
+                LinkNext(op, forStack, block, ops.Count);
+            }
+
+            ops.Add(op);
+        }
+
+        foreach (var open in forStack)
+        {
+            Report(open.Line, $"FOR without NEXT in {block.Name}");
+        }
+
+        foreach (var jump in ops.Where(o => o.Code == StlOpCode.Jmp))
+        {
+            if (labels.TryGetValue(jump.N, out var target))
+            {
+                jump.N = target;
+            }
+            else
+            {
+                Report(jump.Line, $"JMP {jump.N}: there is no LBL {jump.N} in {block.Name}");
+            }
+        }
+
+        return [.. ops];
+    }
+
+    /// <summary>NEXT jumps back to the body (FOR + 1) and reads INDX and FINAL from its FOR; FOR skips past NEXT.</summary>
+    private void LinkNext(StlOp next, Stack<StlOp> forStack, StlBlock block, int index)
+    {
+        if (!forStack.TryPop(out var loop))
+        {
+            Report(next.Line, $"NEXT without FOR in {block.Name}");
+            return;
+        }
+
+        next.A = loop.A;
+        next.C = loop.C;
+        next.N = loop.N;
+        loop.N = index + 1;
+    }
+
+    private StlOp? CompileOne(
+        StlBlock block, AwlInstruction instruction, IReadOnlyDictionary<string, (StlLoc Loc, int Bytes, bool IsBit)> locals)
+    {
+        var line = instruction.Line;
+        if (!StlInstructionSet.TryGet(instruction.Mnemonic, out var code, out var types))
+        {
+            Report(line, $"{instruction.Mnemonic} is not implemented by the simulator");
+            return null;
+        }
+
+        if (!PlacedIn(code, block.Kind))
+        {
+            Report(line, $"{instruction.Mnemonic} cannot be used in {block.Name} ({block.Source.DefaultName})");
+            return null;
+        }
+
+        var operands = instruction.Operands;
+        if (code == StlOpCode.Call ? operands.Length < 1 : operands.Length != types.Length)
+        {
+            Report(line, $"{instruction.Mnemonic} takes {types.Length} operand(s), found {operands.Length}");
+            return null;
+        }
+
+        var op = new StlOp
+        {
+            Code = code,
+            Mnemonic = instruction.Mnemonic,
+            Line = line,
+            Width = code is StlOpCode.CmpLd or StlOpCode.CmpA or StlOpCode.CmpO ? StlOperandResolver.BytesOf(types[0]) : 0,
+        };
+        if (op.Width > 0)
+        {
+            var tail = instruction.Mnemonic[(code == StlOpCode.CmpLd ? 3 : 2)..];
+            op.N = StlInstructionSet.RelationOf(tail)!.Value;
+        }
+        else if (code is StlOpCode.Eu or StlOpCode.Ed)
+        {
+            op.N = EdgeCount++;
+        }
+
+        var ok = true;
+        var locs = new StlLoc?[3];
+        for (var i = 0; i < types.Length; i++)
+        {
+            ok &= TryOperand(op, i, operands[i], types[i], locals, locs);
+        }
+
+        if (code == StlOpCode.Call && ok)
+        {
+            ok = TryParameters(op, operands, locals);
+        }
+
+        (op.A, op.B, op.C) = (locs[0], locs[1], locs[2]);
+        op.Cost = StlTiming.Base(code) + (op.Parameters.Length * StlTiming.PerParameter)
+            + (StlTiming.IndirectOperand * (locs.Count(l => l?.Kind == StlLocKind.Indirect)
+                + op.Parameters.Count(p => p.Actual.Kind == StlLocKind.Indirect)));
+        return ok ? op : null;
+    }
+
+    private bool TryOperand(
+        StlOp op, int index, string text, StlOperandType type,
+        IReadOnlyDictionary<string, (StlLoc Loc, int Bytes, bool IsBit)> locals, StlLoc?[] locs)
+    {
+        var line = op.Line;
+        if (!AwlOperand.TryParse(text, out var operand, out var parseError))
+        {
+            Report(line, $"{op.Mnemonic}: {parseError}");
+            return false;
+        }
+
+        switch (type)
+        {
+            case StlOperandType.Block:
+                return TryBlock(op, operand);
+            case StlOperandType.Label or StlOperandType.Event or StlOperandType.Port:
+                var max = type switch
+                {
+                    StlOperandType.Label => 255,
+                    StlOperandType.Event => 33,
+                    _ => cpu.CommunicationPorts - 1,
+                };
+                if (operand is { Kind: AwlOperandKind.Constant, ConstantKind: AwlConstantKind.Integer } && operand.Integer >= 0 && operand.Integer <= max)
+                {
+                    op.N = (int)operand.Integer;
+                    return true;
+                }
+
+                Report(line, $"{op.Mnemonic}: '{text}' is not a {type.ToString().ToLowerInvariant()} number 0-{max}{(type == StlOperandType.Port ? $" on the {cpu.Name}" : string.Empty)}");
+                return false;
+            default:
+                if (_resolver.TryResolve(operand, type, locals, out var loc, out var error))
+                {
+                    locs[index] = loc;
+                    return true;
+                }
+
+                Report(line, $"{op.Mnemonic}: {error}");
+                return false;
+        }
+    }
+
+    private bool TryBlock(StlOp op, AwlOperand operand)
+    {
+        var wanted = op.Code == StlOpCode.Call ? AwlBlockKind.Subroutine : AwlBlockKind.InterruptRoutine;
+        if (blocks.TryGetValue(operand.Text, out var target) && target.Kind == wanted)
+        {
+            op.Target = target.Index;
+            return true;
+        }
+
+        Report(op.Line, $"{op.Mnemonic}: '{operand.Text}' is not the name of {(wanted == AwlBlockKind.Subroutine ? "a subroutine" : "an interrupt routine")} in this program");
+        return false;
+    }
+
+    private bool TryParameters(StlOp op, ImmutableArray<string> operands, IReadOnlyDictionary<string, (StlLoc Loc, int Bytes, bool IsBit)> locals)
+    {
+        var formals = blocks.Values.First(b => b.Index == op.Target).Formals;
+        if (formals.Count != operands.Length - 1)
+        {
+            Report(op.Line, $"CALL {operands[0]}: {formals.Count} parameter(s) declared, {operands.Length - 1} given");
+            return false;
+        }
+
+        var parameters = new StlParameter[formals.Count];
+        var ok = true;
+        var locs = new StlLoc?[1];
+        for (var i = 0; i < formals.Count; i++)
+        {
+            var (formal, bytes, section, isBit) = formals[i];
+            var output = section != AwlVariableSection.Input;
+            var type = (isBit ? 0 : bytes, output) switch
+            {
+                (0, false) => StlOperandType.BitIn,
+                (0, true) => StlOperandType.BitOut,
+                (1, false) => StlOperandType.ByteIn,
+                (1, true) => StlOperandType.ByteOut,
+                (2, false) => StlOperandType.WordIn,
+                (2, true) => StlOperandType.WordOut,
+                (_, false) => StlOperandType.DWordIn,
+                _ => StlOperandType.DWordOut,
+            };
+            if (TryOperand(op, 0, operands[i + 1], type, locals, locs))
+            {
+                parameters[i] = new StlParameter(formal, locs[0]!, isBit ? 0 : bytes, section != AwlVariableSection.Output, output);
+            }
+            else
+            {
+                ok = false;
+            }
+        }
+
+        op.Parameters = parameters;
+        return ok;
+    }
+
+    /// <summary>RET/CRET belong in subroutines, RETI/CRETI in interrupt routines, END/MEND in OB1 (Micro/WIN's rules).</summary>
+    private static bool PlacedIn(StlOpCode code, AwlBlockKind kind) => code switch
+    {
+        StlOpCode.Ret or StlOpCode.Cret => kind == AwlBlockKind.Subroutine,
+        StlOpCode.Reti or StlOpCode.Creti => kind == AwlBlockKind.InterruptRoutine,
+        StlOpCode.End or StlOpCode.Mend => kind == AwlBlockKind.OrganizationBlock,
+        _ => true,
+    };
+
+    private void Report(int line, string message) => diagnostics.Add(new AwlDiagnostic(line, message));
+}

@@ -1,0 +1,135 @@
+using System.Collections.Frozen;
+using static OperatorPanel.Simulator.Stl.StlOperandType;
+
+namespace OperatorPanel.Simulator.Stl;
+
+/// <summary>
+/// The mnemonics the simulator executes and the operands each takes (/work/briefs/stl-dialect.md, "Instructions").
+/// Compares (LDB=, AW&lt;&gt;, OD&gt;= ...) are read by <see cref="TryCompare"/> instead of listed one by one.
+/// </summary>
+internal static class StlInstructionSet
+{
+    private static readonly FrozenDictionary<string, (StlOpCode Code, StlOperandType[] Operands)> Table =
+        new Dictionary<string, (StlOpCode, StlOperandType[])>
+        {
+            ["LD"] = (StlOpCode.Ld, [BitIn]),
+            ["LDN"] = (StlOpCode.Ldn, [BitIn]),
+            ["A"] = (StlOpCode.A, [BitIn]),
+            ["AN"] = (StlOpCode.An, [BitIn]),
+            ["O"] = (StlOpCode.O, [BitIn]),
+            ["ON"] = (StlOpCode.On, [BitIn]),
+            ["NOT"] = (StlOpCode.Not, []),
+            ["EU"] = (StlOpCode.Eu, []),
+            ["ED"] = (StlOpCode.Ed, []),
+            ["LPS"] = (StlOpCode.Lps, []),
+            ["LRD"] = (StlOpCode.Lrd, []),
+            ["LPP"] = (StlOpCode.Lpp, []),
+            ["ALD"] = (StlOpCode.Ald, []),
+            ["OLD"] = (StlOpCode.Old, []),
+            ["="] = (StlOpCode.Assign, [BitOut]),
+            ["S"] = (StlOpCode.Set, [BitOut, ByteIn]),
+            ["R"] = (StlOpCode.Reset, [BitOut, ByteIn]),
+            ["MOVB"] = (StlOpCode.MovB, [ByteIn, ByteOut]),
+            ["MOVW"] = (StlOpCode.MovW, [WordIn, WordOut]),
+            ["MOVD"] = (StlOpCode.MovD, [DWordIn, DWordOut]),
+            ["BMB"] = (StlOpCode.Bmb, [ByteArea, ByteArea, ByteIn]),
+            ["BMW"] = (StlOpCode.Bmw, [WordArea, WordArea, ByteIn]),
+            ["SWAP"] = (StlOpCode.Swap, [WordOut]),
+            ["+I"] = (StlOpCode.AddI, [WordIn, WordOut]),
+            ["-I"] = (StlOpCode.SubI, [WordIn, WordOut]),
+            ["*I"] = (StlOpCode.MulI, [WordIn, WordOut]),
+            ["/I"] = (StlOpCode.DivI, [WordIn, WordOut]),
+            ["+D"] = (StlOpCode.AddD, [DWordIn, DWordOut]),
+            ["-D"] = (StlOpCode.SubD, [DWordIn, DWordOut]),
+            ["*D"] = (StlOpCode.MulD, [DWordIn, DWordOut]),
+            ["/D"] = (StlOpCode.DivD, [DWordIn, DWordOut]),
+            ["INCB"] = (StlOpCode.IncB, [ByteOut]),
+            ["INCW"] = (StlOpCode.IncW, [WordOut]),
+            ["INCD"] = (StlOpCode.IncD, [DWordOut]),
+            ["DECB"] = (StlOpCode.DecB, [ByteOut]),
+            ["DECW"] = (StlOpCode.DecW, [WordOut]),
+            ["DECD"] = (StlOpCode.DecD, [DWordOut]),
+            ["BTI"] = (StlOpCode.Bti, [ByteIn, WordOut]),
+            ["ITB"] = (StlOpCode.Itb, [WordIn, ByteOut]),
+            ["ITD"] = (StlOpCode.Itd, [WordIn, DWordOut]),
+            ["DTI"] = (StlOpCode.Dti, [DWordIn, WordOut]),
+            ["ANDB"] = (StlOpCode.AndB, [ByteIn, ByteOut]),
+            ["ORB"] = (StlOpCode.OrB, [ByteIn, ByteOut]),
+            ["XORB"] = (StlOpCode.XorB, [ByteIn, ByteOut]),
+            ["INVB"] = (StlOpCode.InvB, [ByteOut]),
+            ["ANDW"] = (StlOpCode.AndW, [WordIn, WordOut]),
+            ["ORW"] = (StlOpCode.OrW, [WordIn, WordOut]),
+            ["XORW"] = (StlOpCode.XorW, [WordIn, WordOut]),
+            ["INVW"] = (StlOpCode.InvW, [WordOut]),
+            ["ANDD"] = (StlOpCode.AndD, [DWordIn, DWordOut]),
+            ["ORD"] = (StlOpCode.OrD, [DWordIn, DWordOut]),
+            ["XORD"] = (StlOpCode.XorD, [DWordIn, DWordOut]),
+            ["INVD"] = (StlOpCode.InvD, [DWordOut]),
+            ["SHLB"] = (StlOpCode.ShlB, [ByteOut, ByteIn]),
+            ["SHRB"] = (StlOpCode.ShrB, [ByteOut, ByteIn]),
+            ["SHLW"] = (StlOpCode.ShlW, [WordOut, ByteIn]),
+            ["SHRW"] = (StlOpCode.ShrW, [WordOut, ByteIn]),
+            ["SHLD"] = (StlOpCode.ShlD, [DWordOut, ByteIn]),
+            ["SHRD"] = (StlOpCode.ShrD, [DWordOut, ByteIn]),
+            ["ATH"] = (StlOpCode.Ath, [ByteArea, ByteArea, ByteIn]),
+            ["HTA"] = (StlOpCode.Hta, [ByteArea, ByteArea, ByteIn]),
+            ["FOR"] = (StlOpCode.For, [WordOut, WordIn, WordIn]),
+            ["NEXT"] = (StlOpCode.Next, []),
+            ["JMP"] = (StlOpCode.Jmp, [Label]),
+            ["LBL"] = (StlOpCode.Lbl, [Label]),
+            ["CALL"] = (StlOpCode.Call, [Block]),
+            ["CRET"] = (StlOpCode.Cret, []),
+            ["RET"] = (StlOpCode.Ret, []),
+            ["CRETI"] = (StlOpCode.Creti, []),
+            ["RETI"] = (StlOpCode.Reti, []),
+            ["END"] = (StlOpCode.End, []),
+            ["MEND"] = (StlOpCode.Mend, []),
+            ["NOP"] = (StlOpCode.Nop, [ByteIn]),
+            ["ATCH"] = (StlOpCode.Atch, [Block, Event]),
+            ["DTCH"] = (StlOpCode.Dtch, [Event]),
+            ["ENI"] = (StlOpCode.Eni, []),
+            ["DISI"] = (StlOpCode.Disi, []),
+            ["RCV"] = (StlOpCode.Rcv, [ByteArea, Port]),
+            ["XMT"] = (StlOpCode.Xmt, [ByteArea, Port]),
+        }.ToFrozenDictionary(StringComparer.Ordinal);
+
+    public static bool TryGet(string mnemonic, out StlOpCode code, out StlOperandType[] operands)
+    {
+        if (Table.TryGetValue(mnemonic, out var entry))
+        {
+            (code, operands) = entry;
+            return true;
+        }
+
+        return TryCompare(mnemonic, out code, out operands);
+    }
+
+    /// <summary>LDB=, AW&lt;&gt;, OD&gt;=: form (LD/A/O), width (B unsigned, W and D signed), relation.</summary>
+    private static bool TryCompare(string mnemonic, out StlOpCode code, out StlOperandType[] operands)
+    {
+        (code, var rest) = mnemonic.StartsWith("LD", StringComparison.Ordinal) ? (StlOpCode.CmpLd, mnemonic[2..])
+            : mnemonic.StartsWith('A') ? (StlOpCode.CmpA, mnemonic[1..])
+            : mnemonic.StartsWith('O') ? (StlOpCode.CmpO, mnemonic[1..])
+            : (StlOpCode.Nop, string.Empty);
+        operands = rest.Length > 1 ? rest[0] switch
+        {
+            'B' => [ByteIn, ByteIn],
+            'W' => [WordIn, WordIn],
+            'D' => [DWordIn, DWordIn],
+            _ => [],
+        } : [];
+        return operands.Length == 2 && RelationOf(rest[1..]) is not null;
+    }
+
+    /// <summary>The relation of a compare mnemonic's tail: 0 =, 1 &lt;&gt;, 2 &lt;, 3 &lt;=, 4 &gt;, 5 &gt;=.</summary>
+    public static int? RelationOf(string relation) => relation switch
+    {
+        "=" or "==" => 0,
+        "<>" => 1,
+        "<" => 2,
+        "<=" => 3,
+        ">" => 4,
+        ">=" => 5,
+        _ => null,
+    };
+}

@@ -1,0 +1,10 @@
+namespace OperatorPanel.Simulator.Stl;
+
+internal enum StlLocKind
+{
+    Constant,
+    Direct,
+    Local,
+    Accumulator,
+    Indirect,
+}

@@ -1,0 +1,17 @@
+namespace OperatorPanel.Simulator.Stl;
+
+/// <summary>The executable operations; compares carry their width and relation in the op, so one code serves LDB=, AW&lt; and OD&gt;=.</summary>
+internal enum StlOpCode
+{
+    Ld, Ldn, A, An, O, On, Not, Eu, Ed, Lps, Lrd, Lpp, Ald, Old, Assign, Set, Reset,
+    CmpLd, CmpA, CmpO,
+    MovB, MovW, MovD, Bmb, Bmw, Swap,
+    AddI, SubI, MulI, DivI, AddD, SubD, MulD, DivD,
+    IncB, IncW, IncD, DecB, DecW, DecD,
+    Bti, Itb, Itd, Dti,
+    AndB, OrB, XorB, InvB, AndW, OrW, XorW, InvW, AndD, OrD, XorD, InvD,
+    ShlB, ShrB, ShlW, ShrW, ShlD, ShrD,
+    Ath, Hta,
+    For, Next, Jmp, Lbl, Call, Cret, Ret, Creti, Reti, End, Mend, Nop,
+    Atch, Dtch, Eni, Disi, Rcv, Xmt,
+}

@@ -1,0 +1,206 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Stl;
+
+namespace OperatorPanel.Simulator.Stl;
+
+/// <summary>Turns a classified operand into a <see cref="StlLoc"/> for one operand position, checking width, writability and the CPU's ranges.</summary>
+internal sealed class StlOperandResolver(CpuProfile cpu)
+{
+    public bool TryResolve(
+        AwlOperand operand,
+        StlOperandType type,
+        IReadOnlyDictionary<string, (StlLoc Loc, int Bytes, bool IsBit)> locals,
+        out StlLoc loc,
+        out string error)
+    {
+        loc = null!;
+        var bytes = BytesOf(type);
+        var output = type is StlOperandType.BitOut or StlOperandType.ByteOut or StlOperandType.WordOut or StlOperandType.DWordOut;
+        if (operand is { Kind: AwlOperandKind.Address, Area: MemoryArea.AC } && type is StlOperandType.ByteArea or StlOperandType.WordArea)
+        {
+            error = $"'{operand.Text}': an accumulator cannot hold a buffer; use a memory address or *AC";
+            return false;
+        }
+
+        switch (operand.Kind)
+        {
+            case AwlOperandKind.Address:
+                return TryAddress(operand, bytes, output, out loc, out error);
+            case AwlOperandKind.Constant when type is StlOperandType.ByteIn or StlOperandType.WordIn or StlOperandType.DWordIn:
+                return TryConstant(operand, bytes, out loc, out error);
+            case AwlOperandKind.Pointer when type == StlOperandType.DWordIn:
+                return TryPointer(operand, out loc, out error);
+            case AwlOperandKind.Indirect when bytes > 0:
+                return TryIndirect(operand, out loc, out error);
+            case AwlOperandKind.Local:
+                return TryLocal(operand, bytes, locals, out loc, out error);
+            case AwlOperandKind.Symbol:
+                error = $"'{operand.Text}' is not an address; the simulator reads absolute addresses and #locals, not symbols";
+                return false;
+            default:
+                error = $"'{operand.Text}' cannot be used where a {Describe(type)} is expected";
+                return false;
+        }
+    }
+
+    /// <summary>0 for a bit, else the bytes of one access.</summary>
+    public static int BytesOf(StlOperandType type) => type switch
+    {
+        StlOperandType.BitIn or StlOperandType.BitOut => 0,
+        StlOperandType.ByteIn or StlOperandType.ByteOut or StlOperandType.ByteArea => 1,
+        StlOperandType.WordIn or StlOperandType.WordOut or StlOperandType.WordArea => 2,
+        _ => 4,
+    };
+
+    private bool TryAddress(AwlOperand operand, int bytes, bool output, out StlLoc loc, out string error)
+    {
+        loc = null!;
+        if (operand.Area is MemoryArea.T or MemoryArea.C or MemoryArea.HC)
+        {
+            error = $"'{operand.Text}': timers, counters and high-speed counters are not implemented by the simulator";
+            return false;
+        }
+
+        if (operand.Area == MemoryArea.AC)
+        {
+            loc = new StlLoc { Kind = StlLocKind.Accumulator, Offset = operand.ByteOffset };
+            error = bytes == 0 ? $"'{operand.Text}': an accumulator is not a bit"
+                : operand.ByteOffset >= cpu.Accumulators ? $"'{operand.Text}': the CPU has AC0-AC{cpu.Accumulators - 1}" : string.Empty;
+            return error.Length == 0;
+        }
+
+        var width = (operand.Width == AccessWidth.Bit ? 0 : operand.Width.ByteCount());
+        if (width != bytes)
+        {
+            error = $"'{operand.Text}' is a {WidthName(width)}; a {WidthName(bytes)} is expected here";
+            return false;
+        }
+
+        var address = bytes == 0
+            ? PlcAddress.ForBit(operand.Area, operand.ByteOffset, operand.Bit!.Value)
+            : PlcAddress.ForBytes(operand.Area, operand.ByteOffset, operand.Width);
+        if (AddressRules.Check(address, cpu) is { } refusal)
+        {
+            error = $"'{operand.Text}' is outside the CPU's ranges: {refusal.Message}";
+            return false;
+        }
+
+        if (output && (operand.Area == MemoryArea.AI || (operand.Area == MemoryArea.SM && operand.ByteOffset < cpu.ReadOnlySmBytes)))
+        {
+            error = $"'{operand.Text}' is read-only (SMB0-SMB{cpu.ReadOnlySmBytes - 1}, AIW)";
+            return false;
+        }
+
+        error = string.Empty;
+        loc = operand.Area == MemoryArea.L
+            ? new StlLoc { Kind = StlLocKind.Local, Offset = operand.ByteOffset, Bit = operand.Bit ?? 0 }
+            : new StlLoc { Kind = StlLocKind.Direct, Area = (int)operand.Area, Offset = operand.ByteOffset, Bit = operand.Bit ?? 0 };
+        return true;
+    }
+
+    private static bool TryConstant(AwlOperand operand, int bytes, out StlLoc loc, out string error)
+    {
+        loc = null!;
+        error = string.Empty;
+        uint value;
+        if (operand.ConstantKind == AwlConstantKind.Real && bytes == 4)
+        {
+            value = BitConverter.SingleToUInt32Bits((float)operand.Real);
+        }
+        else if (operand.ConstantKind == AwlConstantKind.Integer && Fits(operand.Integer, bytes))
+        {
+            value = (uint)operand.Integer;
+        }
+        else
+        {
+            error = $"'{operand.Text}' is not a {WidthName(bytes)} constant";
+            return false;
+        }
+
+        loc = new StlLoc { Kind = StlLocKind.Constant, Value = value };
+        return true;
+    }
+
+    private static bool Fits(long value, int bytes) => bytes switch
+    {
+        1 => value is >= 0 and <= 255,
+        2 => value is >= short.MinValue and <= ushort.MaxValue,
+        _ => value is >= int.MinValue and <= uint.MaxValue,
+    };
+
+    private bool TryPointer(AwlOperand operand, out StlLoc loc, out string error)
+    {
+        loc = null!;
+        if (operand.Area is not (MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM or MemoryArea.S))
+        {
+            error = $"'{operand.Text}': the simulator takes pointers to I, Q, M, V, SM and S bytes only";
+            return false;
+        }
+
+        if (AddressRules.Check(PlcAddress.ForBytes(operand.Area, operand.ByteOffset, AccessWidth.Byte), cpu) is { } refusal)
+        {
+            error = $"'{operand.Text}' is outside the CPU's ranges: {refusal.Message}";
+            return false;
+        }
+
+        error = string.Empty;
+        loc = new StlLoc { Kind = StlLocKind.Constant, Value = StlPointer.Encode(operand.Area, operand.ByteOffset) };
+        return true;
+    }
+
+    private bool TryIndirect(AwlOperand operand, out StlLoc loc, out string error)
+    {
+        loc = null!;
+        var holderOperand = operand with { Kind = AwlOperandKind.Address };
+        if (!TryAddress(holderOperand, 4, output: false, out var holder, out error))
+        {
+            return false;
+        }
+
+        loc = new StlLoc { Kind = StlLocKind.Indirect, Holder = holder };
+        return true;
+    }
+
+    private static bool TryLocal(
+        AwlOperand operand,
+        int bytes,
+        IReadOnlyDictionary<string, (StlLoc Loc, int Bytes, bool IsBit)> locals,
+        out StlLoc loc,
+        out string error)
+    {
+        loc = null!;
+        if (!locals.TryGetValue(operand.Name, out var local))
+        {
+            error = $"'{operand.Text}' is not declared in this block's variable table";
+            return false;
+        }
+
+        var width = local.IsBit ? 0 : local.Bytes;
+        if (width != bytes)
+        {
+            error = $"'{operand.Text}' is a {WidthName(width)}; a {WidthName(bytes)} is expected here";
+            return false;
+        }
+
+        error = string.Empty;
+        loc = local.Loc;
+        return true;
+    }
+
+    private static string WidthName(int bytes) => bytes switch
+    {
+        0 => "bit",
+        1 => "byte",
+        2 => "word",
+        _ => "double word",
+    };
+
+    private static string Describe(StlOperandType type) => type switch
+    {
+        StlOperandType.ByteArea or StlOperandType.WordArea => $"{WidthName(BytesOf(type))} in memory",
+        StlOperandType.BitOut or StlOperandType.ByteOut or StlOperandType.WordOut or StlOperandType.DWordOut =>
+            $"writable {WidthName(BytesOf(type))}",
+        _ => WidthName(BytesOf(type)),
+    };
+}

@@ -1,0 +1,134 @@
+using OperatorPanel.Core.Addressing;
+
+namespace OperatorPanel.Simulator.Stl;
+
+/// <summary>Operand access: big-endian bytes, words and double words (VW100 = VB100 high byte), bits, accumulators and pointers.</summary>
+public sealed partial class StlPlc
+{
+    private static uint Mask(int bytes) => bytes switch
+    {
+        1 => 0xFFu,
+        2 => 0xFFFFu,
+        _ => 0xFFFF_FFFFu,
+    };
+
+    private static uint ReadBytes(byte[] area, int offset, int bytes) => bytes switch
+    {
+        1 => area[offset],
+        2 => (uint)((area[offset] << 8) | area[offset + 1]),
+        _ => (uint)((area[offset] << 24) | (area[offset + 1] << 16) | (area[offset + 2] << 8) | area[offset + 3]),
+    };
+
+    private static void WriteBytes(byte[] area, int offset, int bytes, uint value)
+    {
+        for (var i = bytes - 1; i >= 0; i--)
+        {
+            area[offset + i] = (byte)value;
+            value >>= 8;
+        }
+    }
+
+    private uint Read(StlLoc loc, int bytes)
+    {
+        switch (loc.Kind)
+        {
+            case StlLocKind.Constant:
+                return loc.Value & Mask(bytes);
+            case StlLocKind.Direct:
+                return ReadBytes(_areas[loc.Area], loc.Offset, bytes);
+            case StlLocKind.Local:
+                return ReadBytes(_l, _lBase + loc.Offset, bytes);
+            case StlLocKind.Accumulator:
+                return _ac[loc.Offset] & Mask(bytes);
+            default:
+                return TryPointer(loc, bytes, out var area, out var offset) ? ReadBytes(area, offset, bytes) : 0;
+        }
+    }
+
+    /// <summary>A byte or word written to an accumulator replaces its low byte or word only (unconfirmed; the manual's tables allow AC as OUT).</summary>
+    private void Write(StlLoc loc, int bytes, uint value)
+    {
+        switch (loc.Kind)
+        {
+            case StlLocKind.Direct:
+                WriteBytes(_areas[loc.Area], loc.Offset, bytes, value);
+                break;
+            case StlLocKind.Local:
+                WriteBytes(_l, _lBase + loc.Offset, bytes, value);
+                break;
+            case StlLocKind.Accumulator:
+                _ac[loc.Offset] = (_ac[loc.Offset] & ~Mask(bytes)) | (value & Mask(bytes));
+                break;
+            case StlLocKind.Indirect:
+                if (TryPointer(loc, bytes, out var area, out var offset))
+                {
+                    WriteBytes(area, offset, bytes, value);
+                }
+
+                break;
+            default:
+                throw new InvalidOperationException("the loader lets no constant be written");
+        }
+    }
+
+    private bool ReadBit(StlLoc loc) => loc.Kind == StlLocKind.Local
+        ? ((_l[_lBase + loc.Offset] >> loc.Bit) & 1) != 0
+        : ((_areas[loc.Area][loc.Offset] >> loc.Bit) & 1) != 0;
+
+    private void WriteBit(StlLoc loc, bool value)
+    {
+        var (area, offset) = loc.Kind == StlLocKind.Local ? (_l, _lBase + loc.Offset) : (_areas[loc.Area], loc.Offset);
+        area[offset] = value ? (byte)(area[offset] | (1 << loc.Bit)) : (byte)(area[offset] & ~(1 << loc.Bit));
+    }
+
+    /// <summary>S/R N: N consecutive bits from the operand on, across byte boundaries, stopping at the end of the area.</summary>
+    private void WriteBits(StlLoc loc, int count, bool value)
+    {
+        var length = loc.Kind == StlLocKind.Local ? LBytes : _areas[loc.Area].Length;
+        var first = (loc.Offset * 8) + loc.Bit;
+        for (var n = first; n < first + count && n < length * 8; n++)
+        {
+            WriteBit(new StlLoc { Kind = loc.Kind, Area = loc.Area, Offset = n / 8, Bit = n % 8 }, value);
+        }
+    }
+
+    /// <summary>The bytes a block operand (BMB, ATH, RCV buffer) starts at, with <paramref name="bytes"/> of them inside the area.</summary>
+    private bool TrySpan(StlLoc loc, int bytes, out byte[] area, out int offset)
+    {
+        (area, offset) = loc.Kind switch
+        {
+            StlLocKind.Direct => (_areas[loc.Area], loc.Offset),
+            StlLocKind.Local => (_l, _lBase + loc.Offset),
+            _ => (Array.Empty<byte>(), 0),
+        };
+        if (loc.Kind == StlLocKind.Indirect)
+        {
+            return TryPointer(loc, bytes, out area, out offset);
+        }
+
+        var end = loc.Kind == StlLocKind.Local ? _lBase + LBytes : area.Length;
+        return offset + bytes <= end || Failed("OperandRange", $"{bytes} bytes from the operand run past the end of its area");
+    }
+
+    private bool TryPointer(StlLoc loc, int bytes, out byte[] area, out int offset)
+    {
+        var pointer = Read(loc.Holder!, 4);
+        var (areaIndex, target) = StlPointer.Decode(pointer);
+        var valid = areaIndex is (int)MemoryArea.I or (int)MemoryArea.Q or (int)MemoryArea.M or (int)MemoryArea.V
+            or (int)MemoryArea.SM or (int)MemoryArea.S;
+        area = valid ? _areas[areaIndex] : [];
+        offset = target;
+        return (valid && target + bytes <= area.Length)
+            || Failed("IndirectAddress", $"pointer 16#{pointer:X8} does not address {bytes} byte(s) inside I, Q, M, V, SM or S");
+    }
+
+    private bool Failed(string code, string message)
+    {
+        if (Fault is null && _op is not null)
+        {
+            Fault = new StlFault(code, message, _frames[Math.Max(_depth, 0)].Block?.Name ?? "?", _op.Line);
+        }
+
+        return false;
+    }
+}

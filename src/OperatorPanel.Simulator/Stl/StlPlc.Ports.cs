@@ -1,0 +1,73 @@
+namespace OperatorPanel.Simulator.Stl;
+
+/// <summary>RCV/XMT hand the V buffer to the port; port and timed events are collected whenever one is due.</summary>
+public sealed partial class StlPlc
+{
+    /// <summary>RCV TBL, PORT / XMT TBL, PORT. A port the host did not attach is a port with nothing connected: no-op.</summary>
+    private void PortInstruction(StlOp op)
+    {
+        if (_ports[op.N] is not { } port || !TrySpan(op.A!, 1, out var area, out var offset))
+        {
+            return;
+        }
+
+        if (!ReferenceEquals(area, Memory.V))
+        {
+            Failed("PortBuffer", "the simulator's ports take RCV/XMT buffers in V memory only");
+            return;
+        }
+
+        if (op.Code == StlOpCode.Rcv)
+        {
+            port.Receive(offset);
+        }
+        else
+        {
+            port.Transmit(offset);
+        }
+
+        RefreshNextChange();
+    }
+
+    private void CollectEvents()
+    {
+        var now = TimeSpan.FromTicks(_now / 100);
+        foreach (var port in _ports)
+        {
+            if (port?.NextChange is { } change && change <= now)
+            {
+                _raised.Clear();
+                port.AdvanceTo(now, _raised);
+                foreach (var raised in _raised)
+                {
+                    Enqueue(raised.Number, raised.At.Ticks * 100);
+                }
+            }
+        }
+
+        for (var timer = 0; timer < 2; timer++)
+        {
+            while (_timedNext[timer] <= _now)
+            {
+                Enqueue(10 + timer, _timedNext[timer]);
+                _timedNext[timer] += _timedInterval[timer];
+            }
+        }
+
+        RefreshNextChange();
+    }
+
+    private void RefreshNextChange()
+    {
+        var next = Math.Min(_timedNext[0], _timedNext[1]);
+        foreach (var port in _ports)
+        {
+            if (port?.NextChange is { } change)
+            {
+                next = Math.Min(next, change.Ticks * 100);
+            }
+        }
+
+        _nextChange = next;
+    }
+}

@@ -1,0 +1,124 @@
+using OperatorPanel.Simulator.Reference;
+
+namespace OperatorPanel.Simulator.Stl;
+
+/// <summary>
+/// The scan cycle in simulated time: read inputs, OB1, then the housekeeping overhead (communication, write outputs);
+/// interrupts are serviced between instructions and during the overhead. SMB0 and SMW22-SMW26 per seed 002,
+/// Tables C-1 and C-9.
+/// </summary>
+public sealed partial class StlPlc
+{
+    private const long Millisecond = 1_000_000;
+
+    /// <summary>Scan watchdog: the S7-200 goes to STOP when a scan exceeds 500 ms (unconfirmed in our sources).</summary>
+    private const long Watchdog = 500 * Millisecond;
+
+    private long _now;
+    private long _busy;
+    private long _scanStart;
+    private long _overheadUntil;
+    private bool _firstScan;
+    private bool _scanClock;
+    private int _minScan = int.MaxValue;
+    private int _maxScan;
+
+    /// <summary>Executes scans and interrupts until simulated time <paramref name="until"/>; in STOP time just passes.</summary>
+    public void RunUntil(TimeSpan until)
+    {
+        var end = until.Ticks * 100;
+        RefreshNextChange();
+        while (_now < end && Mode == OperatingMode.Run)
+        {
+            if (_now >= _nextChange)
+            {
+                CollectEvents();
+            }
+
+            if (_interruptBase < 0 && _interruptsEnabled && _queued > 0)
+            {
+                StartInterrupt();
+            }
+            else if (_depth >= 0)
+            {
+                Step();
+            }
+            else if (_now < _overheadUntil)
+            {
+                _now = Math.Min(Math.Min(_overheadUntil, _nextChange), end);
+            }
+            else
+            {
+                BeginScan();
+            }
+        }
+
+        _now = Math.Max(_now, end);
+    }
+
+    private void Step()
+    {
+        ref var frame = ref _frames[_depth];
+        var ops = frame.Block.Ops;
+        if (frame.Pc >= ops.Length)
+        {
+            Return();
+            return;
+        }
+
+        var op = ops[frame.Pc++];
+        _op = op;
+        InstructionsExecuted++;
+        _blockInstructions[frame.Block.Index]++;
+        var cost = Execute(op);
+        _now += cost;
+        _busy += cost;
+        if (Fault is not null)
+        {
+            EnterStop(Fault);
+        }
+        else if (_now - _scanStart > Watchdog)
+        {
+            Failed("Watchdog", "the scan took longer than 500 ms");
+            EnterStop(Fault);
+        }
+    }
+
+    private void BeginScan()
+    {
+        if (!_firstScan)
+        {
+            var scan = (int)Math.Min((_now - _scanStart) / Millisecond, ushort.MaxValue);
+            _minScan = Math.Min(_minScan, scan);
+            _maxScan = Math.Max(_maxScan, scan);
+            Memory.WriteWord(Core.Protocol.ProtocolArea.SM, 22, (ushort)scan);
+            Memory.WriteWord(Core.Protocol.ProtocolArea.SM, 24, (ushort)_minScan);
+            Memory.WriteWord(Core.Protocol.ProtocolArea.SM, 26, (ushort)_maxScan);
+        }
+
+        _scanStart = _now;
+        Array.Copy(InputImage, Memory.I, Memory.I.Length);
+        _scanClock = !_scanClock;
+        Memory.SM[0] = (byte)(0x01
+            | (_firstScan ? 0x02 | 0x08 : 0)
+            | ((_now / (30_000 * Millisecond)) % 2 == 0 ? 0x10 : 0)
+            | ((_now / (500 * Millisecond)) % 2 == 0 ? 0x20 : 0)
+            | (_scanClock ? 0x40 : 0)
+            | (ModeSwitch == ModeSwitch.Run ? 0x80 : 0));
+        if (_firstScan)
+        {
+            (_minScan, _maxScan) = (int.MaxValue, 0);
+        }
+
+        _firstScan = false;
+        Scans++;
+        Push(_program.Blocks[0], 0, null);
+    }
+
+    private void EndScan()
+    {
+        Array.Copy(Memory.Q, OutputImage, OutputImage.Length);
+        _overheadUntil = _now + StlTiming.ScanOverhead;
+        _busy += StlTiming.ScanOverhead;
+    }
+}

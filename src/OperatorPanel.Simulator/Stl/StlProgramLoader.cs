@@ -1,0 +1,95 @@
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Stl;
+
+namespace OperatorPanel.Simulator.Stl;
+
+/// <summary>
+/// Checks a parsed .awl program against a CPU and compiles it for <see cref="StlPlc"/>. Every instruction the
+/// simulator does not implement, every operand outside the CPU's ranges and every unknown block name is reported
+/// with its line ("line 57: BIR is not implemented by the simulator"); a program with any of them is not returned.
+/// </summary>
+public static class StlProgramLoader
+{
+    /// <summary>Parses and loads .awl text; parse and load diagnostics come back together, in line order.</summary>
+    public static StlLoadResult Load(string awlText, CpuProfile cpu)
+    {
+        var parsed = AwlParser.Parse(awlText);
+        var loaded = Load(parsed.Program, cpu);
+        return parsed.Succeeded
+            ? loaded
+            : new StlLoadResult(null, [.. parsed.Diagnostics.Concat(loaded.Diagnostics).OrderBy(d => d.Line)]);
+    }
+
+    public static StlLoadResult Load(AwlProgram program, CpuProfile cpu)
+    {
+        ArgumentNullException.ThrowIfNull(program);
+        ArgumentNullException.ThrowIfNull(cpu);
+        var diagnostics = new List<AwlDiagnostic>();
+        var ordered = program.Blocks.Where(b => b.Kind == AwlBlockKind.OrganizationBlock)
+            .Concat(program.Blocks.Where(b => b.Kind != AwlBlockKind.OrganizationBlock)).ToArray();
+        var blocks = ordered.Select((b, i) => new StlBlock(b, i)).ToArray();
+        CheckBlocks(blocks, cpu, diagnostics);
+        var names = NameBlocks(blocks, diagnostics);
+        var locals = blocks.Select(b => StlLocalLayout.Place(b, cpu.LocalBytesPerPou, diagnostics)).ToArray();
+        var compiler = new StlBlockCompiler(cpu, names, diagnostics);
+        foreach (var block in blocks)
+        {
+            block.Ops = compiler.Compile(block, locals[block.Index]);
+        }
+
+        return diagnostics.Count == 0
+            ? new StlLoadResult(new StlProgram(cpu, blocks, compiler.EdgeCount), [])
+            : new StlLoadResult(null, [.. diagnostics.OrderBy(d => d.Line)]);
+    }
+
+    private static void CheckBlocks(StlBlock[] blocks, CpuProfile cpu, List<AwlDiagnostic> diagnostics)
+    {
+        var mains = blocks.Count(b => b.Kind == AwlBlockKind.OrganizationBlock);
+        if (mains != 1)
+        {
+            diagnostics.Add(new AwlDiagnostic(blocks.Length > 1 ? blocks[1].Source.StartLine : 1,
+                mains == 0 ? "the program has no ORGANIZATION_BLOCK (OB1)" : "the program has more than one ORGANIZATION_BLOCK"));
+        }
+
+        foreach (var block in blocks)
+        {
+            var limit = block.Kind switch
+            {
+                AwlBlockKind.Subroutine => cpu.Subroutines,
+                AwlBlockKind.InterruptRoutine => cpu.InterruptRoutines,
+                _ => 2,
+            };
+            if (block.Source.Number >= limit || (block.Kind == AwlBlockKind.OrganizationBlock && block.Source.Number != 1))
+            {
+                diagnostics.Add(new AwlDiagnostic(block.Source.StartLine,
+                    $"{block.Name}: {block.Source.DefaultName} is outside the {cpu.Name}'s block numbers"));
+            }
+        }
+    }
+
+    private static Dictionary<string, StlBlock> NameBlocks(StlBlock[] blocks, List<AwlDiagnostic> diagnostics)
+    {
+        var names = new Dictionary<string, StlBlock>(StringComparer.OrdinalIgnoreCase);
+        foreach (var block in blocks)
+        {
+            if (!names.TryAdd(block.Name, block) && names[block.Name].Name.Equals(block.Name, StringComparison.OrdinalIgnoreCase))
+            {
+                diagnostics.Add(new AwlDiagnostic(block.Source.StartLine, $"block name {block.Name} is used twice"));
+            }
+        }
+
+        foreach (var block in blocks)
+        {
+            // The default names (SBR_3, INT_0) reach a block too, unless another block carries that name.
+            names.TryAdd(block.Source.DefaultName, block);
+        }
+
+        var numbers = blocks.GroupBy(b => b.Source.DefaultName, StringComparer.OrdinalIgnoreCase).Where(g => g.Count() > 1);
+        foreach (var duplicate in numbers)
+        {
+            diagnostics.Add(new AwlDiagnostic(duplicate.Last().Source.StartLine, $"{duplicate.Key} is defined twice"));
+        }
+
+        return names;
+    }
+}

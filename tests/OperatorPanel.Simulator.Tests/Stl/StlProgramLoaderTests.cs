@@ -1,0 +1,52 @@
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Simulator.Stl;
+
+namespace OperatorPanel.Simulator.Tests.Stl;
+
+public sealed class StlProgramLoaderTests
+{
+    private static StlLoadResult Load(string body, string blocks = "", CpuModel model = CpuModel.Cpu224) =>
+        StlProgramLoader.Load(StlTestPrograms.Text(body, blocks), CpuProfiles.For(model));
+
+    [Fact]
+    public void Load_UnknownInstruction_ReportsNameAndLineAndGivesNoProgram()
+    {
+        var result = Load("LD     SM0.0\nBIR    VB0, VB1");
+
+        result.Succeeded.Should().BeFalse();
+        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: BIR is not implemented by the simulator");
+    }
+
+    [Theory]
+    [InlineData("MOVB   VB0, VB2048", "VB2048")]
+    [InlineData("MOVB   VW0, VB0", "is a word")]
+    [InlineData("MOVB   VB0, SMB1", "read-only")]
+    [InlineData("MOVB   300, VB0", "not a byte constant")]
+    [InlineData("CALL   NOWHERE", "'NOWHERE' is not the name of a subroutine")]
+    [InlineData("ATCH   INT_9, 23", "not the name of an interrupt routine")]
+    [InlineData("XMT    VB0, 1", "port number 0-0")]
+    [InlineData("JMP    4", "no LBL 4")]
+    [InlineData("MOVW   T37, VW0", "timers")]
+    [InlineData("MOVB   #x, VB0", "not declared")]
+    public void Load_BadOperand_IsReportedWithLine(string instruction, string reason)
+    {
+        var result = Load("LD     SM0.0\n" + instruction, model: CpuModel.Cpu221);
+
+        result.Succeeded.Should().BeFalse();
+        result.Diagnostics.Should().ContainSingle().Which.Should().Match<Core.Stl.AwlDiagnostic>(d => d.Line == 5 && d.Message.Contains(reason));
+    }
+
+    [Fact]
+    public void Load_PortOneOnCpu226_IsAccepted()
+    {
+        Load("LD     SM0.0\nXMT    VB0, 1", model: CpuModel.Cpu226).Succeeded.Should().BeTrue();
+    }
+
+    [Fact]
+    public void Load_ParseErrors_AreReturnedWithLoadErrors()
+    {
+        var result = StlProgramLoader.Load("NONSENSE\r\n" + StlTestPrograms.Text("XYZ"), CpuProfiles.For(CpuModel.Cpu224));
+
+        result.Diagnostics.Select(d => d.Line).Should().Equal(1, 5);
+    }
+}
