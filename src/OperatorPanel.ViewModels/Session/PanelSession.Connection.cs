@@ -38,7 +38,7 @@ public sealed partial class PanelSession : IAsyncDisposable
         _connection = await connector.ConnectAsync(Project, cancellationToken);
         foreach (var bus in ProjectBus.Of(Project))
         {
-            var link = new PlcLink(_connection.TransportFor(bus.Serial.PortName), LinkOptions.For(bus.Serial), _time, _logger);
+            var link = new PlcLink(_connection.TransportFor(bus.Serial.PortName), LinkOptionsFor(bus.Serial), _time, _logger);
             _runs.Add(BusRun.Start(bus, link, Mode, Project.Refresh.MinimumPeriod, _time, _logger, OnEngineChanges));
         }
 

@@ -38,6 +38,12 @@ public sealed partial class PanelSession : ObservableObject
         Stations = [.. project.Stations.Select(s => new StationStatusViewModel(s))];
     }
 
+    /// <summary>
+    /// The timing and retry rules of each bus's link; LinkOptions.For (the medium's defaults) unless the App sets a
+    /// longer scan allowance for slow PLC programs. Set before connecting.
+    /// </summary>
+    public Func<Core.Transport.SerialSettings, LinkOptions> LinkOptionsFor { get; init; } = serial => LinkOptions.For(serial);
+
     /// <summary>The project is replaced, edited or saved. Raised on the UI thread.</summary>
     public event EventHandler<ProjectChangedEventArgs>? ProjectChanged;
 
