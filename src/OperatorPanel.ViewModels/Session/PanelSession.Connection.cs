@@ -1,12 +1,10 @@
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.Core.Protocol;
-using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.ViewModels.Session;
 
-/// <summary>Connecting, disconnecting, refreshing, identifying, and following project edits while connected.</summary>
+/// <summary>Connecting, disconnecting, refreshing, and following project edits while connected.</summary>
 public sealed partial class PanelSession : IAsyncDisposable
 {
     /// <summary>Link counters change every cycle without any value changing: the status bar samples them this often.</summary>
@@ -17,7 +15,6 @@ public sealed partial class PanelSession : IAsyncDisposable
     private ILineConnector? _connector;
     private ITimer? _statusTimer;
     private bool _isConnected;
-    private int _identifySequence;
 
     public bool IsConnected
     {
@@ -89,34 +86,6 @@ public sealed partial class PanelSession : IAsyncDisposable
     {
         await Task.WhenAll(_runs.Select(r => r.Engine.RequestRefreshAsync(cancellationToken)));
         UpdateStations();
-    }
-
-    /// <summary>Sends IDENTIFY to every station (beside the polling, one request on the wire at a time) for Diagnostics.</summary>
-    public async Task IdentifyAsync(CancellationToken cancellationToken = default)
-    {
-        foreach (var run in _runs.ToList())
-        {
-            foreach (var station in run.Bus.Stations)
-            {
-                var view = Stations.FirstOrDefault(s => s.Address == station.Address);
-                var sequence = (byte)Interlocked.Increment(ref _identifySequence);
-                try
-                {
-                    var reply = await run.Link.ExchangeAsync(new IdentifyRequest(station.Address, sequence), cancellationToken);
-                    view?.RecordIdentify(reply as IdentifyResponse, reply is ErrorResponse refused ? $"IDENTIFY refused: {refused.Error}" : null);
-                }
-                catch (PlcCommunicationException exception)
-                {
-                    view?.RecordIdentify(null, $"IDENTIFY: {exception.Kind}: {exception.Message}");
-                }
-            }
-        }
-
-        UpdateStations();
-        foreach (var view in Stations.Where(s => s.CpuMismatch))
-        {
-            StatusLine.ShowError($"{view.Name}: the PLC reports {view.Identity!.CpuText}, the project says {view.Station.Cpu.DisplayName}");
-        }
     }
 
     /// <summary>

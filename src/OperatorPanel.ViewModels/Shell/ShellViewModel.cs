@@ -133,14 +133,18 @@ public sealed partial class ShellViewModel : ObservableObject
 
     private void OnSessionChanged(object? sender, PropertyChangedEventArgs e)
     {
-        OnPropertyChanged(e.PropertyName switch
+        var mirrored = e.PropertyName switch
         {
             nameof(PanelSession.Mode) => nameof(IsContinuous),
             nameof(PanelSession.IsReadOnly) => nameof(IsReadOnly),
             nameof(PanelSession.IsConnected) => nameof(IsConnected),
-            _ => nameof(Session),
-        });
-        NotifyCommands();
+            _ => null,
+        };
+        if (mirrored is not null)
+        {
+            OnPropertyChanged(mirrored);
+            NotifyCommands();
+        }
     }
 
     private void NotifyCommands()

@@ -115,6 +115,31 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task Open_UnsavedAnswerCancel_NoFileAskedAndProjectKept()
+    {
+        await MakeDirtyAsync();
+        var project = _panel.Session.Project;
+        _panel.Dialogs.SaveAnswers.Enqueue(SaveChangesAnswer.Cancel);
+        _panel.Files.FileToOpen = Path.Combine(_folder, "never-read.opproj");
+
+        await _shell.OpenCommand.ExecuteAsync().Guarded();
+
+        _panel.Session.Project.Should().BeSameAs(project);
+        _panel.Dialogs.Errors.Should().BeEmpty("the file was never opened");
+        _shell.IsDirty.Should().BeTrue();
+    }
+
+    [Fact]
+    public async Task New_NothingUnsaved_StarterProjectUnsavedAndUntitled()
+    {
+        await _shell.NewCommand.ExecuteAsync().Guarded();
+
+        _shell.Title.Should().Be("Untitled * - Operator Panel");
+        _shell.ProjectPath.Should().BeNull();
+        _shell.Inputs.Groups.Should().NotBeEmpty("the starter project symbolises every local input");
+    }
+
+    [Fact]
     public async Task Open_ValidFile_ReplacesProjectCleanAndDisconnected()
     {
         var path = Path.Combine(_folder, "other.opproj");
