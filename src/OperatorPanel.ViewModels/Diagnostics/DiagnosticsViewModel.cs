@@ -1,0 +1,59 @@
+using System.Collections.ObjectModel;
+using System.Collections.Specialized;
+using System.ComponentModel;
+using OperatorPanel.ViewModels.Mvvm;
+using OperatorPanel.ViewModels.Session;
+using OperatorPanel.ViewModels.Shell;
+
+namespace OperatorPanel.ViewModels.Diagnostics;
+
+/// <summary>The Diagnostics window: per station the identified CPU vs the project's, RUN/STOP, scan times, link statistics.</summary>
+public sealed class DiagnosticsViewModel : PaneViewModel
+{
+    private readonly PanelSession _session;
+
+    public DiagnosticsViewModel(PanelSession session)
+        : base("Diagnostics", "diagnostics")
+    {
+        ArgumentNullException.ThrowIfNull(session);
+        _session = session;
+        IdentifyCommand = new AsyncRelayCommand(IdentifyAsync, () => _session.IsConnected);
+        session.Stations.CollectionChanged += OnStationsChanged;
+        session.PropertyChanged += OnSessionChanged;
+        OnStationsChanged(null, new NotifyCollectionChangedEventArgs(NotifyCollectionChangedAction.Reset));
+    }
+
+    public ObservableCollection<StationDiagnosticsViewModel> Stations { get; } = [];
+
+    /// <summary>Asks every station for IDENTIFY again (after a download, a CPU swap, or a station that came back).</summary>
+    public AsyncRelayCommand IdentifyCommand { get; }
+
+    private async Task IdentifyAsync()
+    {
+        try
+        {
+            await _session.IdentifyAsync();
+        }
+        catch (Exception exception) when (exception is not OutOfMemoryException)
+        {
+            _session.StatusLine.ShowError($"IDENTIFY failed: {exception.Message}");
+        }
+    }
+
+    private void OnStationsChanged(object? sender, NotifyCollectionChangedEventArgs e)
+    {
+        Stations.Clear();
+        foreach (var station in _session.Stations)
+        {
+            Stations.Add(new StationDiagnosticsViewModel(station));
+        }
+    }
+
+    private void OnSessionChanged(object? sender, PropertyChangedEventArgs e)
+    {
+        if (e.PropertyName == nameof(PanelSession.IsConnected))
+        {
+            IdentifyCommand.NotifyCanExecuteChanged();
+        }
+    }
+}

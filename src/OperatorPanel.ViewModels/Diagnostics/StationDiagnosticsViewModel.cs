@@ -1,0 +1,70 @@
+using System.ComponentModel;
+using System.Globalization;
+using OperatorPanel.ViewModels.Mvvm;
+using OperatorPanel.ViewModels.Session;
+
+namespace OperatorPanel.ViewModels.Diagnostics;
+
+/// <summary>
+/// One station in the Diagnostics window: the CPU the PLC reports (IDENTIFY) beside the project's, RUN/STOP, the scan
+/// times SMW22/SMW24/SMW26 (seed 002 Table C-9) and the link counters. Follows its <see cref="StationStatusViewModel"/>.
+/// </summary>
+public sealed class StationDiagnosticsViewModel : ObservableObject
+{
+    public StationDiagnosticsViewModel(StationStatusViewModel status)
+    {
+        ArgumentNullException.ThrowIfNull(status);
+        Status = status;
+        status.PropertyChanged += OnStatusChanged;
+    }
+
+    public StationStatusViewModel Status { get; }
+
+    public string Name => Status.Name;
+
+    public string StationText => Status.Address.ToString();
+
+    public string ProjectCpuText => Status.Station.Cpu.DisplayName;
+
+    public string PlcCpuText => Status.Identity?.CpuText ?? Status.IdentifyError ?? "not identified yet";
+
+    public bool CpuMismatch => Status.CpuMismatch;
+
+    public string CpuMismatchText => CpuMismatch
+        ? $"The PLC reports {Status.Identity!.CpuText}, the project is set up for {ProjectCpuText}: addresses were checked against the wrong CPU."
+        : string.Empty;
+
+    /// <summary>SMB6 as the manual writes it, e.g. 16#20.</summary>
+    public string Smb6Text => Status.Identity is { } id ? "16#" + id.Smb6.ToString("X2", CultureInfo.InvariantCulture) : "-";
+
+    public string HandlerText => Status.Identity is { } id
+        ? $"protocol {id.ProtocolVersion}, handler revision {id.HandlerRevision}{(id.ProtocolMatches ? string.Empty : " (the panel speaks protocol " + Core.Protocol.HandlerIdentity.ProtocolVersion + ")")}"
+        : "-";
+
+    /// <summary>RUN when it answers (Freeport works only in RUN); STOP or TERM when it went silent after answering.</summary>
+    public string RunStopText => Status.Health switch
+    {
+        StationHealth.Online or StationHealth.HandlerMismatch => Status.Identity is { ModeSwitchRun: false } ? "RUN, mode switch at TERM" : "RUN",
+        StationHealth.Stopped => "STOP or TERM (no Freeport reply)",
+        StationHealth.Offline => "unknown (offline)",
+        _ => "-",
+    };
+
+    public string ScanTimesText => Status.Identity is { } id
+        ? $"last {id.LastScanMs} ms, min {id.MinScanMs} ms, max {id.MaxScanMs} ms"
+        : "-";
+
+    public string StatisticsText
+    {
+        get
+        {
+            var s = Status.Statistics;
+            var average = s.RoundTripAverage is { } avg ? $"{avg.TotalMilliseconds:0} ms" : "-";
+            return $"{s.Requests} requests, {s.Replies} replies, {s.Retries} retries, {s.Timeouts} timeouts, {s.CorruptFrames} corrupt, {s.NegativeReplies} refused; round trip {average}";
+        }
+    }
+
+    public string HealthText => Status.HealthText;
+
+    private void OnStatusChanged(object? sender, PropertyChangedEventArgs e) => OnPropertyChanged(string.Empty);
+}

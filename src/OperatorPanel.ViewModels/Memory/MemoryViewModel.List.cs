@@ -1,0 +1,142 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.ViewModels.Mvvm;
+
+namespace OperatorPanel.ViewModels.Memory;
+
+/// <summary>The cell list: add (address checked against the station's CPU), remove, move up and down. Each edit marks the project unsaved.</summary>
+public sealed partial class MemoryViewModel
+{
+    private ImmutableArray<ProjectStation> _stationChoices = [];
+    private ProjectStation? _newStation;
+    private string _newAddress = string.Empty;
+    private string _newSymbol = string.Empty;
+    private string? _addError;
+
+    public AsyncRelayCommand AddCommand { get; }
+
+    public AsyncRelayCommand RemoveCommand { get; }
+
+    public AsyncRelayCommand MoveUpCommand { get; }
+
+    public AsyncRelayCommand MoveDownCommand { get; }
+
+    public ImmutableArray<ProjectStation> StationChoices
+    {
+        get => _stationChoices;
+        private set => SetProperty(ref _stationChoices, value);
+    }
+
+    /// <summary>The station a new cell goes to; the first one unless the operator picks another.</summary>
+    public ProjectStation? NewStation
+    {
+        get => _newStation;
+        set
+        {
+            if (SetProperty(ref _newStation, value))
+            {
+                AddCommand.NotifyCanExecuteChanged();
+            }
+        }
+    }
+
+    public string NewAddress
+    {
+        get => _newAddress;
+        set => SetProperty(ref _newAddress, value ?? string.Empty);
+    }
+
+    public string NewSymbol
+    {
+        get => _newSymbol;
+        set => SetProperty(ref _newSymbol, value ?? string.Empty);
+    }
+
+    /// <summary>Why the new cell was refused ("VW10240: ... CPU 224 has V memory VB0-VB8191"); null when none.</summary>
+    public string? AddError
+    {
+        get => _addError;
+        private set => SetProperty(ref _addError, value);
+    }
+
+    private (AsyncRelayCommand, AsyncRelayCommand, AsyncRelayCommand, AsyncRelayCommand) CreateListCommands() =>
+    (
+        new AsyncRelayCommand(AddAsync, () => NewStation is not null),
+        new AsyncRelayCommand(RemoveAsync, () => SelectedCell is not null),
+        new AsyncRelayCommand(() => MoveAsync(-1), () => CanMove(-1)),
+        new AsyncRelayCommand(() => MoveAsync(+1), () => CanMove(+1))
+    );
+
+    private void NotifyListCommands()
+    {
+        RemoveCommand.NotifyCanExecuteChanged();
+        MoveUpCommand.NotifyCanExecuteChanged();
+        MoveDownCommand.NotifyCanExecuteChanged();
+    }
+
+    private async Task AddAsync()
+    {
+        AddError = null;
+        if (NewStation is not { } station)
+        {
+            return;
+        }
+
+        if (!PlcAddress.TryParse(NewAddress, out var address, out var addressError))
+        {
+            AddError = addressError.Message;
+            return;
+        }
+
+        var symbol = NewSymbol.Trim();
+        AddError = address.Area is not (MemoryArea.M or MemoryArea.V)
+            ? $"{address}: the Memory window holds M and V cells; inputs and outputs have their own windows"
+            : AddressRules.Check(address, station.Cpu, AddressUse.Write)?.Message
+            ?? (symbol.Length == 0 ? $"{address}: give the cell a symbol"
+            : ProjectEdits.SymbolTaken(station, symbol) ? $"{symbol}: {station.Name} already has a symbol of that name" : null);
+        if (AddError is not null)
+        {
+            return;
+        }
+
+        var tag = new ProjectTag(symbol, address, DisplayFormats.DefaultFor(address.Width), Writable: true, Description: string.Empty);
+        var edited = ProjectEdits.WithTags(_session.Project, station.Address, station.Tags.Add(tag));
+        if (await ApplyEditAsync(edited, (station.Address, symbol), message => AddError = message))
+        {
+            NewAddress = string.Empty;
+            NewSymbol = string.Empty;
+        }
+    }
+
+    private async Task RemoveAsync()
+    {
+        if (SelectedCell is not { } cell)
+        {
+            return;
+        }
+
+        var tags = cell.Station.Tags;
+        var index = tags.IndexOf(cell.Tag);
+        var next = index + 1 < tags.Length ? tags[index + 1] : index > 0 ? tags[index - 1] : null;
+        var select = next is null ? ((Core.Link.Station, string)?)null : (cell.Station.Address, next.Symbol);
+        await ApplyEditAsync(ProjectEdits.WithTags(_session.Project, cell.Station.Address, tags.RemoveAt(index)), select, _session.StatusLine.ShowError);
+    }
+
+    private bool CanMove(int step) =>
+        SelectedCell is { } cell && cell.Station.Tags.IndexOf(cell.Tag) + step is var target && target >= 0 && target < cell.Station.Tags.Length;
+
+    /// <summary>Moves the selected cell within its station's list (cells of different stations never mix).</summary>
+    private async Task MoveAsync(int step)
+    {
+        if (SelectedCell is not { } cell || !CanMove(step))
+        {
+            return;
+        }
+
+        var tags = cell.Station.Tags;
+        var index = tags.IndexOf(cell.Tag);
+        var moved = tags.RemoveAt(index).Insert(index + step, cell.Tag);
+        await ApplyEditAsync(ProjectEdits.WithTags(_session.Project, cell.Station.Address, moved), (cell.Station.Address, cell.Symbol), _session.StatusLine.ShowError);
+    }
+}

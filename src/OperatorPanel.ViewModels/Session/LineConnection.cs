@@ -1,0 +1,28 @@
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.ViewModels.Session;
+
+/// <summary>
+/// The transports an <see cref="ILineConnector"/> opened for a project, by port name (ignoring case, as Windows names
+/// ports). The session's links own and dispose the transports; <paramref name="onClose"/> is for what the connector
+/// runs beside them (the demo line's simulated PLCs), and runs before the transports close.
+/// </summary>
+public sealed class LineConnection(IReadOnlyDictionary<string, ITransport> transports, Func<ValueTask>? onClose = null) : IAsyncDisposable
+{
+    private readonly Dictionary<string, ITransport> _transports = new(transports, StringComparer.OrdinalIgnoreCase);
+    private Func<ValueTask>? _onClose = onClose;
+
+    /// <summary>The transport for <paramref name="portName"/>; throws when the connector gave none (its bug).</summary>
+    public ITransport TransportFor(string portName) =>
+        _transports.TryGetValue(portName, out var transport)
+            ? transport
+            : throw new InvalidOperationException($"the line connector opened no transport for port {portName}");
+
+    public async ValueTask DisposeAsync()
+    {
+        if (Interlocked.Exchange(ref _onClose, null) is { } close)
+        {
+            await close();
+        }
+    }
+}

@@ -1,0 +1,132 @@
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.ViewModels.Mvvm;
+
+namespace OperatorPanel.ViewModels.Session;
+
+/// <summary>One station as the status bar and the Diagnostics window show it: health, last error, identity, link counters.</summary>
+public sealed class StationStatusViewModel(ProjectStation station) : ObservableObject
+{
+    private StationHealth _health;
+    private string? _lastError;
+    private LinkStatistics _statistics = LinkStatistics.Empty;
+    private StationIdentity? _identity;
+    private string? _identifyError;
+    private bool _hasAnswered;
+
+    public ProjectStation Station { get; } = station;
+
+    public string Name => Station.Name;
+
+    public Station Address => Station.Address;
+
+    public string PortText => $"{Station.Link.PortName} {Station.Link.LineText}";
+
+    public StationHealth Health
+    {
+        get => _health;
+        private set
+        {
+            if (SetProperty(ref _health, value))
+            {
+                OnPropertyChanged(nameof(HealthText));
+            }
+        }
+    }
+
+    /// <summary>The latest failure or refusal, kept after recovery so it can still be read.</summary>
+    public string? LastError
+    {
+        get => _lastError;
+        private set
+        {
+            if (SetProperty(ref _lastError, value))
+            {
+                OnPropertyChanged(nameof(HealthText));
+            }
+        }
+    }
+
+    public LinkStatistics Statistics
+    {
+        get => _statistics;
+        private set => SetProperty(ref _statistics, value);
+    }
+
+    /// <summary>The station's IDENTIFY reply; null until it answered one.</summary>
+    public StationIdentity? Identity
+    {
+        get => _identity;
+        private set
+        {
+            if (SetProperty(ref _identity, value))
+            {
+                OnPropertyChanged(nameof(CpuMismatch));
+            }
+        }
+    }
+
+    /// <summary>The PLC reports another CPU than the project's: addresses were checked against the wrong sizes.</summary>
+    public bool CpuMismatch => Identity?.Contradicts(Station.Cpu) == true;
+
+    public string HealthText => Health switch
+    {
+        StationHealth.Online => "online",
+        StationHealth.Offline => "offline: " + (LastError ?? "no reply"),
+        StationHealth.Stopped => "no answer: PLC in STOP, mode switch at TERM, or off the bus",
+        StationHealth.HandlerMismatch =>
+            $"handler protocol version {Identity?.ProtocolVersion} is not the panel's {Core.Protocol.HandlerIdentity.ProtocolVersion}: generate and download the PLC code again",
+        _ => "not connected",
+    };
+
+    /// <summary>Why the last IDENTIFY brought no identity; null after one that did.</summary>
+    public string? IdentifyError
+    {
+        get => _identifyError;
+        private set => SetProperty(ref _identifyError, value);
+    }
+
+    internal void RecordIdentify(Core.Protocol.IdentifyResponse? reply, string? error)
+    {
+        IdentifyError = reply is null ? error ?? "IDENTIFY: unexpected reply" : null;
+        if (reply is not null)
+        {
+            _hasAnswered = true;
+            Identity = StationIdentity.From(reply);
+        }
+    }
+
+    internal void Update(StationStatus? status, LinkStatistics statistics)
+    {
+        Statistics = statistics;
+        if (status is null)
+        {
+            Health = StationHealth.Unknown;
+            return;
+        }
+
+        LastError = status.LastError;
+        _hasAnswered |= status.State == StationState.Online;
+        Health = Judge(status);
+    }
+
+    private StationHealth Judge(StationStatus status)
+    {
+        if (Identity is { ProtocolMatches: false })
+        {
+            return StationHealth.HandlerMismatch;
+        }
+
+        // StationTracker writes "{kind}: {message}"; a missing port is offline whatever the station did before.
+        var portGone = status.LastError?.StartsWith(nameof(PlcErrorKind.PortUnavailable), StringComparison.Ordinal) == true;
+        return status.State switch
+        {
+            StationState.Online => StationHealth.Online,
+            StationState.Offline when !portGone && _hasAnswered => StationHealth.Stopped,
+            StationState.Offline => StationHealth.Offline,
+            _ => StationHealth.Unknown,
+        };
+    }
+}

@@ -1,0 +1,138 @@
+using OperatorPanel.Core.Projects;
+using OperatorPanel.ViewModels.Mvvm;
+using OperatorPanel.ViewModels.Services;
+
+namespace OperatorPanel.ViewModels.Shell;
+
+/// <summary>New, Open, Save, Save As and Close, each asking "save changes?" before unsaved work would be lost.</summary>
+public sealed partial class ShellViewModel
+{
+    /// <summary>At most this many problems of a corrupt file go into the message box; the log has them all.</summary>
+    private const int ProblemsShown = 8;
+
+    public AsyncRelayCommand NewCommand { get; }
+
+    public AsyncRelayCommand OpenCommand { get; }
+
+    public AsyncRelayCommand SaveCommand { get; }
+
+    public AsyncRelayCommand SaveAsCommand { get; }
+
+    /// <summary>
+    /// For the window's Closing: asks about unsaved changes (Cancel keeps the window open: return false), then
+    /// disconnects. The App cancels the first Closing, awaits this, and closes again when it returns true.
+    /// </summary>
+    public async Task<bool> CloseAsync()
+    {
+        if (!await ConfirmDiscardAsync())
+        {
+            return false;
+        }
+
+        await Session.DisconnectAsync();
+        return true;
+    }
+
+    /// <summary>Opens <paramref name="path"/> (a command-line argument, a recent file) after asking about unsaved changes.</summary>
+    public async Task<bool> OpenFileAsync(string path)
+    {
+        ArgumentNullException.ThrowIfNull(path);
+        return await ConfirmDiscardAsync() && await LoadAndReplaceAsync(path, demo: false);
+    }
+
+    private (AsyncRelayCommand, AsyncRelayCommand, AsyncRelayCommand, AsyncRelayCommand) CreateFileCommands() =>
+    (
+        new AsyncRelayCommand(NewAsync),
+        new AsyncRelayCommand(OpenAsync),
+        new AsyncRelayCommand(async () => await SaveAsync(), () => HasProject),
+        new AsyncRelayCommand(async () => await SaveAsAsync(), () => HasProject)
+    );
+
+    private async Task NewAsync()
+    {
+        if (!await ConfirmDiscardAsync() || await _services.NewProjects.CreateAsync() is not { } project)
+        {
+            return;
+        }
+
+        await ReplaceAsync(project, path: null, demo: false);
+        IsDirty = true;
+    }
+
+    private async Task OpenAsync()
+    {
+        if (await ConfirmDiscardAsync() && _services.Files.PickFileToOpen("Open project", ProjectFilter) is { } path)
+        {
+            await LoadAndReplaceAsync(path, demo: false);
+        }
+    }
+
+    /// <summary>A file that does not load leaves the current project open (and connected) as it was.</summary>
+    private async Task<bool> LoadAndReplaceAsync(string path, bool demo)
+    {
+        var result = ProjectFile.Load(path);
+        if (!result.Ok)
+        {
+            _logger.Warning("Project {Path} not opened: {Problems}", path, string.Join("; ", result.Errors));
+            var problems = string.Join(Environment.NewLine, result.Errors.Take(ProblemsShown).Select(e => e.ToString()));
+            var more = result.Errors.Length > ProblemsShown ? $"{Environment.NewLine}(and {result.Errors.Length - ProblemsShown} more)" : string.Empty;
+            await _services.Dialogs.ShowErrorAsync(
+                "Project not opened",
+                $"{path} is not a usable project file; the current project stays open.{Environment.NewLine}{problems}{more}");
+            StatusLine.ShowError($"{Path.GetFileName(path)} not opened: {result.Errors[0]}");
+            return false;
+        }
+
+        await ReplaceAsync(result.Project, demo ? null : path, demo);
+        return true;
+    }
+
+    private async Task ReplaceAsync(PanelProject project, string? path, bool demo)
+    {
+        await Session.DisconnectAsync();
+        Session.Load(project);
+        (ProjectPath, IsDemo) = (path, demo);
+        StatusLine.Show($"Opened {ProjectName}");
+    }
+
+    private async Task<bool> SaveAsync() => ProjectPath is { } path ? await SaveToAsync(path) : await SaveAsAsync();
+
+    private async Task<bool> SaveAsAsync()
+    {
+        var path = _services.Files.PickFileToSave("Save project as", ProjectFilter, ProjectName + ProjectFile.Extension);
+        return path is not null && await SaveToAsync(path);
+    }
+
+    /// <summary>Atomic (ProjectFile.TrySave): a failed save leaves the file on disk as it was and the project unsaved.</summary>
+    private async Task<bool> SaveToAsync(string path)
+    {
+        if (!ProjectFile.TrySave(Session.Project, path, out var error))
+        {
+            _logger.Warning("Saving {Path} failed: {Error}", path, error);
+            await _services.Dialogs.ShowErrorAsync("Project not saved", $"{path}: {error}");
+            StatusLine.ShowError($"Not saved: {error}");
+            return false;
+        }
+
+        ProjectPath = path;
+        Session.MarkSaved();
+        StatusLine.Show($"Saved to {path}");
+        return true;
+    }
+
+    /// <summary>True when the current project may go: nothing unsaved, saved now, or the operator discards it.</summary>
+    private async Task<bool> ConfirmDiscardAsync()
+    {
+        if (!IsDirty)
+        {
+            return true;
+        }
+
+        return await _services.Dialogs.AskSaveChangesAsync(ProjectName) switch
+        {
+            SaveChangesAnswer.Save => await SaveAsync(),
+            SaveChangesAnswer.Discard => true,
+            _ => false,
+        };
+    }
+}

@@ -1,0 +1,157 @@
+using System.Collections.ObjectModel;
+using System.ComponentModel;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.ViewModels.Diagnostics;
+using OperatorPanel.ViewModels.Inputs;
+using OperatorPanel.ViewModels.Memory;
+using OperatorPanel.ViewModels.Mvvm;
+using OperatorPanel.ViewModels.Outputs;
+using OperatorPanel.ViewModels.Session;
+using Serilog;
+using Serilog.Core;
+
+namespace OperatorPanel.ViewModels.Shell;
+
+/// <summary>
+/// The main window: project file commands with dirty tracking, the line (connect, refresh mode, refresh now, demo,
+/// read-only), the per-station status bar and the panes. The Alarms pane and the wizard join here (issue 5, part 2):
+/// they take <see cref="Session"/>, which carries the project, the values and every change notification.
+/// </summary>
+public sealed partial class ShellViewModel : ObservableObject
+{
+    public const string AppName = "Operator Panel";
+
+    /// <summary>The WPF filter text for project files.</summary>
+    public const string ProjectFilter = "Operator Panel projects (*.opproj)|*.opproj";
+
+    private readonly ShellServices _services;
+    private readonly TimeProvider _time;
+    private readonly ILogger _logger;
+    private string? _projectPath;
+    private bool _isDirty;
+    private bool _isDemo;
+
+    public ShellViewModel(PanelSession session, PanelOptions options, ShellServices services, TimeProvider? time = null, ILogger? logger = null)
+    {
+        ArgumentNullException.ThrowIfNull(session);
+        ArgumentNullException.ThrowIfNull(options);
+        ArgumentNullException.ThrowIfNull(services);
+        (Session, Options, _services) = (session, options, services);
+        _time = time ?? TimeProvider.System;
+        _logger = (logger ?? Logger.None).ForContext<ShellViewModel>();
+        Inputs = new InputsViewModel(session);
+        Outputs = new OutputsViewModel(session, services.Dialogs, options, logger);
+        Memory = new MemoryViewModel(session, services.Dialogs, options, logger);
+        Diagnostics = new DiagnosticsViewModel(session);
+        Panes = [Inputs, Outputs, Memory, Diagnostics];
+        (NewCommand, OpenCommand, SaveCommand, SaveAsCommand) = CreateFileCommands();
+        (ConnectCommand, DisconnectCommand, RefreshNowCommand, ToggleRefreshModeCommand, ToggleReadOnlyCommand, DemoCommand) = CreateLineCommands();
+        session.ProjectChanged += OnProjectChanged;
+        session.PropertyChanged += OnSessionChanged;
+    }
+
+    /// <summary>A placeholder before any project is opened: no stations, nothing to poll.</summary>
+    public static PanelProject NoProject { get; } = new(string.Empty, RefreshSettings.Default, []);
+
+    public PanelSession Session { get; }
+
+    public PanelOptions Options { get; }
+
+    public InputsViewModel Inputs { get; }
+
+    public OutputsViewModel Outputs { get; }
+
+    public MemoryViewModel Memory { get; }
+
+    public DiagnosticsViewModel Diagnostics { get; }
+
+    /// <summary>The dockable panes, for the docking manager's items source; the Alarms pane is added here when integrated.</summary>
+    public ObservableCollection<PaneViewModel> Panes { get; }
+
+    public ObservableCollection<StationStatusViewModel> Stations => Session.Stations;
+
+    public StatusLine StatusLine => Session.StatusLine;
+
+    /// <summary>The file the project was opened from or last saved to; null for a new or demo project.</summary>
+    public string? ProjectPath
+    {
+        get => _projectPath;
+        private set
+        {
+            if (SetProperty(ref _projectPath, value))
+            {
+                OnPropertyChanged(nameof(Title));
+            }
+        }
+    }
+
+    public bool IsDirty
+    {
+        get => _isDirty;
+        private set
+        {
+            if (SetProperty(ref _isDirty, value))
+            {
+                OnPropertyChanged(nameof(Title));
+            }
+        }
+    }
+
+    /// <summary>The sample project on the simulated line.</summary>
+    public bool IsDemo
+    {
+        get => _isDemo;
+        private set
+        {
+            if (SetProperty(ref _isDemo, value))
+            {
+                OnPropertyChanged(nameof(Title));
+            }
+        }
+    }
+
+    public bool HasProject => !Session.Project.Stations.IsEmpty;
+
+    /// <summary>"Bottling line 1 * - Operator Panel": the project's name, "*" while unsaved.</summary>
+    public string Title => HasProject
+        ? $"{ProjectName}{(IsDemo ? " (demo)" : string.Empty)}{(IsDirty ? " *" : string.Empty)} - {AppName}"
+        : AppName;
+
+    public string ProjectName =>
+        Session.Project.Name is { Length: > 0 } name ? name
+        : ProjectPath is { } path ? Path.GetFileNameWithoutExtension(path)
+        : "Untitled";
+
+    private void OnProjectChanged(object? sender, ProjectChangedEventArgs e)
+    {
+        IsDirty = e.Kind == ProjectChangeKind.Edited;
+        OnPropertyChanged(nameof(HasProject));
+        OnPropertyChanged(nameof(ProjectName));
+        OnPropertyChanged(nameof(Title));
+        NotifyCommands();
+    }
+
+    private void OnSessionChanged(object? sender, PropertyChangedEventArgs e)
+    {
+        var mirrored = e.PropertyName switch
+        {
+            nameof(PanelSession.Mode) => nameof(IsContinuous),
+            nameof(PanelSession.IsReadOnly) => nameof(IsReadOnly),
+            nameof(PanelSession.IsConnected) => nameof(IsConnected),
+            _ => null,
+        };
+        if (mirrored is not null)
+        {
+            OnPropertyChanged(mirrored);
+            NotifyCommands();
+        }
+    }
+
+    private void NotifyCommands()
+    {
+        foreach (var command in new IRelayCommand[] { SaveCommand, SaveAsCommand, ConnectCommand, DisconnectCommand, RefreshNowCommand, DemoCommand })
+        {
+            command.NotifyCanExecuteChanged();
+        }
+    }
+}

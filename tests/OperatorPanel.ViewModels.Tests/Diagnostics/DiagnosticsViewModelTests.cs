@@ -1,0 +1,56 @@
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Simulator.Reference;
+using OperatorPanel.ViewModels.Diagnostics;
+using OperatorPanel.ViewModels.Tests.Fakes;
+
+namespace OperatorPanel.ViewModels.Tests.Diagnostics;
+
+public sealed class DiagnosticsViewModelTests : IAsyncDisposable
+{
+    private readonly PanelFixture _panel = new();
+    private readonly DiagnosticsViewModel _diagnostics;
+
+    public DiagnosticsViewModelTests() => _diagnostics = new DiagnosticsViewModel(_panel.Session);
+
+    [Fact]
+    public async Task Identify_AfterScans_ShowsCpuRunScanTimesAndStatistics()
+    {
+        await _panel.ConnectAsync();
+        _panel.Plc.CompleteScan(12);
+        _panel.Plc.CompleteScan(9);
+
+        await _diagnostics.IdentifyCommand.ExecuteAsync().Guarded();
+        await _panel.RefreshAsync();
+
+        var station = _diagnostics.Stations.Should().ContainSingle().Subject;
+        station.ProjectCpuText.Should().Be("CPU 224");
+        station.PlcCpuText.Should().Be("CPU 224");
+        station.CpuMismatch.Should().BeFalse();
+        station.Smb6Text.Should().Be("16#" + _panel.Plc.Memory.SM[6].ToString("X2", System.Globalization.CultureInfo.InvariantCulture));
+        station.HandlerText.Should().Be($"protocol {HandlerIdentity.ProtocolVersion}, handler revision {HandlerIdentity.HandlerRevision}");
+        station.RunStopText.Should().Be("RUN");
+        station.ScanTimesText.Should().Be("last 9 ms, min 9 ms, max 12 ms");
+        station.StatisticsText.Should().StartWith($"{_panel.Transport.FramesSent} requests, {_panel.Transport.FramesSent} replies, 0 retries");
+    }
+
+    [Fact]
+    public async Task Station_WentToStop_RunStopSaysSo()
+    {
+        await _panel.ConnectAsync();
+        await _panel.RefreshAsync();
+        _panel.Plc.Mode = OperatingMode.Stop;
+
+        await _panel.RefreshAsync();
+
+        _diagnostics.Stations.Single().RunStopText.Should().Be("STOP or TERM (no Freeport reply)");
+    }
+
+    [Fact]
+    public void Identify_NotConnected_Disabled()
+    {
+        _diagnostics.IdentifyCommand.CanExecute(null).Should().BeFalse();
+        _diagnostics.Stations.Single().PlcCpuText.Should().Be("not identified yet");
+    }
+
+    public async ValueTask DisposeAsync() => await _panel.DisposeAsync();
+}

@@ -1,0 +1,52 @@
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Reference;
+using OperatorPanel.TestKit;
+using OperatorPanel.ViewModels.Session;
+
+namespace OperatorPanel.ViewModels.Tests.Fakes;
+
+/// <summary>
+/// Puts a <see cref="ReferencePlc"/> for every station of the project on a simulated bus per port. The PLCs are created
+/// once (the first connect) so a reconnect finds the same memory; <see cref="Configure"/> changes a station's handler.
+/// </summary>
+internal sealed class SimulatedLineConnector(ManualTimeProvider clock) : ILineConnector
+{
+    private readonly Dictionary<string, SimulatedTransport> _transports = new(StringComparer.OrdinalIgnoreCase);
+    private readonly Dictionary<int, ReferencePlc> _plcs = [];
+    private readonly Dictionary<int, HandlerConfig> _configs = [];
+
+    public int Connects { get; private set; }
+
+    public IReadOnlyDictionary<int, ReferencePlc> Plcs => _plcs;
+
+    public SimulatedTransport Transport(string port) => _transports[port];
+
+    public ReferencePlc Plc(int station) => _plcs[station];
+
+    /// <summary>Before the first connect: the handler a station runs (another CPU, another write mask).</summary>
+    public void Configure(HandlerConfig config) => _configs[config.Station.Address] = config;
+
+    public Task<LineConnection> ConnectAsync(PanelProject project, CancellationToken cancellationToken)
+    {
+        Connects++;
+        foreach (var bus in ProjectBus.Of(project))
+        {
+            if (!_transports.ContainsKey(bus.Serial.PortName))
+            {
+                var simulator = new BusSimulator();
+                foreach (var station in bus.Stations)
+                {
+                    var plc = new ReferencePlc(_configs.GetValueOrDefault(station.Address.Address) ?? new HandlerConfig(station.Address, station.Cpu));
+                    _plcs[station.Address.Address] = plc;
+                    simulator.Attach(plc);
+                }
+
+                _transports[bus.Serial.PortName] = new SimulatedTransport(bus.Serial.PortName, simulator, clock);
+            }
+        }
+
+        return Task.FromResult(new LineConnection(_transports.ToDictionary(t => t.Key, t => (ITransport)t.Value)));
+    }
+}

@@ -1,0 +1,140 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Simulator.Reference;
+using OperatorPanel.ViewModels.Session;
+using OperatorPanel.ViewModels.Tests.Fakes;
+
+namespace OperatorPanel.ViewModels.Tests.Session;
+
+public sealed class PanelSessionTests : IAsyncDisposable
+{
+    private readonly PanelFixture _panel = new();
+
+    [Fact]
+    public async Task TriggeredMode_ClockRuns_NothingPolledUntilRefreshNow()
+    {
+        await _panel.ConnectAsync();
+        var afterConnect = _panel.Transport.FramesSent;
+
+        _panel.Clock.Advance(TimeSpan.FromMinutes(5));
+        _panel.Session.UpdateStations();
+
+        _panel.Transport.FramesSent.Should().Be(afterConnect, "triggered mode polls nothing on its own");
+
+        await _panel.RefreshAsync();
+
+        _panel.Transport.FramesSent.Should().BeGreaterThan(afterConnect);
+        var afterRefresh = _panel.Transport.FramesSent;
+        _panel.Clock.Advance(TimeSpan.FromMinutes(5));
+        _panel.Transport.FramesSent.Should().Be(afterRefresh, "one refresh is one cycle");
+    }
+
+    [Fact]
+    public async Task Connect_StationAnswers_OnlineAndIdentified()
+    {
+        await _panel.ConnectAsync();
+        await _panel.RefreshAsync();
+
+        var station = _panel.Session.Stations.Should().ContainSingle().Subject;
+        station.Health.Should().Be(StationHealth.Online);
+        station.Identity.Should().NotBeNull();
+        station.Identity!.Model.Should().Be(CpuModel.Cpu224);
+        station.CpuMismatch.Should().BeFalse();
+        station.Statistics.Replies.Should().BeGreaterThanOrEqualTo(2, "IDENTIFY and the refresh were answered");
+    }
+
+    [Fact]
+    public async Task PortVanishes_StationOfflineWithReasonThenRecovers()
+    {
+        await _panel.ConnectAsync();
+        await _panel.RefreshAsync();
+
+        _panel.Transport.Vanished = true;
+        await _panel.RefreshAsync();
+
+        var station = _panel.Session.Stations.Single();
+        station.Health.Should().Be(StationHealth.Offline);
+        station.HealthText.Should().Contain("PortUnavailable").And.Contain("COM7");
+        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var stale).Should().BeTrue();
+        stale.Quality.Should().Be(ValueQuality.Stale);
+
+        _panel.Transport.Vanished = false;
+        await _panel.RefreshAsync();
+
+        station.Health.Should().Be(StationHealth.Online);
+        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var good).Should().BeTrue();
+        good.Quality.Should().Be(ValueQuality.Good);
+    }
+
+    [Fact]
+    public async Task PlcSwitchedToStop_AnsweredBefore_ShownAsStopped()
+    {
+        await _panel.ConnectAsync();
+        await _panel.RefreshAsync();
+
+        _panel.Plc.Mode = OperatingMode.Stop;
+        await _panel.RefreshAsync();
+
+        var station = _panel.Session.Stations.Single();
+        station.Health.Should().Be(StationHealth.Stopped);
+        station.HealthText.Should().Contain("STOP");
+    }
+
+    [Fact]
+    public async Task Identify_PlcHasAnotherCpu_MismatchFlaggedInStatusLine()
+    {
+        _panel.Connector.Configure(new HandlerConfig(PanelFixture.Filler, CpuProfiles.For(CpuModel.Cpu226)));
+
+        await _panel.ConnectAsync();
+
+        var station = _panel.Session.Stations.Single();
+        station.CpuMismatch.Should().BeTrue();
+        station.Identity!.CpuText.Should().Be("CPU 226");
+        _panel.Session.StatusLine.IsError.Should().BeTrue();
+        _panel.Session.StatusLine.Text.Should().Be("Filler: the PLC reports CPU 226, the project says CPU 224");
+    }
+
+    [Fact]
+    public async Task Identify_OtherProtocolVersion_HandlerMismatch()
+    {
+        await _panel.ConnectAsync();
+        _panel.Transport.RewriteReply = reply => RewriteIdentifyVersion(reply, 0x02);
+
+        await _panel.Session.IdentifyAsync().Guarded();
+        _panel.Transport.RewriteReply = null;
+        await _panel.RefreshAsync();
+
+        var station = _panel.Session.Stations.Single();
+        station.Health.Should().Be(StationHealth.HandlerMismatch);
+        station.HealthText.Should().Contain("protocol version 2");
+    }
+
+    [Fact]
+    public async Task Disconnect_Connected_StationsUnknownAndValuesGone()
+    {
+        await _panel.ConnectAsync();
+        await _panel.RefreshAsync();
+
+        await _panel.Session.DisconnectAsync().Guarded();
+
+        _panel.Session.IsConnected.Should().BeFalse();
+        _panel.Session.Stations.Single().Health.Should().Be(StationHealth.Unknown);
+        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out _).Should().BeFalse();
+    }
+
+    public async ValueTask DisposeAsync() => await _panel.DisposeAsync();
+
+    private static byte[] RewriteIdentifyVersion(byte[] reply, byte version)
+    {
+        FrameCodec.TryDecode(reply, out var frame, out _).Should().BeTrue();
+        if (frame.Command != (byte)(CommandCode.Identify | (CommandCode)FreeportFrame.ReplyBit))
+        {
+            return reply;
+        }
+
+        var payload = frame.Payload.SetItem(1, version);
+        return FrameCodec.Encode(frame with { Payload = payload });
+    }
+}

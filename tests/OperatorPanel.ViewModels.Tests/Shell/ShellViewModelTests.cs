@@ -1,0 +1,230 @@
+using OperatorPanel.Core.Projects;
+using OperatorPanel.ViewModels.Services;
+using OperatorPanel.ViewModels.Shell;
+using OperatorPanel.ViewModels.Tests.Fakes;
+
+namespace OperatorPanel.ViewModels.Tests.Shell;
+
+public sealed class ShellViewModelTests : IAsyncDisposable
+{
+    private readonly PanelFixture _panel = new();
+    private readonly ShellViewModel _shell;
+    private readonly string _folder = Directory.CreateTempSubdirectory("opanel-shell-").FullName;
+
+    public ShellViewModelTests() => _shell = _panel.Shell(new SampleDemo(_panel.Connector));
+
+    [Fact]
+    public async Task Title_ProjectEdited_NameWithStarUntilSaved()
+    {
+        _shell.Title.Should().Be("Filler line - Operator Panel");
+
+        await MakeDirtyAsync();
+
+        _shell.Title.Should().Be("Filler line * - Operator Panel");
+        _panel.Files.FileToSave = Path.Combine(_folder, "filler.opproj");
+        await _shell.SaveCommand.ExecuteAsync().Guarded();
+        _shell.Title.Should().Be("Filler line - Operator Panel");
+        _shell.IsDirty.Should().BeFalse();
+    }
+
+    [Fact]
+    public async Task Close_UnsavedAnswerCancel_StaysOpenWithTheProject()
+    {
+        await MakeDirtyAsync();
+        var project = _panel.Session.Project;
+        _panel.Dialogs.SaveAnswers.Enqueue(SaveChangesAnswer.Cancel);
+
+        var closed = await _shell.CloseAsync().Guarded();
+
+        closed.Should().BeFalse();
+        _panel.Dialogs.Questions.Should().Equal("Save changes to Filler line?");
+        _panel.Session.Project.Should().BeSameAs(project);
+        _shell.IsDirty.Should().BeTrue();
+        _panel.Session.IsConnected.Should().BeTrue();
+    }
+
+    [Fact]
+    public async Task Close_UnsavedAnswerDiscard_ClosesWithoutSaving()
+    {
+        await MakeDirtyAsync();
+        _panel.Dialogs.SaveAnswers.Enqueue(SaveChangesAnswer.Discard);
+
+        var closed = await _shell.CloseAsync().Guarded();
+
+        closed.Should().BeTrue();
+        _panel.Session.IsConnected.Should().BeFalse();
+        Directory.GetFiles(_folder).Should().BeEmpty();
+    }
+
+    [Fact]
+    public async Task Close_UnsavedAnswerSave_SavesThenCloses()
+    {
+        await MakeDirtyAsync();
+        _panel.Dialogs.SaveAnswers.Enqueue(SaveChangesAnswer.Save);
+        var path = Path.Combine(_folder, "filler.opproj");
+        _panel.Files.FileToSave = path;
+
+        var closed = await _shell.CloseAsync().Guarded();
+
+        closed.Should().BeTrue();
+        var saved = ProjectFile.Load(path);
+        saved.Ok.Should().BeTrue();
+        saved.Project!.Stations[0].Tags.Select(t => t.Symbol).Should().Contain("Count");
+    }
+
+    [Fact]
+    public async Task Close_UnsavedSaveDialogCancelled_StaysOpen()
+    {
+        await MakeDirtyAsync();
+        _panel.Dialogs.SaveAnswers.Enqueue(SaveChangesAnswer.Save);
+        _panel.Files.FileToSave = null;
+
+        var closed = await _shell.CloseAsync().Guarded();
+
+        closed.Should().BeFalse();
+        _shell.IsDirty.Should().BeTrue();
+    }
+
+    [Fact]
+    public async Task Close_NothingUnsaved_ClosesWithoutAsking()
+    {
+        var closed = await _shell.CloseAsync().Guarded();
+
+        closed.Should().BeTrue();
+        _panel.Dialogs.Questions.Should().BeEmpty();
+    }
+
+    [Fact]
+    public async Task Open_CorruptFile_MessageAndCurrentProjectKept()
+    {
+        await _panel.ConnectAsync();
+        var project = _panel.Session.Project;
+        var path = Path.Combine(_folder, "broken.opproj");
+        await File.WriteAllTextAsync(path, "{ \"schemaVersion\": 1, \"name\": ");
+        _panel.Files.FileToOpen = path;
+
+        await _shell.OpenCommand.ExecuteAsync().Guarded();
+
+        var error = _panel.Dialogs.Errors.Should().ContainSingle().Subject;
+        error.Title.Should().Be("Project not opened");
+        error.Message.Should().StartWith($"{path} is not a usable project file; the current project stays open.").And.Contain("line 1");
+        _panel.Session.Project.Should().BeSameAs(project);
+        _panel.Session.IsConnected.Should().BeTrue();
+        _shell.Title.Should().Be("Filler line - Operator Panel");
+        _panel.Session.StatusLine.IsError.Should().BeTrue();
+    }
+
+    [Fact]
+    public async Task Open_UnsavedAnswerCancel_NoFileAskedAndProjectKept()
+    {
+        await MakeDirtyAsync();
+        var project = _panel.Session.Project;
+        _panel.Dialogs.SaveAnswers.Enqueue(SaveChangesAnswer.Cancel);
+        _panel.Files.FileToOpen = Path.Combine(_folder, "never-read.opproj");
+
+        await _shell.OpenCommand.ExecuteAsync().Guarded();
+
+        _panel.Session.Project.Should().BeSameAs(project);
+        _panel.Dialogs.Errors.Should().BeEmpty("the file was never opened");
+        _shell.IsDirty.Should().BeTrue();
+    }
+
+    [Fact]
+    public async Task New_NothingUnsaved_StarterProjectUnsavedAndUntitled()
+    {
+        await _shell.NewCommand.ExecuteAsync().Guarded();
+
+        _shell.Title.Should().Be("Untitled * - Operator Panel");
+        _shell.ProjectPath.Should().BeNull();
+        _shell.Inputs.Groups.Should().NotBeEmpty("the starter project symbolises every local input");
+    }
+
+    [Fact]
+    public async Task Open_ValidFile_ReplacesProjectCleanAndDisconnected()
+    {
+        var path = Path.Combine(_folder, "other.opproj");
+        ProjectFile.TrySave(PanelFixture.Project() with { Name = "Capper" }, path, out _).Should().BeTrue();
+        await _panel.ConnectAsync();
+        _panel.Files.FileToOpen = path;
+
+        await _shell.OpenCommand.ExecuteAsync().Guarded();
+
+        _shell.Title.Should().Be("Capper - Operator Panel");
+        _shell.ProjectPath.Should().Be(path);
+        _panel.Session.IsConnected.Should().BeFalse();
+        _shell.ConnectCommand.CanExecute(null).Should().BeTrue();
+    }
+
+    [Fact]
+    public async Task Demo_SampleProject_OpensOnTheSimulatedLineWithLiveValues()
+    {
+        await _shell.DemoCommand.ExecuteAsync().Guarded();
+        await _shell.RefreshNowCommand.ExecuteAsync().Guarded();
+
+        _shell.IsDemo.Should().BeTrue();
+        _shell.Title.Should().Be("Bottling line 1 (demo) - Operator Panel");
+        _shell.IsConnected.Should().BeTrue();
+        _shell.Stations.Should().OnlyContain(s => s.Health == ViewModels.Session.StationHealth.Online);
+        _shell.Inputs.Groups.SelectMany(g => g.Points).Should().OnlyContain(p => p.Quality == Core.Polling.ValueQuality.Good);
+        _shell.ProjectPath.Should().BeNull("Save must not overwrite the shipped sample");
+    }
+
+    [Fact]
+    public void ToggleRefreshMode_TriggeredProject_ContinuousThenTriggered()
+    {
+        _shell.IsContinuous.Should().BeFalse();
+
+        _shell.ToggleRefreshModeCommand.Execute(null);
+
+        _shell.IsContinuous.Should().BeTrue();
+        _panel.Session.Mode.Should().Be(Core.Polling.RefreshMode.Continuous);
+        _shell.ToggleRefreshModeCommand.Execute(null);
+        _shell.StatusLine.Text.Should().Be("Refresh: triggered; F5 refreshes");
+    }
+
+    [Fact]
+    public async Task ReadOnly_Toggled_EveryWritingCommandDisabled()
+    {
+        await _panel.ConnectAsync();
+        await _shell.RefreshNowCommand.ExecuteAsync().Guarded();
+        var conveyor = _shell.Outputs.Groups[0].Points[0];
+        var speed = _shell.Memory.Cells[0];
+        conveyor.SwitchCommand.CanExecute(null).Should().BeTrue();
+        speed.BeginEditCommand.CanExecute(null).Should().BeTrue();
+
+        _shell.ToggleReadOnlyCommand.Execute(null);
+
+        _shell.IsReadOnly.Should().BeTrue();
+        conveyor.SwitchCommand.CanExecute(null).Should().BeFalse();
+        speed.BeginEditCommand.CanExecute(null).Should().BeFalse();
+    }
+
+    [Fact]
+    public async Task ConnectCommands_FollowTheLine()
+    {
+        _shell.ConnectCommand.CanExecute(null).Should().BeTrue();
+        _shell.RefreshNowCommand.CanExecute(null).Should().BeFalse();
+
+        await _shell.ConnectCommand.ExecuteAsync().Guarded();
+
+        _shell.ConnectCommand.CanExecute(null).Should().BeFalse();
+        _shell.DisconnectCommand.CanExecute(null).Should().BeTrue();
+        _shell.RefreshNowCommand.CanExecute(null).Should().BeTrue();
+        _shell.Panes.Select(p => p.ContentId).Should().Equal("inputs", "outputs", "memory", "diagnostics");
+    }
+
+    public async ValueTask DisposeAsync()
+    {
+        await _panel.DisposeAsync();
+        Directory.Delete(_folder, recursive: true);
+    }
+
+    private async Task MakeDirtyAsync()
+    {
+        await _panel.ConnectAsync();
+        _shell.Memory.NewAddress = "VW100";
+        _shell.Memory.NewSymbol = "Count";
+        await _shell.Memory.AddCommand.ExecuteAsync().Guarded();
+        _shell.IsDirty.Should().BeTrue();
+    }
+}
