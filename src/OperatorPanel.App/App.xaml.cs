@@ -1,42 +1,103 @@
 using System.IO;
 using System.Windows;
+using System.Windows.Threading;
 using Microsoft.Extensions.DependencyInjection;
+using OperatorPanel.App.Services;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.ViewModels.Docking;
+using OperatorPanel.ViewModels.Services;
+using OperatorPanel.ViewModels.Session;
+using OperatorPanel.ViewModels.Shell;
 using Serilog;
 
 namespace OperatorPanel.App;
 
-/// <summary>Composition root: logging and the services the views need. Views hold no logic.</summary>
+/// <summary>
+/// Composition root: logging, the services the view models need, the shell. Views hold no logic. Start-up: a project
+/// path on the command line opens it; <c>--demo</c>, or a PC with no serial port at all, opens the demo line.
+/// </summary>
 public partial class App : Application
 {
     private ServiceProvider? _services;
 
-    protected override void OnStartup(StartupEventArgs e)
+    private static string UserFolder => Path.Combine(Environment.GetFolderPath(Environment.SpecialFolder.LocalApplicationData), "OperatorPanel");
+
+    protected override async void OnStartup(StartupEventArgs e)
     {
+        ArgumentNullException.ThrowIfNull(e);
         base.OnStartup(e);
-        var logFolder = Path.Combine(
-            Environment.GetFolderPath(Environment.SpecialFolder.LocalApplicationData),
-            "OperatorPanel",
-            "logs");
         Log.Logger = new LoggerConfiguration()
             .MinimumLevel.Information()
-            .WriteTo.File(Path.Combine(logFolder, "panel-.log"), rollingInterval: RollingInterval.Day, retainedFileCountLimit: 31, shared: true)
+            .WriteTo.File(Path.Combine(UserFolder, "logs", "panel-.log"), rollingInterval: RollingInterval.Day, retainedFileCountLimit: 31, shared: true)
             .CreateLogger();
+        DispatcherUnhandledException += OnUnhandled;
 
-        var services = new ServiceCollection();
-        services.AddSingleton(Log.Logger);
-        services.AddSingleton(TimeProvider.System);
-        services.AddTransient<MainWindow>();
-        _services = services.BuildServiceProvider();
-
+        _services = Compose();
+        var shell = _services.GetRequiredService<ShellViewModel>();
+        _services.GetRequiredService<DockingViewModel>().Load();
+        var window = _services.GetRequiredService<MainWindow>();
+        MainWindow = window;
+        window.Show();
         Log.Information("Operator Panel started");
-        _services.GetRequiredService<MainWindow>().Show();
+
+        var project = e.Args.FirstOrDefault(a => !a.StartsWith("--", StringComparison.Ordinal));
+        if (project is not null)
+        {
+            await shell.OpenFileAsync(project);
+        }
+        else if (e.Args.Contains("--demo") || SerialPortDiscovery.List().Count == 0)
+        {
+            await shell.DemoCommand.ExecuteAsync();
+        }
     }
 
     protected override void OnExit(ExitEventArgs e)
     {
+        if (_services is not null)
+        {
+            _services.GetRequiredService<PanelOptionsStore>().Save(_services.GetRequiredService<PanelOptions>());
+            _services.Dispose();
+        }
+
         Log.Information("Operator Panel closed");
-        _services?.Dispose();
         Log.CloseAndFlush();
         base.OnExit(e);
+    }
+
+    private ServiceProvider Compose()
+    {
+        var services = new ServiceCollection();
+        services.AddSingleton(Log.Logger);
+        services.AddSingleton(TimeProvider.System);
+        services.AddSingleton<IUiDispatcher>(new WpfDispatcher(Dispatcher));
+        services.AddSingleton<IDialogService, WpfDialogService>();
+        services.AddSingleton<IFileDialogService, WpfFileDialogService>();
+        services.AddSingleton(sp => new PanelOptionsStore(Path.Combine(UserFolder, "options.json"), sp.GetRequiredService<ILogger>()));
+        services.AddSingleton(sp => sp.GetRequiredService<PanelOptionsStore>().Load());
+        services.AddSingleton(new DockingViewModel(Path.Combine(UserFolder, "layout.json")));
+        services.AddSingleton(sp => new PanelSession(
+            ShellViewModel.NoProject, sp.GetRequiredService<IUiDispatcher>(), TimeProvider.System, sp.GetRequiredService<ILogger>()));
+        services.AddSingleton(sp => new ShellServices(
+            sp.GetRequiredService<IDialogService>(),
+            sp.GetRequiredService<IFileDialogService>(),
+            new SerialLineConnector(),
+            new DemoSource(sp.GetRequiredService<ILogger>()),
+            new StarterProjectSource()));
+        services.AddSingleton(sp => new ShellViewModel(
+            sp.GetRequiredService<PanelSession>(),
+            sp.GetRequiredService<PanelOptions>(),
+            sp.GetRequiredService<ShellServices>(),
+            TimeProvider.System,
+            sp.GetRequiredService<ILogger>()));
+        services.AddSingleton<MainWindow>();
+        return services.BuildServiceProvider();
+    }
+
+    /// <summary>A fault in a view or command is logged and shown; the panel goes on (the line keeps being watched).</summary>
+    private void OnUnhandled(object sender, DispatcherUnhandledExceptionEventArgs e)
+    {
+        Log.Error(e.Exception, "Unhandled error in the panel");
+        MessageBox.Show(MainWindow, e.Exception.Message, "Operator Panel: unexpected error", MessageBoxButton.OK, MessageBoxImage.Error);
+        e.Handled = true;
     }
 }

@@ -1,12 +1,77 @@
+using System.ComponentModel;
 using System.Windows;
+using System.Windows.Automation;
+using System.Windows.Controls;
+using System.Windows.Data;
+using OperatorPanel.App.Views;
+using OperatorPanel.ViewModels.Docking;
+using OperatorPanel.ViewModels.Shell;
 
 namespace OperatorPanel.App;
 
-/// <summary>The shell window; it only hosts views.</summary>
+/// <summary>
+/// The shell window. Code-behind is visual only: it places the pane views in the docking host, fills the View menu
+/// from the panes, and turns the window's Closing into the shell's "save changes?" question.
+/// </summary>
 public partial class MainWindow : Window
 {
-    public MainWindow()
+    private readonly ShellViewModel _shell;
+    private readonly DockingViewModel _docking;
+    private bool _closeConfirmed;
+
+    public MainWindow(ShellViewModel shell, DockingViewModel docking)
     {
+        ArgumentNullException.ThrowIfNull(shell);
+        ArgumentNullException.ThrowIfNull(docking);
+        _shell = shell;
+        _docking = docking;
+        DataContext = shell;
         InitializeComponent();
+        ResetLayoutItem.Command = docking.ResetLayoutCommand;
+        foreach (var pane in docking.Panes)
+        {
+            var item = new MenuItem { Header = pane.Title, IsCheckable = true, DataContext = pane };
+            item.SetBinding(MenuItem.IsCheckedProperty, new Binding(nameof(DockPaneViewModel.IsVisible)) { Mode = BindingMode.TwoWay });
+            AutomationProperties.SetAutomationId(item, $"Show{pane.Id}MenuItem");
+            ViewMenu.Items.Add(item);
+        }
+
+        Docking.Initialize(docking, CreateView, this);
     }
+
+    protected override async void OnClosing(CancelEventArgs e)
+    {
+        ArgumentNullException.ThrowIfNull(e);
+        base.OnClosing(e);
+        if (_closeConfirmed)
+        {
+            return;
+        }
+
+        e.Cancel = true;
+        if (await _shell.CloseAsync())
+        {
+            _closeConfirmed = true;
+            _docking.Save();
+            Docking.CloseFloatingWindows();
+            Close();
+        }
+    }
+
+    private FrameworkElement CreateView(DockPaneId id)
+    {
+        FrameworkElement view = id switch
+        {
+            DockPaneId.Inputs => new InputsView(),
+            DockPaneId.Outputs => new OutputsView(),
+            DockPaneId.Memory => new MemoryView(),
+            DockPaneId.Alarms => new AlarmsView(),
+            DockPaneId.Diagnostics => new DiagnosticsView(),
+            _ => throw new ArgumentOutOfRangeException(nameof(id), id, null),
+        };
+        view.SetBinding(DataContextProperty, new Binding(id.ToString()) { Source = _shell });
+        return view;
+    }
+
+    private void OnExit(object sender, RoutedEventArgs e) => Close();
 }
