@@ -8,7 +8,7 @@ namespace OperatorPanel.Core.Projects;
 /// locked by another program) turned into messages. Writing never leaves a half-written target: the bytes go to a
 /// temporary file in the same folder (same volume, so the final step is a rename) and replace the target at once.
 /// </summary>
-internal static class AtomicFile
+public static class AtomicFile
 {
     public static bool TryReadAll(string path, long maxBytes, [NotNullWhen(true)] out byte[]? bytes, [NotNullWhen(false)] out string? error)
     {
