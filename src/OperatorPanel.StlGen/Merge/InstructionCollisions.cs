@@ -142,7 +142,7 @@ internal sealed class InstructionCollisions(AwlProgram user, HandlerFootprint ha
     }
 
     private string OtherPort(string otherwise) =>
-        portCount > 1 ? $"put the handler on port {1 - handler.Port} with --port {1 - handler.Port}" : otherwise;
+        portCount > 1 ? $"put the handler on port {1 - handler.Port} with --plc-port {1 - handler.Port}" : otherwise;
 
     private static bool IsBlockOperand(OperandUse use) =>
         use.Instruction.Mnemonic is "CALL" or "ATCH" && use.Index == 0;

@@ -105,7 +105,7 @@ public sealed class HandlerMergerCollisionTests
 
         var found = result.Errors.Should().ContainSingle().Which;
         found.Should().Match<MergeDiagnostic>(d => d.Id == StlDiagnostics.PortInUse && d.Line == Line + 1);
-        found.Message.Should().EndWith("put the handler on port 1 with --port 1");
+        found.Message.Should().EndWith("put the handler on port 1 with --plc-port 1");
     }
 
     [Theory]
