@@ -7,8 +7,9 @@ using OperatorPanel.StlGen.Options;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel generate PROJECT -o DIR [--station NAME|ADDRESS] [--stats]</c>: writes the PLC handler for one station
-/// (STATION-handler.awl, STATION-symbols.txt, STATION-README.txt). CPU, station address and line settings come from
+/// <c>opanel generate PROJECT -o DIR [--station NAME|ADDRESS] [--merge USER.awl] [--stats]</c>: writes the PLC handler
+/// for one station (STATION-handler.awl, STATION-symbols.txt, STATION-README.txt, with --merge also STATION-merged.awl;
+/// a collision with the user's program writes nothing, prints USER.awl:LINE: STLnnn ... and exits 2). CPU, station address and line settings come from
 /// the project. Exit codes: 0 written, 1 bad input (project, options, files), 2 impossible handler settings (STLnnn).
 /// </summary>
 internal static class GenerateCommand
@@ -26,9 +27,10 @@ internal static class GenerateCommand
         var charTimeout = new Option<int>("--char-timeout") { Description = "Receive inter-character timeout in ms (0 = off, default)" };
         var sbr = new Option<int?>("--sbr") { Description = "Subroutine number of the handler (default: the CPU's last)" };
         var interrupt = new Option<int?>("--int") { Description = "First of the handler's 3 interrupt routines (default 125)" };
+        var merge = new Option<string?>("--merge") { Description = "A program exported from Micro/WIN (File > Export): check for collisions and write STATION-merged.awl" };
         var command = new Command("generate", "Generate the S7-200 handler program (.awl), symbol table and technician notes. Exit codes: 0 written, 1 bad input, 2 impossible settings")
         {
-            project, output, station, stats, plcPort, buffer, replyDelay, writable, charTimeout, sbr, interrupt,
+            project, output, station, stats, plcPort, buffer, replyDelay, writable, charTimeout, sbr, interrupt, merge,
         };
         command.SetAction(parse =>
         {
@@ -73,12 +75,27 @@ internal static class GenerateCommand
                 FirstSubroutine = parse.GetValue(sbr),
                 FirstInterrupt = parse.GetValue(interrupt),
             };
-            return Write(cli, GenerateSettings.FileStem(chosen), parse.GetValue(output)!, HandlerGenerator.Generate(options), parse.GetValue(stats));
+            var stem = GenerateSettings.FileStem(chosen);
+            var result = HandlerGenerator.Generate(options);
+            var extra = new List<(string Name, string Text)>();
+            var mergeWarnings = new List<object>();
+            if (result.Ok && parse.GetValue(merge) is { } userPath)
+            {
+                if (GenerateMerge.TryMerge(cli, userPath, options, out var merged, out var warnings) is { } failed)
+                {
+                    return failed;
+                }
+
+                extra.Add(($"{stem}-merged.awl", merged));
+                mergeWarnings.AddRange(warnings.Select(w => GenerateMerge.Json(Path.GetFileName(userPath), w)));
+            }
+
+            return Write(cli, stem, parse.GetValue(output)!, result, extra, mergeWarnings, parse.GetValue(stats));
         });
         return command;
     }
 
-    private static int Write(CliContext cli, string stem, string folder, HandlerGenerationResult result, bool withStats)
+    private static int Write(CliContext cli, string stem, string folder, HandlerGenerationResult result, List<(string Name, string Text)> extra, List<object> warnings, bool withStats)
     {
         if (!result.Ok)
         {
@@ -89,7 +106,7 @@ internal static class GenerateCommand
         var files = new (string Name, string Text)[]
         {
             ($"{stem}-handler.awl", result.AwlText), ($"{stem}-symbols.txt", result.SymbolTableText), ($"{stem}-README.txt", result.TechnicianText),
-        };
+        }.Concat(extra);
         try
         {
             Directory.CreateDirectory(folder);
@@ -112,7 +129,7 @@ internal static class GenerateCommand
         }
 
         cli.Log.Information("Generated the handler for {Stem}: {Files}", stem, written);
-        GenerateView.WriteDone(cli, written, result.Stats!, withStats);
+        GenerateView.WriteDone(cli, written, result.Stats!, withStats, warnings);
         return ExitCodes.Ok;
     }
 }

@@ -21,11 +21,12 @@ internal static class GenerateView
         }
     }
 
-    public static void WriteDone(CliContext cli, List<string> files, HandlerStats stats, bool withStats)
+    /// <summary><paramref name="warnings"/>: the merge's warnings as JSON objects (printed on stderr already in text mode).</summary>
+    public static void WriteDone(CliContext cli, List<string> files, HandlerStats stats, bool withStats, List<object> warnings)
     {
         if (cli.Json)
         {
-            cli.WriteJson(new { ok = true, files, stats = withStats ? StatsJson(stats) : null });
+            cli.WriteJson(new { ok = true, files, stats = withStats ? StatsJson(stats) : null, warnings });
             return;
         }
 
