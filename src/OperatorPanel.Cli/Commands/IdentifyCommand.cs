@@ -25,7 +25,12 @@ internal static class IdentifyCommand
                 return cli.Fail(ExitCodes.BadInput, error);
             }
 
-            await using var session = LinkSession.Open(target, cli.Log);
+            if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
+            {
+                return cli.Fail(ExitCodes.BadInput, openError);
+            }
+
+            await using var session = opened;
             PlcResponse response;
             try
             {

@@ -22,9 +22,10 @@ internal static class SimulateCommand
         var replyDelay = new Option<int>("--reply-delay") { Description = "Handler reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
         var noProcess = new Option<bool>("--no-process") { Description = "Do not run the demo bottling process: memory stays as the panel writes it" };
         var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
+        var model = ModelOption.Create();
         var command = new Command("simulate", "Serve simulated S7-200 PLCs running the protocol handler on a serial device. Exit codes: 0 stopped, 1 bad input, 2 port failure")
         {
-            cpu, revision, stations, replyDelay, noProcess, duration,
+            cpu, revision, stations, replyDelay, noProcess, duration, model,
         };
         serial.AddTo(command);
         command.SetAction(async parse =>
@@ -64,15 +65,20 @@ internal static class SimulateCommand
                 return cli.Fail(ExitCodes.BadInput, "--duration must be a positive number of seconds");
             }
 
-            var line = SimulatedLine.Create(configs, runProcess: !parse.GetValue(noProcess));
-            return await ServeAsync(cli, line, settings, configs, seconds is { } s ? TimeSpan.FromSeconds(s) : null);
+            if (!SimulatedLine.TryCreate(configs, parse.GetValue(model), settings, !parse.GetValue(noProcess), out var line, out error))
+            {
+                return cli.Fail(ExitCodes.BadInput, error);
+            }
+
+            return await ServeAsync(cli, line, settings, configs, seconds is { } s ? TimeSpan.FromSeconds(s) : null, parse.GetValue(model));
         });
         return command;
     }
 
-    private static async Task<int> ServeAsync(CliContext cli, SimulatedLine line, SerialSettings settings, List<HandlerConfig> configs, TimeSpan? duration)
+    private static async Task<int> ServeAsync(
+        CliContext cli, SimulatedLine line, SerialSettings settings, List<HandlerConfig> configs, TimeSpan? duration, SimulationModel model)
     {
-        var serving = new SimulationView(configs, settings, line.Processes.Count > 0);
+        var serving = new SimulationView(configs, settings, line.RunsProcess, model.ToString().ToLowerInvariant());
         serving.WriteStart(cli);
         await using var port = new SerialPortTransport(settings);
         var host = line.HostOn(port, TimeProvider.System, cli.Log);
@@ -90,7 +96,7 @@ internal static class SimulateCommand
             return cli.Fail(ExitCodes.LinkFailure, $"{settings.PortName}: {ex.Kind}: {ex.Message}");
         }
 
-        serving.WriteSummary(cli, host.Replies, line.Bus.Ports.Sum(p => p.ReceivedFrames));
+        serving.WriteSummary(cli, host.Replies, line.Line.FramesReceived);
         return ExitCodes.Ok;
     }
 }

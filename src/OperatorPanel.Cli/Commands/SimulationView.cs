@@ -4,16 +4,17 @@ using OperatorPanel.Simulator.Reference;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>What <c>opanel simulate</c> says when it starts and when it stops (a JSON object each with --json).</summary>
-internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, string Port, string Line, int ReplyDelayMs, bool Process)
+internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, string Port, string Line, int ReplyDelayMs, bool Process, string Model)
 {
-    public SimulationView(List<HandlerConfig> configs, SerialSettings settings, bool process)
+    public SimulationView(List<HandlerConfig> configs, SerialSettings settings, bool process, string model)
         : this(
             configs[0].Cpu.DisplayName,
             configs.Select(c => c.Station.Address).ToList(),
             settings.PortName,
             settings.LineText,
             configs[0].ReplyDelayMs,
-            process)
+            process,
+            model)
     {
     }
 
@@ -27,7 +28,7 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
 
         var stations = string.Join(", ", Stations);
         cli.Out.WriteLine($"simulating {Cpu} at station{(Stations.Count == 1 ? string.Empty : "s")} {stations} on {Port} {Line}, "
-            + $"reply delay {ReplyDelayMs} ms, demo process {(Process ? "on" : "off")}; Ctrl+C to stop");
+            + $"reply delay {ReplyDelayMs} ms, model {Model}, demo process {(Process ? "on" : "off")}; Ctrl+C to stop");
         cli.Out.Flush();
     }
 

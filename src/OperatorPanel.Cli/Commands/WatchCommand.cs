@@ -1,4 +1,5 @@
 using System.CommandLine;
+using OperatorPanel.Cli.Link;
 using OperatorPanel.Cli.Hosting;
 using OperatorPanel.Cli.Watch;
 using OperatorPanel.Core.Polling;
@@ -18,6 +19,7 @@ internal static class WatchCommand
     public static Command Create(Func<ParseResult, CliContext> context)
     {
         var file = new Argument<string>("project") { Description = "The .opproj project file" };
+        var model = ModelOption.Create();
         var demo = new Option<bool>("--demo") { Description = "Simulate every station in-process (its CPU, running the demo process) instead of opening the ports" };
         var once = new Option<bool>("--once") { Description = "One full refresh, print it and exit" };
         var cycles = new Option<int?>("--cycles") { Description = "Stop after this many full refreshes" };
@@ -28,7 +30,7 @@ internal static class WatchCommand
             + "Redraws in place on a terminal; appends a snapshot per refresh (--once, --cycles) or per second elsewhere; --json prints JSON lines. "
             + "Exit codes: 0 done, 1 project problems or bad option, 2 every station offline at the end")
         {
-            file, demo, once, cycles, duration,
+            file, demo, model, once, cycles, duration,
         };
         command.SetAction(async parse =>
         {
@@ -47,7 +49,13 @@ internal static class WatchCommand
                 return cli.Fail(ExitCodes.BadInput, "--cycles and --duration must be positive");
             }
 
-            await using var session = WatchSession.Open(load.Project, parse.GetValue(demo), cli.Log);
+            var (opened, openError) = await WatchSession.TryOpenAsync(load.Project, parse.GetValue(demo), parse.GetValue(model), cli.Log);
+            if (opened is null)
+            {
+                return cli.Fail(ExitCodes.BadInput, openError ?? "the demo line did not start");
+            }
+
+            await using var session = opened;
             using var stop = new StopSignals(seconds is { } s ? TimeSpan.FromSeconds(s) : null);
             var last = await RunAsync(cli, session, limit, stop.Token);
             return last.AllOffline ? ExitCodes.LinkFailure : ExitCodes.Ok;

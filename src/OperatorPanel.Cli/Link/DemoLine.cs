@@ -1,3 +1,4 @@
+using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
@@ -7,7 +8,7 @@ using Serilog;
 namespace OperatorPanel.Cli.Link;
 
 /// <summary>
-/// The in-process demo line behind <c>--demo</c>: simulated PLCs running the demo process on one bus, served by a
+/// The in-process demo line behind <c>--demo</c>: simulated PLCs (the chosen <see cref="SimulationModel"/>) running the demo process on one bus, served by a
 /// <see cref="Simulator.Hosting.SimulatedPlcHost"/> on real time behind an <see cref="InMemoryTransportPair"/>.
 /// The panel talks to <see cref="PanelSide"/> exactly as it would to a serial port.
 /// </summary>
@@ -28,14 +29,23 @@ internal sealed class DemoLine : IAsyncDisposable
 
     public ITransport PanelSide { get; }
 
-    public static DemoLine Start(string portName, IEnumerable<(Station Station, CpuProfile Cpu)> stations, ILogger log)
+    /// <summary>Starts the line on <paramref name="serial"/>'s settings; false with the reason when a station cannot be simulated.</summary>
+    public static bool TryStart(
+        SerialSettings serial, IEnumerable<(Station Station, CpuProfile Cpu)> stations, SimulationModel model, ILogger log,
+        [NotNullWhen(true)] out DemoLine? demo, [NotNullWhen(false)] out string? error)
     {
-        var line = SimulatedLine.Create(stations.Select(s => new HandlerConfig(s.Station, s.Cpu)), runProcess: true);
+        demo = null;
+        if (!SimulatedLine.TryCreate(stations.Select(s => new HandlerConfig(s.Station, s.Cpu)), model, serial, runProcess: true, out var line, out error))
+        {
+            return false;
+        }
+
         line.WarmUp(WarmUp);
-        var pair = new InMemoryTransportPair(TimeProvider.System, $"{portName} (demo)", $"{portName} (demo bus)");
+        var pair = new InMemoryTransportPair(TimeProvider.System, $"{serial.PortName} (demo)", $"{serial.PortName} (demo bus)");
         var host = line.HostOn(pair.BusSide, TimeProvider.System, log);
         var stop = new CancellationTokenSource();
-        return new DemoLine(pair.PanelSide, stop, Task.Run(() => host.RunAsync(stop.Token)));
+        demo = new DemoLine(pair.PanelSide, stop, Task.Run(() => host.RunAsync(stop.Token)));
+        return true;
     }
 
     /// <summary>Stops the simulated stations; call before the panel side is closed, or the host sees an unplugged line.</summary>

@@ -32,6 +32,8 @@ internal sealed class LinkOptionSet
 
     public Option<string?> Revision { get; } = CpuOptions.Revision();
 
+    public Option<SimulationModel> Model { get; } = ModelOption.Create();
+
     public Option<int> ScanMs { get; } = new("--scan-ms")
     {
         Description = "Longest PLC scan time in ms the reply timeout allows for (default 100); raise it for long programs",
@@ -45,6 +47,7 @@ internal sealed class LinkOptionSet
         command.Options.Add(Cpu);
         command.Options.Add(Revision);
         command.Options.Add(Demo);
+        command.Options.Add(Model);
         command.Options.Add(ScanMs);
     }
 
@@ -78,7 +81,7 @@ internal sealed class LinkOptionSet
             return false;
         }
 
-        target = new LinkTarget(station, serial, cpu, demo, TimeSpan.FromMilliseconds(scanMs));
+        target = new LinkTarget(station, serial, cpu, demo, TimeSpan.FromMilliseconds(scanMs), parse.GetValue(Model));
         error = null;
         return true;
     }

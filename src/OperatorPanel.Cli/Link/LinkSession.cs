@@ -1,3 +1,4 @@
+using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
@@ -20,19 +21,31 @@ internal sealed class LinkSession : IAsyncDisposable
 
     public string PortName => Link.PortName;
 
-    /// <summary>Opens <paramref name="serial"/>, or with <paramref name="demoStations"/> a demo line simulating them.</summary>
-    public static LinkSession Open(
-        SerialSettings serial, IReadOnlyList<(Station Station, CpuProfile Cpu)>? demoStations, ILogger log, TimeSpan? scanAllowance = null)
+    /// <summary>
+    /// Opens <paramref name="serial"/>, or with <paramref name="demoStations"/> a demo line simulating them with
+    /// <paramref name="model"/>; false with the reason when the demo line cannot simulate a station.
+    /// </summary>
+    public static bool TryOpen(
+        SerialSettings serial, IReadOnlyList<(Station Station, CpuProfile Cpu)>? demoStations, SimulationModel model, ILogger log,
+        TimeSpan? scanAllowance, [NotNullWhen(true)] out LinkSession? session, [NotNullWhen(false)] out string? error)
     {
-        var demo = demoStations is null ? null : DemoLine.Start(serial.PortName, demoStations, log);
+        session = null;
+        DemoLine? demo = null;
+        if (demoStations is not null && !DemoLine.TryStart(serial, demoStations, model, log, out demo, out error))
+        {
+            return false;
+        }
+
         ITransport transport = demo is null ? new SerialPortTransport(serial) : demo.PanelSide;
         var options = LinkOptions.For(serial);
         options = scanAllowance is { } scan ? options with { ScanAllowance = scan } : options;
-        return new LinkSession(new PlcLink(transport, options, TimeProvider.System, log), demo);
+        session = new LinkSession(new PlcLink(transport, options, TimeProvider.System, log), demo);
+        error = null;
+        return true;
     }
 
-    public static LinkSession Open(LinkTarget target, ILogger log) =>
-        Open(target.Serial, target.Demo ? [(target.Station, target.Cpu!)] : null, log, target.ScanAllowance);
+    public static bool TryOpen(LinkTarget target, ILogger log, [NotNullWhen(true)] out LinkSession? session, [NotNullWhen(false)] out string? error) =>
+        TryOpen(target.Serial, target.Demo ? [(target.Station, target.Cpu!)] : null, target.Model, log, target.ScanAllowance, out session, out error);
 
     public async ValueTask DisposeAsync()
     {

@@ -10,7 +10,8 @@ namespace OperatorPanel.Cli.Link;
 /// <param name="Cpu">The station's CPU when known (--cpu, or the demo's); addresses are then checked against it.</param>
 /// <param name="Demo">True for the in-process simulated PLC.</param>
 /// <param name="ScanAllowance">The PLC scan time the reply timeout allows for (--scan-ms).</param>
-internal sealed record LinkTarget(Station Station, SerialSettings Serial, CpuProfile? Cpu, bool Demo, TimeSpan ScanAllowance)
+/// <param name="Model">With --demo, what answers as the PLC (--model).</param>
+internal sealed record LinkTarget(Station Station, SerialSettings Serial, CpuProfile? Cpu, bool Demo, TimeSpan ScanAllowance, SimulationModel Model = SimulationModel.Stl)
 {
     public string Describe() => $"{Station} on {Serial.PortName}";
 }

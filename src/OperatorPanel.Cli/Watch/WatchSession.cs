@@ -23,19 +23,25 @@ internal sealed class WatchSession : IAsyncDisposable
 
     public IReadOnlyList<BusRun> Buses => _buses;
 
-    public static WatchSession Open(PanelProject project, bool demo, ILogger log)
+    /// <summary>Opens every bus; false with the reason (and every bus opened so far closed) when a demo line cannot start.</summary>
+    public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(PanelProject project, bool demo, SimulationModel model, ILogger log)
     {
         var buses = new List<BusRun>();
         foreach (var bus in ProjectBus.Of(project))
         {
-            var session = LinkSession.Open(bus.Serial, demo ? [.. bus.Stations.Select(s => (s.Address, s.Cpu))] : null, log);
+            if (!LinkSession.TryOpen(bus.Serial, demo ? [.. bus.Stations.Select(s => (s.Address, s.Cpu))] : null, model, log, null, out var session, out var error))
+            {
+                await new WatchSession(project, buses).DisposeAsync();
+                return (null, error);
+            }
+
             var engine = project.Refresh.Mode == RefreshMode.Continuous
                 ? EngineRun.Start(session.Link, bus.Plan(), RefreshMode.Continuous, project.Refresh.MinimumPeriod, log)
                 : EngineRun.OnDemand(session.Link, bus.Plan(), log);
             buses.Add(new BusRun(bus, session, engine));
         }
 
-        return new WatchSession(project, buses);
+        return (new WatchSession(project, buses), null);
     }
 
     /// <summary>

@@ -5,38 +5,44 @@ using Serilog;
 namespace OperatorPanel.Simulator.Hosting;
 
 /// <summary>
-/// Puts simulated PLCs on a byte pipe: a serial device (`opanel simulate`), or one end of an in-memory pair (demo mode,
-/// tests). Every received byte goes to every station on the bus; a reply leaves after that station's reply delay, as the
-/// handler's timed interrupt would send it. The demo processes run on the same clock.
+/// Puts a simulated line (<see cref="ISimulatedLine"/>: the reference model or the generated .awl in the interpreter) on
+/// a byte pipe: a serial device (`opanel simulate`), or one end of an in-memory pair (demo mode, tests). Simulated time
+/// follows the TimeProvider: each turn the line runs up to now, the PC's bytes go on the line at now, and every
+/// character the stations finished sending by now is written to the pipe.
 /// </summary>
 public sealed class SimulatedPlcHost
 {
-    /// <summary>How long one read waits before the processes are advanced anyway.</summary>
-    private static readonly TimeSpan IdlePoll = TimeSpan.FromMilliseconds(10);
+    /// <summary>How long one read waits before the line is advanced anyway: a reply leaves at most this late.</summary>
+    private static readonly TimeSpan IdlePoll = TimeSpan.FromMilliseconds(2);
 
     private readonly ITransport _port;
-    private readonly BusSimulator _bus;
-    private readonly IReadOnlyList<DemoProcess> _processes;
+    private readonly ISimulatedLine _line;
     private readonly TimeProvider _time;
     private readonly ILogger _log;
 
-    public SimulatedPlcHost(ITransport port, BusSimulator bus, IReadOnlyList<DemoProcess> processes, TimeProvider time, ILogger? log = null)
+    public SimulatedPlcHost(ITransport port, ISimulatedLine line, TimeProvider time, ILogger? log = null)
     {
         ArgumentNullException.ThrowIfNull(port);
-        ArgumentNullException.ThrowIfNull(bus);
-        ArgumentNullException.ThrowIfNull(processes);
+        ArgumentNullException.ThrowIfNull(line);
         ArgumentNullException.ThrowIfNull(time);
         _port = port;
-        _bus = bus;
-        _processes = processes;
+        _line = line;
         _time = time;
         _log = (log ?? Serilog.Core.Logger.None).ForContext<SimulatedPlcHost>();
     }
 
-    /// <summary>Frames answered since start.</summary>
-    public int Replies { get; private set; }
+    /// <summary>The reference model's stations on <paramref name="bus"/>, with their demo processes.</summary>
+    public SimulatedPlcHost(ITransport port, BusSimulator bus, IReadOnlyList<DemoProcess> processes, TimeProvider time, ILogger? log = null)
+        : this(port, new ReferenceLine(bus, processes), time, log)
+    {
+    }
 
-    /// <summary>Serves the bus until cancelled. A failing port ends the run with its exception.</summary>
+    public ISimulatedLine Line => _line;
+
+    /// <summary>Frames answered since start.</summary>
+    public int Replies => _line.Replies;
+
+    /// <summary>Serves the line until cancelled. A failing port ends the run with its exception.</summary>
     public async Task RunAsync(CancellationToken cancellationToken)
     {
         if (!_port.IsOpen)
@@ -45,41 +51,26 @@ public sealed class SimulatedPlcHost
         }
 
         var buffer = new byte[512];
-        var last = _time.GetTimestamp();
+        var origin = _line.Now;
+        var start = _time.GetTimestamp();
         while (!cancellationToken.IsCancellationRequested)
         {
-            var count = await _port.ReadAsync(buffer, IdlePoll, cancellationToken).ConfigureAwait(false);
-            last = AdvanceProcesses(last);
+            var wait = _line.NextOutput is { } due && due - _line.Now < IdlePoll ? Max(due - _line.Now, TimeSpan.FromTicks(1)) : IdlePoll;
+            var count = await _port.ReadAsync(buffer, wait, cancellationToken).ConfigureAwait(false);
+            _line.RunUntil(origin + _time.GetElapsedTime(start));
             if (count > 0)
             {
-                await ServeAsync(buffer.AsMemory(0, count), cancellationToken).ConfigureAwait(false);
+                _line.Deliver(buffer.AsSpan(0, count));
             }
-        }
-    }
 
-    private async Task ServeAsync(ReadOnlyMemory<byte> received, CancellationToken cancellationToken)
-    {
-        foreach (var station in _bus.Ports)
-        {
-            foreach (var reply in station.Feed(received.Span))
+            var sent = _line.TakeTransmitted();
+            if (sent.Length > 0)
             {
-                await Task.Delay(station.ReplyDelay, _time, cancellationToken).ConfigureAwait(false);
-                await _port.WriteAsync(reply, cancellationToken).ConfigureAwait(false);
-                Replies++;
-                _log.Debug("{Station} answered {Chars} characters", station.Plc.Config.Station, reply.Length);
+                await _port.WriteAsync(sent, cancellationToken).ConfigureAwait(false);
+                _log.Debug("Sent {Chars} characters at {Time}", sent.Length, _line.Now);
             }
         }
     }
 
-    private long AdvanceProcesses(long since)
-    {
-        var now = _time.GetTimestamp();
-        var elapsed = _time.GetElapsedTime(since, now);
-        foreach (var process in _processes)
-        {
-            process.Advance(elapsed);
-        }
-
-        return now;
-    }
+    private static TimeSpan Max(TimeSpan a, TimeSpan b) => a > b ? a : b;
 }

@@ -1,7 +1,7 @@
 namespace OperatorPanel.Simulator.Reference;
 
 /// <summary>
-/// The bottle filler of samples/bottling-line.opproj run on a <see cref="ReferencePlc"/> by simulated time only (no
+/// The bottle filler of samples/bottling-line.opproj run on an <see cref="IDemoPlc"/> (either model) by simulated time only (no
 /// clocks, no randomness), one scan every 10 ms. Each scan the machine side (<see cref="DemoField"/>: conveyor,
 /// photo eyes, fill head, tank, scripted disturbances) and the operator (<see cref="DemoOperator"/>) set the inputs,
 /// then, in RUN, the program (<see cref="DemoProgram"/>) sets the outputs, tags and alarms. Every value follows from
@@ -13,14 +13,14 @@ public sealed class DemoProcess
 
     public static readonly TimeSpan ScanPeriod = TimeSpan.FromMilliseconds(ScanMs);
 
-    private readonly ReferencePlc _plc;
+    private readonly IDemoPlc _plc;
     private readonly DemoField _field = new();
     private readonly DemoOperator _operator = new();
     private readonly DemoProgram _program;
     private TimeSpan _pending;
     private long _scans;
 
-    public DemoProcess(ReferencePlc plc)
+    public DemoProcess(IDemoPlc plc)
     {
         ArgumentNullException.ThrowIfNull(plc);
         _plc = plc;

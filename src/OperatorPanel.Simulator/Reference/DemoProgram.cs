@@ -7,9 +7,9 @@ namespace OperatorPanel.Simulator.Reference;
 /// <summary>
 /// The PLC program of the demo filler, as a technician would expect it from samples/bottling-line.opproj: run/stop,
 /// the fill sequence (<see cref="DemoFillStep"/>), counting at the outfeed, tank refill and the outputs. Alarms are
-/// in DemoProgram.Alarms.cs. Outputs the panel has written keep the panel's value (<see cref="ReferencePlc.IsOwnedByPanel"/>).
+/// in DemoProgram.Alarms.cs. Outputs the panel has written keep the panel's value (<see cref="IDemoPlc.IsOwnedByPanel"/>).
 /// </summary>
-internal sealed partial class DemoProgram(ReferencePlc plc)
+internal sealed partial class DemoProgram(IDemoPlc plc)
 {
     private const int HeadTravelMs = 200;
     private const int ReleaseMs = 200;

@@ -7,7 +7,7 @@ namespace OperatorPanel.Simulator.Reference;
 /// A plain model of an S7-200 running the protocol handler, following the normative processing order of
 /// docs/protocol.md step by step. The generated STL must answer every frame byte for byte as this does.
 /// </summary>
-public sealed class ReferencePlc : IRequestTarget
+public sealed class ReferencePlc : IRequestTarget, IDemoPlc
 {
     /// <summary>SMB6 holds the CPU type in bits 4-7 (seed 002 Table C-7).</summary>
     private const int Smb6 = 6;

@@ -17,6 +17,9 @@ public sealed partial class StlPlc
             return;
         }
 
+        // The port acts at the time it was last advanced to (FreeportPort), so bring it to this instruction's time first:
+        // otherwise an XMT long after the port's last change would date its characters back to that change.
+        AdvancePort(port);
         if (op.Code == StlOpCode.Rcv)
         {
             port.Receive(offset);
@@ -29,6 +32,16 @@ public sealed partial class StlPlc
         RefreshNextChange();
     }
 
+    private void AdvancePort(IStlPort port)
+    {
+        _raised.Clear();
+        port.AdvanceTo(TimeSpan.FromTicks(_now / 100), _raised);
+        foreach (var raised in _raised)
+        {
+            Enqueue(raised.Number, raised.At.Ticks * 100);
+        }
+    }
+
     private void CollectEvents()
     {
         var now = TimeSpan.FromTicks(_now / 100);
@@ -36,12 +49,7 @@ public sealed partial class StlPlc
         {
             if (port?.NextChange is { } change && change <= now)
             {
-                _raised.Clear();
-                port.AdvanceTo(now, _raised);
-                foreach (var raised in _raised)
-                {
-                    Enqueue(raised.Number, raised.At.Ticks * 100);
-                }
+                AdvancePort(port);
             }
         }
 

@@ -22,6 +22,26 @@ public sealed class IdentifyCommandTests
         run.Out.Should().MatchRegex(@"scan          last \d ms, min \d ms, max \d ms");
     }
 
+    [Theory]
+    [InlineData("stl")]
+    [InlineData("reference")]
+    public void Identify_DemoEitherModel_AnswersTheSame(string model)
+    {
+        var run = CliRunner.Run("identify", "--demo", "--cpu", "226", "--station", "5", "--baud", "19200", "--model", model);
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Should().Contain("station       5 on demo").And.Contain("generated for CPU 226 (Current)").And.Contain("mode switch   RUN");
+    }
+
+    [Fact]
+    public void Identify_DemoHandlerCannotBeGenerated_ExitsOneNamingTheDiagnostic()
+    {
+        var run = CliRunner.Run("identify", "--demo", "--cpu", "224", "--revision", "early", "--baud", "115200");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Contain("the handler cannot be generated: STL").And.Contain("115200");
+    }
+
     [Fact]
     public void Identify_DemoJson_HasTheFields()
     {

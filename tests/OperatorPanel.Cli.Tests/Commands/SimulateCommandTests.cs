@@ -13,13 +13,15 @@ public sealed class SimulateCommandTests
 {
     private static readonly TimeSpan StartLimit = TimeSpan.FromSeconds(3);
 
-    [Fact]
-    public async Task Simulate_OnAPty_AnswersIdentifyWriteAndReadFromTheOtherEnd()
+    [Theory]
+    [InlineData("stl")]
+    [InlineData("reference")]
+    public async Task Simulate_OnAPty_AnswersIdentifyWriteAndReadFromTheOtherEnd(string model)
     {
         using var pty = await SocatPtyPair.StartAsync();
         using var simulatorOut = new StringWriter();
         var output = TextWriter.Synchronized(simulatorOut);
-        string[] args = ["simulate", "--cpu", "226", "--station", "3", "--station", "4", "--device", pty.PathA, "--baud", "19200", "--duration", "5", "--log-dir", LogDir];
+        string[] args = ["simulate", "--cpu", "226", "--station", "3", "--station", "4", "--device", pty.PathA, "--baud", "19200", "--duration", "5", "--model", model, "--log-dir", LogDir];
         var simulator = Task.Run(() => OpanelApp.Run(args, output, TextWriter.Null));
         await WaitForAsync(() => Text(output, simulatorOut).Contains("simulating", StringComparison.Ordinal));
         // Real time on a possibly loaded machine: allow a long "scan" so a stalled thread costs no retry.
@@ -45,7 +47,7 @@ public sealed class SimulateCommandTests
 
         (await simulator).Should().Be(0);
         var summary = Text(output, simulatorOut);
-        summary.Should().StartWith($"simulating CPU 226 at stations 3, 4 on {pty.PathA} 19200 8N1, reply delay 5 ms, demo process on");
+        summary.Should().StartWith($"simulating CPU 226 at stations 3, 4 on {pty.PathA} 19200 8N1, reply delay 5 ms, model {model}, demo process on");
         summary.Should().MatchRegex($@"stopped serving {Regex.Escape(pty.PathA)}: \d+ frames received, \d+ answered");
     }
 
@@ -59,6 +61,7 @@ public sealed class SimulateCommandTests
     }
 
     [Theory]
+    [InlineData("--station", "2", "--model", "plc")]
     [InlineData("--station", "2", "--station", "2")]
     [InlineData("--station", "127", "--reply-delay", "5")]
     [InlineData("--station", "2", "--reply-delay", "0")]

@@ -15,10 +15,12 @@ public sealed class WatchCommandTests : IDisposable
 
     private static string Sample => Path.Combine(RepositoryRoot(), "samples", "bottling-line.opproj");
 
-    [Fact]
-    public void Watch_DemoOnce_ShowsStationOnlineLampsTagsAndAlarms()
+    [Theory]
+    [InlineData("stl")]
+    [InlineData("reference")]
+    public void Watch_DemoOnce_ShowsStationOnlineLampsTagsAndAlarms(string model)
     {
-        var run = CliRunner.Run("watch", Sample, "--demo", "--once");
+        var run = CliRunner.Run("watch", Sample, "--demo", "--once", "--model", model);
 
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Should().StartWith("Bottling line 1  (continuous, at least 100 ms apart)  cycle 1  ")

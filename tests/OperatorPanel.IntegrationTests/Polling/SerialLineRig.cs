@@ -12,7 +12,7 @@ namespace OperatorPanel.IntegrationTests.Polling;
 
 /// <summary>
 /// A whole serial line in one process: socat pty pair; on one end SerialPortTransport + SimulatedPlcHost serving
-/// reference PLCs on one bus; on the other SerialPortTransport + PlcLink + PollingEngine, triggered mode, so each test
+/// reference PLCs (or any <see cref="ISimulatedLine"/>) on one bus; on the other SerialPortTransport + PlcLink + PollingEngine, triggered mode, so each test
 /// decides when a cycle runs. Real time throughout; every wait is bounded by <see cref="Limit"/>.
 /// </summary>
 internal sealed class SerialLineRig : IAsyncDisposable
@@ -37,26 +37,33 @@ internal sealed class SerialLineRig : IAsyncDisposable
 
     public SimulatedPlcHost Host { get; }
 
-    public static async Task<SerialLineRig> StartAsync(IReadOnlyList<ReferencePlc> plcs, IEnumerable<string> watched, int baud = 19200)
+    public static Task<SerialLineRig> StartAsync(IReadOnlyList<ReferencePlc> plcs, IEnumerable<string> watched, int baud = 19200)
     {
-        var pty = await SocatPtyPair.StartAsync();
-        var plcSerial = new SerialSettings { PortName = pty.PathB, BaudRate = baud };
-        var panelSerial = new SerialSettings { PortName = pty.PathA, BaudRate = baud };
-        var tap = new PlcPortTap(new SerialPortTransport(plcSerial));
-        await tap.OpenAsync(default);
         var bus = new BusSimulator();
         foreach (var plc in plcs)
         {
             bus.Attach(plc);
         }
 
-        var items = plcs.SelectMany(p => watched.Select(a => new WatchedItem(p.Config.Station, PlcAddress.Parse(a))));
-        var cpus = plcs.ToDictionary(p => p.Config.Station, p => p.Config.Cpu);
+        return StartAsync(new ReferenceLine(bus, []), [.. plcs.Select(p => (p.Config.Station, p.Config.Cpu))], watched, baud);
+    }
+
+    /// <summary>Any simulated line (the reference model, or generated .awl in the interpreter) serving <paramref name="stations"/>.</summary>
+    public static async Task<SerialLineRig> StartAsync(
+        ISimulatedLine line, IReadOnlyList<(Station Station, CpuProfile Cpu)> stations, IEnumerable<string> watched, int baud = 19200)
+    {
+        var pty = await SocatPtyPair.StartAsync();
+        var plcSerial = new SerialSettings { PortName = pty.PathB, BaudRate = baud };
+        var panelSerial = new SerialSettings { PortName = pty.PathA, BaudRate = baud };
+        var tap = new PlcPortTap(new SerialPortTransport(plcSerial));
+        await tap.OpenAsync(default);
+        var items = stations.SelectMany(s => watched.Select(a => new WatchedItem(s.Station, PlcAddress.Parse(a))));
+        var cpus = stations.ToDictionary(s => s.Station, s => s.Cpu);
         // A loaded 2-core CI machine can stall a thread for longer than one PLC scan; the wider allowance keeps the link from
         // retrying there, so the tests see one exchange per request (retries have their own tests with a manual clock).
         var link = new PlcLink(new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial) with { ScanAllowance = TimeSpan.FromMilliseconds(400) });
         var engine = new PollingEngine(link, PollPlanner.Build(items, cpus)) { Mode = RefreshMode.OnDemand };
-        var rig = new SerialLineRig(pty, tap, link, engine, new SimulatedPlcHost(tap, bus, [], TimeProvider.System));
+        var rig = new SerialLineRig(pty, tap, link, engine, new SimulatedPlcHost(tap, line, TimeProvider.System));
         rig._hostRun = Task.Run(() => rig.Host.RunAsync(rig._stop.Token));
         rig._engineRun = Task.Run(() => rig.Engine.RunAsync(rig._stop.Token));
         return rig;
@@ -85,12 +92,16 @@ internal sealed class SerialLineRig : IAsyncDisposable
         }
     }
 
-    public PolledValue Value(ReferencePlc plc, string address) =>
-        Engine.TryGetValue(plc.Config.Station, PlcAddress.Parse(address), out var value)
+    public PolledValue Value(ReferencePlc plc, string address) => Value(plc.Config.Station, address);
+
+    public PolledValue Value(Station station, string address) =>
+        Engine.TryGetValue(station, PlcAddress.Parse(address), out var value)
             ? value
             : throw new InvalidOperationException($"{address} is not watched");
 
-    public StationState State(ReferencePlc plc) => Engine.GetStationStatus(plc.Config.Station).State;
+    public StationState State(ReferencePlc plc) => State(plc.Config.Station);
+
+    public StationState State(Station station) => Engine.GetStationStatus(station).State;
 
     public async ValueTask DisposeAsync()
     {

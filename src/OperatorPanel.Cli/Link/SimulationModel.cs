@@ -1,0 +1,11 @@
+namespace OperatorPanel.Cli.Link;
+
+/// <summary>What answers as the simulated PLC: the generated handler in the STL interpreter, or the plain C# model.</summary>
+internal enum SimulationModel
+{
+    /// <summary>The handler StlGen generates for the station, executed by the STL interpreter (the default).</summary>
+    Stl,
+
+    /// <summary>The reference model of docs/protocol.md (Simulator/Reference/ReferencePlc).</summary>
+    Reference,
+}
