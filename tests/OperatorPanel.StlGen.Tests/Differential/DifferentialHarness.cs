@@ -64,6 +64,13 @@ internal sealed class DifferentialHarness
 
     public long Instructions => _plc.InstructionsExecuted;
 
+    /// <summary>Sets the same bytes in both PLCs (I through the interpreter's input image).</summary>
+    public void Poke(ProtocolArea area, int offset, params byte[] bytes)
+    {
+        bytes.CopyTo(_reference.Memory.Area(area), offset);
+        bytes.CopyTo(area == ProtocolArea.I ? _plc.InputImage : _plc.Memory.Area(area), offset);
+    }
+
     public bool IsReserved(int first, int last) => first <= ReservedLast && last >= ReservedFirst;
 
     public static bool IsVolatileSm(int offset) => offset <= 5 || offset is (>= 22 and <= 27) or 86 or 186;
