@@ -1,6 +1,10 @@
+using System.Collections.Immutable;
 using System.CommandLine;
 using System.Text;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Simulator.Stl;
+using OperatorPanel.Simulator.Stl.Freeport;
 using OperatorPanel.StlGen;
 using OperatorPanel.StlGen.Options;
 
@@ -19,7 +23,7 @@ internal static class GenerateCommand
         var project = new Argument<string>("project") { Description = "The .opproj project file" };
         var output = new Option<string>("--output", "-o") { Description = "Folder for the generated files", Required = true };
         var station = new Option<string?>("--station") { Description = "Station name or address (needed when the project has several)" };
-        var stats = new Option<bool>("--stats") { Description = "Print V bytes reserved, instructions generated, interrupt events, SBR/INT used" };
+        var stats = new Option<bool>("--stats") { Description = "Print V bytes reserved, instructions generated, interrupt events, SBR/INT used, and the instructions and time each worst-case request adds to the scan (measured in the interpreter)" };
         var plcPort = new Option<int>("--plc-port") { Description = "The PLC's port 0 or 1 (port 1 on CPU 224XP and 226)" };
         var buffer = new Option<string?>("--buffer") { Description = "First V byte of the handler's 272 bytes, e.g. VB1000 (default: the top of V memory)" };
         var replyDelay = new Option<int>("--reply-delay") { Description = "Reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
@@ -90,12 +94,12 @@ internal static class GenerateCommand
                 mergeWarnings.AddRange(warnings.Select(w => GenerateMerge.Json(Path.GetFileName(userPath), w)));
             }
 
-            return Write(cli, stem, parse.GetValue(output)!, result, extra, mergeWarnings, parse.GetValue(stats));
+            return Write(cli, stem, parse.GetValue(output)!, options, result, extra, mergeWarnings, parse.GetValue(stats));
         });
         return command;
     }
 
-    private static int Write(CliContext cli, string stem, string folder, HandlerGenerationResult result, List<(string Name, string Text)> extra, List<object> warnings, bool withStats)
+    private static int Write(CliContext cli, string stem, string folder, HandlerOptions options, HandlerGenerationResult result, List<(string Name, string Text)> extra, List<object> warnings, bool withStats)
     {
         if (!result.Ok)
         {
@@ -129,7 +133,17 @@ internal static class GenerateCommand
         }
 
         cli.Log.Information("Generated the handler for {Stem}: {Files}", stem, written);
-        GenerateView.WriteDone(cli, written, result.Stats!, withStats, warnings);
+        var measured = ImmutableArray<MeasuredRequest>.Empty;
+        if (withStats && !HandlerMeasurement.TryMeasure(result.AwlText, options.Cpu, options.Port, new Station(options.Station),
+            new LineSettings(options.BaudRate, options.Parity, options.DataBits), FreeDataStart(result.Stats!), out measured, out var failed))
+        {
+            return cli.Fail(ExitCodes.GeneratorRefused, $"the generated handler did not run in the interpreter: {failed}");
+        }
+
+        GenerateView.WriteDone(cli, written, result.Stats!, withStats, measured, warnings);
         return ExitCodes.Ok;
     }
+
+    /// <summary>The measured requests read and write VB0-VB118, or the bytes just above the handler's when it sits low.</summary>
+    private static int FreeDataStart(HandlerStats stats) => stats.FirstVByte >= HandlerMeasurement.DataBytes ? 0 : stats.LastVByte + 1;
 }

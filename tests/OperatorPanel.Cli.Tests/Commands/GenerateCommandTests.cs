@@ -40,6 +40,45 @@ public sealed class GenerateCommandTests : IDisposable
     }
 
     [Fact]
+    public void Generate_Stats_PrintsWhatEachWorstCaseRequestAddsToTheScan()
+    {
+        var project = NewProject("224", "2");
+
+        var run = CliRunner.Run("generate", project, "-o", Out, "--stats");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Should().Contain("  IDENTIFY                  10 ->  42 chars    265 instructions    1.344 ms")
+            .And.Contain("  READ 1 item 119 bytes     20 -> 250 chars   1271 instructions    6.847 ms")
+            .And.Contain("  READ 20 items 81 bytes   172 -> 174 chars   2810 instructions   15.866 ms")
+            .And.Contain("  WRITE 118 bytes          254 -> 248 chars   2160 instructions   11.996 ms")
+            .And.Contain("  WRITE BIT                 20 ->  14 chars    289 instructions    1.236 ms")
+            .And.Contain("  DEFINE LIST 20 items     174 ->  12 chars   1651 instructions    8.564 ms")
+            .And.Contain("  READ LIST 20 items        12 -> 174 chars   1359 instructions    8.128 ms")
+            .And.Contain("  bad block check           10 ->   0 chars     61 instructions    0.264 ms")
+            .And.Contain("worst case per request:  2810 instructions, 15.866 ms (READ 20 items 81 bytes)");
+    }
+
+    [Fact]
+    public void Generate_StatsJson_ReportsTheMeasuredRequests()
+    {
+        var project = NewProject("224", "2");
+
+        var run = CliRunner.Run("generate", project, "-o", Out, "--stats", "--json");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        using var json = JsonDocument.Parse(run.Out);
+        var stats = json.RootElement.GetProperty("stats");
+        var measured = stats.GetProperty("measured").EnumerateArray().ToList();
+        measured.Should().HaveCount(8);
+        measured[0].GetProperty("request").GetString().Should().Be("IDENTIFY");
+        measured[0].GetProperty("replyChars").GetInt32().Should().Be(42);
+        measured[0].GetProperty("instructions").GetInt64().Should().Be(265);
+        measured[0].GetProperty("microseconds").GetInt64().Should().Be(1344);
+        stats.GetProperty("worstInstructions").GetInt64().Should().Be(2810);
+        stats.GetProperty("worstMicroseconds").GetInt64().Should().Be(15866);
+    }
+
+    [Fact]
     public void Generate_Json_ReportsFilesAndStats()
     {
         var project = NewProject("226", "17");

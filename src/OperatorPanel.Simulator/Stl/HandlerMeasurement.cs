@@ -1,0 +1,63 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Simulator.Stl.Freeport;
+
+namespace OperatorPanel.Simulator.Stl;
+
+/// <summary>
+/// Measures a handler by running it: loads the .awl text in the interpreter, serves the worst-case request of each
+/// kind (docs/protocol.md Limits: the largest READ reply, the most items, the longest WRITE, a full list) and counts
+/// what its interrupt routines execute. Times are StlTiming estimates; only +14 us per indirect operand is confirmed.
+/// </summary>
+public static class HandlerMeasurement
+{
+    /// <summary>A 119-byte V range the requests read and write; the caller keeps it clear of the handler's bytes.</summary>
+    public const int DataBytes = 119;
+
+    /// <summary>
+    /// Serves the worst-case requests to the handler in <paramref name="awlText"/> on <paramref name="port"/> at
+    /// <paramref name="station"/>; <paramref name="dataStart"/> is the first of <see cref="DataBytes"/> free V bytes.
+    /// False with the loader's diagnostics when the text does not load.
+    /// </summary>
+    public static bool TryMeasure(string awlText, CpuProfile cpu, int port, Station station, LineSettings line, int dataStart, out ImmutableArray<MeasuredRequest> requests, out string error)
+    {
+        ArgumentNullException.ThrowIfNull(cpu);
+        var load = StlProgramLoader.Load(awlText, cpu);
+        if (load.Program is null)
+        {
+            (requests, error) = ([], string.Join("; ", load.Diagnostics));
+            return false;
+        }
+
+        var plc = new StlPlc(load.Program);
+        var freeport = new FreeportPort(port, plc.Memory, cpu, line);
+        plc.AttachPort(freeport);
+        var session = new MeasurementSession(plc, freeport, line, port);
+        var builder = ImmutableArray.CreateBuilder<MeasuredRequest>();
+        foreach (var (name, frame) in WorstCases(station, dataStart))
+        {
+            builder.Add(session.Serve(name, frame));
+        }
+
+        (requests, error) = (builder.ToImmutable(), plc.Fault is { } fault ? $"the handler faulted: {fault}" : "");
+        return plc.Fault is null;
+    }
+
+    private static IEnumerable<(string Name, byte[] Frame)> WorstCases(Station station, int v)
+    {
+        // 19 items of 4 bytes and one of 5: 81 bytes, 2 x 81 + 4 x 20 = 242 <= 243 (the reply capacity rule).
+        ImmutableArray<ReadItem> twenty = [.. Enumerable.Range(0, 20).Select(i => new ReadItem(ProtocolArea.V, v + (i * 5), i == 19 ? 5 : 4))];
+        yield return ("IDENTIFY", RequestCodec.Encode(new IdentifyRequest(station, 1)));
+        yield return ("READ 1 item 119 bytes", RequestCodec.Encode(new ReadRequest(station, 2, [new ReadItem(ProtocolArea.V, v, DataBytes)])));
+        yield return ("READ 20 items 81 bytes", RequestCodec.Encode(new ReadRequest(station, 3, twenty)));
+        yield return ("WRITE 118 bytes", RequestCodec.Encode(new WriteBlockRequest(station, 4, ProtocolArea.V, v, [.. Enumerable.Range(0, 118).Select(i => (byte)i)])));
+        yield return ("WRITE BIT", RequestCodec.Encode(new WriteBitRequest(station, 5, ProtocolArea.V, v, 3, true)));
+        yield return ("DEFINE LIST 20 items", RequestCodec.Encode(new DefineListRequest(station, 6, 1, twenty)));
+        yield return ("READ LIST 20 items", RequestCodec.Encode(new ReadListRequest(station, 7, 1)));
+        var bad = RequestCodec.Encode(new IdentifyRequest(station, 8));
+        bad[^2] = (byte)(bad[^2] == '0' ? '1' : '0');
+        yield return ("bad block check", bad);
+    }
+}
