@@ -1,0 +1,71 @@
+using System.Globalization;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.StlGen.Options;
+
+namespace OperatorPanel.StlGen.Handler;
+
+/// <summary>The figures every part of the handler needs, worked out once from checked options.</summary>
+internal sealed class HandlerContext
+{
+    public HandlerContext(HandlerOptions options)
+    {
+        Options = options;
+        Layout = new HandlerLayout(options.EffectiveBufferStart);
+        Port = options.Port;
+        VBytes = HandlerDefaults.VBytes(options.Cpu);
+        SmBytes = options.Cpu.TryGetArea(MemoryArea.SM, out var sm) ? sm.ByteCount : 0;
+    }
+
+    public HandlerOptions Options { get; }
+
+    public HandlerLayout Layout { get; }
+
+    public HandlerBlockNames Names => Options.Names;
+
+    public int Port { get; }
+
+    public int VBytes { get; }
+
+    public int SmBytes { get; }
+
+    /// <summary>"0" or "1": the PORT operand of RCV and XMT.</summary>
+    public string PortOperand => Port.ToString(CultureInfo.InvariantCulture);
+
+    /// <summary>Receive message complete: event 23 (port 0) or 24 (port 1); docs/sources/s7200-facts.md section 5.</summary>
+    public int ReceiveEvent => Port == 0 ? 23 : 24;
+
+    /// <summary>Transmit complete: event 9 (port 0) or 26 (port 1).</summary>
+    public int TransmitEvent => Port == 0 ? 9 : 26;
+
+    /// <summary>Timed interrupt 0, interval SMB34.</summary>
+    public const int DelayEvent = 10;
+
+    /// <summary>SMB30 for port 0, SMB130 for port 1; SMB86-SMB94 and SMB186-SMB194 likewise (seed 002, Tables C-11, C-16).</summary>
+    public int SmPort(int port0Byte) => port0Byte + (Port == 0 ? 0 : 100);
+
+    public string SmB(int port0Byte) => "SMB" + SmPort(port0Byte).ToString(CultureInfo.InvariantCulture);
+
+    public string SmW(int port0Byte) => "SMW" + SmPort(port0Byte).ToString(CultureInfo.InvariantCulture);
+
+    /// <summary>
+    /// SMB30/SMB130 = pp d bbb mm (seed 002 Table C-11): parity 00 none, 01 even, 11 odd; d 1 = 7 data bits; bbb the
+    /// CPU's baud code; mm 01 Freeport.
+    /// </summary>
+    public int FreeportControl
+    {
+        get
+        {
+            var parity = Options.Parity switch { Parity.Even => 0b01, Parity.Odd => 0b11, _ => 0b00 };
+            var sevenBits = Options.DataBits == 7 ? 1 : 0;
+            var baud = Options.Cpu.FreeportBaudCode(Options.BaudRate) ?? 0;
+            return (parity << 6) | (sevenBits << 5) | (baud << 2) | 0b01;
+        }
+    }
+
+    public bool MayWrite(int areaCode) => (Options.WriteMask & (1 << areaCode)) != 0;
+
+    public static string Hex(int value) => "16#" + value.ToString("X2", CultureInfo.InvariantCulture);
+
+    public static string Dec(int value) => value.ToString(CultureInfo.InvariantCulture);
+}

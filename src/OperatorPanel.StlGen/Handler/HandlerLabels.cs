@@ -1,0 +1,28 @@
+namespace OperatorPanel.StlGen.Handler;
+
+/// <summary>The jump labels of the receive routine (LBL 0-255, local to the block).</summary>
+internal static class HandlerLabels
+{
+    public const int Silence = 1;
+    public const int ErrorReply = 2;
+    public const int Finish = 3;
+    public const int Identify = 11;
+    public const int Read = 12;
+    public const int Write = 13;
+    public const int WriteBit = 14;
+    public const int DefineList = 15;
+    public const int ReadList = 16;
+
+    /// <summary>22-27: reply with error code 02-07 (docs/protocol.md section 3).</summary>
+    public const int ErrorBase = 20;
+    public const int CheckItems = 30;
+    public const int ReadItemsChecked = 41;
+    public const int BuildItems = 40;
+    public const int Writable = 50;
+    public const int WriteBitExecute = 52;
+    public const int DefineItemsChecked = 60;
+
+    public static string Error(int code) => HandlerContext.Dec(ErrorBase + code);
+
+    public static string Of(int label) => HandlerContext.Dec(label);
+}

@@ -1,0 +1,52 @@
+using System.Globalization;
+
+namespace OperatorPanel.StlGen.Handler;
+
+/// <summary>
+/// Where the handler keeps its bytes in V memory (docs/protocol.md, "Work bytes"): the 256-byte buffer (byte 0 =
+/// RCV/XMT count, bytes 1-255 the frame) and 16 work bytes after it. Pointers live in AC1-AC3, nothing in L memory.
+/// The order of the work bytes matters: one ATH fills N, I, CMD from the header; one HTA writes CMD|80 and STATUS
+/// (kept in LIST) into the reply; START and LCOUNT are indexed by the list id.
+/// </summary>
+public sealed class HandlerLayout(int bufferStart)
+{
+    public const int WorkBytes = 16;
+    public const int Subroutines = 1;
+    public const int Interrupts = 3;
+
+    /// <summary>Offsets from the buffer start.</summary>
+    public const int N = 256, I = 257, Cmd = 258, List = 259, D = 260, Bcc = 261, MaxD = 262, LastFree = 263, Start1 = 264, LCount1 = 268;
+
+    public int BufferStart { get; } = bufferStart;
+
+    public int LastByte => BufferStart + 256 + WorkBytes - 1;
+
+    /// <summary>"VB7920" for buffer byte 0.</summary>
+    public string B(int offset) => "VB" + Abs(offset);
+
+    public string W(int offset) => "VW" + Abs(offset);
+
+    public string Dw(int offset) => "VD" + Abs(offset);
+
+    public string Bit(int offset, int bit) => $"V{Abs(offset)}.{bit.ToString(CultureInfo.InvariantCulture)}";
+
+    public string Ptr(int offset) => "&VB" + Abs(offset);
+
+    /// <summary>The symbol table: every named byte of the footprint (the blocks' names are not symbols).</summary>
+    public IReadOnlyList<(string Symbol, string Address, string Comment)> Symbols =>
+    [
+        ("OP_BUF", B(0), "Panel handler: receive/transmit buffer, 256 bytes (byte 0 = character count)"),
+        ("OP_N", B(N), "Panel handler: item COUNT of a READ or DEFINE LIST (station byte while decoding)"),
+        ("OP_I", B(I), "Panel handler: item loop counter (sequence byte while decoding)"),
+        ("OP_CMD", B(Cmd), "Panel handler: command code of the request"),
+        ("OP_LIST", B(List), "Panel handler: LIST id of DEFINE/READ LIST; reply STATUS code"),
+        ("OP_D", B(D), "Panel handler: sum of the item lengths; bit mask of WRITE BIT"),
+        ("OP_BCC", B(Bcc), "Panel handler: XOR block check accumulator"),
+        ("OP_MAXD", B(MaxD), "Panel handler: largest data length of the stored READ lists"),
+        ("OP_LAST_FREE", B(LastFree), "Panel handler: last buffer byte below the stored lists (255 = none)"),
+        .. Enumerable.Range(1, 4).Select(n => ($"OP_START{n}", B(Start1 + n - 1), $"Panel handler: first buffer byte of READ list {n}")),
+        .. Enumerable.Range(1, 4).Select(n => ($"OP_LCOUNT{n}", B(LCount1 + n - 1), $"Panel handler: item count of READ list {n} (0 = not defined)")),
+    ];
+
+    private string Abs(int offset) => (BufferStart + offset).ToString(CultureInfo.InvariantCulture);
+}

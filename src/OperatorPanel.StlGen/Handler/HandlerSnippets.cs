@@ -1,0 +1,85 @@
+using OperatorPanel.StlGen.Model;
+using static OperatorPanel.StlGen.Handler.HandlerContext;
+using static OperatorPanel.StlGen.Handler.HandlerLayout;
+
+namespace OperatorPanel.StlGen.Handler;
+
+/// <summary>Pieces several parts of the handler share.</summary>
+internal static class HandlerSnippets
+{
+    /// <summary>Protocol area codes 1-5 and the first byte of each area (docs/protocol.md, "Area codes").</summary>
+    private static readonly (int Code, string Pointer, string Name)[] Areas =
+        [(1, "&IB0", "I"), (2, "&QB0", "Q"), (3, "&MB0", "M"), (4, "&VB0", "V"), (5, "&SMB0", "SM")];
+
+    /// <summary>Every READ list is forgotten: no list stored, floor back at 256 (docs/protocol.md, "Lists", invalidation).</summary>
+    public static NetworkBuilder ClearLists(this NetworkBuilder net, HandlerLayout l) =>
+        net.Op("MOVB", "16#FF", l.B(LastFree)).Op("MOVB", "0", l.B(MaxD)).Op("MOVD", "0", l.Dw(LCount1));
+
+    public static StlNetwork Label(int label, string title) =>
+        new NetworkBuilder($"Label {label}: {title}").Op("LBL", Dec(label)).Build();
+
+    public static StlNetwork Always(string title, string comment, params (string Mnemonic, string[] Operands)[] ops)
+    {
+        var net = new NetworkBuilder(title, comment).Op("LD", "SM0.0");
+        foreach (var (mnemonic, operands) in ops)
+        {
+            net.Op(mnemonic, operands);
+        }
+
+        return net.Build();
+    }
+
+    /// <summary>A one-line condition network: the compare (or bit) and a jump.</summary>
+    public static StlNetwork JumpIf(string title, string comment, int label, params (string Mnemonic, string[] Operands)[] condition)
+    {
+        var net = new NetworkBuilder(title, comment);
+        foreach (var (mnemonic, operands) in condition)
+        {
+            net.Op(mnemonic, operands);
+        }
+
+        return net.Op("JMP", Dec(label)).Build();
+    }
+
+    public static (string, string[]) Op(string mnemonic, params string[] operands) => (mnemonic, operands);
+
+    /// <summary>
+    /// XOR of buffer characters 2 .. count-3 into BCC: the body without its last two characters, for a request and
+    /// for a reply alike (count = '&lt;' + body + '&gt;'). <paramref name="walker"/> is the pointer the loop advances.
+    /// </summary>
+    public static IEnumerable<StlNetwork> XorLoop(HandlerLayout l, string walker, string what)
+    {
+        yield return new NetworkBuilder(
+                $"Block check of the {what}",
+                "BCC = XOR of the body characters before the last two: buffer bytes 2 .. count-3, count-4 of them.",
+                $"{walker} walks the characters; AC0 counts the loop, AC3 holds its end.")
+            .Op("LD", "SM0.0").Op("MOVB", "0", l.B(Bcc)).Op("MOVD", l.Ptr(2), walker).Op("BTI", l.B(0), "AC3")
+            .Op("-I", "4", "AC3").Op("FOR", "AC0", "1", "AC3").Build();
+        yield return new NetworkBuilder($"XOR one {what} character", "BCC = BCC XOR character; next character.")
+            .Op("LD", "SM0.0").Op("XORB", "*" + walker, l.B(Bcc)).Op("INCD", walker).Build();
+        yield return new NetworkBuilder($"End of the {what} block check loop").Op("NEXT").Build();
+    }
+
+    /// <summary>AC3 = pointer to the first byte of the area whose protocol code is in <paramref name="code"/>.</summary>
+    public static IEnumerable<StlNetwork> AreaStart(string code)
+    {
+        foreach (var (value, pointer, name) in Areas)
+        {
+            yield return new NetworkBuilder($"Area code {value}: {name}", $"AC3 points at {pointer[1..]}, the first byte of {name}.")
+                .Op("LDB=", code, Dec(value)).Op("MOVD", pointer, "AC3").Build();
+        }
+    }
+
+    /// <summary>
+    /// AC2 = pointer to buffer byte LAST_FREE + 1 - 4N (just below the stored lists), and the 4N descriptor bytes,
+    /// already binary after the in-place ATH, copied there from buffer byte <paramref name="source"/>.
+    /// </summary>
+    public static StlNetwork PlaceDescriptors(HandlerLayout l, int source) =>
+        new NetworkBuilder(
+                "Descriptors below the stored lists",
+                "AC0 = LAST_FREE + 1 - 4N, the first byte of N descriptors of 4 bytes just below the floor.",
+                $"AC2 points there; BMB copies AREA, OFFSET, LENGTH of every item from buffer byte {source}.")
+            .Op("LD", "SM0.0").Op("BTI", l.B(LastFree), "AC0").Op("INCW", "AC0").Op("BTI", l.B(N), "AC3")
+            .Op("SHLW", "AC3", "2").Op("-I", "AC3", "AC0").Op("ITD", "AC0", "AC0").Op("MOVD", l.Ptr(0), "AC2")
+            .Op("+D", "AC0", "AC2").Op("BMB", l.B(source), "*AC2", "AC3").Build();
+}

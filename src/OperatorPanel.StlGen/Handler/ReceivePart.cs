@@ -1,0 +1,67 @@
+using OperatorPanel.StlGen.Model;
+using static OperatorPanel.StlGen.Handler.HandlerContext;
+using static OperatorPanel.StlGen.Handler.HandlerLayout;
+using static OperatorPanel.StlGen.Handler.HandlerSnippets;
+
+namespace OperatorPanel.StlGen.Handler;
+
+/// <summary>
+/// The start of the receive-complete routine: docs/protocol.md section 4, steps 1-5. Every failed check up to the
+/// dispatch means silence (label 1: receive again).
+/// </summary>
+internal static class ReceivePart
+{
+    private static readonly (int Code, int Label, string Name)[] Commands =
+    [
+        (1, HandlerLabels.Identify, "IDENTIFY"), (2, HandlerLabels.Read, "READ"), (3, HandlerLabels.Write, "WRITE"),
+        (4, HandlerLabels.WriteBit, "WRITE BIT"), (5, HandlerLabels.DefineList, "DEFINE LIST"), (6, HandlerLabels.ReadList, "READ LIST"),
+    ];
+
+    public static IEnumerable<StlNetwork> Networks(HandlerContext c)
+    {
+        var l = c.Layout;
+        const int silence = HandlerLabels.Silence;
+        yield return new NetworkBuilder(
+                "Step 1: a long frame reached the stored READ lists",
+                "The received characters fill buffer bytes 1 .. count. If count > LAST_FREE they overwrote stored",
+                "list descriptors: forget every list (the panel defines them again after error 07).")
+            .Op("LDB>", l.B(0), l.B(LastFree)).ClearLists(l).Build();
+        yield return new NetworkBuilder(
+                "Step 1: only a frame ended by '>' is processed",
+                $"{c.SmB(86)} bit 5 = end character received. Ended by count, timer or parity error: receive again.")
+            .Op("LDN", $"SM{c.SmPort(86)}.5").Op("RCV", l.B(0), c.PortOperand).Op("CRETI").Build();
+        yield return JumpIf(
+            "Step 2: body length", "Silence when the body has fewer than 8 characters (count < 10) or an odd number.",
+            silence, Op("LDB<", l.B(0), "10"), Op("O", l.Bit(0, 0)));
+        foreach (var network in XorLoop(l, "AC1", "request"))
+        {
+            yield return network;
+        }
+
+        yield return Always(
+            "Step 2: header to binary", "ATH the characters of STATION, SEQ and CMD (buffer bytes 2-7) into N, I and CMD.",
+            Op("ATH", l.B(2), l.B(N), "6"));
+        yield return JumpIf("Step 2: header characters are hex", "SM1.7 = a character was not 0-9 or A-F: silence.", silence, Op("LD", "SM1.7"));
+        yield return Always(
+            "Step 2: payload and BCC to binary, in place",
+            "ATH the count-8 characters from buffer byte 8 onto themselves: payload byte k lands in buffer byte 8+k.",
+            Op("BTI", l.B(0), "AC0"), Op("-I", "8", "AC0"), Op("ATH", l.B(8), l.B(8), "AC0"));
+        yield return JumpIf("Step 2: payload characters are hex", "SM1.7 = a character was not 0-9 or A-F: silence.", silence, Op("LD", "SM1.7"));
+        yield return Always(
+            "Step 2: where the received BCC is",
+            "The last binary byte: buffer byte 3 + count/2. AC1 points at it.",
+            Op("MOVD", l.Ptr(3), "AC1"), Op("BTI", l.B(0), "AC0"), Op("SHRW", "AC0", "1"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC1"));
+        yield return JumpIf("Step 2: block check", "Silence when the received BCC differs from the computed one.", silence, Op("LDB<>", "*AC1", l.B(Bcc)));
+        yield return JumpIf(
+            "Step 3: station address", $"This PLC is station {c.Options.Station}; a request for another station gets no reply.",
+            silence, Op("LDB<>", l.B(N), Dec(c.Options.Station)));
+        yield return JumpIf(
+            "Step 4: a reply overheard on the bus", "CMD bit 7 set: another station's reply, silence.", silence, Op("LD", l.Bit(Cmd, 7)));
+        foreach (var (code, label, name) in Commands)
+        {
+            yield return JumpIf($"Step 5: command {code:D2} {name}", $"CMD = {code}: go to label {label}.", label, Op("LDB=", l.B(Cmd), Dec(code)));
+        }
+
+        yield return JumpIf("Step 5: unknown command", "Any other CMD: error 05.", HandlerLabels.ErrorBase + 5, Op("LD", "SM0.0"));
+    }
+}

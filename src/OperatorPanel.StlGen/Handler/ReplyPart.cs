@@ -1,0 +1,49 @@
+using OperatorPanel.StlGen.Model;
+using static OperatorPanel.StlGen.Handler.HandlerContext;
+using static OperatorPanel.StlGen.Handler.HandlerLayout;
+using static OperatorPanel.StlGen.Handler.HandlerSnippets;
+
+namespace OperatorPanel.StlGen.Handler;
+
+/// <summary>
+/// The end of the receive routine: error codes, the reply frame (header, count, BCC, '&gt;') over the request, the
+/// reply delay by timed interrupt 0, and silence (docs/protocol.md section 6, steps 5-6).
+/// </summary>
+internal static class ReplyPart
+{
+    public static IEnumerable<StlNetwork> Networks(HandlerContext c)
+    {
+        var l = c.Layout;
+        for (var code = 2; code <= 7; code++)
+        {
+            yield return Label(HandlerLabels.ErrorBase + code, $"error {code:D2}");
+            yield return Always($"Error {code:D2}", "STATUS = error code; the reply has no payload.",
+                Op("MOVB", Hex(code), l.B(List)), Op("JMP", Dec(HandlerLabels.ErrorReply)));
+        }
+
+        yield return Label(HandlerLabels.ErrorReply, "error reply");
+        yield return Always("Error reply", "No payload: the BCC goes to buffer byte 10.", Op("MOVD", l.Ptr(10), "AC1"));
+        yield return Label(HandlerLabels.Finish, "finish the reply");
+        yield return Always(
+            "Reply: header and count",
+            "CMD | 16#80 and STATUS as characters 6-9 (STATION, SEQ stay as received); count = AC1 - buffer start + 2.",
+            Op("ORB", "16#80", l.B(Cmd)), Op("HTA", l.B(Cmd), l.B(6), "4"), Op("MOVD", l.Ptr(0), "AC2"), Op("MOVD", "AC1", "AC0"),
+            Op("-D", "AC2", "AC0"), Op("+D", "2", "AC0"), Op("MOVB", "AC0", l.B(0)));
+        yield return new NetworkBuilder(
+                "Reply: would it reach the stored lists?",
+                "A reply longer than LAST_FREE overwrites stored descriptors: forget every list (invalidation 3).")
+            .Op("LDB>", l.B(0), l.B(LastFree)).ClearLists(l).Build();
+        foreach (var network in XorLoop(l, "AC2", "reply"))
+        {
+            yield return network;
+        }
+
+        yield return Always(
+            "Reply: BCC, '>', reply delay",
+            $"BCC as 2 characters at AC1, then '>'. Timed interrupt 0 sends the reply in {c.Options.ReplyDelayMs} ms (SMB34).",
+            Op("HTA", l.B(Bcc), "*AC1", "2"), Op("INCD", "AC1"), Op("INCD", "AC1"), Op("MOVB", "16#3E", "*AC1"),
+            Op("MOVB", Dec(c.Options.ReplyDelayMs), "SMB34"), Op("ATCH", c.Names.Delay, Dec(DelayEvent)), Op("CRETI"));
+        yield return Label(HandlerLabels.Silence, "no reply");
+        yield return Always("No reply: receive again", "Silence: the port listens for the next frame at once.", Op("RCV", l.B(0), c.PortOperand));
+    }
+}

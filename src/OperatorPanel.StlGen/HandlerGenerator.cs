@@ -1,0 +1,45 @@
+using OperatorPanel.StlGen.Diagnostics;
+using OperatorPanel.StlGen.Emit;
+using OperatorPanel.StlGen.Handler;
+using OperatorPanel.StlGen.Model;
+using OperatorPanel.StlGen.Options;
+
+namespace OperatorPanel.StlGen;
+
+/// <summary>Generates the PLC side of docs/protocol.md for one station: check the options, build the model, write the texts.</summary>
+public static class HandlerGenerator
+{
+    public static HandlerGenerationResult Generate(HandlerOptions options)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        var diagnostics = HandlerOptionsCheck.Check(options);
+        if (!diagnostics.IsEmpty)
+        {
+            return new HandlerGenerationResult(diagnostics, null, null, string.Empty, string.Empty, string.Empty);
+        }
+
+        var program = HandlerBuilder.Build(options);
+        var stats = StatsOf(options, program);
+        var layout = new HandlerLayout(options.EffectiveBufferStart);
+        return new HandlerGenerationResult(
+            diagnostics, program, stats, AwlWriter.Write(program), SymbolTableWriter.Write(layout), TechnicianNotes.Write(options, stats));
+    }
+
+    private static HandlerStats StatsOf(HandlerOptions options, StlProgram program)
+    {
+        var context = new HandlerContext(options);
+        var purposes = new Dictionary<string, string>(StringComparer.Ordinal)
+        {
+            [options.Names.Panel] = "port set-up, RUN/TERM switching; call from OB1 every scan",
+            [options.Names.Receive] = $"receive message complete, event {context.ReceiveEvent}",
+            [options.Names.Delay] = $"reply delay, event {HandlerContext.DelayEvent} (timed interrupt 0)",
+            [options.Names.Transmit] = $"transmit complete, event {context.TransmitEvent}",
+        };
+        var blocks = program.Blocks.Where(b => b.Kind != StlBlockKind.Organization)
+            .Select(b => new HandlerBlock(b.Name, b.NumberText, purposes[b.Name]));
+        var layout = context.Layout;
+        return new HandlerStats(
+            layout.BufferStart, layout.LastByte, program.InstructionCount, options.Port,
+            [context.ReceiveEvent, HandlerContext.DelayEvent, context.TransmitEvent], [.. blocks]);
+    }
+}
