@@ -44,4 +44,46 @@ public static class StlDiagnostics
 
     /// <summary>The parity is not one SMB30 can select (none, even, odd).</summary>
     public const string ParityNotAllowed = "STL014";
+
+    /// <summary>Merge: the user's exported program does not parse (each parser message with its line); nothing is written.</summary>
+    public const string UserProgramInvalid = "STL015";
+
+    /// <summary>Merge: the user's program has no ORGANIZATION_BLOCK (OB1), so nothing can call the handler.</summary>
+    public const string UserProgramHasNoMain = "STL016";
+
+    /// <summary>Merge: the user's program already has a subroutine with the handler's SBR number.</summary>
+    public const string SubroutineNumberInUse = "STL017";
+
+    /// <summary>Merge: the user's program already has an interrupt routine with one of the handler's INT numbers.</summary>
+    public const string InterruptNumberInUse = "STL018";
+
+    /// <summary>Merge: a user block already has one of the handler's block names (OP_PANEL, OP_RX, OP_DELAY, OP_TX).</summary>
+    public const string BlockNameInUse = "STL019";
+
+    /// <summary>Merge: the user attaches or detaches an interrupt event the handler uses (receive/transmit complete of its port, 10).</summary>
+    public const string EventInUse = "STL020";
+
+    /// <summary>Merge: the user's RCV/XMT or receive-character interrupt uses the handler's port.</summary>
+    public const string PortInUse = "STL021";
+
+    /// <summary>Merge: a V byte the user's program reads or writes lies in the handler's buffer and work bytes.</summary>
+    public const string VMemoryOverlap = "STL022";
+
+    /// <summary>Merge: the user writes the handler port's SMB30/SMB130 or receive control bytes SMB86-SMB94/SMB186-SMB194.</summary>
+    public const string PortControlWritten = "STL023";
+
+    /// <summary>Merge: the user writes SMB34, the handler's reply-delay interval (timed interrupt 0).</summary>
+    public const string ReplyDelayIntervalWritten = "STL024";
+
+    /// <summary>Merge warning: an indirect access (*VD, *LD, *AC) whose target cannot be known without running the program.</summary>
+    public const string IndirectAccessUnchecked = "STL025";
+
+    /// <summary>Merge warning: a block operation (BMB, BMW, FILL, ATH, ...) whose count is not a constant; only its first element is checked.</summary>
+    public const string BlockLengthUnchecked = "STL026";
+
+    /// <summary>Merge warning: a symbolic operand (a name from the symbol table) whose address is not in the exported text.</summary>
+    public const string SymbolUnchecked = "STL027";
+
+    /// <summary>Merge warning: characters outside ASCII in the user's file (umlauts in comments) were written as '?'.</summary>
+    public const string NonAsciiReplaced = "STL028";
 }

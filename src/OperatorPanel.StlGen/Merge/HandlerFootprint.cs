@@ -1,0 +1,72 @@
+using System.Collections.Immutable;
+using OperatorPanel.StlGen.Handler;
+using OperatorPanel.StlGen.Options;
+
+namespace OperatorPanel.StlGen.Merge;
+
+/// <summary>
+/// What the handler for checked <see cref="HandlerOptions"/> reserves, in the terms a user's program could collide with:
+/// block numbers and names, interrupt events, the port and its special memory bytes, the V bytes.
+/// </summary>
+internal sealed class HandlerFootprint
+{
+    public HandlerFootprint(HandlerOptions options)
+    {
+        var context = new HandlerContext(options);
+        Port = options.Port;
+        Subroutine = options.EffectiveFirstSubroutine;
+        FirstInterrupt = options.EffectiveFirstInterrupt;
+        Names = [.. options.Names.All];
+        ReceiveEvent = context.ReceiveEvent;
+        TransmitEvent = context.TransmitEvent;
+        var layout = context.Layout;
+        FirstVByte = layout.BufferStart;
+        LastVByte = layout.LastByte;
+        PortControlByte = context.SmPort(30);
+        FirstReceiveByte = context.SmPort(86);
+        LastReceiveByte = context.SmPort(94);
+    }
+
+    public int Port { get; }
+
+    public int Subroutine { get; }
+
+    public int FirstInterrupt { get; }
+
+    public int LastInterrupt => FirstInterrupt + HandlerLayout.Interrupts - 1;
+
+    public ImmutableArray<string> Names { get; }
+
+    public int ReceiveEvent { get; }
+
+    public int TransmitEvent { get; }
+
+    /// <summary>Receive character, event 8 (port 0) / 25 (port 1): attached by a user means Freeport on this port.</summary>
+    public int ReceiveCharacterEvent => Port == 0 ? 8 : 25;
+
+    public ImmutableArray<int> Events => [ReceiveEvent, HandlerContext.DelayEvent, TransmitEvent];
+
+    public int FirstVByte { get; }
+
+    public int LastVByte { get; }
+
+    public int VBytes => LastVByte - FirstVByte + 1;
+
+    /// <summary>SMB30 or SMB130 (seed 002 Table C-11).</summary>
+    public int PortControlByte { get; }
+
+    /// <summary>SMB86 / SMB186 ... SMB94 / SMB194, receive status and set-up (seed 002 Table C-16).</summary>
+    public int FirstReceiveByte { get; }
+
+    public int LastReceiveByte { get; }
+
+    /// <summary>SMB34, the interval of timed interrupt 0 that makes the reply delay.</summary>
+    public const int ReplyDelayByte = 34;
+
+    public string VRange => $"VB{FirstVByte}-VB{LastVByte}";
+
+    public string EventPurpose(int number) =>
+        number == ReceiveEvent ? $"receive message complete on port {Port}"
+        : number == TransmitEvent ? $"transmit complete on port {Port}"
+        : "timed interrupt 0, the reply delay";
+}

@@ -1,0 +1,82 @@
+using OperatorPanel.Core.Stl;
+using OperatorPanel.StlGen.Emit;
+
+namespace OperatorPanel.StlGen.Merge;
+
+/// <summary>
+/// Splices the generated handler into the user's program text: the user's lines are copied as they are (only the line
+/// ends become CRLF and non-ASCII characters '?'); the handler's network goes first in OB1, its SBR and INTs go
+/// among the user's blocks in number order. The handler's lines are taken from its own generated .awl, so the merged
+/// file carries exactly what <see cref="HandlerGenerator"/> writes. The added network keeps the number 1: the user's
+/// networks are not renumbered (Micro/WIN numbers networks by position when it imports).
+/// </summary>
+internal static class MergedProgramWriter
+{
+    public static bool IsNotAscii(char c) => c is > '~' || (c < ' ' && c != '\t');
+
+    /// <summary>The file's lines without their line ends; a final line end does not make an extra empty line.</summary>
+    public static IReadOnlyList<string> SplitLines(string text)
+    {
+        var lines = text.Split('\n').Select(l => l.TrimEnd('\r')).ToList();
+        if (lines.Count > 1 && lines[^1].Length == 0)
+        {
+            lines.RemoveAt(lines.Count - 1);
+        }
+
+        return lines;
+    }
+
+    public static string Write(IReadOnlyList<string> userLines, AwlProgram user, string handlerText)
+    {
+        var handlerLines = SplitLines(handlerText);
+        var handler = AwlParser.Parse(handlerText).Program;
+        var main = handler.MainBlock!;
+        var userMain = user.MainBlock!;
+        var insertions = new List<(int BeforeLine, IEnumerable<string> Lines)>
+        {
+            (userMain.Networks.IsEmpty ? userMain.EndLine : userMain.Networks[0].Line, Slice(handlerLines, main.Networks[0].Line, main.EndLine - 1)),
+        };
+        foreach (var block in handler.Blocks.Where(b => b.Kind != AwlBlockKind.OrganizationBlock))
+        {
+            insertions.Add((InsertionLine(user, block, userLines.Count), Slice(handlerLines, block.StartLine, block.EndLine)));
+        }
+
+        var w = new LineWriter();
+        for (var line = 1; line <= userLines.Count + 1; line++)
+        {
+            foreach (var (_, lines) in insertions.Where(i => i.BeforeLine == line))
+            {
+                foreach (var added in lines)
+                {
+                    w.Line(added);
+                }
+            }
+
+            if (line <= userLines.Count)
+            {
+                w.Line(new string([.. userLines[line - 1].Select(c => IsNotAscii(c) ? '?' : c)]));
+            }
+        }
+
+        return w.ToString();
+    }
+
+    /// <summary>
+    /// Before the first user block of the same kind with a higher number; else after the last block of that kind; else
+    /// (no user block of the kind) after OB1 and the subroutines.
+    /// </summary>
+    private static int InsertionLine(AwlProgram user, AwlBlock block, int lineCount)
+    {
+        var sameKind = user.Blocks.Where(b => b.Kind == block.Kind).ToList();
+        if (sameKind.FirstOrDefault(b => b.Number > block.Number) is { } next)
+        {
+            return next.StartLine;
+        }
+
+        var before = sameKind.Count > 0 ? sameKind : [.. user.Blocks.Where(b => b.Kind < block.Kind)];
+        return before.Count == 0 ? lineCount + 1 : before.Max(b => b.EndLine) + 1;
+    }
+
+    private static IEnumerable<string> Slice(IReadOnlyList<string> lines, int firstLine, int lastLine) =>
+        lines.Skip(firstLine - 1).Take(lastLine - firstLine + 1);
+}
