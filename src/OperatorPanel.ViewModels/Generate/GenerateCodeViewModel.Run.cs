@@ -156,9 +156,18 @@ public sealed partial class GenerateCodeViewModel
         var charTimeout = Number(CharTimeout, "inter-character timeout");
         options = new HandlerOptions
         {
-            Cpu = station.Cpu, Port = Port, BaudRate = station.Link.BaudRate, Parity = station.Link.Parity,
-            DataBits = station.Link.DataBits, StopBits = station.Link.StopBits, Station = station.Address.Address,
-            BufferStart = buffer, FirstSubroutine = sbr, FirstInterrupt = interrupt, ReplyDelayMs = delay ?? 0, CharTimeoutMs = charTimeout ?? 0,
+            Cpu = station.Cpu,
+            Port = Port,
+            BaudRate = station.Link.BaudRate,
+            Parity = station.Link.Parity,
+            DataBits = station.Link.DataBits,
+            StopBits = station.Link.StopBits,
+            Station = station.Address.Address,
+            BufferStart = buffer,
+            FirstSubroutine = sbr,
+            FirstInterrupt = interrupt,
+            ReplyDelayMs = delay ?? 0,
+            CharTimeoutMs = charTimeout ?? 0,
             WriteMask = (WriteQ ? 1 << 2 : 0) | (WriteM ? 1 << 3 : 0) | (WriteV ? 1 << 4 : 0) | (WriteSm ? 1 << 5 : 0),
         };
         return Diagnostics.Count == 0;
