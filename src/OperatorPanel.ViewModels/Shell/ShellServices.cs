@@ -1,17 +1,24 @@
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
+using OperatorPanel.ViewModels.Wizard;
 
 namespace OperatorPanel.ViewModels.Shell;
 
-/// <summary>What the App gives the shell: its dialogs, the line connector (serial ports), and the demo.</summary>
+/// <summary>What the App gives the shell: its dialogs, the line connector (serial ports), the demo and the wizard.</summary>
 /// <param name="Dialogs">Questions and error messages.</param>
-/// <param name="Files">Open and save file pickers.</param>
+/// <param name="Files">Open and save file pickers, and the folder picker of Generate PLC code.</param>
 /// <param name="Connector">Real serial ports for Connect.</param>
 /// <param name="Demo">The sample project and simulated line for the Demo command; null disables the command.</param>
-/// <param name="NewProjects">File > New; <see cref="StarterProjectSource"/> until the wizard is wired in.</param>
+/// <param name="NewProjects">File > New: a <see cref="WizardProjectSource"/>, or <see cref="StarterProjectSource"/> without a wizard.</param>
+/// <param name="Wizards">Shows the wizard window for Edit project; null disables the command.</param>
+/// <param name="ConnectionTester">The wizard's "test connection" (the shell guards it with <see cref="PortInUseGuard"/>).</param>
+/// <param name="Ports">The serial ports the wizard's link page offers.</param>
 public sealed record ShellServices(
     IDialogService Dialogs,
     IFileDialogService Files,
     ILineConnector Connector,
     IDemoSource? Demo,
-    INewProjectSource NewProjects);
+    INewProjectSource NewProjects,
+    IWizardPresenter? Wizards = null,
+    IConnectionTester? ConnectionTester = null,
+    ISerialPortCatalog? Ports = null);

@@ -90,8 +90,9 @@ public sealed partial class ShellViewModel
     private async Task ReplaceAsync(PanelProject project, string? path, bool demo)
     {
         await Session.DisconnectAsync();
-        Session.Load(project);
+        // The path first: the Alarms window made for the new project keeps its history beside this file.
         (ProjectPath, IsDemo) = (path, demo);
+        Session.Load(project);
         StatusLine.Show($"Opened {ProjectName}");
     }
 

@@ -1,6 +1,7 @@
 using System.Collections.ObjectModel;
 using System.ComponentModel;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.ViewModels.Alarms;
 using OperatorPanel.ViewModels.Diagnostics;
 using OperatorPanel.ViewModels.Inputs;
 using OperatorPanel.ViewModels.Memory;
@@ -14,8 +15,9 @@ namespace OperatorPanel.ViewModels.Shell;
 
 /// <summary>
 /// The main window: project file commands with dirty tracking, the line (connect, refresh mode, refresh now, demo,
-/// read-only), the per-station status bar and the panes. The Alarms pane and the wizard join here (issue 5, part 2):
-/// they take <see cref="Session"/>, which carries the project, the values and every change notification.
+/// read-only), the per-station status bar, the panes (with the Alarms pane and the alarm count), the project wizard
+/// (File > New, Edit project) and Generate PLC code. Everything reads <see cref="Session"/>, which carries the project,
+/// the values and every change notification.
 /// </summary>
 public sealed partial class ShellViewModel : ObservableObject
 {
@@ -43,9 +45,12 @@ public sealed partial class ShellViewModel : ObservableObject
         Outputs = new OutputsViewModel(session, services.Dialogs, options, logger);
         Memory = new MemoryViewModel(session, services.Dialogs, options, logger);
         Diagnostics = new DiagnosticsViewModel(session);
-        Panes = [Inputs, Outputs, Memory, Diagnostics];
+        AlarmsPane = new AlarmsPaneViewModel(CreateAlarms(session.Project, path: null));
+        Panes = [Inputs, Outputs, Memory, AlarmsPane, Diagnostics];
         (NewCommand, OpenCommand, SaveCommand, SaveAsCommand) = CreateFileCommands();
         (ConnectCommand, DisconnectCommand, RefreshNowCommand, ToggleRefreshModeCommand, ToggleReadOnlyCommand, DemoCommand) = CreateLineCommands();
+        EditProjectCommand = new AsyncRelayCommand(EditProjectAsync, () => HasProject && _services.Wizards is not null);
+        GenerateCodeCommand = new RelayCommand(OpenGenerateCode, () => HasProject);
         session.ProjectChanged += OnProjectChanged;
         session.PropertyChanged += OnSessionChanged;
     }
@@ -65,7 +70,7 @@ public sealed partial class ShellViewModel : ObservableObject
 
     public DiagnosticsViewModel Diagnostics { get; }
 
-    /// <summary>The dockable panes, for the docking manager's items source; the Alarms pane is added here when integrated.</summary>
+    /// <summary>The dockable panes, for the docking manager's items source: Inputs, Outputs, Memory, Alarms, Diagnostics.</summary>
     public ObservableCollection<PaneViewModel> Panes { get; }
 
     public ObservableCollection<StationStatusViewModel> Stations => Session.Stations;
@@ -125,6 +130,8 @@ public sealed partial class ShellViewModel : ObservableObject
     private void OnProjectChanged(object? sender, ProjectChangedEventArgs e)
     {
         IsDirty = e.Kind == ProjectChangeKind.Edited;
+        RenewAlarms(e);
+        SelectedStationIndex = Math.Clamp(SelectedStationIndex, 0, Math.Max(0, e.Project.Stations.Length - 1));
         OnPropertyChanged(nameof(HasProject));
         OnPropertyChanged(nameof(ProjectName));
         OnPropertyChanged(nameof(Title));
@@ -149,7 +156,7 @@ public sealed partial class ShellViewModel : ObservableObject
 
     private void NotifyCommands()
     {
-        foreach (var command in new IRelayCommand[] { SaveCommand, SaveAsCommand, ConnectCommand, DisconnectCommand, RefreshNowCommand, DemoCommand })
+        foreach (var command in new IRelayCommand[] { SaveCommand, SaveAsCommand, ConnectCommand, DisconnectCommand, RefreshNowCommand, DemoCommand, EditProjectCommand, GenerateCodeCommand })
         {
             command.NotifyCanExecuteChanged();
         }

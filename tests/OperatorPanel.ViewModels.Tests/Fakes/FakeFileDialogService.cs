@@ -13,5 +13,7 @@ internal sealed class FakeFileDialogService : IFileDialogService
 
     public string? PickFileToSave(string title, string filter, string suggestedFileName) => FileToSave;
 
-    public string? PickFolder(string title) => null;
+    public string? Folder { get; set; }
+
+    public string? PickFolder(string title) => Folder;
 }

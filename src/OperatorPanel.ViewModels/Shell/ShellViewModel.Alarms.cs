@@ -1,0 +1,92 @@
+using System.ComponentModel;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.ViewModels.Alarms;
+using OperatorPanel.ViewModels.Services;
+using OperatorPanel.ViewModels.Session;
+
+namespace OperatorPanel.ViewModels.Shell;
+
+/// <summary>
+/// The Alarms window of the current project and the status bar's alarm count, which stays current while the window is
+/// hidden. A new <see cref="AlarmsViewModel"/> is made when the project is replaced, its alarm texts are edited, or it
+/// gets a file (its history file lives beside the project, AlarmHistoryFile.PathFor); the old one is disposed.
+/// </summary>
+public sealed partial class ShellViewModel : IDisposable
+{
+    private PanelProject _alarmsProject = NoProject;
+    private string? _alarmsPath;
+
+    public AlarmsPaneViewModel AlarmsPane { get; }
+
+    /// <summary>The current project's alarms: rows, history, acknowledge, CSV export.</summary>
+    public AlarmsViewModel Alarms => AlarmsPane.Alarms;
+
+    public int ActiveAlarmCount => Alarms.ActiveCount;
+
+    public int UnacknowledgedAlarmCount => Alarms.UnacknowledgedCount;
+
+    /// <summary>For the status bar: "2 active, 1 unacknowledged", or "no alarms".</summary>
+    public string AlarmSummary => ActiveAlarmCount == 0 && UnacknowledgedAlarmCount == 0
+        ? "no alarms"
+        : $"{ActiveAlarmCount} active, {UnacknowledgedAlarmCount} unacknowledged";
+
+    public void Dispose()
+    {
+        Session.ProjectChanged -= OnProjectChanged;
+        Session.PropertyChanged -= OnSessionChanged;
+        Alarms.PropertyChanged -= OnAlarmsChanged;
+        Alarms.Dispose();
+    }
+
+    private AlarmsViewModel CreateAlarms(PanelProject project, string? path)
+    {
+        (_alarmsProject, _alarmsPath) = (project, path);
+        // The session raises value changes on the UI thread already; a second hop through the dispatcher would only add delay.
+        var alarms = new AlarmsViewModel(project, path, Session, _time, OnUiThread.Instance, _services.Files);
+        alarms.PropertyChanged += OnAlarmsChanged;
+        return alarms;
+    }
+
+    private void RenewAlarms(ProjectChangedEventArgs e)
+    {
+        var replaced = e.Kind == ProjectChangeKind.Replaced;
+        if (!replaced && ProjectPath == _alarmsPath && SameAlarms(_alarmsProject, e.Project))
+        {
+            _alarmsProject = e.Project;
+            return;
+        }
+
+        var old = Alarms;
+        old.PropertyChanged -= OnAlarmsChanged;
+        old.Dispose();
+        AlarmsPane.Alarms = CreateAlarms(e.Project, ProjectPath);
+        OnPropertyChanged(nameof(Alarms));
+        NotifyAlarmCounts();
+    }
+
+    private static bool SameAlarms(PanelProject a, PanelProject b) =>
+        a.Stations.Length == b.Stations.Length
+        && a.Stations.Zip(b.Stations).All(p => p.First.Address == p.Second.Address && p.First.Name == p.Second.Name && p.First.Alarms.SequenceEqual(p.Second.Alarms));
+
+    private void OnAlarmsChanged(object? sender, PropertyChangedEventArgs e)
+    {
+        if (e.PropertyName is nameof(AlarmsViewModel.ActiveCount) or nameof(AlarmsViewModel.UnacknowledgedCount))
+        {
+            NotifyAlarmCounts();
+        }
+    }
+
+    private void NotifyAlarmCounts()
+    {
+        OnPropertyChanged(nameof(ActiveAlarmCount));
+        OnPropertyChanged(nameof(UnacknowledgedAlarmCount));
+        OnPropertyChanged(nameof(AlarmSummary));
+    }
+
+    private sealed class OnUiThread : IUiDispatcher
+    {
+        public static readonly OnUiThread Instance = new();
+
+        public void Post(Action action) => action();
+    }
+}

@@ -1,0 +1,69 @@
+using OperatorPanel.ViewModels.Generate;
+using OperatorPanel.ViewModels.Mvvm;
+using OperatorPanel.ViewModels.Wizard;
+
+namespace OperatorPanel.ViewModels.Shell;
+
+/// <summary>
+/// Edit project (the wizard's five pages over the selected station, seed 000 §7: "the project can be freely edited
+/// later") and Generate PLC code for the project's stations.
+/// </summary>
+public sealed partial class ShellViewModel
+{
+    private int _selectedStationIndex;
+    private GenerateCodeViewModel? _generateCode;
+
+    /// <summary>Opens the wizard on the station at <see cref="SelectedStationIndex"/>; Finish replaces the project (now unsaved).</summary>
+    public AsyncRelayCommand EditProjectCommand { get; }
+
+    /// <summary>Opens Generate PLC code: sets <see cref="GenerateCode"/>, which the App shows while it is not null.</summary>
+    public RelayCommand GenerateCodeCommand { get; }
+
+    /// <summary>The station Edit project and Generate PLC code start on (index into the project's stations).</summary>
+    public int SelectedStationIndex
+    {
+        get => _selectedStationIndex;
+        set => SetProperty(ref _selectedStationIndex, value);
+    }
+
+    /// <summary>The open Generate PLC code dialog; null when closed. The App closes it with <see cref="CloseGenerateCode"/>.</summary>
+    public GenerateCodeViewModel? GenerateCode
+    {
+        get => _generateCode;
+        private set => SetProperty(ref _generateCode, value);
+    }
+
+    public void CloseGenerateCode() => GenerateCode = null;
+
+    private async Task EditProjectAsync()
+    {
+        if (_services is not { Wizards: { } presenter, ConnectionTester: { } tester, Ports: { } ports })
+        {
+            StatusLine.ShowError("Editing the project needs the wizard, which this build does not offer");
+            return;
+        }
+
+        var index = Math.Clamp(SelectedStationIndex, 0, Session.Project.Stations.Length - 1);
+        var wizard = new ProjectWizardViewModel(Session.Project, index, new PortInUseGuard(tester, Session), ports);
+        if (await presenter.ShowAsync(wizard) is not { } edited)
+        {
+            return;
+        }
+
+        try
+        {
+            // EditProjectAsync raises ProjectChanged(Edited): the shell marks the project unsaved, the windows rebuild,
+            // and a connected line polls the new watch list (or reconnects when ports or stations changed).
+            await Session.EditProjectAsync(edited);
+            StatusLine.Show($"Station {edited.Stations[index].Name} edited; save to keep the changes");
+        }
+        catch (Exception exception) when (exception is not OutOfMemoryException)
+        {
+            _logger.Error(exception, "Applying the edited project failed");
+            StatusLine.ShowError($"The edited project was kept but the line could not follow: {exception.Message}");
+        }
+    }
+
+    private void OpenGenerateCode() =>
+        GenerateCode = new GenerateCodeViewModel(Session.Project, Math.Clamp(SelectedStationIndex, 0, Session.Project.Stations.Length - 1), _services.Files);
+}

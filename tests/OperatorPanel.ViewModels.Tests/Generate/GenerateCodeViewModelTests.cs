@@ -1,0 +1,163 @@
+using System.Text;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.StlGen;
+using OperatorPanel.StlGen.Options;
+using OperatorPanel.ViewModels.Generate;
+using OperatorPanel.ViewModels.Tests.Fakes;
+
+namespace OperatorPanel.ViewModels.Tests.Generate;
+
+public sealed class GenerateCodeViewModelTests : IDisposable
+{
+    private readonly FakeFileDialogService _files = new();
+    private readonly TempFolder _folder = new();
+
+    public void Dispose() => _folder.Dispose();
+
+    [Theory]
+    [InlineData(CpuModel.Cpu222, "VB1776", "63", "125", new[] { 0 })]
+    [InlineData(CpuModel.Cpu224, "VB7920", "63", "125", new[] { 0 })]
+    [InlineData(CpuModel.Cpu226, "VB9968", "127", "125", new[] { 0, 1 })]
+    public void Defaults_PerCpu_TheGeneratorsDefaultsShown(CpuModel model, string buffer, string sbr, string firstInt, int[] ports)
+    {
+        var cpu = CpuProfiles.For(model);
+        var generate = Create(cpu);
+
+        generate.BufferStart.Should().Be(buffer);
+        generate.BufferStart.Should().Be($"VB{HandlerDefaults.BufferStart(cpu)}");
+        generate.FirstSubroutine.Should().Be(sbr);
+        generate.FirstSubroutine.Should().Be(HandlerDefaults.FirstSubroutine(cpu).ToString(System.Globalization.CultureInfo.InvariantCulture));
+        generate.FirstInterrupt.Should().Be(firstInt);
+        generate.Ports.Should().Equal(ports);
+        generate.Port.Should().Be(0);
+        generate.ReplyDelay.Should().Be("5");
+        generate.CharTimeout.Should().Be("0");
+        (generate.WriteQ, generate.WriteM, generate.WriteV, generate.WriteSm).Should().Be((true, true, true, true));
+        generate.LineText.Should().Be("9600 8N1");
+        generate.CanSave.Should().BeFalse();
+    }
+
+    [Fact]
+    public void Generate_PortOneOnCpu224_ShowsTheStlDiagnosticAndSaveDisabled()
+    {
+        var generate = Create(CpuProfiles.For(CpuModel.Cpu224));
+        generate.Port = 1;
+
+        generate.GenerateCommand.Execute(null);
+
+        generate.Diagnostics.Should().ContainSingle().Which.Id.Should().Be("STL001");
+        generate.Diagnostics[0].Text.Should().StartWith("STL001: port 1 is not on the CPU 224");
+        generate.SaveCommand.CanExecute(null).Should().BeFalse();
+        generate.Preview.Should().BeEmpty();
+        generate.Stats.Should().BeEmpty();
+    }
+
+    [Fact]
+    public void Generate_BufferOutsideV_StlDiagnosticNamesTheRange()
+    {
+        var generate = Create(CpuProfiles.For(CpuModel.Cpu224));
+        generate.BufferStart = "VB8000";
+
+        generate.GenerateCommand.Execute(null);
+
+        generate.Diagnostics.Select(d => d.Id).Should().Equal("STL005");
+        generate.SaveCommand.CanExecute(null).Should().BeFalse();
+    }
+
+    [Fact]
+    public void Generate_TextNotANumber_InputDiagnosticAndNoGeneration()
+    {
+        var generate = Create(CpuProfiles.For(CpuModel.Cpu224));
+        generate.FirstSubroutine = "six";
+
+        generate.GenerateCommand.Execute(null);
+
+        generate.Diagnostics.Should().ContainSingle().Which.Text.Should().Be("INPUT: first SBR 'six' is not a whole number");
+        generate.SaveCommand.CanExecute(null).Should().BeFalse();
+    }
+
+    [Fact]
+    public void Save_AfterGenerate_WritesTheThreeFilesWithTheGeneratorsText()
+    {
+        var cpu = CpuProfiles.For(CpuModel.Cpu224);
+        var generate = Create(cpu);
+        generate.WriteSm = false;
+        generate.GenerateCommand.Execute(null);
+        var expected = HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu, Station = 2, WriteMask = 0x1C });
+        _files.Folder = _folder.Path;
+
+        generate.SaveCommand.CanExecute(null).Should().BeTrue();
+        generate.SaveCommand.Execute(null);
+
+        generate.Diagnostics.Should().BeEmpty();
+        generate.Preview.Should().Be(expected.AwlText);
+        generate.Stats.Should().Contain($"V memory: {expected.Stats!.VRange} (272 bytes)");
+        File.ReadAllText(_folder.File("Filler-handler.awl"), Encoding.ASCII).Should().Be(expected.AwlText);
+        File.ReadAllText(_folder.File("Filler-symbols.txt"), Encoding.ASCII).Should().Be(expected.SymbolTableText);
+        File.ReadAllText(_folder.File("Filler-README.txt"), Encoding.ASCII).Should().Be(expected.TechnicianText);
+        Directory.GetFiles(_folder.Path).Should().HaveCount(3);
+        generate.Message.Should().Be($"Saved Filler-handler.awl, Filler-symbols.txt, Filler-README.txt in {_folder.Path}.");
+    }
+
+    [Fact]
+    public void Save_SettingChangedAfterGenerate_DisabledUntilGeneratedAgain()
+    {
+        var generate = Create(CpuProfiles.For(CpuModel.Cpu224));
+        generate.GenerateCommand.Execute(null);
+        generate.SaveCommand.CanExecute(null).Should().BeTrue();
+
+        generate.ReplyDelay = "10";
+
+        generate.SaveCommand.CanExecute(null).Should().BeFalse();
+        generate.Preview.Should().BeEmpty();
+    }
+
+    [Fact]
+    public void Generate_MergeProgramCollides_CollisionWithLineNumberAndNothingSaved()
+    {
+        var generate = Create(CpuProfiles.For(CpuModel.Cpu224));
+        _files.FileToOpen = WriteProgram("MOVB   5, VB7920");
+        generate.BrowseMergeCommand.Execute(null);
+        _files.Folder = _folder.Path;
+
+        generate.GenerateCommand.Execute(null);
+        generate.SaveCommand.Execute(null);
+
+        generate.MergeProgramPath.Should().Be(_files.FileToOpen);
+        generate.Diagnostics.Should().Contain(d => d.Line == 6 && !d.IsWarning);
+        generate.Diagnostics.Where(d => !d.IsWarning).Should().OnlyContain(d => d.Text.StartsWith("line ", StringComparison.Ordinal));
+        generate.SaveCommand.CanExecute(null).Should().BeFalse();
+        generate.Message.Should().StartWith("user.awl collides with the handler");
+        Directory.GetFiles(_folder.Path).Should().ContainSingle().Which.Should().EndWith("user.awl");
+    }
+
+    [Fact]
+    public void Save_MergeWithoutCollision_WritesTheMergedProgramBesideTheThreeFiles()
+    {
+        var generate = Create(CpuProfiles.For(CpuModel.Cpu224));
+        generate.MergeProgramPath = WriteProgram("MOVB   5, VB100");
+        var output = Directory.CreateDirectory(_folder.File("out")).FullName;
+        _files.Folder = output;
+
+        generate.GenerateCommand.Execute(null);
+        generate.SaveCommand.Execute(null);
+
+        generate.Diagnostics.Where(d => !d.IsWarning).Should().BeEmpty();
+        Directory.GetFiles(output).Select(Path.GetFileName).Should().BeEquivalentTo(
+            "Filler-handler.awl", "Filler-symbols.txt", "Filler-README.txt", "Filler-merged.awl");
+        var merged = File.ReadAllText(Path.Combine(output, "Filler-merged.awl"), Encoding.Latin1);
+        merged.Should().Be(generate.Preview);
+        merged.Should().Contain("MOVB   5, VB100").And.Contain("CALL   OP_PANEL");
+    }
+
+    private string WriteProgram(string line)
+    {
+        var path = _folder.File("user.awl");
+        File.WriteAllText(path, string.Join("\r\n",
+            "ORGANIZATION_BLOCK MAIN:OB1", "TITLE=Main", "BEGIN", "Network 1", "LD     SM0.0", line, "END_ORGANIZATION_BLOCK", string.Empty));
+        return path;
+    }
+
+    private GenerateCodeViewModel Create(CpuProfile cpu) => new(PanelFixture.Project(cpu: cpu), 0, _files);
+}
