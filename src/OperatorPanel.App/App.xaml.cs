@@ -8,6 +8,7 @@ using OperatorPanel.ViewModels.Docking;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Shell;
+using OperatorPanel.ViewModels.Wizard;
 using Serilog;
 
 namespace OperatorPanel.App;
@@ -77,12 +78,21 @@ public partial class App : Application
         services.AddSingleton(new DockingViewModel(Path.Combine(UserFolder, "layout.json")));
         services.AddSingleton(sp => new PanelSession(
             ShellViewModel.NoProject, sp.GetRequiredService<IUiDispatcher>(), TimeProvider.System, sp.GetRequiredService<ILogger>()));
-        services.AddSingleton(sp => new ShellServices(
-            sp.GetRequiredService<IDialogService>(),
-            sp.GetRequiredService<IFileDialogService>(),
-            new SerialLineConnector(),
-            new DemoSource(sp.GetRequiredService<ILogger>()),
-            new StarterProjectSource()));
+        services.AddSingleton(sp =>
+        {
+            var presenter = new WizardPresenter();
+            var tester = new LinkConnectionTester(settings => new SerialPortTransport(settings), TimeProvider.System);
+            var ports = new SystemSerialPortCatalog();
+            return new ShellServices(
+                sp.GetRequiredService<IDialogService>(),
+                sp.GetRequiredService<IFileDialogService>(),
+                new SerialLineConnector(),
+                new DemoSource(sp.GetRequiredService<ILogger>()),
+                new WizardProjectSource(presenter, tester, ports),
+                presenter,
+                tester,
+                ports);
+        });
         services.AddSingleton(sp => new ShellViewModel(
             sp.GetRequiredService<PanelSession>(),
             sp.GetRequiredService<PanelOptions>(),
