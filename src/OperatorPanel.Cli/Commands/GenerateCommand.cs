@@ -61,10 +61,19 @@ internal static class GenerateCommand
 
             var options = new HandlerOptions
             {
-                Cpu = chosen.Cpu, Port = parse.GetValue(plcPort), BaudRate = chosen.Link.BaudRate, Parity = chosen.Link.Parity,
-                DataBits = chosen.Link.DataBits, StopBits = chosen.Link.StopBits, Station = chosen.Address.Address, BufferStart = start,
-                WriteMask = mask, ReplyDelayMs = parse.GetValue(replyDelay), CharTimeoutMs = parse.GetValue(charTimeout),
-                FirstSubroutine = parse.GetValue(sbr), FirstInterrupt = parse.GetValue(interrupt),
+                Cpu = chosen.Cpu,
+                Port = parse.GetValue(plcPort),
+                BaudRate = chosen.Link.BaudRate,
+                Parity = chosen.Link.Parity,
+                DataBits = chosen.Link.DataBits,
+                StopBits = chosen.Link.StopBits,
+                Station = chosen.Address.Address,
+                BufferStart = start,
+                WriteMask = mask,
+                ReplyDelayMs = parse.GetValue(replyDelay),
+                CharTimeoutMs = parse.GetValue(charTimeout),
+                FirstSubroutine = parse.GetValue(sbr),
+                FirstInterrupt = parse.GetValue(interrupt),
             };
             var stem = GenerateSettings.FileStem(chosen);
             var result = HandlerGenerator.Generate(options);

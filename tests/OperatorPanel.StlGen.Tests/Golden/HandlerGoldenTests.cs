@@ -10,7 +10,13 @@ public sealed class HandlerGoldenTests
 
     internal static HandlerOptions Cpu226Port1Station17 => new()
     {
-        Cpu = CpuProfiles.For(CpuModel.Cpu226), Port = 1, BaudRate = 19200, Parity = Parity.Even, Station = 17, BufferStart = 1000, CharTimeoutMs = 100,
+        Cpu = CpuProfiles.For(CpuModel.Cpu226),
+        Port = 1,
+        BaudRate = 19200,
+        Parity = Parity.Even,
+        Station = 17,
+        BufferStart = 1000,
+        CharTimeoutMs = 100,
     };
 
     internal static HandlerOptions Cpu221EarlyStation1 => new() { Cpu = CpuProfiles.For(CpuModel.Cpu221, CpuRevision.Early), Station = 1 };
