@@ -63,15 +63,9 @@ internal static class GenerateCommand
                 start = at;
             }
 
-            var options = new HandlerOptions
+            var options = HandlerOptions.For(chosen) with
             {
-                Cpu = chosen.Cpu,
                 Port = parse.GetValue(plcPort),
-                BaudRate = chosen.Link.BaudRate,
-                Parity = chosen.Link.Parity,
-                DataBits = chosen.Link.DataBits,
-                StopBits = chosen.Link.StopBits,
-                Station = chosen.Address.Address,
                 BufferStart = start,
                 WriteMask = mask,
                 ReplyDelayMs = parse.GetValue(replyDelay),
