@@ -51,11 +51,11 @@ internal static class ReadCommand
     private static async Task<int> ReadAsync(CliContext cli, LinkTarget target, List<PlcAddress> addresses, CancellationToken cancellationToken)
     {
         if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
-            {
-                return cli.Fail(ExitCodes.BadInput, openError);
-            }
+        {
+            return cli.Fail(ExitCodes.BadInput, openError);
+        }
 
-            await using var session = opened;
+        await using var session = opened;
         await using var run = EngineRun.OnDemand(session.Link, PlanFor(target, addresses), cli.Log);
         await run.Engine.RequestRefreshAsync(cancellationToken);
         var status = run.Engine.GetStationStatus(target.Station);

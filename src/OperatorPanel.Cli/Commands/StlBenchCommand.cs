@@ -34,8 +34,16 @@ internal static class StlBenchCommand
             {
                 cli.WriteJson(results.Select(r => new
                 {
-                    r.Workload, r.RequestChars, r.ReplyChars, r.Requests, r.Answered, r.RequestsPerRealSecond, r.RealMsPerRequest,
-                    r.SimulatedMsPerRequest, r.SpeedFactor, r.InstructionsPerRequest,
+                    r.Workload,
+                    r.RequestChars,
+                    r.ReplyChars,
+                    r.Requests,
+                    r.Answered,
+                    r.RequestsPerRealSecond,
+                    r.RealMsPerRequest,
+                    r.SimulatedMsPerRequest,
+                    r.SpeedFactor,
+                    r.InstructionsPerRequest,
                 }));
                 return ExitCodes.Ok;
             }

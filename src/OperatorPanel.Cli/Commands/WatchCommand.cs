@@ -1,6 +1,6 @@
 using System.CommandLine;
-using OperatorPanel.Cli.Link;
 using OperatorPanel.Cli.Hosting;
+using OperatorPanel.Cli.Link;
 using OperatorPanel.Cli.Watch;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;

@@ -55,11 +55,11 @@ internal static class WriteCommand
     private static async Task<int> WriteAsync(CliContext cli, LinkTarget target, List<WriteItem> items, CancellationToken cancellationToken)
     {
         if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
-            {
-                return cli.Fail(ExitCodes.BadInput, openError);
-            }
+        {
+            return cli.Fail(ExitCodes.BadInput, openError);
+        }
 
-            await using var session = opened;
+        await using var session = opened;
         await using var run = EngineRun.OnDemand(session.Link, ReadCommand.PlanFor(target, items.Select(i => i.Address)), cli.Log);
         await run.Engine.RequestRefreshAsync(cancellationToken);
         var status = run.Engine.GetStationStatus(target.Station);
