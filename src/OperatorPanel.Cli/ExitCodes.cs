@@ -13,4 +13,7 @@ internal static class ExitCodes
 
     /// <summary>The link to the PLC failed: port unavailable, no answer, a corrupt reply, a write read back differently.</summary>
     public const int LinkFailure = 2;
+
+    /// <summary><c>opanel generate</c>: the handler settings are impossible; each STLnnn diagnostic is printed.</summary>
+    public const int GeneratorRefused = 2;
 }

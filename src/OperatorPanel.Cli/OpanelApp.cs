@@ -37,6 +37,7 @@ internal static class OpanelApp
         yield return SimulateCommand.Create(context);
         yield return WatchCommand.Create(context);
         yield return BenchCommand.Create(context);
+        yield return GenerateCommand.Create(context);
     }
 }
 

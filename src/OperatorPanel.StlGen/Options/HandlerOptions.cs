@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.StlGen.Options;
@@ -48,6 +49,21 @@ public sealed record HandlerOptions
     public int? FirstInterrupt { get; init; }
 
     public HandlerBlockNames Names { get; init; } = new();
+
+    /// <summary>The settings a project fixes for one station: CPU, station address, baud, parity, data and stop bits.</summary>
+    public static HandlerOptions For(ProjectStation station)
+    {
+        ArgumentNullException.ThrowIfNull(station);
+        return new HandlerOptions
+        {
+            Cpu = station.Cpu,
+            Station = station.Address.Address,
+            BaudRate = station.Link.BaudRate,
+            Parity = station.Link.Parity,
+            DataBits = station.Link.DataBits,
+            StopBits = station.Link.StopBits,
+        };
+    }
 
     public int EffectiveBufferStart => BufferStart ?? HandlerDefaults.BufferStart(Cpu);
 

@@ -1,0 +1,112 @@
+using System.CommandLine;
+using System.Text;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.StlGen;
+using OperatorPanel.StlGen.Options;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary>
+/// <c>opanel generate PROJECT -o DIR [--station NAME|ADDRESS] [--stats]</c>: writes the PLC handler for one station
+/// (STATION-handler.awl, STATION-symbols.txt, STATION-README.txt). CPU, station address and line settings come from
+/// the project. Exit codes: 0 written, 1 bad input (project, options, files), 2 impossible handler settings (STLnnn).
+/// </summary>
+internal static class GenerateCommand
+{
+    public static Command Create(Func<ParseResult, CliContext> context)
+    {
+        var project = new Argument<string>("project") { Description = "The .opproj project file" };
+        var output = new Option<string>("--output", "-o") { Description = "Folder for the generated files", Required = true };
+        var station = new Option<string?>("--station") { Description = "Station name or address (needed when the project has several)" };
+        var stats = new Option<bool>("--stats") { Description = "Print V bytes reserved, instructions generated, interrupt events, SBR/INT used" };
+        var plcPort = new Option<int>("--plc-port") { Description = "The PLC's port 0 or 1 (port 1 on CPU 224XP and 226)" };
+        var buffer = new Option<string?>("--buffer") { Description = "First V byte of the handler's 272 bytes, e.g. VB1000 (default: the top of V memory)" };
+        var replyDelay = new Option<int>("--reply-delay") { Description = "Reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
+        var writable = new Option<string>("--writable") { Description = "Areas the panel may write, e.g. Q,M,V,SM (default)", DefaultValueFactory = _ => "Q,M,V,SM" };
+        var charTimeout = new Option<int>("--char-timeout") { Description = "Receive inter-character timeout in ms (0 = off, default)" };
+        var sbr = new Option<int?>("--sbr") { Description = "Subroutine number of the handler (default: the CPU's last)" };
+        var interrupt = new Option<int?>("--int") { Description = "First of the handler's 3 interrupt routines (default 125)" };
+        var command = new Command("generate", "Generate the S7-200 handler program (.awl), symbol table and technician notes. Exit codes: 0 written, 1 bad input, 2 impossible settings")
+        {
+            project, output, station, stats, plcPort, buffer, replyDelay, writable, charTimeout, sbr, interrupt,
+        };
+        command.SetAction(parse =>
+        {
+            var cli = context(parse);
+            var path = parse.GetValue(project)!;
+            var loaded = ProjectFile.Load(path);
+            if (!loaded.Ok)
+            {
+                return cli.Fail(ExitCodes.BadInput, $"{path}: {string.Join("; ", loaded.Errors.Select(e => $"{e.Location}: {e.Message}"))}");
+            }
+
+            if (!GenerateSettings.TrySelectStation(loaded.Project, parse.GetValue(station), out var chosen, out var error)
+                || !GenerateSettings.TryParseWritable(parse.GetValue(writable)!, out var mask, out error))
+            {
+                return cli.Fail(ExitCodes.BadInput, error);
+            }
+
+            int? start = null;
+            if (parse.GetValue(buffer) is { } bufferText)
+            {
+                if (!GenerateSettings.TryParseBuffer(bufferText, out var at, out error))
+                {
+                    return cli.Fail(ExitCodes.BadInput, error);
+                }
+
+                start = at;
+            }
+
+            var options = HandlerOptions.For(chosen) with
+            {
+                Port = parse.GetValue(plcPort),
+                BufferStart = start,
+                WriteMask = mask,
+                ReplyDelayMs = parse.GetValue(replyDelay),
+                CharTimeoutMs = parse.GetValue(charTimeout),
+                FirstSubroutine = parse.GetValue(sbr),
+                FirstInterrupt = parse.GetValue(interrupt),
+            };
+            return Write(cli, GenerateSettings.FileStem(chosen), parse.GetValue(output)!, HandlerGenerator.Generate(options), parse.GetValue(stats));
+        });
+        return command;
+    }
+
+    private static int Write(CliContext cli, string stem, string folder, HandlerGenerationResult result, bool withStats)
+    {
+        if (!result.Ok)
+        {
+            GenerateView.WriteRefused(cli, result.Diagnostics);
+            return ExitCodes.GeneratorRefused;
+        }
+
+        var files = new (string Name, string Text)[]
+        {
+            ($"{stem}-handler.awl", result.AwlText), ($"{stem}-symbols.txt", result.SymbolTableText), ($"{stem}-README.txt", result.TechnicianText),
+        };
+        try
+        {
+            Directory.CreateDirectory(folder);
+        }
+        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
+        {
+            return cli.Fail(ExitCodes.BadInput, $"cannot create {folder}: {ex.Message}");
+        }
+
+        var written = new List<string>();
+        foreach (var (name, text) in files)
+        {
+            var path = Path.Combine(folder, name);
+            if (!AtomicFile.TryWrite(path, Encoding.ASCII.GetBytes(text), out var error))
+            {
+                return cli.Fail(ExitCodes.BadInput, $"{path}: {error}");
+            }
+
+            written.Add(path);
+        }
+
+        cli.Log.Information("Generated the handler for {Stem}: {Files}", stem, written);
+        GenerateView.WriteDone(cli, written, result.Stats!, withStats);
+        return ExitCodes.Ok;
+    }
+}

@@ -1,0 +1,136 @@
+using System.Text.Json;
+using System.Text.Json.Nodes;
+
+namespace OperatorPanel.Cli.Tests.Commands;
+
+/// <summary>Runs <c>opanel generate</c> in-process on projects in a temporary folder.</summary>
+public sealed class GenerateCommandTests : IDisposable
+{
+    private readonly string _folder = Path.Combine(Path.GetTempPath(), "opanel-generate-tests-" + Guid.NewGuid().ToString("N"));
+
+    public GenerateCommandTests() => Directory.CreateDirectory(_folder);
+
+    [Fact]
+    public void Generate_OneStation_WritesTheThreeFiles()
+    {
+        var project = NewProject("224", "2");
+
+        var run = CliRunner.Run("generate", project, "-o", Out);
+
+        run.ExitCode.Should().Be(0, run.Error);
+        Directory.GetFiles(Out).Select(Path.GetFileName).Should().BeEquivalentTo("PLC_2-handler.awl", "PLC_2-symbols.txt", "PLC_2-README.txt");
+        var awl = File.ReadAllBytes(Path.Combine(Out, "PLC_2-handler.awl"));
+        awl.Should().NotContain(b => b > 0x7E);
+        File.ReadAllText(Path.Combine(Out, "PLC_2-handler.awl")).Should().Contain("SUBROUTINE_BLOCK OP_PANEL:SBR63\r\n").And.Contain("LDB<>  VB8176, 2\r\n");
+        File.ReadAllText(Path.Combine(Out, "PLC_2-symbols.txt")).Should().StartWith("OP_BUF\tVB7920\t");
+    }
+
+    [Fact]
+    public void Generate_Stats_PrintsTheHandlersFigures()
+    {
+        var project = NewProject("224", "2");
+
+        var run = CliRunner.Run("generate", project, "-o", Out, "--stats");
+
+        run.ExitCode.Should().Be(0);
+        run.Out.Should().Contain("V bytes reserved:       VB7920-VB8191 (272 bytes)")
+            .And.Contain("instructions generated: 521")
+            .And.Contain("interrupt events used:  23, 10, 9")
+            .And.Contain("blocks used:            OP_PANEL (SBR63), OP_RX (INT125), OP_DELAY (INT126), OP_TX (INT127)");
+    }
+
+    [Fact]
+    public void Generate_Json_ReportsFilesAndStats()
+    {
+        var project = NewProject("226", "17");
+
+        var run = CliRunner.Run("generate", project, "-o", Out, "--plc-port", "1", "--buffer", "VB1000", "--stats", "--json");
+
+        run.ExitCode.Should().Be(0);
+        using var json = JsonDocument.Parse(run.Out);
+        json.RootElement.GetProperty("ok").GetBoolean().Should().BeTrue();
+        json.RootElement.GetProperty("files").GetArrayLength().Should().Be(3);
+        var stats = json.RootElement.GetProperty("stats");
+        stats.GetProperty("firstVByte").GetInt32().Should().Be(1000);
+        stats.GetProperty("lastVByte").GetInt32().Should().Be(1271);
+        stats.GetProperty("interruptEvents").EnumerateArray().Select(e => e.GetInt32()).Should().Equal(24, 10, 26);
+    }
+
+    [Theory]
+    [InlineData("--plc-port", "1", "STL001")]
+    [InlineData("--buffer", "VB8000", "STL005")]
+    [InlineData("--reply-delay", "0", "STL007")]
+    [InlineData("--writable", "I,Q", "STL011")]
+    [InlineData("--sbr", "64", "STL009")]
+    public void Generate_ImpossibleSetting_PrintsTheDiagnosticAndExits2(string option, string value, string id)
+    {
+        var project = NewProject("224", "2");
+
+        var run = CliRunner.Run("generate", project, "-o", Out, option, value);
+
+        run.ExitCode.Should().Be(2);
+        run.Error.Should().StartWith($"opanel: {id}: ");
+        Directory.Exists(Out).Should().BeFalse();
+    }
+
+    [Fact]
+    public void Generate_ImpossibleSettingWithJson_ListsTheDiagnostics()
+    {
+        var project = NewProject("224", "2");
+
+        var run = CliRunner.Run("generate", project, "-o", Out, "--plc-port", "1", "--json");
+
+        run.ExitCode.Should().Be(2);
+        using var json = JsonDocument.Parse(run.Out);
+        json.RootElement.GetProperty("diagnostics")[0].GetProperty("id").GetString().Should().Be("STL001");
+    }
+
+    [Theory]
+    [InlineData("--buffer", "MB10", "MB10")]
+    [InlineData("--writable", "Q,X", "'X'")]
+    public void Generate_UnreadableOption_IsBadInput(string option, string value, string named)
+    {
+        var run = CliRunner.Run("generate", NewProject("224", "2"), "-o", Out, option, value);
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Contain(named);
+    }
+
+    [Fact]
+    public void Generate_SeveralStations_NeedsStation()
+    {
+        var project = TwoStationProject();
+
+        var refused = CliRunner.Run("generate", project, "-o", Out);
+        var chosen = CliRunner.Run("generate", project, "-o", Out, "--station", "9");
+
+        refused.ExitCode.Should().Be(1);
+        refused.Error.Should().Contain("choose one with --station");
+        chosen.ExitCode.Should().Be(0, chosen.Error);
+        File.Exists(Path.Combine(Out, "Capper-handler.awl")).Should().BeTrue();
+    }
+
+    public void Dispose() => Directory.Delete(_folder, recursive: true);
+
+    private string Out => Path.Combine(_folder, "out");
+
+    private string NewProject(string cpu, string station)
+    {
+        var file = Path.Combine(_folder, $"{cpu}-{station}.opproj");
+        CliRunner.Run("project", "new", "--cpu", cpu, "--station", station, "--port", "COM1", "-o", file).ExitCode.Should().Be(0);
+        return file;
+    }
+
+    private string TwoStationProject()
+    {
+        var file = NewProject("224", "2");
+        var root = JsonNode.Parse(File.ReadAllText(file))!;
+        var stations = root["stations"]!.AsArray();
+        var second = stations[0]!.DeepClone();
+        second["name"] = "Capper";
+        second["address"] = 9;
+        stations.Add(second);
+        File.WriteAllText(file, root.ToJsonString());
+        return file;
+    }
+}

@@ -1,0 +1,82 @@
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.StlGen.Diagnostics;
+using OperatorPanel.StlGen.Options;
+
+namespace OperatorPanel.StlGen.Tests.Diagnostics;
+
+public sealed class HandlerOptionsCheckTests
+{
+    private static readonly CpuProfile Cpu224 = CpuProfiles.For(CpuModel.Cpu224);
+
+    public static TheoryData<string, HandlerOptions, string> BadSettings => new()
+    {
+        { StlDiagnostics.PortNotOnCpu, new HandlerOptions { Cpu = Cpu224, Port = 1 }, "port 1" },
+        { StlDiagnostics.BaudNotAllowed, new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224, CpuRevision.Early), BaudRate = 115200 }, "115200" },
+        { StlDiagnostics.DataBitsNotAllowed, new HandlerOptions { Cpu = Cpu224, DataBits = 6 }, "6 data bits" },
+        { StlDiagnostics.StopBitsNotAllowed, new HandlerOptions { Cpu = Cpu224, StopBits = 2 }, "2 stop bits" },
+        { StlDiagnostics.BufferOutsideV, new HandlerOptions { Cpu = Cpu224, BufferStart = 8000 }, "VB8000-VB8271" },
+        { StlDiagnostics.StationOutOfRange, new HandlerOptions { Cpu = Cpu224, Station = 127 }, "127" },
+        { StlDiagnostics.ReplyDelayOutOfRange, new HandlerOptions { Cpu = Cpu224, ReplyDelayMs = 0 }, "reply delay 0 ms" },
+        { StlDiagnostics.CharTimeoutOutOfRange, new HandlerOptions { Cpu = Cpu224, CharTimeoutMs = -1 }, "-1 ms" },
+        { StlDiagnostics.SubroutineOutOfRange, new HandlerOptions { Cpu = Cpu224, FirstSubroutine = 64 }, "SBR64" },
+        { StlDiagnostics.InterruptOutOfRange, new HandlerOptions { Cpu = Cpu224, FirstInterrupt = 126 }, "INT126-INT128" },
+        { StlDiagnostics.WriteMaskNotAllowed, new HandlerOptions { Cpu = Cpu224, WriteMask = 0x3E }, "16#3E" },
+        { StlDiagnostics.BlockNameInvalid, new HandlerOptions { Cpu = Cpu224, Names = new HandlerBlockNames { Receive = "1RX" } }, "'1RX'" },
+        { StlDiagnostics.BlockNamesOverlap, new HandlerOptions { Cpu = Cpu224, Names = new HandlerBlockNames { Delay = "OP_RX" } }, "'OP_RX'" },
+        { StlDiagnostics.ParityNotAllowed, new HandlerOptions { Cpu = Cpu224, Parity = (Parity)7 }, "parity 7" },
+    };
+
+    [Theory]
+    [MemberData(nameof(BadSettings))]
+    public void Check_BadSetting_ReportsItsIdNamingTheValue(string id, HandlerOptions options, string named)
+    {
+        var diagnostics = HandlerOptionsCheck.Check(options);
+
+        diagnostics.Should().ContainSingle().Which.Should().Match<StlDiagnostic>(d => d.Id == id && d.Message.Contains(named, StringComparison.Ordinal));
+    }
+
+    [Theory]
+    [MemberData(nameof(BadSettings))]
+    public void Generate_BadSetting_ReturnsDiagnosticsAndNoText(string id, HandlerOptions options, string named)
+    {
+        var result = HandlerGenerator.Generate(options);
+
+        result.Ok.Should().BeFalse();
+        result.Diagnostics.Select(d => d.Id).Should().Equal(id);
+        result.AwlText.Should().BeEmpty(named);
+    }
+
+    [Fact]
+    public void Check_IdsAreDistinct_AndNumberedFromStl001()
+    {
+        var ids = typeof(StlDiagnostics).GetFields().Select(f => (string)f.GetValue(null)!).ToList();
+
+        ids.Should().OnlyHaveUniqueItems().And.Contain("STL001").And.OnlyContain(id => id.StartsWith("STL", StringComparison.Ordinal));
+    }
+
+    [Theory]
+    [InlineData(CpuModel.Cpu221, CpuRevision.Current, 1776)]
+    [InlineData(CpuModel.Cpu224, CpuRevision.Early, 4848)]
+    [InlineData(CpuModel.Cpu224, CpuRevision.Current, 7920)]
+    [InlineData(CpuModel.Cpu226, CpuRevision.Current, 9968)]
+    public void Defaults_BufferStart_EndsAtTheLastVByteEvenAligned(CpuModel model, CpuRevision revision, int start)
+    {
+        var cpu = CpuProfiles.For(model, revision);
+        var options = new HandlerOptions { Cpu = cpu };
+
+        options.EffectiveBufferStart.Should().Be(start);
+        HandlerOptionsCheck.Check(options).Should().BeEmpty();
+    }
+
+    [Theory]
+    [InlineData(CpuModel.Cpu224, 63)]
+    [InlineData(CpuModel.Cpu226, 127)]
+    public void Defaults_Blocks_AreAtTheTopOfTheRanges(CpuModel model, int sbr)
+    {
+        var options = new HandlerOptions { Cpu = CpuProfiles.For(model) };
+
+        options.EffectiveFirstSubroutine.Should().Be(sbr);
+        options.EffectiveFirstInterrupt.Should().Be(125);
+    }
+}

@@ -1,0 +1,64 @@
+using OperatorPanel.StlGen.Emit;
+using OperatorPanel.StlGen.Model;
+using OperatorPanel.StlGen.Tests.Golden;
+
+namespace OperatorPanel.StlGen.Tests.Emit;
+
+public sealed class AwlWriterTests
+{
+    [Theory]
+    [InlineData("LD", new[] { "SM0.1" }, "LD     SM0.1")]
+    [InlineData("MOVB", new[] { "16#09", "SMB30" }, "MOVB   16#09, SMB30")]
+    [InlineData("LDB=", new[] { "VB10", "16#01" }, "LDB=   VB10, 16#01")]
+    [InlineData("ENI", new string[0], "ENI")]
+    [InlineData("LONGMNE", new[] { "A" }, "LONGMNE A")]
+    public void FormatInstruction_PadsMnemonicToSeven_JoinsOperandsWithCommaSpace(string mnemonic, string[] operands, string expected) =>
+        AwlWriter.FormatInstruction(StlInstruction.Of(mnemonic, operands)).Should().Be(expected);
+
+    [Theory]
+    [MemberData(nameof(HandlerGoldenTests.Cases), MemberType = typeof(HandlerGoldenTests))]
+    public void Write_Handler_IsAsciiWithCrlfAfterEveryLineAndNoBom(string name)
+    {
+        var text = HandlerGenerator.Generate(HandlerGoldenTests.OptionsFor(name)).AwlText;
+
+        text.Should().MatchRegex("^[\\x20-\\x7E\\r\\n]*$");
+        text.Should().EndWith("\r\n");
+        text.Replace("\r\n", string.Empty, StringComparison.Ordinal).Should().NotContain("\n").And.NotContain("\r");
+        text.Should().StartWith("ORGANIZATION_BLOCK MAIN:OB1\r\n");
+    }
+
+    [Fact]
+    public void Write_Handler_ListsBlocksInMicroWinOrder()
+    {
+        var lines = HandlerGenerator.Generate(HandlerGoldenTests.Cpu224Port0Station2).AwlText.Split("\r\n");
+
+        lines.Where(l => l.EndsWith("_BLOCK", StringComparison.Ordinal) || l.Contains("_BLOCK ", StringComparison.Ordinal))
+            .Should().Equal(
+                "ORGANIZATION_BLOCK MAIN:OB1", "END_ORGANIZATION_BLOCK",
+                "SUBROUTINE_BLOCK OP_PANEL:SBR63", "END_SUBROUTINE_BLOCK",
+                "INTERRUPT_BLOCK OP_RX:INT125", "END_INTERRUPT_BLOCK",
+                "INTERRUPT_BLOCK OP_DELAY:INT126", "END_INTERRUPT_BLOCK",
+                "INTERRUPT_BLOCK OP_TX:INT127", "END_INTERRUPT_BLOCK");
+    }
+
+    [Fact]
+    public void Write_Handler_NextAndLblStandInNetworksOfTheirOwn()
+    {
+        var program = HandlerGenerator.Generate(HandlerGoldenTests.Cpu224Port0Station2).Program!;
+
+        var networks = program.Blocks.SelectMany(b => b.Networks).ToList();
+        networks.Where(n => n.Instructions.Any(i => i.Mnemonic is "NEXT" or "LBL")).Should().OnlyContain(n => n.Instructions.Length == 1);
+        networks.Should().OnlyContain(n => n.Title.Length > 0 && n.Comments.Length > 0 || n.Instructions.Length == 1);
+    }
+
+    [Fact]
+    public void Write_NonAsciiComment_Throws()
+    {
+        var program = new StlProgram(
+            [new StlBlock(StlBlockKind.Organization, "MAIN", 1, "T\u00e9st", [], [])]);
+
+        var write = () => AwlWriter.Write(program);
+
+        write.Should().Throw<ArgumentException>();
+    }
+}
