@@ -5,7 +5,7 @@ using OperatorPanel.Core.Transport;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel bench link [--cycles N]</c>: the modeled cost of a full refresh of the reference line against one item per
+/// <c>opanel bench link [--cycles N]</c> (and <c>bench stl</c>, <see cref="StlBenchCommand"/>): the modeled cost of a full refresh of the reference line against one item per
 /// request and the data-only lower bound, the targets judged PASS/FAIL, then the round trip measured over a socat pty.
 /// Exit 0 when both parts ran (a FAIL target is a finding, printed, not an error); 1 when socat is missing or
 /// --cycles is bad; 2 when the measured run failed or no frame got a reply (lost frames are counted in the output).
@@ -18,6 +18,7 @@ internal static class BenchCommand
     {
         var command = new Command("bench", "Print figures about the panel's link (modeled and measured)");
         command.Subcommands.Add(CreateLink(context));
+        command.Subcommands.Add(StlBenchCommand.Create(context));
         return command;
     }
 
