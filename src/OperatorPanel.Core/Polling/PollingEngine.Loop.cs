@@ -54,15 +54,22 @@ public sealed partial class PollingEngine
         }
     }
 
-    /// <summary>Zero: run a cycle now. Null: nothing due until woken (triggered mode without a request).</summary>
+    /// <summary>Zero: run a cycle now (a refresh was requested, or the period is over). Null: nothing due until woken (triggered mode without a request).</summary>
     private TimeSpan? DelayBeforeNextCycle()
     {
         lock (_gate)
         {
             _refreshWaiters.RemoveAll(w => w.Task.IsCompleted);
+
+            // "Refresh now" means now in either mode; in continuous mode it does not wait out the minimum period.
+            if (_refreshWaiters.Count > 0)
+            {
+                return TimeSpan.Zero;
+            }
+
             if (_mode == RefreshMode.OnDemand)
             {
-                return _refreshWaiters.Count > 0 ? TimeSpan.Zero : null;
+                return null;
             }
 
             if (_lastCycleStart is not { } last)

@@ -41,6 +41,18 @@ public sealed class PollingEngineLoopTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task RequestRefresh_ContinuousMidPeriod_CycleRunsAtOnceWithoutWaitingOutThePeriod()
+    {
+        Start();
+        await _clock.WhenTimerScheduledAsync().Guarded();
+
+        var result = await _engine.RequestRefreshAsync().Guarded();
+
+        result.Cycle.Should().Be(2);
+        _link.RequestTimes.Should().Equal(PollingTestClock.Start, PollingTestClock.Start.AddMilliseconds(30));
+    }
+
+    [Fact]
     public async Task Run_CycleLongerThanMinimumPeriod_NextCycleStartsAtOnce()
     {
         _engine.MinimumPeriod = 20 * Ms;
