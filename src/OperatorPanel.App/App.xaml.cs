@@ -88,7 +88,8 @@ public partial class App : Application
                 sp.GetRequiredService<IFileDialogService>(),
                 new SerialLineConnector(),
                 new DemoSource(sp.GetRequiredService<ILogger>()),
-                new WizardProjectSource(presenter, tester, ports),
+                // File > New tests a port like Edit project does: never one the connected panel is polling on.
+                new WizardProjectSource(presenter, new PortInUseGuard(tester, sp.GetRequiredService<PanelSession>()), ports),
                 presenter,
                 tester,
                 ports);

@@ -3,6 +3,7 @@ using System.Windows;
 using System.Windows.Automation;
 using System.Windows.Controls;
 using System.Windows.Data;
+using OperatorPanel.App.Generate;
 using OperatorPanel.App.Views;
 using OperatorPanel.ViewModels.Docking;
 using OperatorPanel.ViewModels.Shell;
@@ -11,13 +12,15 @@ namespace OperatorPanel.App;
 
 /// <summary>
 /// The shell window. Code-behind is visual only: it places the pane views in the docking host, fills the View menu
-/// from the panes, and turns the window's Closing into the shell's "save changes?" question.
+/// from the panes, shows Generate PLC code while the shell has one open, and turns the window's Closing into the
+/// shell's "save changes?" question.
 /// </summary>
 public partial class MainWindow : Window
 {
     private readonly ShellViewModel _shell;
     private readonly DockingViewModel _docking;
     private bool _closeConfirmed;
+    private GenerateCodeWindow? _generateWindow;
 
     public MainWindow(ShellViewModel shell, DockingViewModel docking)
     {
@@ -37,6 +40,7 @@ public partial class MainWindow : Window
         }
 
         Docking.Initialize(docking, CreateView, this);
+        shell.PropertyChanged += OnShellChanged;
     }
 
     protected override async void OnClosing(CancelEventArgs e)
@@ -74,4 +78,45 @@ public partial class MainWindow : Window
     }
 
     private void OnExit(object sender, RoutedEventArgs e) => Close();
+
+    private void OnShellChanged(object? sender, PropertyChangedEventArgs e)
+    {
+        if (e.PropertyName == nameof(ShellViewModel.GenerateCode))
+        {
+            ShowGenerateCode();
+        }
+    }
+
+    /// <summary>One Generate PLC code window, following the shell: opened, given the new view model, or closed.</summary>
+    private void ShowGenerateCode()
+    {
+        if (_shell.GenerateCode is not { } generate)
+        {
+            var open = _generateWindow;
+            _generateWindow = null;
+            open?.Close();
+            return;
+        }
+
+        if (_generateWindow is null)
+        {
+            _generateWindow = new GenerateCodeWindow(generate) { Owner = this };
+            _generateWindow.Closed += OnGenerateCodeClosed;
+            _generateWindow.Show();
+        }
+        else
+        {
+            _generateWindow.DataContext = generate;
+            _generateWindow.Activate();
+        }
+    }
+
+    private void OnGenerateCodeClosed(object? sender, EventArgs e)
+    {
+        if (ReferenceEquals(sender, _generateWindow))
+        {
+            _generateWindow = null;
+            _shell.CloseGenerateCode();
+        }
+    }
 }

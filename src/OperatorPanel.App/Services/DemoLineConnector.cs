@@ -10,36 +10,43 @@ namespace OperatorPanel.App.Services;
 
 /// <summary>
 /// Demo mode: every bus of the project gets simulated PLCs running the bottle-filler demo process behind an in-memory
-/// pipe, served on real time; the panel talks to the pipe exactly as to a serial port.
+/// pipe, served on real time; the panel talks to the pipe exactly as to a serial port. The PLCs run the generated
+/// handler in the STL interpreter (<see cref="SimulationModel.Stl"/>, as the CLI's <c>--demo</c> does by default).
 /// </summary>
 public sealed class DemoLineConnector(ILogger log) : ILineConnector
 {
     /// <summary>The process starts this far in, so the first values already show a running line.</summary>
     private static readonly TimeSpan WarmUp = TimeSpan.FromSeconds(2);
 
+    /// <summary>
+    /// Builds every bus's line before starting any, so a station that cannot be simulated (a handler the generator refuses
+    /// for its CPU and baud) leaves nothing running; the shell shows the message as "Not connected: ...".
+    /// </summary>
     public Task<LineConnection> ConnectAsync(PanelProject project, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(project);
+        var lines = new List<(SerialSettings Serial, ISimulatedLine Line)>();
+        foreach (var bus in ProjectBus.Of(project))
+        {
+            var stations = bus.Stations.Select(s => new HandlerConfig(s.Address, s.Cpu));
+            if (!SimulatedLineFactory.TryCreate(stations, SimulationModel.Stl, bus.Serial, runProcess: true, GeneratedHandler.TryGet, out var line, out var error))
+            {
+                throw new InvalidOperationException($"the demo line cannot simulate {bus.Serial.PortName}: {error}");
+            }
+
+            lines.Add((bus.Serial, line));
+        }
+
         var transports = new Dictionary<string, ITransport>(StringComparer.OrdinalIgnoreCase);
         var hosts = new List<Task>();
         var stop = new CancellationTokenSource();
-        foreach (var bus in ProjectBus.Of(project))
+        foreach (var (serial, line) in lines)
         {
-            var simulated = new BusSimulator();
-            var processes = new List<DemoProcess>();
-            foreach (var station in bus.Stations)
-            {
-                var plc = new ReferencePlc(new HandlerConfig(station.Address, station.Cpu));
-                simulated.Attach(plc);
-                var process = new DemoProcess(plc);
-                process.Advance(WarmUp);
-                processes.Add(process);
-            }
-
-            var pair = new InMemoryTransportPair(TimeProvider.System, $"{bus.Serial.PortName} (demo)", $"{bus.Serial.PortName} (demo bus)");
-            var host = new SimulatedPlcHost(pair.BusSide, simulated, processes, TimeProvider.System, log);
+            line.RunUntil(line.Now + WarmUp);
+            var pair = new InMemoryTransportPair(TimeProvider.System, $"{serial.PortName} (demo)", $"{serial.PortName} (demo bus)");
+            var host = new SimulatedPlcHost(pair.BusSide, line, TimeProvider.System, log);
             hosts.Add(Task.Run(() => host.RunAsync(stop.Token), CancellationToken.None));
-            transports[bus.Serial.PortName] = pair.PanelSide;
+            transports[serial.PortName] = pair.PanelSide;
         }
 
         return Task.FromResult(new LineConnection(transports, () => StopAsync(stop, hosts)));

@@ -3,6 +3,7 @@ using OperatorPanel.Cli.Hosting;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 
 namespace OperatorPanel.Cli.Commands;

@@ -2,6 +2,7 @@ using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 using Serilog;
 

@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Cli.Commands;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Simulator.Hosting;
 
 namespace OperatorPanel.Cli.Link;
 

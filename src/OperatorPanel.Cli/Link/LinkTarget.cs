@@ -1,6 +1,7 @@
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Hosting;
 
 namespace OperatorPanel.Cli.Link;
 

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using OperatorPanel.Simulator.Hosting;
 
 namespace OperatorPanel.Cli.Link;
 

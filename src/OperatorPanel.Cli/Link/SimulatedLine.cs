@@ -2,17 +2,13 @@ using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
-using OperatorPanel.Simulator.Stl.Freeport;
-using OperatorPanel.StlGen;
-using OperatorPanel.StlGen.Options;
 using Serilog;
 
 namespace OperatorPanel.Cli.Link;
 
 /// <summary>
-/// Simulated PLCs on one RS-485 bus, each optionally running the demo bottling process; what <c>opanel simulate</c>
-/// serves on a serial device and what <c>--demo</c> serves in-process. <see cref="CreateStation"/> is the one place
-/// the model is chosen.
+/// A line from <see cref="SimulatedLineFactory"/> (the STL model runs the handler StlGen generates,
+/// <see cref="GeneratedHandler"/>), with what <c>opanel simulate</c> and <c>--demo</c> do with it.
 /// </summary>
 internal sealed class SimulatedLine
 {
@@ -34,31 +30,13 @@ internal sealed class SimulatedLine
         IEnumerable<HandlerConfig> stations, SimulationModel model, SerialSettings serial, bool runProcess,
         [NotNullWhen(true)] out SimulatedLine? line, [NotNullWhen(false)] out string? error)
     {
-        line = null;
-        var bus = new BusSimulator();
-        var processes = new List<DemoProcess>();
-        var stl = new StlLine(LineSettings.From(serial));
-        foreach (var config in stations)
+        if (!SimulatedLineFactory.TryCreate(stations, model, serial, runProcess, GeneratedHandler.TryGet, out var created, out error))
         {
-            if (model == SimulationModel.Reference)
-            {
-                var plc = new ReferencePlc(config);
-                bus.Attach(plc);
-                processes.AddRange(runProcess ? [new DemoProcess(plc)] : []);
-            }
-            else if (CreateStation(config, serial, out error) is { } station)
-            {
-                stl.Attach(station, runProcess);
-            }
-            else
-            {
-                error ??= $"{config.Station} cannot be simulated";
-                return false;
-            }
+            line = null;
+            return false;
         }
 
-        line = new SimulatedLine(model == SimulationModel.Reference ? new ReferenceLine(bus, processes) : stl, runProcess);
-        error = null;
+        line = new SimulatedLine(created, runProcess);
         return true;
     }
 
@@ -66,34 +44,4 @@ internal sealed class SimulatedLine
     public void WarmUp(TimeSpan time) => Line.RunUntil(Line.Now + time);
 
     public SimulatedPlcHost HostOn(ITransport port, TimeProvider time, ILogger log) => new(port, Line, time, log);
-
-    /// <summary>The STL model: the handler StlGen generates for the station's settings, loaded into the interpreter.</summary>
-    private static StlStation? CreateStation(HandlerConfig config, SerialSettings serial, out string? error)
-    {
-        var generated = HandlerGenerator.Generate(new HandlerOptions
-        {
-            Cpu = config.Cpu,
-            Port = config.Port,
-            BaudRate = serial.BaudRate,
-            Parity = serial.Parity,
-            DataBits = serial.DataBits,
-            Station = config.Station.Address,
-            WriteMask = config.WriteMask,
-            ReplyDelayMs = config.ReplyDelayMs,
-        });
-        if (!generated.Ok)
-        {
-            error = $"{config.Station}: the handler cannot be generated: {string.Join("; ", generated.Diagnostics)}";
-            return null;
-        }
-
-        if (!StlStation.TryCreate(generated.AwlText, config.Cpu, config.Port, LineSettings.From(serial), out var station, out var loadError))
-        {
-            error = $"{config.Station}: the generated handler does not load in the interpreter: {loadError}";
-            return null;
-        }
-
-        error = null;
-        return station;
-    }
 }

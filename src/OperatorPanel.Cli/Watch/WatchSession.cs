@@ -1,6 +1,7 @@
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Simulator.Hosting;
 using Serilog;
 
 namespace OperatorPanel.Cli.Watch;

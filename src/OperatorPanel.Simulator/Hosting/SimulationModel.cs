@@ -1,7 +1,7 @@
-namespace OperatorPanel.Cli.Link;
+namespace OperatorPanel.Simulator.Hosting;
 
 /// <summary>What answers as the simulated PLC: the generated handler in the STL interpreter, or the plain C# model.</summary>
-internal enum SimulationModel
+public enum SimulationModel
 {
     /// <summary>The handler StlGen generates for the station, executed by the STL interpreter (the default).</summary>
     Stl,

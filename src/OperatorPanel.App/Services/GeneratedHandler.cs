@@ -1,0 +1,40 @@
+using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Hosting;
+using OperatorPanel.Simulator.Reference;
+using OperatorPanel.StlGen;
+using OperatorPanel.StlGen.Options;
+
+namespace OperatorPanel.App.Services;
+
+/// <summary>
+/// Demo mode's <see cref="StlHandlerSource"/>: the handler StlGen generates for the station (the same text Generate PLC
+/// code saves), so the demo line answers with the program the operator would load into the PLC.
+/// </summary>
+public static class GeneratedHandler
+{
+    public static bool TryGet(HandlerConfig config, SerialSettings serial, [NotNullWhen(true)] out string? awlText, [NotNullWhen(false)] out string? error)
+    {
+        ArgumentNullException.ThrowIfNull(config);
+        ArgumentNullException.ThrowIfNull(serial);
+        var generated = HandlerGenerator.Generate(new HandlerOptions
+        {
+            Cpu = config.Cpu,
+            Port = config.Port,
+            BaudRate = serial.BaudRate,
+            Parity = serial.Parity,
+            DataBits = serial.DataBits,
+            Station = config.Station.Address,
+            WriteMask = config.WriteMask,
+            ReplyDelayMs = config.ReplyDelayMs,
+        });
+        if (!generated.Ok)
+        {
+            (awlText, error) = (null, $"the handler cannot be generated: {string.Join("; ", generated.Diagnostics)}");
+            return false;
+        }
+
+        (awlText, error) = (generated.AwlText, null);
+        return true;
+    }
+}

@@ -1,0 +1,75 @@
+using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Reference;
+using OperatorPanel.Simulator.Stl.Freeport;
+
+namespace OperatorPanel.Simulator.Hosting;
+
+/// <summary>
+/// Simulated PLCs on one RS-485 bus, each optionally running the demo bottling process: what <c>opanel simulate</c>
+/// serves on a serial device and what the CLI's <c>--demo</c> and the App's demo mode serve in-process. The one place
+/// the <see cref="SimulationModel"/> is turned into a line.
+/// </summary>
+public static class SimulatedLineFactory
+{
+    /// <summary>
+    /// The <paramref name="stations"/> on a line of <paramref name="serial"/>'s settings. For the STL model each station
+    /// runs the text <paramref name="handlerSource"/> gives for it; false with a message naming the station and the
+    /// source's or the loader's reason when one cannot run (the reference model never asks the source).
+    /// </summary>
+    public static bool TryCreate(
+        IEnumerable<HandlerConfig> stations, SimulationModel model, SerialSettings serial, bool runProcess, StlHandlerSource handlerSource,
+        [NotNullWhen(true)] out ISimulatedLine? line, [NotNullWhen(false)] out string? error)
+    {
+        ArgumentNullException.ThrowIfNull(stations);
+        ArgumentNullException.ThrowIfNull(serial);
+        ArgumentNullException.ThrowIfNull(handlerSource);
+        line = null;
+        if (model == SimulationModel.Reference)
+        {
+            line = CreateReference(stations, runProcess);
+            error = null;
+            return true;
+        }
+
+        var pcLine = LineSettings.From(serial);
+        var stl = new StlLine(pcLine);
+        foreach (var config in stations)
+        {
+            if (!handlerSource(config, serial, out var awlText, out var sourceError))
+            {
+                error = $"{config.Station}: {sourceError}";
+                return false;
+            }
+
+            if (!StlStation.TryCreate(awlText, config.Cpu, config.Port, pcLine, out var station, out var loadError))
+            {
+                error = $"{config.Station}: the handler does not load in the interpreter: {loadError}";
+                return false;
+            }
+
+            stl.Attach(station, runProcess);
+        }
+
+        line = stl;
+        error = null;
+        return true;
+    }
+
+    private static ReferenceLine CreateReference(IEnumerable<HandlerConfig> stations, bool runProcess)
+    {
+        var bus = new BusSimulator();
+        var processes = new List<DemoProcess>();
+        foreach (var config in stations)
+        {
+            var plc = new ReferencePlc(config);
+            bus.Attach(plc);
+            if (runProcess)
+            {
+                processes.Add(new DemoProcess(plc));
+            }
+        }
+
+        return new ReferenceLine(bus, processes);
+    }
+}
