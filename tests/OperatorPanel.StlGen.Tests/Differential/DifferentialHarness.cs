@@ -4,6 +4,7 @@ using OperatorPanel.Core.Protocol;
 using OperatorPanel.Simulator.Reference;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Freeport;
+using OperatorPanel.StlGen.Merge;
 using OperatorPanel.StlGen.Options;
 
 namespace OperatorPanel.StlGen.Tests.Differential;
@@ -18,6 +19,8 @@ namespace OperatorPanel.StlGen.Tests.Differential;
 /// SMW22-SMW26 scan times, the port's receive status SMB86/SMB186). Those and the bytes the handler's initialisation
 /// writes (SMB30, SMB34, SMB87-SMB94 and the port 1 twins) are copied from the interpreter into the reference before
 /// every exchange; all of them are protected against writes, so no write of the panel is masked by the copy.
+/// Given a user's program, the harness runs the handler merged into it (<see cref="HandlerMerger"/>): the user's code
+/// runs beside the handler, and the bytes it uses (<see cref="User"/>) are kept out of the random requests as well.
 /// </summary>
 internal sealed class DifferentialHarness
 {
@@ -29,7 +32,7 @@ internal sealed class DifferentialHarness
     private readonly HandlerOptions _options;
     private TimeSpan _now = TimeSpan.FromMilliseconds(50);
 
-    public DifferentialHarness(HandlerOptions options, Random random)
+    public DifferentialHarness(HandlerOptions options, Random random, string? userProgram = null)
     {
         _options = options;
         var generated = HandlerGenerator.Generate(options);
@@ -38,7 +41,14 @@ internal sealed class DifferentialHarness
             throw new InvalidOperationException("not generated: " + string.Join("; ", generated.Diagnostics));
         }
 
-        var load = StlProgramLoader.Load(generated.AwlText, options.Cpu);
+        var merged = userProgram is null ? null : HandlerMerger.Merge(userProgram, options);
+        if (merged is { Ok: false })
+        {
+            throw new InvalidOperationException("not merged: " + string.Join("; ", merged.Errors));
+        }
+
+        User = userProgram is null ? UserBytes.None : UserBytes.Of(userProgram);
+        var load = StlProgramLoader.Load(merged?.MergedText ?? generated.AwlText, options.Cpu);
         if (load.Program is null)
         {
             throw new InvalidOperationException("not loaded: " + string.Join("; ", load.Diagnostics));
@@ -55,6 +65,15 @@ internal sealed class DifferentialHarness
     }
 
     public int ReservedFirst { get; }
+
+    /// <summary>Bytes of the user's program in a merged run (none for the handler alone).</summary>
+    public UserBytes User { get; }
+
+    /// <summary>The interpreter's memory of an area (the user's code runs there, the reference never sees it).</summary>
+    public byte[] Interpreted(ProtocolArea area) => _plc.Memory.Area(area);
+
+    /// <summary>Simulated time of the interpreter.</summary>
+    public TimeSpan Now => _plc.Now;
 
     public int ReservedLast { get; }
 

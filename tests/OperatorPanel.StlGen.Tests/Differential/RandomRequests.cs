@@ -8,7 +8,7 @@ namespace OperatorPanel.StlGen.Tests.Differential;
 /// protected SM bytes, BIT/VALUE errors, list ids 0-5, COUNT 0 and above 20, bad lengths), frame-level damage (bad
 /// BCC, odd or short body, lowercase or illegal characters, truncated), overheard replies and other stations' frames,
 /// noise between frames and a stray '&lt;'. Reads and writes that would be valid keep clear of the handler's V bytes
-/// and of the volatile SM bytes (see <see cref="DifferentialHarness"/>).
+/// and of the volatile SM bytes (see <see cref="DifferentialHarness"/>), and in a merged run of the user's bytes.
 /// </summary>
 internal sealed class RandomRequests(Random random, DifferentialHarness harness, int station, int charTimeoutMs)
 {
@@ -169,7 +169,7 @@ internal sealed class RandomRequests(Random random, DifferentialHarness harness,
         p.Add((byte)length);
     }
 
-    private bool Comparable(byte area, int offset, int span) => area switch
+    private bool Comparable(byte area, int offset, int span) => !harness.User.Touches((ProtocolArea)area, offset, offset + span - 1) && area switch
     {
         4 => !harness.IsReserved(offset, offset + span - 1),
         5 => !Enumerable.Range(offset, span).Any(DifferentialHarness.IsVolatileSm),
