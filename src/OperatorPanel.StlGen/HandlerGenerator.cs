@@ -1,3 +1,4 @@
+using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.StlGen.Diagnostics;
 using OperatorPanel.StlGen.Emit;
 using OperatorPanel.StlGen.Handler;
@@ -23,6 +24,20 @@ public static class HandlerGenerator
         var layout = new HandlerLayout(options.EffectiveBufferStart);
         return new HandlerGenerationResult(
             diagnostics, program, stats, AwlWriter.Write(program), SymbolTableWriter.Write(layout), TechnicianNotes.Write(options, stats));
+    }
+
+    /// <summary>Just the .awl text, or the diagnostics as one message: what a simulated station needs.</summary>
+    public static bool TryGenerateAwl(HandlerOptions options, [NotNullWhen(true)] out string? awlText, [NotNullWhen(false)] out string? error)
+    {
+        var generated = Generate(options);
+        if (!generated.Ok)
+        {
+            (awlText, error) = (null, $"the handler cannot be generated: {string.Join("; ", generated.Diagnostics)}");
+            return false;
+        }
+
+        (awlText, error) = (generated.AwlText, null);
+        return true;
     }
 
     private static HandlerStats StatsOf(HandlerOptions options, StlProgram program)

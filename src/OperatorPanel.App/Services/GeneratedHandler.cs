@@ -16,25 +16,7 @@ public static class GeneratedHandler
     public static bool TryGet(HandlerConfig config, SerialSettings serial, [NotNullWhen(true)] out string? awlText, [NotNullWhen(false)] out string? error)
     {
         ArgumentNullException.ThrowIfNull(config);
-        ArgumentNullException.ThrowIfNull(serial);
-        var generated = HandlerGenerator.Generate(new HandlerOptions
-        {
-            Cpu = config.Cpu,
-            Port = config.Port,
-            BaudRate = serial.BaudRate,
-            Parity = serial.Parity,
-            DataBits = serial.DataBits,
-            Station = config.Station.Address,
-            WriteMask = config.WriteMask,
-            ReplyDelayMs = config.ReplyDelayMs,
-        });
-        if (!generated.Ok)
-        {
-            (awlText, error) = (null, $"the handler cannot be generated: {string.Join("; ", generated.Diagnostics)}");
-            return false;
-        }
-
-        (awlText, error) = (generated.AwlText, null);
-        return true;
+        return HandlerGenerator.TryGenerateAwl(
+            HandlerOptions.ForLine(config.Cpu, config.Port, config.Station.Address, config.WriteMask, config.ReplyDelayMs, serial), out awlText, out error);
     }
 }

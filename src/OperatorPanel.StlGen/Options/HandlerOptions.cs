@@ -65,6 +65,23 @@ public sealed record HandlerOptions
         };
     }
 
+    /// <summary>A station of a simulated or real line: its CPU, port, address, write mask and reply delay on <paramref name="serial"/>'s settings; the rest default.</summary>
+    public static HandlerOptions ForLine(CpuProfile cpu, int port, int station, int writeMask, int replyDelayMs, SerialSettings serial)
+    {
+        ArgumentNullException.ThrowIfNull(serial);
+        return new HandlerOptions
+        {
+            Cpu = cpu,
+            Port = port,
+            BaudRate = serial.BaudRate,
+            Parity = serial.Parity,
+            DataBits = serial.DataBits,
+            Station = station,
+            WriteMask = writeMask,
+            ReplyDelayMs = replyDelayMs,
+        };
+    }
+
     public int EffectiveBufferStart => BufferStart ?? HandlerDefaults.BufferStart(Cpu);
 
     public int EffectiveFirstSubroutine => FirstSubroutine ?? HandlerDefaults.FirstSubroutine(Cpu);
