@@ -1,8 +1,11 @@
+using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
+using OperatorPanel.StlGen;
+using OperatorPanel.StlGen.Options;
 using OperatorPanel.ViewModels.Session;
 using Serilog;
 
@@ -29,7 +32,7 @@ public sealed class DemoLineConnector(ILogger log) : ILineConnector
         foreach (var bus in ProjectBus.Of(project))
         {
             var stations = bus.Stations.Select(s => new HandlerConfig(s.Address, s.Cpu));
-            if (!SimulatedLineFactory.TryCreate(stations, SimulationModel.Stl, bus.Serial, runProcess: true, GeneratedHandler.TryGet, out var line, out var error))
+            if (!SimulatedLineFactory.TryCreate(stations, SimulationModel.Stl, bus.Serial, runProcess: true, GeneratedHandler, out var line, out var error))
             {
                 throw new InvalidOperationException($"the demo line cannot simulate {bus.Serial.PortName}: {error}");
             }
@@ -66,4 +69,9 @@ public sealed class DemoLineConnector(ILogger log) : ILineConnector
 
         stop.Dispose();
     }
+
+    /// <summary>The handler StlGen generates for the station: the same text Generate PLC code / opanel generate saves.</summary>
+    private static bool GeneratedHandler(HandlerConfig config, SerialSettings serial, [NotNullWhen(true)] out string? awlText, [NotNullWhen(false)] out string? error) =>
+        HandlerGenerator.TryGenerateAwl(
+            HandlerOptions.ForLine(config.Cpu, config.Port, config.Station.Address, config.WriteMask, config.ReplyDelayMs, serial), out awlText, out error);
 }

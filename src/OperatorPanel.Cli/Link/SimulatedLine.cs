@@ -2,6 +2,8 @@ using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
+using OperatorPanel.StlGen;
+using OperatorPanel.StlGen.Options;
 using Serilog;
 
 namespace OperatorPanel.Cli.Link;
@@ -30,7 +32,7 @@ internal sealed class SimulatedLine
         IEnumerable<HandlerConfig> stations, SimulationModel model, SerialSettings serial, bool runProcess,
         [NotNullWhen(true)] out SimulatedLine? line, [NotNullWhen(false)] out string? error)
     {
-        if (!SimulatedLineFactory.TryCreate(stations, model, serial, runProcess, GeneratedHandler.TryGet, out var created, out error))
+        if (!SimulatedLineFactory.TryCreate(stations, model, serial, runProcess, GeneratedHandler, out var created, out error))
         {
             line = null;
             return false;
@@ -44,4 +46,9 @@ internal sealed class SimulatedLine
     public void WarmUp(TimeSpan time) => Line.RunUntil(Line.Now + time);
 
     public SimulatedPlcHost HostOn(ITransport port, TimeProvider time, ILogger log) => new(port, Line, time, log);
+
+    /// <summary>The handler StlGen generates for the station: the same text Generate PLC code / opanel generate saves.</summary>
+    private static bool GeneratedHandler(HandlerConfig config, SerialSettings serial, [NotNullWhen(true)] out string? awlText, [NotNullWhen(false)] out string? error) =>
+        HandlerGenerator.TryGenerateAwl(
+            HandlerOptions.ForLine(config.Cpu, config.Port, config.Station.Address, config.WriteMask, config.ReplyDelayMs, serial), out awlText, out error);
 }
