@@ -18,6 +18,12 @@ internal sealed class DemoLine : IAsyncDisposable
     /// <summary>The demo process starts this far in, so the first reply shows a running line with a bottle counted.</summary>
     private static readonly TimeSpan WarmUp = TimeSpan.FromSeconds(2);
 
+    /// <summary>
+    /// Added to the reply timeout on a demo line: the simulated PLCs run on a thread of this process, so a busy PC delays
+    /// their replies by however long that thread waits for a core, which a real line never does.
+    /// </summary>
+    public static readonly TimeSpan HostAllowance = TimeSpan.FromSeconds(1);
+
     private readonly CancellationTokenSource _stop;
     private readonly Task _host;
 

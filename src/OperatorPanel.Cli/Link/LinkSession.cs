@@ -40,6 +40,7 @@ internal sealed class LinkSession : IAsyncDisposable
         ITransport transport = demo is null ? new SerialPortTransport(serial) : demo.PanelSide;
         var options = LinkOptions.For(serial);
         options = scanAllowance is { } scan ? options with { ScanAllowance = scan } : options;
+        options = demo is null ? options : options with { ScanAllowance = options.ScanAllowance + DemoLine.HostAllowance };
         session = new LinkSession(new PlcLink(transport, options, TimeProvider.System, log), demo);
         error = null;
         return true;
