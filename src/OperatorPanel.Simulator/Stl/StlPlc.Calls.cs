@@ -16,28 +16,14 @@ public sealed partial class StlPlc
             return;
         }
 
-        var calleeBase = _lBase + LBytes;
+        var callerBase = _lBase;
+        var calleeBase = callerBase + LBytes;
         foreach (var parameter in op.Parameters)
         {
-            if (!parameter.In)
+            if (parameter.In)
             {
-                continue;
+                CopyParameter(parameter.Actual, callerBase, parameter.Formal, calleeBase, parameter.Bytes);
             }
-
-            if (parameter.Bytes == 0)
-            {
-                var bit = ReadBit(parameter.Actual);
-                _lBase = calleeBase;
-                WriteBit(parameter.Formal, bit);
-            }
-            else
-            {
-                var value = Read(parameter.Actual, parameter.Bytes);
-                _lBase = calleeBase;
-                Write(parameter.Formal, parameter.Bytes, value);
-            }
-
-            _lBase = calleeBase - LBytes;
         }
 
         Push(_program.Blocks[op.Target], calleeBase, op);
@@ -59,23 +45,9 @@ public sealed partial class StlPlc
         var callerBase = _depth >= 0 ? _frames[_depth].LBase : 0;
         foreach (var parameter in frame.Call?.Parameters ?? [])
         {
-            if (!parameter.Out)
+            if (parameter.Out)
             {
-                continue;
-            }
-
-            _lBase = frame.LBase;
-            if (parameter.Bytes == 0)
-            {
-                var bit = ReadBit(parameter.Formal);
-                _lBase = callerBase;
-                WriteBit(parameter.Actual, bit);
-            }
-            else
-            {
-                var value = Read(parameter.Formal, parameter.Bytes);
-                _lBase = callerBase;
-                Write(parameter.Actual, parameter.Bytes, value);
+                CopyParameter(parameter.Formal, frame.LBase, parameter.Actual, callerBase, parameter.Bytes);
             }
         }
 
@@ -88,6 +60,27 @@ public sealed partial class StlPlc
         else if (_depth < 0)
         {
             EndScan();
+        }
+    }
+
+    /// <summary>
+    /// Copies one parameter (a bit when <paramref name="bytes"/> is 0) between two call levels: L operands are relative to
+    /// the level's base, so the base is switched between the read and the write. Leaves the base at <paramref name="toBase"/>.
+    /// </summary>
+    private void CopyParameter(StlLoc from, int fromBase, StlLoc to, int toBase, int bytes)
+    {
+        _lBase = fromBase;
+        if (bytes == 0)
+        {
+            var bit = ReadBit(from);
+            _lBase = toBase;
+            WriteBit(to, bit);
+        }
+        else
+        {
+            var value = Read(from, bytes);
+            _lBase = toBase;
+            Write(to, bytes, value);
         }
     }
 

@@ -12,12 +12,14 @@ public sealed partial class StlPlc
     private readonly long[] _timedInterval = new long[2];
     private readonly long[] _timedNext = new long[2];
     private readonly List<StlEvent> _raised = [];
+    private readonly uint[] _interruptedAc = new uint[4];
     private int[] _capacity = [];
     private int _queued;
     private bool _interruptsEnabled;
     private int _interruptBase = -1;
     private StlQueuedEvent _running;
     private long _runningStart;
+    private byte _interruptedSmb1;
     private long _runningInstructions;
     private long _nextChange = long.MaxValue;
 
@@ -111,6 +113,11 @@ public sealed partial class StlPlc
         _busy += StlTiming.InterruptOverhead;
         _runningStart = _now;
         _runningInstructions = InstructionsExecuted;
+
+        // The CPU saves the accumulators and the instruction status bits (SMB1) around every interrupt routine, as it
+        // saves the logic stack (System Manual, "System Support for Interrupts", Table 6-47); interrupts never nest.
+        Array.Copy(_ac, _interruptedAc, _ac.Length);
+        _interruptedSmb1 = Memory.SM[1];
         Push(_program.Blocks[_running.Block], InterruptLBase, null);
         _interruptBase = _depth;
     }
@@ -118,6 +125,8 @@ public sealed partial class StlPlc
     private void FinishInterrupt()
     {
         _interruptBase = -1;
+        Array.Copy(_interruptedAc, _ac, _ac.Length);
+        Memory.SM[1] = _interruptedSmb1;
         for (var group = 0; group < _queues.Length; group++)
         {
             if (_queues[group].Count == 0)

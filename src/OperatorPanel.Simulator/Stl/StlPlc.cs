@@ -12,7 +12,11 @@ namespace OperatorPanel.Simulator.Stl;
 /// </summary>
 public sealed partial class StlPlc
 {
-    /// <summary>Subroutine nesting: 8 levels from the main program, 4 from an interrupt routine (System Manual, CALL).</summary>
+    /// <summary>
+    /// Subroutine nesting: 8 levels from the main program, 4 from an interrupt routine, each level with its own 64 bytes
+    /// of L ("Executing the user program" in the newer system manuals; the 1998 C233-01 manual allowed only one level
+    /// from an interrupt routine, a limit the generated handler never reaches: it calls nothing from its routines).
+    /// </summary>
     private const int MainNesting = 8;
     private const int InterruptNesting = 4;
     private const int LBytes = 64;

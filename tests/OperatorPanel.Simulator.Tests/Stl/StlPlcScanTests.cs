@@ -67,6 +67,24 @@ public sealed class StlPlcScanTests
     }
 
     [Fact]
+    public void TimedInterrupt_InTheMiddleOfTheMainProgram_LeavesItsAccumulatorsAsTheyWere()
+    {
+        // OB1 counts to 300 in AC0 with a loop that outlasts the 1 ms timed interrupt; the routine tramples AC0-AC3.
+        var plc = Plc(
+            "LD     SM0.1\nMOVB   1, SMB34\nATCH   TRAMPLE, 10\nENI\nNetwork 2\nLD     SM0.0\nMOVD   0, AC0\nFOR    VW0, 1, 300\n" +
+            "Network 3\nLD     SM0.0\nINCD   AC0\nNetwork 4\nNEXT\nNetwork 5\nLD     SM0.0\nMOVD   AC0, VD10",
+            "INTERRUPT_BLOCK TRAMPLE:INT0\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\nMOVD   16#7777, AC0\r\nMOVD   16#7777, AC1\r\n" +
+            "MOVD   16#7777, AC2\r\nMOVD   16#7777, AC3\r\nINCB   VB20\r\nEND_INTERRUPT_BLOCK\r\n");
+        var interrupted = 0;
+        plc.InterruptServed += (_, _) => interrupted++;
+
+        plc.RunUntil(TimeSpan.FromMilliseconds(50));
+
+        interrupted.Should().BeGreaterThan(10);
+        plc.Memory.ReadDoubleWord(ProtocolArea.V, 10).Should().Be(300);
+    }
+
+    [Fact]
     public void DisabledInterrupts_AreQueuedUpToTheQueueDepthAndServedAfterEni()
     {
         var plc = Plc(

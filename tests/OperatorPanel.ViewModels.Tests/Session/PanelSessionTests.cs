@@ -39,8 +39,7 @@ public sealed class PanelSessionTests : IAsyncDisposable
 
         var station = _panel.Session.Stations.Should().ContainSingle().Subject;
         station.Health.Should().Be(StationHealth.Online);
-        station.Identity.Should().NotBeNull();
-        station.Identity!.Model.Should().Be(CpuModel.Cpu224);
+        station.Identity.Should().Match<StationIdentity>(i => i.Model == CpuModel.Cpu224 && i.ProtocolVersion == 1 && i.ModeSwitchRun);
         station.CpuMismatch.Should().BeFalse();
         station.Statistics.Replies.Should().BeGreaterThanOrEqualTo(2, "IDENTIFY and the refresh were answered");
     }

@@ -63,7 +63,7 @@ public sealed class IoSymbolsStepViewModelTests
 
         wizard.NextCommand.CanExecute(null).Should().BeFalse();
         wizard.Message.Should().Be(message);
-        wizard.IoStep.Inputs[^1].Error.Should().NotBeNull();
+        message.Should().EndWith($": {wizard.IoStep.Inputs[^1].Error}.", "the row shows the same reason as the step");
         wizard.IoStep.RemoveCommand.Execute(wizard.IoStep.Inputs[^1]);
         wizard.NextCommand.CanExecute(null).Should().BeTrue();
     }
