@@ -10,7 +10,7 @@ internal enum StlOpCode
     IncB, IncW, IncD, DecB, DecW, DecD,
     Bti, Itb, Itd, Dti,
     AndB, OrB, XorB, InvB, AndW, OrW, XorW, InvW, AndD, OrD, XorD, InvD,
-    ShlB, ShrB, ShlW, ShrW, ShlD, ShrD,
+    Slb, Srb, Slw, Srw, Sld, Srd,
     Ath, Hta,
     For, Next, Jmp, Lbl, Call, Cret, Ret, Creti, Reti, End, Mend, Nop,
     Atch, Dtch, Eni, Disi, Rcv, Xmt,

@@ -46,11 +46,11 @@ public sealed partial class StlPlc
             case StlOpCode.OrD: Logic(op.B!, 4, Read(op.A!, 4) | Read(op.B!, 4)); break;
             case StlOpCode.XorD: Logic(op.B!, 4, Read(op.A!, 4) ^ Read(op.B!, 4)); break;
             case StlOpCode.InvD: Logic(op.A!, 4, ~Read(op.A!, 4)); break;
-            case StlOpCode.ShlB: Shift(op, 1, left: true); break;
-            case StlOpCode.ShrB: Shift(op, 1, left: false); break;
-            case StlOpCode.ShlW: Shift(op, 2, left: true); break;
-            case StlOpCode.ShrW: Shift(op, 2, left: false); break;
-            case StlOpCode.ShlD: Shift(op, 4, left: true); break;
+            case StlOpCode.Slb: Shift(op, 1, left: true); break;
+            case StlOpCode.Srb: Shift(op, 1, left: false); break;
+            case StlOpCode.Slw: Shift(op, 2, left: true); break;
+            case StlOpCode.Srw: Shift(op, 2, left: false); break;
+            case StlOpCode.Sld: Shift(op, 4, left: true); break;
             default: Shift(op, 4, left: false); break;
         }
     }

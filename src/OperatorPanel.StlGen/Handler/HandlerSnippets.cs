@@ -80,6 +80,6 @@ internal static class HandlerSnippets
                 "AC0 = LAST_FREE + 1 - 4N, the first byte of N descriptors of 4 bytes just below the floor.",
                 $"AC2 points there; BMB copies AREA, OFFSET, LENGTH of every item from buffer byte {source}.")
             .Op("LD", "SM0.0").Op("BTI", l.B(LastFree), "AC0").Op("INCW", "AC0").Op("BTI", l.B(N), "AC3")
-            .Op("SHLW", "AC3", "2").Op("-I", "AC3", "AC0").Op("ITD", "AC0", "AC0").Op("MOVD", l.Ptr(0), "AC2")
+            .Op("SLW", "AC3", "2").Op("-I", "AC3", "AC0").Op("ITD", "AC0", "AC0").Op("MOVD", l.Ptr(0), "AC2")
             .Op("+D", "AC0", "AC2").Op("BMB", l.B(source), "*AC2", "AC3").Build();
 }

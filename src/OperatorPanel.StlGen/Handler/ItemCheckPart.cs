@@ -46,7 +46,7 @@ internal static class ItemCheckPart
             HandlerLabels.Writable, Op("LDB=", l.B(Cmd), "3"), Op("OB=", l.B(Cmd), "4"));
         yield return Always(
             "Items checked: 2D + 4N", "AC0 = 2 x (sum of lengths) + 4 x COUNT.",
-            Op("MOVW", "AC1", "AC0"), Op("+I", "AC1", "AC0"), Op("BTI", l.B(N), "AC3"), Op("SHLW", "AC3", "2"), Op("+I", "AC3", "AC0"));
+            Op("MOVW", "AC1", "AC0"), Op("+I", "AC1", "AC0"), Op("BTI", l.B(N), "AC3"), Op("SLW", "AC3", "2"), Op("+I", "AC3", "AC0"));
         yield return JumpIf("Items checked: too much data", "2D + 4N > 243: the reply would reach the descriptors, error 04.", e04, Op("LDW>", "AC0", "243"));
         yield return Always("Items checked: keep D", "D = sum of the lengths (at most 119 now).", Op("MOVB", "AC1", l.B(D)));
         yield return JumpIf("Items checked: DEFINE LIST", "On to the capacity rule.", HandlerLabels.DefineItemsChecked, Op("LDB=", l.B(Cmd), "5"));

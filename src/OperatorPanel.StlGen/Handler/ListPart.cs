@@ -20,7 +20,7 @@ internal static class ListPart
         yield return JumpIf("DEFINE LIST: COUNT 1-20", "Error 04.", e04, Op("LDB=", l.B(9), "0"), Op("OB>", l.B(9), "20"));
         yield return Always(
             "DEFINE LIST: expected length", "14 + 8N characters: AC0 = 14 + 8N, AC3 = count.",
-            Op("BTI", l.B(9), "AC0"), Op("SHLW", "AC0", "3"), Op("+I", "14", "AC0"), Op("BTI", l.B(0), "AC3"));
+            Op("BTI", l.B(9), "AC0"), Op("SLW", "AC0", "3"), Op("+I", "14", "AC0"), Op("BTI", l.B(0), "AC3"));
         yield return JumpIf("DEFINE LIST: body = 6 + 4 x COUNT bytes", "Error 04.", e04, Op("LDW<>", "AC0", "AC3"));
         yield return JumpIf("DEFINE LIST: LIST 1-4", "Error 06.", HandlerLabels.ErrorBase + 6, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), "4"));
         yield return Always(
@@ -69,14 +69,14 @@ internal static class ListPart
         yield return new NetworkBuilder("DEFINE LIST: take the larger", "AC0 = larger of D and MAXD.").Op("LDW<", "AC0", "AC3").Op("MOVW", "AC3", "AC0").Build();
         yield return Always(
             "DEFINE LIST: capacity rule", "AC0 = 12 + 2 x largest D; AC3 = LAST_FREE - 4N, the last byte below the new floor.",
-            Op("SHLW", "AC0", "1"), Op("+I", "12", "AC0"), Op("BTI", l.B(LastFree), "AC3"), Op("BTI", l.B(N), "AC2"),
-            Op("SHLW", "AC2", "2"), Op("-I", "AC2", "AC3"));
+            Op("SLW", "AC0", "1"), Op("+I", "12", "AC0"), Op("BTI", l.B(LastFree), "AC3"), Op("BTI", l.B(N), "AC2"),
+            Op("SLW", "AC2", "2"), Op("-I", "AC2", "AC3"));
         yield return JumpIf("DEFINE LIST: the lists do not fit together", "A reply would reach the new floor: error 04, nothing stored.",
             HandlerLabels.ErrorBase + 4, Op("LDW>", "AC0", "AC3"));
         yield return Always(
             "DEFINE LIST: store", "START = LAST_FREE + 1 - 4N, LCOUNT = N, LAST_FREE = START - 1. The descriptors are in place already.",
             Op("MOVD", l.Ptr(Start1 - 1), "AC3"), Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"),
-            Op("BTI", l.B(LastFree), "AC0"), Op("INCW", "AC0"), Op("BTI", l.B(N), "AC2"), Op("SHLW", "AC2", "2"), Op("-I", "AC2", "AC0"),
+            Op("BTI", l.B(LastFree), "AC0"), Op("INCW", "AC0"), Op("BTI", l.B(N), "AC2"), Op("SLW", "AC2", "2"), Op("-I", "AC2", "AC0"),
             Op("MOVB", "AC0", "*AC3"), Op("+D", "4", "AC3"), Op("MOVB", l.B(N), "*AC3"), Op("DECW", "AC0"), Op("MOVB", "AC0", l.B(LastFree)));
         yield return new NetworkBuilder("DEFINE LIST: remember the largest reply", "MAXD = D when D is larger.")
             .Op("LDB>", l.B(D), l.B(MaxD)).Op("MOVB", l.B(D), l.B(MaxD)).Build();

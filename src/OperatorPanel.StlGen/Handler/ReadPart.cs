@@ -20,7 +20,7 @@ internal static class ReadPart
         yield return JumpIf("READ: COUNT 1-20", "Error 04.", e04, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), "20"));
         yield return Always(
             "READ: expected length", "A READ of N items has 12 + 8N characters: AC0 = 12 + 8N, AC3 = count.",
-            Op("BTI", l.B(8), "AC0"), Op("SHLW", "AC0", "3"), Op("+I", "12", "AC0"), Op("BTI", l.B(0), "AC3"));
+            Op("BTI", l.B(8), "AC0"), Op("SLW", "AC0", "3"), Op("+I", "12", "AC0"), Op("BTI", l.B(0), "AC3"));
         yield return JumpIf("READ: body = 5 + 4 x COUNT bytes", "Error 04.", e04, Op("LDW<>", "AC0", "AC3"));
         yield return Always(
             "READ: descriptors against the stored lists", "N = COUNT. AC0 = 8 + 12N, AC3 = LAST_FREE.",
@@ -41,8 +41,8 @@ internal static class ReadPart
         yield return Label(HandlerLabels.ReadItemsChecked, "READ items checked");
         yield return Always(
             "READ: reply against the stored lists", "AC0 = reply length 12 + 2D; AC3 = LAST_FREE - 4N, the last byte before the descriptors.",
-            Op("BTI", l.B(D), "AC0"), Op("SHLW", "AC0", "1"), Op("+I", "12", "AC0"), Op("BTI", l.B(LastFree), "AC3"),
-            Op("BTI", l.B(N), "AC2"), Op("SHLW", "AC2", "2"), Op("-I", "AC2", "AC3"));
+            Op("BTI", l.B(D), "AC0"), Op("SLW", "AC0", "1"), Op("+I", "12", "AC0"), Op("BTI", l.B(LastFree), "AC3"),
+            Op("BTI", l.B(N), "AC2"), Op("SLW", "AC2", "2"), Op("-I", "AC2", "AC3"));
         yield return new NetworkBuilder("READ: reply would reach the descriptors", "Forget the lists (invalidation 3).")
             .Op("LDW>", "AC0", "AC3").ClearLists(l).Build();
         yield return PlaceDescriptors(l, 9);
@@ -65,7 +65,7 @@ internal static class ReadPart
             "Reply item: data as characters",
             "AC3 = area start + OFFSET; HTA writes 2 x LENGTH characters at AC1; AC1 and AC2 move on; one item fewer.",
             Op("INCD", "AC2"), Op("MOVW", "*AC2", "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"), Op("INCD", "AC2"),
-            Op("INCD", "AC2"), Op("BTI", "*AC2", "AC0"), Op("SHLW", "AC0", "1"), Op("HTA", "*AC3", "*AC1", "AC0"),
+            Op("INCD", "AC2"), Op("BTI", "*AC2", "AC0"), Op("SLW", "AC0", "1"), Op("HTA", "*AC3", "*AC1", "AC0"),
             Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC1"), Op("INCD", "AC2"), Op("DECB", l.B(I)));
         yield return JumpIf("Reply item: more items", "Back to label 40 while items are left.", HandlerLabels.BuildItems, Op("LDB<>", l.B(I), "0"));
         yield return Always("Reply items done", "STATUS 00; finish the reply.", Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));

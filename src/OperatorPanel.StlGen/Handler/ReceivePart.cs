@@ -50,7 +50,7 @@ internal static class ReceivePart
         yield return Always(
             "Step 2: where the received BCC is",
             "The last binary byte: buffer byte 3 + count/2. AC1 points at it.",
-            Op("MOVD", l.Ptr(3), "AC1"), Op("BTI", l.B(0), "AC0"), Op("SHRW", "AC0", "1"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC1"));
+            Op("MOVD", l.Ptr(3), "AC1"), Op("BTI", l.B(0), "AC0"), Op("SRW", "AC0", "1"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC1"));
         yield return JumpIf("Step 2: block check", "Silence when the received BCC differs from the computed one.", silence, Op("LDB<>", "*AC1", l.B(Bcc)));
         yield return JumpIf(
             "Step 3: station address", $"This PLC is station {c.Options.Station}; a request for another station gets no reply.",

@@ -20,7 +20,7 @@ internal static class WritePart
         yield return JumpIf("WRITE: LENGTH 1-118", "Error 04.", e04, Op("LDB=", l.B(11), "0"), Op("OB>", l.B(11), "118"));
         yield return Always(
             "WRITE: expected length", "A WRITE of L bytes has 18 + 2L characters: AC0 = 18 + 2L, AC3 = count.",
-            Op("BTI", l.B(11), "AC0"), Op("SHLW", "AC0", "1"), Op("+I", "18", "AC0"), Op("BTI", l.B(0), "AC3"));
+            Op("BTI", l.B(11), "AC0"), Op("SLW", "AC0", "1"), Op("+I", "18", "AC0"), Op("BTI", l.B(0), "AC3"));
         yield return JumpIf("WRITE: body = 8 + LENGTH bytes", "Error 04.", e04, Op("LDW<>", "AC0", "AC3"));
         yield return Always(
             "WRITE: check the block", "One item from buffer byte 8 through the item checks of label 30.",
@@ -51,12 +51,12 @@ internal static class WritePart
         yield return Always(
             "WRITE: copy the data, read it back",
             "BMB the LENGTH data bytes from buffer byte 12 to the target; HTA them back as the reply from byte 10.",
-            Op("BMB", l.B(12), "*AC3", l.B(11)), Op("BTI", l.B(11), "AC0"), Op("SHLW", "AC0", "1"), Op("HTA", "*AC3", l.B(10), "AC0"),
+            Op("BMB", l.B(12), "*AC3", l.B(11)), Op("BTI", l.B(11), "AC0"), Op("SLW", "AC0", "1"), Op("HTA", "*AC3", l.B(10), "AC0"),
             Op("ITD", "AC0", "AC0"), Op("MOVD", l.Ptr(10), "AC1"), Op("+D", "AC0", "AC1"), Op("MOVB", "0", l.B(List)),
             Op("JMP", Dec(HandlerLabels.Finish)));
         yield return Label(HandlerLabels.WriteBitExecute, "WRITE BIT on the target byte");
         yield return JumpIf("WRITE BIT: BIT 0-7, VALUE 0-1", "Error 06.", HandlerLabels.ErrorBase + 6, Op("LDB>", l.B(N), "7"), Op("OB>", l.B(12), "1"));
-        yield return Always("WRITE BIT: bit mask", "D = 1 shifted left by BIT.", Op("MOVB", "1", l.B(D)), Op("SHLB", l.B(D), l.B(N)));
+        yield return Always("WRITE BIT: bit mask", "D = 1 shifted left by BIT.", Op("MOVB", "1", l.B(D)), Op("SLB", l.B(D), l.B(N)));
         yield return new NetworkBuilder("WRITE BIT: set", "VALUE 1: OR the mask into the byte; the other bits stay.")
             .Op("LDB=", l.B(12), "1").Op("ORB", l.B(D), "*AC3").Build();
         yield return new NetworkBuilder("WRITE BIT: reset", "VALUE 0: AND the inverted mask into the byte; the other bits stay.")

@@ -74,7 +74,7 @@ internal static class InstructionOperands
         string[] first =
         [
             "=", "=I", "S", "R", "SI", "RI", "SWAP", "INCB", "INCW", "INCD", "DECB", "DECW", "DECD", "INVB", "INVW", "INVD",
-            "SHLB", "SHRB", "SHLW", "SHRW", "SHLD", "SHRD", "SLB", "SRB", "SLW", "SRW", "SLD", "SRD",
+            "SLB", "SRB", "SLW", "SRW", "SLD", "SRD",
             "RLB", "RRB", "RLW", "RRW", "RLD", "RRD", "BCDI", "IBCD", "FOR", "RCV", "TODR", "NETR", "PID",
         ];
         string[] second =

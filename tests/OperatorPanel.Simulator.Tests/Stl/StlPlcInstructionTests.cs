@@ -56,7 +56,7 @@ public sealed class StlPlcInstructionTests
             "MOVB   255, VB8\nINCB   VB8\nMOVB   SMB1, VB13\n" +
             "MOVW   9, VW20\n/I     0, VW20\nMOVB   SMB1, VB14\n" +
             "MOVW   300, VW22\nITB    VW22, VB24\nMOVB   SMB1, VB15\n" +
-            "MOVB   16#81, VB25\nSHLB   VB25, 1\nMOVB   SMB1, VB16");
+            "MOVB   16#81, VB25\nSLB    VB25, 1\nMOVB   SMB1, VB16");
 
         var v = plc.Memory.V;
         (plc.Memory.ReadWord(ProtocolArea.V, 0), v[10]).Should().Be(((ushort)0x8000, (byte)0x06));
