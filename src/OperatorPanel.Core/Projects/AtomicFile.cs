@@ -6,10 +6,14 @@ namespace OperatorPanel.Core.Projects;
 /// <summary>
 /// File access for project files (and the panel's other saved files: layout, alarm history, generated code) with the environment's failures (missing folder, access denied, disk full, a file
 /// locked by another program) turned into messages. Writing never leaves a half-written target: the bytes go to a
-/// temporary file in the same folder (same volume, so the final step is a rename) and replace the target at once.
+/// temporary file in the same folder (same volume, so the final step is a rename) and replace the target at once;
+/// the previous content becomes TARGET.bak the same way, so after a crash at any point the target and the .bak are
+/// each a complete version.
 /// </summary>
 public static class AtomicFile
 {
+    private static readonly TimeSpan LeftoverAge = TimeSpan.FromMinutes(1);
+
     public static bool TryReadAll(string path, long maxBytes, [NotNullWhen(true)] out byte[]? bytes, [NotNullWhen(false)] out string? error)
     {
         bytes = null;
@@ -45,28 +49,24 @@ public static class AtomicFile
     public static bool TryWrite(string path, byte[] content, [NotNullWhen(false)] out string? error)
     {
         string? temporary = null;
+        string? backupCopy = null;
         try
         {
             var target = Path.GetFullPath(path);
-            temporary = Path.Combine(
-                Path.GetDirectoryName(target) ?? ".",
-                $".{Path.GetFileName(target)}.{Guid.NewGuid():N}.tmp");
-            using (var stream = new FileStream(temporary, FileMode.CreateNew, FileAccess.Write, FileShare.None))
-            {
-                stream.Write(content);
-                // Flush to the disk, not just the OS cache, before the rename makes the new content the file.
-                stream.Flush(flushToDisk: true);
-            }
+            var folder = Path.GetDirectoryName(target) ?? ".";
+            temporary = WriteTemporary(folder, target, content);
+            RemoveLeftovers(folder, target, temporary);
 
             if (File.Exists(target))
             {
-                File.Replace(temporary, target, target + ".bak", ignoreMetadataErrors: true);
-            }
-            else
-            {
-                File.Move(temporary, target);
+                // The .bak is made from a complete copy and renamed into place, so at every instant it is a whole
+                // earlier version (File.Replace on Linux unlinks the old .bak before linking the new one).
+                backupCopy = WriteTemporary(folder, target, File.ReadAllBytes(target));
+                File.Move(backupCopy, target + ".bak", overwrite: true);
+                backupCopy = null;
             }
 
+            File.Move(temporary, target, overwrite: true);
             temporary = null;
             error = null;
             return true;
@@ -78,9 +78,41 @@ public static class AtomicFile
         }
         finally
         {
-            if (temporary is not null)
+            foreach (var leftover in new[] { temporary, backupCopy })
             {
-                TryDelete(temporary);
+                if (leftover is not null)
+                {
+                    TryDelete(leftover);
+                }
+            }
+        }
+    }
+
+    /// <summary>A hidden file beside the target (same volume, so the final step is a rename), flushed to the disk.</summary>
+    private static string WriteTemporary(string folder, string target, byte[] content)
+    {
+        var temporary = Path.Combine(folder, $"{TemporaryPrefix(target)}{Guid.NewGuid():N}.tmp");
+        using var stream = new FileStream(temporary, FileMode.CreateNew, FileAccess.Write, FileShare.None);
+        stream.Write(content);
+        stream.Flush(flushToDisk: true);
+        return temporary;
+    }
+
+    private static string TemporaryPrefix(string target) => $".{Path.GetFileName(target)}.";
+
+    /// <summary>
+    /// Temporary files of this target left by a save that was killed. Only those a minute older than our own fresh
+    /// one go (timestamps of one file system, so no clock of ours is involved): a save running now in another
+    /// process keeps its file.
+    /// </summary>
+    private static void RemoveLeftovers(string folder, string target, string ours)
+    {
+        var cutoff = File.GetLastWriteTimeUtc(ours) - LeftoverAge;
+        foreach (var candidate in Directory.EnumerateFiles(folder, TemporaryPrefix(target) + "*.tmp"))
+        {
+            if (candidate != ours && File.GetLastWriteTimeUtc(candidate) < cutoff)
+            {
+                TryDelete(candidate);
             }
         }
     }
@@ -88,7 +120,7 @@ public static class AtomicFile
     private static bool IsEnvironmental(Exception ex) =>
         ex is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException or System.Security.SecurityException;
 
-    /// <summary>Best effort: a leftover hidden .tmp file beside the project is harmless, and the save already failed.</summary>
+    /// <summary>Best effort: a leftover hidden .tmp file beside the project is harmless; the next save removes it.</summary>
     private static void TryDelete(string path)
     {
         try
