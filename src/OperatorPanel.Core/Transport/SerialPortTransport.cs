@@ -5,9 +5,10 @@ namespace OperatorPanel.Core.Transport;
 
 /// <summary>
 /// The PC's serial port (PC/PPI cable, USB-RS485 adapter, FT232R radio module): a thin adapter over
-/// <see cref="SerialPort"/>, and the one file of the product that touches System.IO.Ports. Reads block in short
-/// ReadTimeout slices on a dedicated thread (on Windows the stream's async reads ignore ReadTimeout and cancellation);
-/// writes block on a second thread, so a reply can be sent while a read waits. Once the device has failed (unplugged
+/// <see cref="SerialPort"/>, and the one file of the product that touches System.IO.Ports. Reads run on a dedicated
+/// thread: on Windows blocking reads in short ReadTimeout slices (there the stream's async reads ignore ReadTimeout and
+/// cancellation); on Linux/macOS through <see cref="OutstandingStreamRead"/> (there the timed read can drop bytes).
+/// Writes block on a second thread, so a reply can be sent while a read waits. Once the device has failed (unplugged
 /// adapter, closed pty) every later call fails the same way: the library's Unix I/O loop stops for good after a
 /// hang-up, and later reads would otherwise just time out. Failures are <see cref="PlcCommunicationException"/> of
 /// kind <see cref="PlcErrorKind.PortUnavailable"/> naming the port (<see cref="SerialPortErrors"/>).
@@ -25,6 +26,7 @@ public sealed class SerialPortTransport : ITransport
     private SerialIoLane? _readLane;
     private SerialIoLane? _writeLane;
     private SerialPort? _port;
+    private OutstandingStreamRead? _unixRead;
     private string? _failure;
 
     public SerialPortTransport(SerialSettings settings)
@@ -53,6 +55,7 @@ public sealed class SerialPortTransport : ITransport
         try
         {
             _port = await readLane.Run(OpenPort).ConfigureAwait(false);
+            _unixRead = OperatingSystem.IsWindows() ? null : new OutstandingStreamRead(_port.BaseStream);
         }
         catch (PlcCommunicationException)
         {
@@ -98,7 +101,17 @@ public sealed class SerialPortTransport : ITransport
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(timeout, TimeSpan.Zero);
         var (port, lane) = Ensure(_readLane);
-        return RunOnLaneAsync(lane, token => ReadInSlices(port, buffer, timeout, token), cancellationToken);
+        return RunOnLaneAsync(lane, token =>
+        {
+            try
+            {
+                return _unixRead is { } unixRead ? unixRead.Read(buffer.Span, timeout, token) : ReadInSlices(port, buffer, timeout, token);
+            }
+            catch (Exception failure) when (SerialPortErrors.IsDeviceFailure(failure))
+            {
+                throw Fail(SerialPortErrors.Vanished(Name, "read", failure));
+            }
+        }, cancellationToken);
     }
 
     public void DiscardInput()
@@ -107,6 +120,7 @@ public sealed class SerialPortTransport : ITransport
         try
         {
             port.DiscardInBuffer();
+            _unixRead?.Discard();
         }
         catch (Exception failure) when (SerialPortErrors.IsDeviceFailure(failure))
         {
@@ -131,6 +145,7 @@ public sealed class SerialPortTransport : ITransport
         }
 
         _port?.Dispose();
+        _unixRead?.Forget();
         _closing.Dispose();
     }
 
@@ -215,8 +230,8 @@ public sealed class SerialPortTransport : ITransport
     };
 #pragma warning restore CS8524
 
-    /// <summary>Blocking reads of at most one slice each until a byte comes or <paramref name="timeout"/> passes.</summary>
-    private int ReadInSlices(SerialPort port, Memory<byte> buffer, TimeSpan timeout, CancellationToken cancellationToken)
+    /// <summary>Windows: blocking reads of at most one slice each until a byte comes or <paramref name="timeout"/> passes.</summary>
+    private static int ReadInSlices(SerialPort port, Memory<byte> buffer, TimeSpan timeout, CancellationToken cancellationToken)
     {
         var deadline = Environment.TickCount64 + (long)Math.Ceiling(timeout.TotalMilliseconds);
         while (true)
@@ -240,10 +255,6 @@ public sealed class SerialPortTransport : ITransport
             catch (TimeoutException)
             {
                 // One slice passed without a byte: look at cancellation and close, then wait on.
-            }
-            catch (Exception failure) when (SerialPortErrors.IsDeviceFailure(failure))
-            {
-                throw Fail(SerialPortErrors.Vanished(Name, "read", failure));
             }
         }
     }
