@@ -60,17 +60,45 @@ public sealed partial class ArchitectureTests
     }
 
     [Fact]
-    public void Sources_OnlyTheSerialTransportTalksToTheOsSerialApi()
+    public void Sources_OnlySerialPortTransportUsesSystemIoPorts()
     {
-        var src = Path.Combine(RepositoryRoot(), "src");
-        var offenders = Directory.EnumerateFiles(src, "*.cs", SearchOption.AllDirectories)
-            .Where(f => !f.Contains("/obj/", StringComparison.Ordinal) && !f.Contains("/bin/", StringComparison.Ordinal))
-            .Where(f => SerialApi().IsMatch(File.ReadAllText(f)))
-            .Select(f => Path.GetRelativePath(src, f).Replace('\\', '/'))
-            .Where(f => !f.StartsWith("OperatorPanel.Core/Transport/Serial", StringComparison.Ordinal))
+        var offenders = SourceFiles()
+            .Where(f => SerialPortApi().IsMatch(File.ReadAllText(f.Path)))
+            .Select(f => f.Relative)
             .ToList();
 
-        offenders.Should().BeEmpty("only Core/Transport/Serial* may open serial devices or P/Invoke the OS");
+        offenders.Should().Equal(["OperatorPanel.Core/Transport/SerialPortTransport.cs"], "only the serial transport adapter may touch System.IO.Ports");
+    }
+
+    [Fact]
+    public void Sources_NoPlatformInvoke()
+    {
+        var offenders = SourceFiles()
+            .Where(f => PlatformInvoke().IsMatch(File.ReadAllText(f.Path)))
+            .Select(f => f.Relative)
+            .ToList();
+
+        offenders.Should().BeEmpty("the serial port goes through System.IO.Ports, so no source calls the OS directly");
+    }
+
+    [Fact]
+    public void ProjectFiles_OnlyCoreReferencesSystemIoPorts()
+    {
+        var referencing = Directory.EnumerateFiles(RepositoryRoot(), "*.csproj", SearchOption.AllDirectories)
+            .Where(p => File.ReadAllText(p).Contains("\"System.IO.Ports\"", StringComparison.Ordinal))
+            .Select(Path.GetFileNameWithoutExtension)
+            .ToList();
+
+        referencing.Should().Equal(["OperatorPanel.Core"]);
+        ReferencedNames(typeof(PlcAddress).Assembly).Should().Contain("System.IO.Ports");
+    }
+
+    private static IEnumerable<(string Path, string Relative)> SourceFiles()
+    {
+        var src = Path.Combine(RepositoryRoot(), "src");
+        return Directory.EnumerateFiles(src, "*.cs", SearchOption.AllDirectories)
+            .Where(f => !f.Contains("/obj/", StringComparison.Ordinal) && !f.Contains("/bin/", StringComparison.Ordinal))
+            .Select(f => (f, Path.GetRelativePath(src, f).Replace('\\', '/')));
     }
 
     private static List<string> ReferencedNames(Assembly assembly) =>
@@ -90,6 +118,9 @@ public sealed partial class ArchitectureTests
     [GeneratedRegex("<ProjectReference\\s+Include=\"([^\"]+)\"")]
     private static partial Regex ProjectReference();
 
-    [GeneratedRegex(@"System\.IO\.Ports|DllImport|LibraryImport|SerialPort\b")]
-    private static partial Regex SerialApi();
+    [GeneratedRegex(@"System\.IO\.Ports|\bSerialPort\b")]
+    private static partial Regex SerialPortApi();
+
+    [GeneratedRegex(@"DllImport|LibraryImport|\bextern\b")]
+    private static partial Regex PlatformInvoke();
 }

@@ -5,9 +5,9 @@ using Microsoft.Win32;
 namespace OperatorPanel.Core.Transport;
 
 /// <summary>
-/// Windows: HKLM\HARDWARE\DEVICEMAP\SERIALCOMM lists every COM port present now (value data = "COM5"). The FTDI
+/// Windows: the COM ports present come from the serial library (HKLM\HARDWARE\DEVICEMAP\SERIALCOMM). The FTDI
 /// driver enumerates its devices under HKLM\SYSTEM\CurrentControlSet\Enum\FTDIBUS\VID_0403+PID_xxxx+serial\0000,
-/// whose "Device Parameters" key holds the PortName it was given.
+/// whose "Device Parameters" key holds the PortName it was given: that is what marks a port as FTDI.
 /// </summary>
 public static partial class SerialPortDiscovery
 {
@@ -15,15 +15,7 @@ public static partial class SerialPortDiscovery
     private static List<SerialPortInfo> ScanRegistry()
     {
         var ftdi = FtdiPortProducts();
-        using var map = Registry.LocalMachine.OpenSubKey(@"HARDWARE\DEVICEMAP\SERIALCOMM");
-        if (map is null)
-        {
-            return [];
-        }
-
-        return map.GetValueNames()
-            .Select(name => map.GetValue(name) as string)
-            .OfType<string>()
+        return SerialPortTransport.PortNamesPresent()
             .Distinct(StringComparer.OrdinalIgnoreCase)
             .Order(StringComparer.OrdinalIgnoreCase)
             .Select(port => ftdi.TryGetValue(port, out var product)

@@ -14,18 +14,18 @@ public static partial class SerialPortDiscovery
             return ScanRegistry();
         }
 
-        return OperatingSystem.IsLinux() ? ScanSysfs("/sys") : ScanDevCallOut("/dev");
+        return OperatingSystem.IsLinux() ? ScanSysfs("/sys") : CallOutDevices(SerialPortTransport.PortNamesPresent());
     }
 
     /// <summary>
-    /// macOS (and other Unix): the call-out devices /dev/cu.*. Their names do not identify the USB vendor reliably
-    /// (FTDI, Prolific and others all appear as cu.usbserial-*), so the vendor stays unknown.
+    /// macOS (and other Unix): the call-out devices /dev/cu.* (the /dev/tty.* twins wait for carrier on open). Their
+    /// names do not identify the USB vendor reliably (FTDI, Prolific and others all appear as cu.usbserial-*), so the
+    /// vendor stays unknown.
     /// </summary>
-    internal static IReadOnlyList<SerialPortInfo> ScanDevCallOut(string devRoot) =>
-        !Directory.Exists(devRoot)
-            ? []
-            : Directory.EnumerateFileSystemEntries(devRoot, "cu.*")
-                .Order(StringComparer.Ordinal)
-                .Select(path => new SerialPortInfo(path, null, null))
-                .ToList();
+    internal static IReadOnlyList<SerialPortInfo> CallOutDevices(IEnumerable<string> portNames) =>
+        portNames
+            .Where(name => name.StartsWith("/dev/cu.", StringComparison.Ordinal))
+            .Order(StringComparer.Ordinal)
+            .Select(path => new SerialPortInfo(path, null, null))
+            .ToList();
 }

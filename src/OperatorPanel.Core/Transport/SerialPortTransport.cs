@@ -1,15 +1,23 @@
-using OperatorPanel.Core.Transport.Serial;
+using System.IO.Ports;
+using PortParity = System.IO.Ports.Parity;
 
 namespace OperatorPanel.Core.Transport;
 
 /// <summary>
-/// The PC's serial port (PC/PPI cable, USB-RS485 adapter, FT232R radio module) driven through the OS directly:
-/// termios on Linux/macOS, kernel32 on Windows (the registry copy has no System.IO.Ports). Blocking device calls run
-/// on two dedicated threads, one for reads and one for writes; OS errors become
-/// <see cref="PlcCommunicationException"/> of kind <see cref="PlcErrorKind.PortUnavailable"/> naming the port.
+/// The PC's serial port (PC/PPI cable, USB-RS485 adapter, FT232R radio module): a thin adapter over
+/// <see cref="SerialPort"/>, and the one file of the product that touches System.IO.Ports. Reads run on a dedicated
+/// thread: on Windows blocking reads in short ReadTimeout slices (there the stream's async reads ignore ReadTimeout and
+/// cancellation); on Linux/macOS through <see cref="OutstandingStreamRead"/> (there the timed read can drop bytes).
+/// Writes block on a second thread, so a reply can be sent while a read waits. Once the device has failed (unplugged
+/// adapter, closed pty) every later call fails the same way: the library's Unix I/O loop stops for good after a
+/// hang-up, and later reads would otherwise just time out. Failures are <see cref="PlcCommunicationException"/> of
+/// kind <see cref="PlcErrorKind.PortUnavailable"/> naming the port (<see cref="SerialPortErrors"/>).
 /// </summary>
 public sealed class SerialPortTransport : ITransport
 {
+    /// <summary>Longest single blocking read: cancellation and close are noticed within this.</summary>
+    private const int ReadSliceMilliseconds = 50;
+
     /// <summary>Slack on top of twice the line time of a write, for USB scheduling and driver queues.</summary>
     private static readonly TimeSpan WriteSlack = TimeSpan.FromMilliseconds(500);
 
@@ -17,7 +25,9 @@ public sealed class SerialPortTransport : ITransport
     private readonly CancellationTokenSource _closing = new();
     private SerialIoLane? _readLane;
     private SerialIoLane? _writeLane;
-    private ISerialDevice? _device;
+    private SerialPort? _port;
+    private OutstandingStreamRead? _unixRead;
+    private string? _failure;
 
     public SerialPortTransport(SerialSettings settings)
     {
@@ -31,12 +41,12 @@ public sealed class SerialPortTransport : ITransport
 
     public string Name => _settings.PortName;
 
-    public bool IsOpen => _device is not null && !_closing.IsCancellationRequested;
+    public bool IsOpen => _port is not null && !_closing.IsCancellationRequested;
 
     public async Task OpenAsync(CancellationToken cancellationToken)
     {
         ObjectDisposedException.ThrowIf(_closing.IsCancellationRequested, this);
-        if (_device is not null)
+        if (_port is not null)
         {
             throw new InvalidOperationException($"{Name} is already open");
         }
@@ -44,7 +54,8 @@ public sealed class SerialPortTransport : ITransport
         var readLane = new SerialIoLane("serial read " + Name);
         try
         {
-            _device = await readLane.Run(OpenDevice).ConfigureAwait(false);
+            _port = await readLane.Run(OpenPort).ConfigureAwait(false);
+            _unixRead = OperatingSystem.IsWindows() ? null : new OutstandingStreamRead(_port.BaseStream);
         }
         catch (PlcCommunicationException)
         {
@@ -58,11 +69,30 @@ public sealed class SerialPortTransport : ITransport
 
     public Task WriteAsync(ReadOnlyMemory<byte> data, CancellationToken cancellationToken)
     {
-        var (device, lane) = Ensure(_writeLane);
+        var (port, lane) = Ensure(_writeLane);
         var timeout = (_settings.CharacterTime * data.Length * 2) + WriteSlack;
         return RunOnLaneAsync(lane, token =>
         {
-            device.Write(data.Span, timeout, token);
+            token.ThrowIfCancellationRequested();
+            var milliseconds = (int)Math.Ceiling(timeout.TotalMilliseconds);
+            if (port.WriteTimeout != milliseconds)
+            {
+                port.WriteTimeout = milliseconds;
+            }
+
+            try
+            {
+                port.BaseStream.Write(data.Span);
+            }
+            catch (TimeoutException)
+            {
+                throw Fail(SerialPortErrors.Unavailable(Name, $"write did not complete within {milliseconds} ms"));
+            }
+            catch (Exception failure) when (SerialPortErrors.IsDeviceFailure(failure))
+            {
+                throw Fail(SerialPortErrors.Vanished(Name, "write", failure));
+            }
+
             return data.Length;
         }, cancellationToken);
     }
@@ -70,11 +100,33 @@ public sealed class SerialPortTransport : ITransport
     public Task<int> ReadAsync(Memory<byte> buffer, TimeSpan timeout, CancellationToken cancellationToken)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(timeout, TimeSpan.Zero);
-        var (device, lane) = Ensure(_readLane);
-        return RunOnLaneAsync(lane, token => device.Read(buffer.Span, timeout, token), cancellationToken);
+        var (port, lane) = Ensure(_readLane);
+        return RunOnLaneAsync(lane, token =>
+        {
+            try
+            {
+                return _unixRead is { } unixRead ? unixRead.Read(buffer.Span, timeout, token) : ReadInSlices(port, buffer, timeout, token);
+            }
+            catch (Exception failure) when (SerialPortErrors.IsDeviceFailure(failure))
+            {
+                throw Fail(SerialPortErrors.Vanished(Name, "read", failure));
+            }
+        }, cancellationToken);
     }
 
-    public void DiscardInput() => Ensure(_readLane).Device.DiscardInput();
+    public void DiscardInput()
+    {
+        var (port, _) = Ensure(_readLane);
+        try
+        {
+            port.DiscardInBuffer();
+            _unixRead?.Discard();
+        }
+        catch (Exception failure) when (SerialPortErrors.IsDeviceFailure(failure))
+        {
+            throw Fail(SerialPortErrors.Vanished(Name, "discard input", failure));
+        }
+    }
 
     public async ValueTask DisposeAsync()
     {
@@ -92,23 +144,143 @@ public sealed class SerialPortTransport : ITransport
             }
         }
 
-        _device?.Dispose();
+        _port?.Dispose();
+        _unixRead?.Forget();
         _closing.Dispose();
     }
 
-    private ISerialDevice OpenDevice() =>
-        OperatingSystem.IsWindows() ? WindowsSerialDevice.Open(_settings) : UnixSerialDevice.Open(_settings);
+    /// <summary>The port names the OS publishes now, for <see cref="SerialPortDiscovery"/>; opens none.</summary>
+    internal static string[] PortNamesPresent() => SerialPort.GetPortNames();
 
-    private (ISerialDevice Device, SerialIoLane Lane) Ensure(SerialIoLane? lane)
+    /// <summary>
+    /// Opens and configures the port: raw bytes, no handshake. On Unix a failed open is tried once more, because the
+    /// library reads errno after formatting its message and so the first failure of a process can carry a stale errno
+    /// (seen: 203 for a missing path, ENOENT on the second try).
+    /// </summary>
+    private SerialPort OpenPort()
+    {
+        try
+        {
+            return OpenOnce();
+        }
+        catch (Exception first) when (SerialPortErrors.IsOpenFailure(first) && !OperatingSystem.IsWindows())
+        {
+            try
+            {
+                return OpenOnce();
+            }
+            catch (Exception second) when (SerialPortErrors.IsOpenFailure(second))
+            {
+                throw SerialPortErrors.OpenFailed(Name, second);
+            }
+        }
+        catch (Exception failure) when (SerialPortErrors.IsOpenFailure(failure))
+        {
+            throw SerialPortErrors.OpenFailed(Name, failure);
+        }
+    }
+
+    private SerialPort OpenOnce()
+    {
+        var port = new SerialPort();
+        try
+        {
+            port.PortName = Name;
+            port.BaudRate = _settings.BaudRate;
+            port.Parity = ToPortParity(_settings.Parity);
+            port.DataBits = _settings.DataBits;
+            port.StopBits = _settings.StopBits == 2 ? StopBits.Two : StopBits.One;
+            port.Handshake = Handshake.None;
+            port.ReadTimeout = ReadSliceMilliseconds;
+            port.Open();
+        }
+        catch (Exception failure) when (SerialPortErrors.IsOpenFailure(failure))
+        {
+            port.Dispose();
+            throw;
+        }
+
+        RaiseModemLines(port);
+        return port;
+    }
+
+    /// <summary>
+    /// Port-powered RS-232/RS-485 converters draw their supply from DTR and RTS, so both are raised. Pseudo-terminals
+    /// have no modem lines and refuse with ENOTTY; the link needs none, so that refusal is not an error.
+    /// </summary>
+    private static void RaiseModemLines(SerialPort port)
+    {
+        try
+        {
+            port.DtrEnable = true;
+            port.RtsEnable = true;
+        }
+        catch (IOException)
+        {
+            // No modem lines on this device (pty): bytes still flow.
+        }
+    }
+
+#pragma warning disable CS8524 // only named Parity values exist; a new one still fails the build here (CS8509)
+    private static PortParity ToPortParity(Parity parity) => parity switch
+    {
+        Parity.None => PortParity.None,
+        Parity.Even => PortParity.Even,
+        Parity.Odd => PortParity.Odd,
+    };
+#pragma warning restore CS8524
+
+    /// <summary>Windows: blocking reads of at most one slice each until a byte comes or <paramref name="timeout"/> passes.</summary>
+    private static int ReadInSlices(SerialPort port, Memory<byte> buffer, TimeSpan timeout, CancellationToken cancellationToken)
+    {
+        var deadline = Environment.TickCount64 + (long)Math.Ceiling(timeout.TotalMilliseconds);
+        while (true)
+        {
+            cancellationToken.ThrowIfCancellationRequested();
+            var remaining = deadline - Environment.TickCount64;
+            var slice = (int)Math.Clamp(remaining, 1, ReadSliceMilliseconds);
+            if (port.ReadTimeout != slice)
+            {
+                port.ReadTimeout = slice;
+            }
+
+            try
+            {
+                return port.BaseStream.Read(buffer.Span);
+            }
+            catch (TimeoutException) when (remaining <= ReadSliceMilliseconds)
+            {
+                return 0;
+            }
+            catch (TimeoutException)
+            {
+                // One slice passed without a byte: look at cancellation and close, then wait on.
+            }
+        }
+    }
+
+    private (SerialPort Port, SerialIoLane Lane) Ensure(SerialIoLane? lane)
     {
         if (_closing.IsCancellationRequested)
         {
             throw Closed();
         }
 
-        return _device is not null && lane is not null
-            ? (_device, lane)
+        if (_failure is { } failure)
+        {
+            throw new PlcCommunicationException(PlcErrorKind.PortUnavailable, null, failure);
+        }
+
+        return _port is not null && lane is not null
+            ? (_port, lane)
             : throw new InvalidOperationException($"{Name} is not open: call OpenAsync first");
+    }
+
+    /// <summary>Remembers the first device failure, so every later call reports it instead of timing out.</summary>
+    private PlcCommunicationException Fail(PlcCommunicationException failure)
+    {
+        Interlocked.CompareExchange(ref _failure, failure.Message, null);
+        return failure;
     }
 
     private async Task<T> RunOnLaneAsync<T>(SerialIoLane lane, Func<CancellationToken, T> operation, CancellationToken cancellationToken)

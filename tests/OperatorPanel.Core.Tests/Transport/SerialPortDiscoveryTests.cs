@@ -74,6 +74,14 @@ public sealed class SerialPortDiscoveryTests : IDisposable
         SerialPortDiscovery.ScanSysfs(Path.Combine(_root, "absent")).Should().BeEmpty();
     }
 
+    [Fact]
+    public void CallOutDevices_MacPortNames_KeepsOnlyCallOutDevicesInOrder()
+    {
+        var ports = SerialPortDiscovery.CallOutDevices(["/dev/tty.usbserial-A50285BI", "/dev/cu.usbserial-A50285BI", "/dev/cu.Bluetooth-Incoming-Port"]);
+
+        ports.Should().Equal(new SerialPortInfo("/dev/cu.Bluetooth-Incoming-Port", null, null), new SerialPortInfo("/dev/cu.usbserial-A50285BI", null, null));
+    }
+
     public void Dispose() => Directory.Delete(_root, recursive: true);
 
     private string Dir(string relative) => Directory.CreateDirectory(Path.Combine(_root, relative)).FullName;

@@ -1,10 +1,10 @@
 using System.Collections.Concurrent;
 
-namespace OperatorPanel.Core.Transport.Serial;
+namespace OperatorPanel.Core.Transport;
 
 /// <summary>
-/// One dedicated thread running blocking device calls in order, so a read waiting for its timeout never holds a
-/// thread-pool thread (the runtime's System.IO.Ports lesson: on Windows async reads ignore timeouts and cancellation).
+/// One dedicated thread running blocking port calls in order, so a read waiting out its timeout never holds a
+/// thread-pool thread (on Windows the serial stream's async reads ignore ReadTimeout and cancellation, so reads block).
 /// </summary>
 internal sealed class SerialIoLane
 {
