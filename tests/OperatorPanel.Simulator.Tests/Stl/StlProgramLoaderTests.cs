@@ -11,7 +11,7 @@ public sealed class StlProgramLoaderTests
     [Fact]
     public void Load_UnknownInstruction_ReportsNameAndLineAndGivesNoProgram()
     {
-        var result = Load("LD     SM0.0\nBIR    VB0, VB1");
+        var result = Load("LD     SM0.0\nBIR    IB0, VB1");
 
         result.Succeeded.Should().BeFalse();
         result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: BIR is not implemented by the simulator");
@@ -21,10 +21,10 @@ public sealed class StlProgramLoaderTests
     [InlineData("MOVB   VB0, VB2048", "VB2048")]
     [InlineData("MOVB   VW0, VB0", "is a word")]
     [InlineData("MOVB   VB0, SMB1", "read-only")]
-    [InlineData("MOVB   300, VB0", "not a byte constant")]
+    [InlineData("MOVB   300, VB0", "outside IN's range 0-255")]
     [InlineData("CALL   NOWHERE", "'NOWHERE' is not the name of a subroutine")]
     [InlineData("ATCH   INT_9, 23", "not the name of an interrupt routine")]
-    [InlineData("XMT    VB0, 1", "port number 0-0")]
+    [InlineData("XMT    VB0, 1", "the CPU 221 has no port 1")]
     [InlineData("JMP    4", "no LBL 4")]
     [InlineData("MOVW   T37, VW0", "timers")]
     [InlineData("MOVB   #x, VB0", "not declared")]
