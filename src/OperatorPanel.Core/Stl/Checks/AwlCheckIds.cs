@@ -12,7 +12,7 @@ public static class AwlCheckIds
     /// <summary>A compare whose relation STL does not write: LDW==, AB=&lt; (STL has =, &lt;&gt;, &lt;, &lt;=, &gt;, &gt;=).</summary>
     public const string CompareRelation = "AWL003";
 
-    /// <summary>ENI, DISI, HDEF, LSCR or END inside an interrupt routine.</summary>
+    /// <summary>ENI, DISI or HDEF inside an interrupt routine (END there is <see cref="WrongBlockKind"/>).</summary>
     public const string NotInInterruptRoutine = "AWL004";
 
     /// <summary>An instruction in a block kind it does not belong to: CRET outside a subroutine, CRETI outside an interrupt routine, END outside OB1.</summary>

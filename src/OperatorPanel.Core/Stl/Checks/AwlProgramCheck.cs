@@ -107,7 +107,7 @@ public static class AwlProgramCheck
         }
 
         return here == StlPlacement.InterruptRoutine && spec.Placement == (StlPlacement.Main | StlPlacement.Subroutine)
-            ? Refuse(AwlCheckIds.NotInInterruptRoutine, 0, $"{spec.Mnemonic} cannot be used in an interrupt routine ({block.Name}); the manual forbids DISI, ENI, HDEF, LSCR and END there")
+            ? Refuse(AwlCheckIds.NotInInterruptRoutine, 0, $"{spec.Mnemonic} cannot be used in an interrupt routine ({block.Name}); DISI, ENI, HDEF and END may not be used there")
             : Refuse(AwlCheckIds.WrongBlockKind, 0, $"{spec.Mnemonic} can only be used in {Where(spec.Placement)}, not in {block.Name} ({block.DefaultName})");
     }
 

@@ -18,7 +18,7 @@ public static partial class StlInstructionTable
         yield return Entry("FOR", Group.ProgramControl, StlSources.ForNext, WordInOut("INDX"), WordIn("INIT"), WordIn("FINAL"));
         yield return Entry("NEXT", Group.ProgramControl, StlSources.ForNext);
         var segment = new StlOperandSpec("S_bit", StlDataType.Bool, Kinds.S, StlAccess.ReadWrite);
-        yield return Entry("LSCR", Group.ProgramControl, StlSources.Scr, segment with { Access = StlAccess.Read }) with { Placement = StlPlacement.Main | StlPlacement.Subroutine };
+        yield return Entry("LSCR", Group.ProgramControl, StlSources.Scr, segment with { Access = StlAccess.Read });
         yield return Entry("SCRT", Group.ProgramControl, StlSources.Scr, segment);
         yield return Entry("SCRE", Group.ProgramControl, StlSources.Scr);
         yield return Entry("CSCRE", Group.ProgramControl, StlSources.Scr);

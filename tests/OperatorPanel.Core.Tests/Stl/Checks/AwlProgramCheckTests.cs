@@ -56,7 +56,6 @@ public sealed class AwlProgramCheckTests
     [InlineData("DISI")]
     [InlineData("HDEF   0, 1")]
     [InlineData("END")]
-    [InlineData("LSCR   S0.1")]
     public void Check_InstructionForbiddenInInterruptRoutines_IsRefusedThere(string instruction)
     {
         var found = Check("LD     SM0.0", instruction, inInterrupt: true);
