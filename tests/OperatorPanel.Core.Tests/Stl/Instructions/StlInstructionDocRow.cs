@@ -23,14 +23,21 @@ internal static class StlInstructionDocRow
 
     private static string Operand(StlOperandSpec o)
     {
-        var access = o.Access switch { StlAccess.Read => "r", StlAccess.Write => "w", _ => "rw" };
+        var access = o.Access switch
+        {
+            StlAccess.Read => "r",
+            StlAccess.Write => "w",
+            StlAccess.ReadWrite => "rw",
+            _ => throw new ArgumentOutOfRangeException(nameof(o), o.Access, null),
+        };
         var range = o.Min is { } min && o.Max is { } max ? string.Create(CultureInfo.InvariantCulture, $" {min}..{max}") : string.Empty;
         var extent = o.Extent switch
         {
             StlExtent.One => o.Length > 1 ? string.Create(CultureInfo.InvariantCulture, $" x{o.Length}") : string.Empty,
             StlExtent.Count => " xN",
             StlExtent.HalfCount => " x(N+1)/2",
-            _ => " x|N|",
+            StlExtent.AbsoluteCount => " x|N|",
+            _ => throw new ArgumentOutOfRangeException(nameof(o), o.Extent, null),
         };
         return $"{o.Name} {o.Type.ToString().ToUpperInvariant()} {access}{extent}: {StlOperandKindsText.Describe(o)}{range}";
     }
@@ -41,11 +48,15 @@ internal static class StlInstructionDocRow
         return bits == StlStatusBits.None ? "-" : string.Join(" ", set);
     }
 
-    private static string Placement(StlPlacement placement) => placement switch
+    private static string Placement(StlPlacement placement)
     {
-        StlPlacement.None => "never (Micro/WIN adds it)",
-        StlPlacement.Anywhere => "any",
-        _ => string.Join(", ", new[] { (StlPlacement.Main, "OB1"), (StlPlacement.Subroutine, "SBR"), (StlPlacement.InterruptRoutine, "INT") }
-            .Where(p => placement.HasFlag(p.Item1)).Select(p => p.Item2)),
-    };
+        if (placement == StlPlacement.None)
+        {
+            return "never (Micro/WIN adds it)";
+        }
+
+        return placement == StlPlacement.Anywhere ? "any"
+            : string.Join(", ", new[] { (StlPlacement.Main, "OB1"), (StlPlacement.Subroutine, "SBR"), (StlPlacement.InterruptRoutine, "INT") }
+                .Where(p => placement.HasFlag(p.Item1)).Select(p => p.Item2));
+    }
 }
