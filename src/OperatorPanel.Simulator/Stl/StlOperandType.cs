@@ -18,6 +18,9 @@ internal enum StlOperandType
     /// <summary>A word in memory that BMW starts at: no constant.</summary>
     WordArea,
 
+    /// <summary>A double word in memory that BMD starts at: no constant.</summary>
+    DWordArea,
+
     /// <summary>A label number 0-255 (JMP, LBL).</summary>
     Label,
 
@@ -29,4 +32,10 @@ internal enum StlOperandType
 
     /// <summary>A port number 0 or 1 (RCV, XMT).</summary>
     Port,
+
+    /// <summary>The timer itself, T0-T255 (TON, TONR, TOF).</summary>
+    Timer,
+
+    /// <summary>The counter itself, C0-C255 (CTU, CTD, CTUD).</summary>
+    Counter,
 }

@@ -11,7 +11,7 @@ public sealed class StlProgramLoaderTests
     [Fact]
     public void Load_UnknownInstruction_ReportsNameAndLineAndGivesNoProgram()
     {
-        var result = Load("LD     SM0.0\nBIR    VB0, VB1");
+        var result = Load("LD     SM0.0\nBIR    IB0, VB1");
 
         result.Succeeded.Should().BeFalse();
         result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: BIR is not implemented by the simulator");
@@ -21,10 +21,10 @@ public sealed class StlProgramLoaderTests
     [InlineData("MOVB   VB0, VB2048", "VB2048")]
     [InlineData("MOVB   VW0, VB0", "is a word")]
     [InlineData("MOVB   VB0, SMB1", "read-only")]
-    [InlineData("MOVB   300, VB0", "not a byte constant")]
+    [InlineData("MOVB   300, VB0", "outside IN's range 0-255")]
     [InlineData("CALL   NOWHERE", "'NOWHERE' is not the name of a subroutine")]
     [InlineData("ATCH   INT_9, 23", "not the name of an interrupt routine")]
-    [InlineData("XMT    VB0, 1", "port number 0-0")]
+    [InlineData("XMT    VB0, 1", "the CPU 221 has no port 1")]
     [InlineData("JMP    4", "no LBL 4")]
     [InlineData("MOVW   T37, VW0", "timers")]
     [InlineData("MOVB   #x, VB0", "not declared")]
@@ -48,5 +48,32 @@ public sealed class StlProgramLoaderTests
         var result = StlProgramLoader.Load("NONSENSE\r\n" + StlTestPrograms.Text("XYZ"), CpuProfiles.For(CpuModel.Cpu224));
 
         result.Diagnostics.Select(d => d.Line).Should().Equal(1, 5);
+    }
+
+    [Fact]
+    public void Load_NumericPouReferences_ReachTheNumberedBlocks()
+    {
+        const string blocks = "SUBROUTINE_BLOCK MY_SUB:SBR3\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\n=      M0.0\r\nEND_SUBROUTINE_BLOCK\r\n"
+            + "INTERRUPT_BLOCK MY_INT:INT2\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\n=      M0.1\r\nEND_INTERRUPT_BLOCK\r\n";
+
+        var result = Load("LD     SM0.0\nCALL   SBR3\nATCH   INT2, 10\nENI", blocks);
+
+        result.Diagnostics.Should().BeEmpty();
+    }
+
+    [Fact]
+    public void Load_WhatMicroWinRefuses_IsReportedOnceWithItsId()
+    {
+        var result = Load("LD     SM0.0\nSHLW   VW0, 1");
+
+        result.Diagnostics.Should().ContainSingle().Which.ToString().Should().Be("line 5: AWL001 SHLW is not an S7-200 STL instruction (see docs/stl-instructions.md)");
+    }
+
+    [Fact]
+    public void Load_TableInstructionTheSimulatorDoesNotExecute_IsRefusedByNameAndLine()
+    {
+        var result = Load("LD     SM0.0\nNETR   VB0, 0");
+
+        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: NETR is not implemented by the simulator");
     }
 }
