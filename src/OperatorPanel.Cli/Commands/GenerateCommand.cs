@@ -1,7 +1,7 @@
 using System.Collections.Immutable;
 using System.CommandLine;
 using System.Text;
-using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Freeport;

@@ -79,5 +79,5 @@ internal static class ReadCommand
 
     internal static PollPlan PlanFor(LinkTarget target, IEnumerable<PlcAddress> addresses) => PollPlanner.Build(
         addresses.Select(a => new WatchedItem(target.Station, a)),
-        target.Cpu is null ? null : new Dictionary<Core.Link.Station, Core.Cpu.CpuProfile> { [target.Station] = target.Cpu });
+        target.Cpu is null ? null : new Dictionary<Core.Addressing.Station, Core.Cpu.CpuProfile> { [target.Station] = target.Cpu });
 }

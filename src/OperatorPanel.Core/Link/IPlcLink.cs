@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Core.Link;

@@ -1,4 +1,5 @@
 using System.Collections.Concurrent;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 using Serilog;

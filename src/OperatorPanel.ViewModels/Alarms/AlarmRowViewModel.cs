@@ -1,5 +1,5 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Alarms;
-using OperatorPanel.Core.Link;
 using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Alarms;

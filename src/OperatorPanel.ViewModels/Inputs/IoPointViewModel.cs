@@ -1,5 +1,4 @@
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Mvvm;

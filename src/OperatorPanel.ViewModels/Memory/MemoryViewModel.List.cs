@@ -119,7 +119,7 @@ public sealed partial class MemoryViewModel
         var tags = cell.Station.Tags;
         var index = tags.IndexOf(cell.Tag);
         var next = index + 1 < tags.Length ? tags[index + 1] : index > 0 ? tags[index - 1] : null;
-        var select = next is null ? ((Core.Link.Station, string)?)null : (cell.Station.Address, next.Symbol);
+        var select = next is null ? ((Core.Addressing.Station, string)?)null : (cell.Station.Address, next.Symbol);
         await ApplyEditAsync(ProjectEdits.WithTags(_session.Project, cell.Station.Address, tags.RemoveAt(index)), select, _session.StatusLine.ShowError);
     }
 

@@ -1,6 +1,6 @@
 using System.Collections.ObjectModel;
 using System.ComponentModel;
-using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;

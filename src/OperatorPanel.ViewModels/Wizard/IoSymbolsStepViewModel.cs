@@ -129,7 +129,7 @@ public sealed class IoSymbolsStepViewModel : WizardStepViewModel
 
     private void FillLocalPoints()
     {
-        var starter = StarterProject.Create(string.Empty, _cpu(), new Core.Link.Station(2), "COM1").Stations[0];
+        var starter = StarterProject.Create(string.Empty, _cpu(), new Core.Addressing.Station(2), "COM1").Stations[0];
         Inputs.Clear();
         Outputs.Clear();
         foreach (var input in starter.Inputs)
