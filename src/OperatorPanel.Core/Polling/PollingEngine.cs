@@ -32,7 +32,6 @@ public sealed partial class PollingEngine
     private TimeSpan _minimumPeriod = TimeSpan.FromMilliseconds(100);
     private PollResult? _lastResult;
     private int _running;
-    private int _sequence;
 
     public PollingEngine(IPlcLink link, PollPlan plan, TimeProvider? timeProvider = null, ILogger? logger = null)
     {
@@ -103,8 +102,6 @@ public sealed partial class PollingEngine
         _wake.Set();
         return waiter.Task;
     }
-
-    private byte NextSequence() => (byte)Interlocked.Increment(ref _sequence);
 
     private void Publish(List<ValueChange> changes)
     {
