@@ -23,7 +23,6 @@ public sealed partial class ProjectLine : IAsyncDisposable
     private readonly ILogger _logger;
     private readonly List<Bus> _buses = [];
     private LineConnection? _connection;
-    private ILineConnector? _connector;
     private RefreshMode _mode;
 
     public ProjectLine(PanelProject project, ProjectLineOptions? options = null, TimeProvider? time = null, ILogger? logger = null)
@@ -70,7 +69,7 @@ public sealed partial class ProjectLine : IAsyncDisposable
             _buses.Add(new Bus(bus, Start(bus, link)));
         }
 
-        (_connector, _connection) = (connector, connection);
+        _connection = connection;
         PushAll();
     }
 
@@ -115,25 +114,21 @@ public sealed partial class ProjectLine : IAsyncDisposable
 
     /// <summary>
     /// Takes an edited version of the same project (memory cells added, removed, moved, reformatted). While connected,
-    /// each bus whose watch list changed gets a new engine on its open link (the link and its counters carry over); a
-    /// changed set of ports or stations reconnects.
+    /// each bus whose watch list changed gets a new engine on its open link (the link and its counters carry over). A
+    /// changed set of ports or stations (<see cref="SameStations"/> false) needs other ports: disconnect first.
     /// </summary>
     public async Task EditAsync(PanelProject edited)
     {
         ArgumentNullException.ThrowIfNull(edited);
-        var sameStations = SameStations(Project, edited);
+        if (IsConnected && !SameStations(Project, edited))
+        {
+            throw new InvalidOperationException("the edit changes ports or stations: disconnect before applying it");
+        }
+
         Project = edited;
         if (!IsConnected)
         {
             PushAll();
-            return;
-        }
-
-        if (!sameStations)
-        {
-            var connector = _connector!;
-            await DisconnectAsync().ConfigureAwait(false);
-            await ConnectAsync(connector).ConfigureAwait(false);
             return;
         }
 
@@ -189,7 +184,8 @@ public sealed partial class ProjectLine : IAsyncDisposable
 
     private Bus? BusOf(Station station) => _buses.FirstOrDefault(b => b.Project.StationAt(station) is not null);
 
-    private static bool SameStations(PanelProject a, PanelProject b) =>
+    /// <summary>True when <paramref name="b"/> keeps <paramref name="a"/>'s stations, CPUs and ports: an edit the running line can follow.</summary>
+    public static bool SameStations(PanelProject a, PanelProject b) =>
         a.Stations.Select(s => (s.Name, s.Address, s.Cpu, s.Link)).SequenceEqual(b.Stations.Select(s => (s.Name, s.Address, s.Cpu, s.Link)));
 
     /// <summary>A bus of the project and, while connected, its running line.</summary>

@@ -1,7 +1,7 @@
 using System.Collections.ObjectModel;
 using System.Globalization;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Transport;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Wizard;
 

@@ -1,7 +1,8 @@
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Wizard;
 

@@ -56,14 +56,14 @@ public sealed class PanelSessionTests : IAsyncDisposable
         var station = _panel.Session.Stations.Single();
         station.Health.Should().Be(StationHealth.Offline);
         station.HealthText.Should().Contain("PortUnavailable").And.Contain("COM7");
-        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var stale).Should().BeTrue();
+        _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var stale).Should().BeTrue();
         stale.Quality.Should().Be(ValueQuality.Stale);
 
         _panel.Transport.Vanished = false;
         await _panel.RefreshAsync();
 
         station.Health.Should().Be(StationHealth.Online);
-        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var good).Should().BeTrue();
+        _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var good).Should().BeTrue();
         good.Quality.Should().Be(ValueQuality.Good);
     }
 
@@ -120,7 +120,7 @@ public sealed class PanelSessionTests : IAsyncDisposable
 
         _panel.Session.IsConnected.Should().BeFalse();
         _panel.Session.Stations.Single().Health.Should().Be(StationHealth.Unknown);
-        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out _).Should().BeFalse();
+        _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out _).Should().BeFalse();
     }
 
     public async ValueTask DisposeAsync() => await _panel.DisposeAsync();
