@@ -12,9 +12,12 @@ namespace OperatorPanel.Core.Line;
 /// <summary>
 /// A project's line. While connected, each <see cref="ProjectBus"/> (the stations on one serial port) has a transport
 /// from the <see cref="ILineConnector"/>, a <see cref="PlcLink"/> over it and a <see cref="PollingEngine"/> looping on
-/// the link (<see cref="BusLine"/>). A value travels one way: transport → link → engine → <see cref="ILineValues"/>
-/// subscribers. The panel's session and <c>opanel watch</c> both open their line here. Connect, disconnect and edits
-/// run on one thread (the UI thread in the panel); the loops run on their own.
+/// the link (<see cref="BusLine"/>). A value travels one way: the transport's bytes → <see cref="PlcLink"/> (FrameReader,
+/// ResponseCodec: the reply to the link's own sequence number) → <see cref="PollingEngine"/> (ValueStore: a
+/// <see cref="ValueChange"/> batch per cycle) → this line, which routes each change by <see cref="WatchedItem"/> to the
+/// <see cref="ILineValues"/> subscribers of that address only, through <see cref="ProjectLineOptions.Deliver"/> (the UI
+/// dispatcher in the panel). The panel's session and <c>opanel watch</c> both open their line here. Connect, disconnect
+/// and edits run on one thread (the UI thread in the panel); the loops run on their own.
 /// </summary>
 public sealed partial class ProjectLine : IAsyncDisposable
 {
