@@ -3,6 +3,7 @@ using System.Windows;
 using System.Windows.Threading;
 using Microsoft.Extensions.DependencyInjection;
 using OperatorPanel.App.Services;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.ViewModels.Docking;
 using OperatorPanel.ViewModels.Services;
@@ -48,7 +49,7 @@ public partial class App : Application
         }
         else if (e.Args.Contains("--demo") || SerialPortDiscovery.List().Count == 0)
         {
-            await shell.DemoCommand.ExecuteAsync();
+            await shell.DemoCommand.ExecuteAsync(null);
         }
     }
 

@@ -32,6 +32,45 @@ public sealed partial class ArchitectureTests
     }
 
     [Theory]
+    [InlineData("Protocol", "Link")]
+    [InlineData("Protocol", "Transport")]
+    [InlineData("Transport", "Link")]
+    [InlineData("Transport", "Protocol")]
+    [InlineData("Link", "Polling")]
+    [InlineData("Link", "Line")]
+    [InlineData("Polling", "Line")]
+    public void CoreFolders_TheWireLayersDoNotImportTheLayersAboveThem(string folder, string above)
+    {
+        var core = Path.Combine(RepositoryRoot(), "src", "OperatorPanel.Core");
+        var importing = Directory.EnumerateFiles(Path.Combine(core, folder), "*.cs")
+            .Where(f => File.ReadAllText(f).Contains($"OperatorPanel.Core.{above}", StringComparison.Ordinal) || File.ReadAllText(f).Contains($" {above}.", StringComparison.Ordinal))
+            .Select(Path.GetFileName);
+
+        importing.Should().BeEmpty($"Core/{folder} sits below Core/{above} (one direction: transport, link, polling, line)");
+    }
+
+    [Fact]
+    public void ViewModels_ReferenceCoreAndStlGenOnly()
+    {
+        var assemblies = ReferencedNames(Assembly.Load("OperatorPanel.ViewModels")).Where(r => r.StartsWith("OperatorPanel.", StringComparison.Ordinal));
+        var projects = ProjectReferencesOf("src/OperatorPanel.ViewModels/OperatorPanel.ViewModels.csproj");
+
+        // StlGen: Generate PLC code builds the StlGen HandlerPackage, the same one `opanel generate` writes.
+        assemblies.Should().BeSubsetOf(["OperatorPanel.Core", "OperatorPanel.StlGen"]);
+        projects.Should().BeSubsetOf(["OperatorPanel.Core", "OperatorPanel.StlGen"], "the view models never see the simulator, the CLI or the app");
+    }
+
+    [Fact]
+    public void ProjectFiles_OnlyTheViewModelsUseTheMvvmToolkit()
+    {
+        var users = Directory.EnumerateFiles(Path.Combine(RepositoryRoot(), "src"), "*.csproj", SearchOption.AllDirectories)
+            .Where(p => File.ReadAllText(p).Contains("\"CommunityToolkit.Mvvm\"", StringComparison.Ordinal))
+            .Select(Path.GetFileNameWithoutExtension);
+
+        users.Should().Equal("OperatorPanel.ViewModels");
+    }
+
+    [Theory]
     [InlineData("OperatorPanel.StlGen")]
     [InlineData("OperatorPanel.Simulator")]
     public void StlGenAndSimulator_DependOnCoreOnly(string assembly)
@@ -100,6 +139,10 @@ public sealed partial class ArchitectureTests
             .Where(f => !f.Contains("/obj/", StringComparison.Ordinal) && !f.Contains("/bin/", StringComparison.Ordinal))
             .Select(f => (f, Path.GetRelativePath(src, f).Replace('\\', '/')));
     }
+
+    private static List<string> ProjectReferencesOf(string relativePath) =>
+        [.. ProjectReference().Matches(File.ReadAllText(Path.Combine(RepositoryRoot(), relativePath)))
+            .Select(m => Path.GetFileNameWithoutExtension(m.Groups[1].Value.Replace('\\', '/')))];
 
     private static List<string> ReferencedNames(Assembly assembly) =>
         assembly.GetReferencedAssemblies().Select(a => a.Name ?? string.Empty).ToList();

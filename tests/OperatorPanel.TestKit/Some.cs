@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
@@ -13,7 +14,7 @@ public static class Some
     private static int _counter;
 
     /// <summary>A station 1-126, different on each call (cycling).</summary>
-    public static Station Station() => new((Next() % Core.Link.Station.Max) + 1);
+    public static Station Station() => new((Next() % Core.Addressing.Station.Max) + 1);
 
     /// <summary>A CPU profile; CPU 224 Current (the most common one) unless the test names another.</summary>
     public static CpuProfile Cpu(CpuModel model = CpuModel.Cpu224, CpuRevision revision = CpuRevision.Current) =>

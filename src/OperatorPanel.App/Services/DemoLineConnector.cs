@@ -1,4 +1,5 @@
 using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
@@ -6,7 +7,6 @@ using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 using OperatorPanel.StlGen;
 using OperatorPanel.StlGen.Options;
-using OperatorPanel.ViewModels.Session;
 using Serilog;
 
 namespace OperatorPanel.App.Services;

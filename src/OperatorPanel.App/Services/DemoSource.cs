@@ -1,4 +1,5 @@
 using System.IO;
+using OperatorPanel.Core.Line;
 using OperatorPanel.ViewModels.Session;
 using Serilog;
 

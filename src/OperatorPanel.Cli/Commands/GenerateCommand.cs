@@ -1,7 +1,6 @@
 using System.Collections.Immutable;
 using System.CommandLine;
-using System.Text;
-using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Freeport;
@@ -73,59 +72,34 @@ internal static class GenerateCommand
                 FirstSubroutine = parse.GetValue(sbr),
                 FirstInterrupt = parse.GetValue(interrupt),
             };
-            var stem = GenerateSettings.FileStem(chosen);
-            var result = HandlerGenerator.Generate(options);
-            var extra = new List<(string Name, string Text)>();
-            var mergeWarnings = new List<object>();
-            if (result.Ok && parse.GetValue(merge) is { } userPath)
+            string? userProgram = null;
+            var userPath = parse.GetValue(merge);
+            if (userPath is not null && !HandlerPackage.TryReadProgram(userPath, out userProgram, out error))
             {
-                if (GenerateMerge.TryMerge(cli, userPath, options, out var merged, out var warnings) is { } failed)
-                {
-                    return failed;
-                }
-
-                extra.Add(($"{stem}-merged.awl", merged));
-                mergeWarnings.AddRange(warnings.Select(w => GenerateMerge.Json(Path.GetFileName(userPath), w)));
+                return cli.Fail(ExitCodes.BadInput, error);
             }
 
-            return Write(cli, stem, parse.GetValue(output)!, options, result, extra, mergeWarnings, parse.GetValue(stats));
+            var package = HandlerPackage.Generate(options, HandlerPackage.FileStem(chosen), userProgram);
+            if (!package.Handler.Ok)
+            {
+                GenerateView.WriteRefused(cli, package.Handler.Diagnostics);
+                return ExitCodes.GeneratorRefused;
+            }
+
+            var warnings = package.Merge is { } merged ? GenerateMerge.Report(cli, Path.GetFileName(userPath!), merged) : [];
+            return package.Ok ? Write(cli, parse.GetValue(output)!, options, package, warnings, parse.GetValue(stats)) : ExitCodes.GeneratorRefused;
         });
         return command;
     }
 
-    private static int Write(CliContext cli, string stem, string folder, HandlerOptions options, HandlerGenerationResult result, List<(string Name, string Text)> extra, List<object> warnings, bool withStats)
+    private static int Write(CliContext cli, string folder, HandlerOptions options, HandlerPackage package, List<object> warnings, bool withStats)
     {
-        if (!result.Ok)
+        if (!package.TryWrite(folder, out var written, out var error))
         {
-            GenerateView.WriteRefused(cli, result.Diagnostics);
-            return ExitCodes.GeneratorRefused;
+            return cli.Fail(ExitCodes.BadInput, error);
         }
 
-        var files = new (string Name, string Text)[]
-        {
-            ($"{stem}-handler.awl", result.AwlText), ($"{stem}-symbols.txt", result.SymbolTableText), ($"{stem}-README.txt", result.TechnicianText),
-        }.Concat(extra);
-        try
-        {
-            Directory.CreateDirectory(folder);
-        }
-        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
-        {
-            return cli.Fail(ExitCodes.BadInput, $"cannot create {folder}: {ex.Message}");
-        }
-
-        var written = new List<string>();
-        foreach (var (name, text) in files)
-        {
-            var path = Path.Combine(folder, name);
-            if (!AtomicFile.TryWrite(path, Encoding.ASCII.GetBytes(text), out var error))
-            {
-                return cli.Fail(ExitCodes.BadInput, $"{path}: {error}");
-            }
-
-            written.Add(path);
-        }
-
+        var (stem, result) = (package.Stem, package.Handler);
         cli.Log.Information("Generated the handler for {Stem}: {Files}", stem, written);
         var measured = ImmutableArray<MeasuredRequest>.Empty;
         if (withStats && !HandlerMeasurement.TryMeasure(result.AwlText, options.Cpu, options.Port, new Station(options.Station),
@@ -134,7 +108,7 @@ internal static class GenerateCommand
             return cli.Fail(ExitCodes.GeneratorRefused, $"the generated handler did not run in the interpreter: {failed}");
         }
 
-        GenerateView.WriteDone(cli, written, result.Stats!, withStats, measured, warnings);
+        GenerateView.WriteDone(cli, [.. written], result.Stats!, withStats, measured, warnings);
         return ExitCodes.Ok;
     }
 

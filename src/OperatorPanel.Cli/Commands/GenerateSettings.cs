@@ -76,13 +76,6 @@ internal static class GenerateSettings
         return true;
     }
 
-    /// <summary>A station name as part of a file name: letters, digits, '-' and '_' kept, anything else '_'.</summary>
-    public static string FileStem(ProjectStation station)
-    {
-        var chars = station.Name.Select(c => char.IsAsciiLetterOrDigit(c) || c is '-' or '_' ? c : '_').ToArray();
-        return chars.Length == 0 ? "station" + station.Address.Address.ToString(CultureInfo.InvariantCulture) : new string(chars);
-    }
-
     private static string Names(PanelProject project) =>
         string.Join(", ", project.Stations.Select(s => $"{s.Name} ({s.Address.Address.ToString(CultureInfo.InvariantCulture)})"));
 }

@@ -34,7 +34,7 @@ internal static class IdentifyCommand
             PlcResponse response;
             try
             {
-                response = await session.Link.ExchangeAsync(new IdentifyRequest(target.Station, 1), cancellationToken);
+                response = await session.Link.ExchangeAsync(new IdentifyRequest(target.Station), cancellationToken);
             }
             catch (PlcCommunicationException ex)
             {

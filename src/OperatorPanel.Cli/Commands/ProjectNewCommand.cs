@@ -1,5 +1,5 @@
 using System.CommandLine;
-using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.Cli.Commands;

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 
 namespace OperatorPanel.Cli.Commands;
@@ -56,7 +57,7 @@ internal static class ReadCommand
         }
 
         await using var session = opened;
-        await using var run = EngineRun.OnDemand(session.Link, PlanFor(target, addresses), cli.Log);
+        await using var run = BusLine.OnDemand(session.Link, PlanFor(target, addresses), TimeProvider.System, cli.Log);
         await run.Engine.RequestRefreshAsync(cancellationToken);
         var status = run.Engine.GetStationStatus(target.Station);
         if (status.State != StationState.Online)
@@ -79,5 +80,5 @@ internal static class ReadCommand
 
     internal static PollPlan PlanFor(LinkTarget target, IEnumerable<PlcAddress> addresses) => PollPlanner.Build(
         addresses.Select(a => new WatchedItem(target.Station, a)),
-        target.Cpu is null ? null : new Dictionary<Core.Link.Station, Core.Cpu.CpuProfile> { [target.Station] = target.Cpu });
+        target.Cpu is null ? null : new Dictionary<Core.Addressing.Station, Core.Cpu.CpuProfile> { [target.Station] = target.Cpu });
 }

@@ -1,7 +1,7 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Hosting;
 using OperatorPanel.Cli.Link;
-using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 
 namespace OperatorPanel.Cli.Commands;
@@ -60,7 +61,7 @@ internal static class WriteCommand
         }
 
         await using var session = opened;
-        await using var run = EngineRun.OnDemand(session.Link, ReadCommand.PlanFor(target, items.Select(i => i.Address)), cli.Log);
+        await using var run = BusLine.OnDemand(session.Link, ReadCommand.PlanFor(target, items.Select(i => i.Address)), TimeProvider.System, cli.Log);
         await run.Engine.RequestRefreshAsync(cancellationToken);
         var status = run.Engine.GetStationStatus(target.Station);
         if (status.State != StationState.Online)

@@ -1,6 +1,6 @@
 using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;

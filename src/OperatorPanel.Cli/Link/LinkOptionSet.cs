@@ -62,7 +62,7 @@ internal sealed class LinkOptionSet
             return false;
         }
 
-        if (!Core.Link.Station.TryCreate(parse.GetValue(Station), out var station, out error)
+        if (!Core.Addressing.Station.TryCreate(parse.GetValue(Station), out var station, out error)
             || !_serial.TryBind(parse, demo ? DemoPort : null, out var serial, out error))
         {
             return false;

@@ -1,4 +1,5 @@
 using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
@@ -38,12 +39,17 @@ internal sealed class LinkSession : IAsyncDisposable
         }
 
         ITransport transport = demo is null ? new SerialPortTransport(serial) : demo.PanelSide;
-        var options = LinkOptions.For(serial);
-        options = scanAllowance is { } scan ? options with { ScanAllowance = scan } : options;
-        options = demo is null ? options : options with { ScanAllowance = options.ScanAllowance + DemoLine.HostAllowance };
-        session = new LinkSession(new PlcLink(transport, options, TimeProvider.System, log), demo);
+        session = new LinkSession(new PlcLink(transport, OptionsFor(serial, scanAllowance, demo is not null), TimeProvider.System, log), demo);
         error = null;
         return true;
+    }
+
+    /// <summary>The medium's link options, with the scan time allowed for (--scan-ms) and, on a demo line, its host allowance.</summary>
+    public static LinkOptions OptionsFor(SerialSettings serial, TimeSpan? scanAllowance, bool demo)
+    {
+        var options = LinkOptions.For(serial);
+        options = scanAllowance is { } scan ? options with { ScanAllowance = scan } : options;
+        return demo ? options with { ScanAllowance = options.ScanAllowance + DemoLine.HostAllowance } : options;
     }
 
     public static bool TryOpen(LinkTarget target, ILogger log, [NotNullWhen(true)] out LinkSession? session, [NotNullWhen(false)] out string? error) =>

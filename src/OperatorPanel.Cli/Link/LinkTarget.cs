@@ -1,5 +1,5 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 

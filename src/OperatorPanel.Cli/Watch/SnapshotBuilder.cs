@@ -1,12 +1,12 @@
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.Cli.Watch;
 
-/// <summary>Reads the engines and links of a <see cref="WatchSession"/> into a <see cref="WatchSnapshot"/>.</summary>
+/// <summary>Reads a <see cref="WatchSession"/>'s line (values, station states, link counters) into a <see cref="WatchSnapshot"/>.</summary>
 internal static class SnapshotBuilder
 {
     public static WatchSnapshot Build(WatchSession session, long cycle, DateTimeOffset time)
@@ -15,28 +15,28 @@ internal static class SnapshotBuilder
         var refreshText = refresh.Mode == RefreshMode.Continuous
             ? $"continuous, at least {refresh.MinimumPeriod.TotalMilliseconds:0} ms apart"
             : "triggered, one refresh a second";
-        var stations = session.Buses
-            .SelectMany(b => b.Bus.Stations.Select(s => Station(s, b.Engine.Engine, b.Link.Link)))
+        var stations = ProjectBus.Of(session.Project)
+            .SelectMany(b => b.Stations.Select(s => Station(s, session.Line)))
             .ToList();
         return new WatchSnapshot(session.Project.Name, refreshText, cycle, time, stations);
     }
 
-    private static StationSnapshot Station(ProjectStation station, PollingEngine engine, PlcLink link)
+    private static StationSnapshot Station(ProjectStation station, ProjectLine line)
     {
-        var status = engine.GetStationStatus(station.Address);
-        var statistics = link.StatisticsFor(station.Address);
-        PolledValue? Value(PlcAddress address) => engine.TryGetValue(station.Address, address, out var v) && v.HasValue ? v : null;
+        var status = line.StatusOf(station.Address) ?? StationStatus.Initial(station.Address);
+        var statistics = line.StatisticsFor(station.Address);
+        PolledValue? Value(PlcAddress address) => line.TryGetValue(station.Address, address, out var v) && v.HasValue ? v : null;
         return new StationSnapshot(
             station.Name,
             station.Address.Address,
             station.Cpu.DisplayName,
-            $"{link.PortName} {station.Link.LineText}",
+            $"{line.PortOf(station.Address)} {station.Link.LineText}",
             status.State.ToString().ToLowerInvariant(),
             status.LastError,
             new LinkView(statistics.Requests, statistics.Replies, statistics.Retries, statistics.Timeouts, statistics.RoundTripAverage?.TotalMilliseconds),
             Lamps(station.Inputs, Value),
             Lamps(station.Outputs, Value),
-            [.. station.Tags.Select(t => Tag(t, Value(t.Address), engine, station.Address))],
+            [.. station.Tags.Select(t => Tag(t, Value(t.Address), line, station.Address))],
             [.. station.Alarms.Where(a => Value(a.Flag)?.AsBit == true).Select(a => new AlarmRow(a.Flag.ToString(), a.Text, a.Class.ToString().ToLowerInvariant()))]);
     }
 
@@ -63,9 +63,9 @@ internal static class SnapshotBuilder
                 return new LampByte(PlcAddress.ForBytes(first.Area, first.ByteOffset, AccessWidth.Byte).ToString(), new string(lamps), bits);
             })];
 
-    private static TagRow Tag(ProjectTag tag, PolledValue? value, PollingEngine engine, Station station)
+    private static TagRow Tag(ProjectTag tag, PolledValue? value, ProjectLine line, Station station)
     {
-        var quality = engine.TryGetValue(station, tag.Address, out var polled) ? polled.Quality.ToString().ToLowerInvariant() : "bad";
+        var quality = line.TryGetValue(station, tag.Address, out var polled) ? polled.Quality.ToString().ToLowerInvariant() : "bad";
         var text = value is null ? "-" : ValueFormatter.Format(value.Raw.AsSpan(), tag.Address.Width, tag.Format);
         return new TagRow(tag.Symbol, tag.Address.ToString(), text, quality);
     }

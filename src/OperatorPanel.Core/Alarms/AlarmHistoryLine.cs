@@ -3,7 +3,6 @@ using System.Globalization;
 using System.Text.Encodings.Web;
 using System.Text.Json;
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.Core.Alarms;

@@ -1,5 +1,4 @@
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 
@@ -45,30 +44,27 @@ public sealed class AlarmTracker
     public IReadOnlyList<AlarmEvent> Apply(IReadOnlyList<ValueChange> changes)
     {
         ArgumentNullException.ThrowIfNull(changes);
-        var events = new List<AlarmEvent>();
-        foreach (var change in changes)
-        {
-            if (change.Current.Quality != ValueQuality.Good || change.Current.AsBit is not { } on
-                || !_index.TryGetValue((change.Station, change.Address), out var i))
-            {
-                continue;
-            }
+        return [.. changes.Select(c => Apply(c.Station, c.Address, c.Current)).OfType<AlarmEvent>()];
+    }
 
-            var status = _alarms[i];
-            var next = (on, status.State) switch
-            {
-                (true, AlarmState.Cleared or AlarmState.ClearedUnacknowledged) => Raise(status),
-                (false, AlarmState.ActiveUnacknowledged) => status with { State = AlarmState.ClearedUnacknowledged, ClearedAt = Now() },
-                (false, AlarmState.ActiveAcknowledged) => status with { State = AlarmState.Cleared, ClearedAt = Now() },
-                _ => null,
-            };
-            if (next is not null)
-            {
-                events.Add(Record(i, next, on ? AlarmTransition.Raised : AlarmTransition.Cleared));
-            }
+    /// <summary>Applies one polled value of a flag; returns the transition it caused, or null.</summary>
+    public AlarmEvent? Apply(Station station, PlcAddress flag, PolledValue value)
+    {
+        ArgumentNullException.ThrowIfNull(value);
+        if (value.Quality != ValueQuality.Good || value.AsBit is not { } on || !_index.TryGetValue((station, flag), out var i))
+        {
+            return null;
         }
 
-        return events;
+        var status = _alarms[i];
+        var next = (on, status.State) switch
+        {
+            (true, AlarmState.Cleared or AlarmState.ClearedUnacknowledged) => Raise(status),
+            (false, AlarmState.ActiveUnacknowledged) => status with { State = AlarmState.ClearedUnacknowledged, ClearedAt = Now() },
+            (false, AlarmState.ActiveAcknowledged) => status with { State = AlarmState.Cleared, ClearedAt = Now() },
+            (true, AlarmState.ActiveUnacknowledged or AlarmState.ActiveAcknowledged) or (false, AlarmState.Cleared or AlarmState.ClearedUnacknowledged) => null,
+        };
+        return next is null ? null : Record(i, next, on ? AlarmTransition.Raised : AlarmTransition.Cleared);
     }
 
     /// <summary>Acknowledges one alarm; null when it had nothing to acknowledge (or is not an alarm of the project).</summary>
@@ -103,7 +99,7 @@ public sealed class AlarmTracker
                 {
                     AlarmTransition.Raised => _alarms[i] with { State = entry.State, RaisedAt = entry.At, ClearedAt = null, AcknowledgedAt = null },
                     AlarmTransition.Cleared => _alarms[i] with { State = entry.State, ClearedAt = entry.At },
-                    _ => _alarms[i] with { State = entry.State, AcknowledgedAt = entry.At },
+                    AlarmTransition.Acknowledged => _alarms[i] with { State = entry.State, AcknowledgedAt = entry.At },
                 };
             }
         }
@@ -125,7 +121,7 @@ public sealed class AlarmTracker
         {
             AlarmTransition.Raised => next.RaisedAt!.Value,
             AlarmTransition.Cleared => next.ClearedAt!.Value,
-            _ => next.AcknowledgedAt!.Value,
+            AlarmTransition.Acknowledged => next.AcknowledgedAt!.Value,
         };
         return new AlarmEvent(at, next.StationName, next.Station, next.Definition.Flag, transition, next.State, next.Definition.Class, next.Definition.Text);
     }

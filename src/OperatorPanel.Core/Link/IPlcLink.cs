@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Core.Link;
@@ -9,7 +10,7 @@ namespace OperatorPanel.Core.Link;
 public interface IPlcLink
 {
     /// <summary>
-    /// Sends <paramref name="request"/> and returns the matching reply (an <see cref="ErrorResponse"/> included). Throws
+    /// Sends <paramref name="request"/> under the link's next sequence number and returns the matching reply (an <see cref="ErrorResponse"/> included). Throws
     /// <see cref="Transport.PlcCommunicationException"/> when no valid reply came after the retries.
     /// </summary>
     Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken);

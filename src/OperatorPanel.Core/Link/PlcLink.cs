@@ -1,4 +1,5 @@
 using System.Collections.Concurrent;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 using Serilog;
@@ -7,8 +8,9 @@ namespace OperatorPanel.Core.Link;
 
 /// <summary>
 /// Request/response over one bus: one request in flight (<see cref="BusArbiter"/>), a reply-time budget per request,
-/// retries of the identical frame, per-station statistics and online state. Replies for an older sequence number, and
-/// the echo of our own request that some RS-485 adapters return, are skipped rather than taken for the answer.
+/// retries of the identical frame, per-station statistics and online state. The link stamps every request with its own
+/// next sequence number (whatever the caller put there), so replies for an older request, and the echo of our own
+/// request that some RS-485 adapters return, are skipped rather than taken for the answer.
 /// </summary>
 public sealed class PlcLink : IPlcLink, IAsyncDisposable
 {
@@ -22,6 +24,7 @@ public sealed class PlcLink : IPlcLink, IAsyncDisposable
     private readonly ConcurrentDictionary<Station, StationStatistics> _statistics = new();
     private readonly ConcurrentDictionary<Station, bool> _online = new();
     private long? _lastExchangeEnd;
+    private byte _sequence;
 
     public PlcLink(ITransport transport, LinkOptions options, TimeProvider? time = null, ILogger? log = null)
     {
@@ -44,6 +47,9 @@ public sealed class PlcLink : IPlcLink, IAsyncDisposable
     {
         ArgumentNullException.ThrowIfNull(request);
         using var turn = await _arbiter.AcquireAsync(cancellationToken).ConfigureAwait(false);
+
+        // Under the turn, so numbers go out in order; retries resend the same frame and so the same number.
+        request = request with { Sequence = unchecked(++_sequence) };
         var statistics = _statistics.GetOrAdd(request.Station, _ => new StationStatistics());
         var frame = RequestCodec.Encode(request);
         var timeout = _options.ReplyTimeoutFor(request, frame.Length);

@@ -1,7 +1,6 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Core.Polling;

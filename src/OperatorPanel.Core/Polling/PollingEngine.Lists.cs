@@ -37,7 +37,7 @@ public sealed partial class PollingEngine
                 return await ReadPlainAsync(frame, cancellationToken).ConfigureAwait(false);
             }
 
-            var response = await _link.ExchangeAsync(new ReadListRequest(frame.Station, NextSequence(), list), cancellationToken).ConfigureAwait(false);
+            var response = await _link.ExchangeAsync(new ReadListRequest(frame.Station, list), cancellationToken).ConfigureAwait(false);
             if (response is not ErrorResponse { Error: ProtocolError.ListNotDefined } || attempt > 0)
             {
                 return response;
@@ -53,7 +53,7 @@ public sealed partial class PollingEngine
     private async Task<bool> DefineAsync(int index, int list, CancellationToken cancellationToken)
     {
         var frame = _plan.Frames[index];
-        var response = await _link.ExchangeAsync(new DefineListRequest(frame.Station, NextSequence(), list, frame.Items), cancellationToken).ConfigureAwait(false);
+        var response = await _link.ExchangeAsync(new DefineListRequest(frame.Station, list, frame.Items), cancellationToken).ConfigureAwait(false);
         if (response is DefineListResponse)
         {
             _definedFrames.Add(index);
@@ -66,5 +66,5 @@ public sealed partial class PollingEngine
     }
 
     private Task<PlcResponse> ReadPlainAsync(PollFrame frame, CancellationToken cancellationToken) =>
-        _link.ExchangeAsync(new ReadRequest(frame.Station, NextSequence(), frame.Items), cancellationToken);
+        _link.ExchangeAsync(new ReadRequest(frame.Station, frame.Items), cancellationToken);
 }

@@ -54,7 +54,7 @@ public sealed partial class PollingEngine
     {
         var request = pending.Request;
         var oldValue = OldValueText(request);
-        if (!WriteCommand.TryBuild(request, NextSequence(), _plan.Cpus.GetValueOrDefault(request.Station), out var plcRequest, out var refusal))
+        if (!WriteCommand.TryBuild(request, _plan.Cpus.GetValueOrDefault(request.Station), out var plcRequest, out var refusal))
         {
             Finish(pending, oldValue, refusal);
             return;

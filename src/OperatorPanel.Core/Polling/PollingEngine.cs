@@ -32,7 +32,6 @@ public sealed partial class PollingEngine
     private TimeSpan _minimumPeriod = TimeSpan.FromMilliseconds(100);
     private PollResult? _lastResult;
     private int _running;
-    private int _sequence;
 
     public PollingEngine(IPlcLink link, PollPlan plan, TimeProvider? timeProvider = null, ILogger? logger = null)
     {
@@ -76,9 +75,9 @@ public sealed partial class PollingEngine
     /// <summary>
     /// Calls <paramref name="onChanges"/> with every batch of changed values (value or quality), once per cycle and
     /// once per write read-back, on the polling loop's thread; marshal to the UI yourself. A throwing subscriber is
-    /// logged and stays subscribed. Dispose the result to unsubscribe.
+    /// logged and stays subscribed. Dispose the result to unsubscribe. Outside Core, values come from Line/ILineValues.
     /// </summary>
-    public IDisposable Subscribe(Action<IReadOnlyList<ValueChange>> onChanges)
+    internal IDisposable Subscribe(Action<IReadOnlyList<ValueChange>> onChanges)
     {
         ArgumentNullException.ThrowIfNull(onChanges);
         lock (_gate) { _subscribers = _subscribers.Add(onChanges); }
@@ -103,8 +102,6 @@ public sealed partial class PollingEngine
         _wake.Set();
         return waiter.Task;
     }
-
-    private byte NextSequence() => (byte)Interlocked.Increment(ref _sequence);
 
     private void Publish(List<ValueChange> changes)
     {

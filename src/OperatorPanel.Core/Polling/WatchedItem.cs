@@ -1,5 +1,4 @@
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Link;
 
 namespace OperatorPanel.Core.Polling;
 

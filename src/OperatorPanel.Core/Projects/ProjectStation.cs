@@ -1,7 +1,7 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Projects;

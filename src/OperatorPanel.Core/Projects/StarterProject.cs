@@ -2,7 +2,6 @@ using System.Collections.Immutable;
 using System.Globalization;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Projects;

@@ -1,9 +1,12 @@
 using System.Collections.Immutable;
-using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Addressing;
 
 namespace OperatorPanel.Core.Protocol;
 
-/// <summary>A request from the panel to one station. <see cref="Sequence"/> is echoed by the reply.</summary>
+/// <summary>
+/// A request from the panel to one station. <see cref="Sequence"/> is echoed by the reply; the link that sends the request
+/// stamps it (Link/PlcLink), so callers build requests without one (the constructors without it leave 0).
+/// </summary>
 public abstract record PlcRequest(Station Station, byte Sequence)
 {
     public abstract CommandCode Command { get; }
@@ -12,6 +15,11 @@ public abstract record PlcRequest(Station Station, byte Sequence)
 /// <summary>Ask for protocol version, handler configuration, SMB6, mode switch and scan times.</summary>
 public sealed record IdentifyRequest(Station Station, byte Sequence) : PlcRequest(Station, Sequence)
 {
+    public IdentifyRequest(Station station)
+        : this(station, 0)
+    {
+    }
+
     public override CommandCode Command => CommandCode.Identify;
 }
 
@@ -21,6 +29,11 @@ public sealed record IdentifyRequest(Station Station, byte Sequence) : PlcReques
 /// </summary>
 public sealed record ReadRequest(Station Station, byte Sequence, ImmutableArray<ReadItem> Items) : PlcRequest(Station, Sequence)
 {
+    public ReadRequest(Station station, ImmutableArray<ReadItem> items)
+        : this(station, 0, items)
+    {
+    }
+
     public override CommandCode Command => CommandCode.Read;
 
     public int TotalLength => Items.Sum(i => i.Length);
@@ -30,6 +43,11 @@ public sealed record ReadRequest(Station Station, byte Sequence, ImmutableArray<
 public sealed record WriteBlockRequest(Station Station, byte Sequence, ProtocolArea Area, int Offset, ImmutableArray<byte> Data)
     : PlcRequest(Station, Sequence)
 {
+    public WriteBlockRequest(Station station, ProtocolArea area, int offset, ImmutableArray<byte> data)
+        : this(station, 0, area, offset, data)
+    {
+    }
+
     public override CommandCode Command => CommandCode.Write;
 }
 
@@ -37,6 +55,11 @@ public sealed record WriteBlockRequest(Station Station, byte Sequence, ProtocolA
 public sealed record WriteBitRequest(Station Station, byte Sequence, ProtocolArea Area, int Offset, int Bit, bool Value)
     : PlcRequest(Station, Sequence)
 {
+    public WriteBitRequest(Station station, ProtocolArea area, int offset, int bit, bool value)
+        : this(station, 0, area, offset, bit, value)
+    {
+    }
+
     public override CommandCode Command => CommandCode.WriteBit;
 }
 
@@ -46,6 +69,11 @@ public sealed record WriteBitRequest(Station Station, byte Sequence, ProtocolAre
 /// </summary>
 public sealed record DefineListRequest(Station Station, byte Sequence, int List, ImmutableArray<ReadItem> Items) : PlcRequest(Station, Sequence)
 {
+    public DefineListRequest(Station station, int list, ImmutableArray<ReadItem> items)
+        : this(station, 0, list, items)
+    {
+    }
+
     public override CommandCode Command => CommandCode.DefineList;
 
     public int TotalLength => Items.Sum(i => i.Length);
@@ -54,5 +82,10 @@ public sealed record DefineListRequest(Station Station, byte Sequence, int List,
 /// <summary>Read the items stored under <see cref="List"/>; the reply is that of a READ of them.</summary>
 public sealed record ReadListRequest(Station Station, byte Sequence, int List) : PlcRequest(Station, Sequence)
 {
+    public ReadListRequest(Station station, int list)
+        : this(station, 0, list)
+    {
+    }
+
     public override CommandCode Command => CommandCode.ReadList;
 }

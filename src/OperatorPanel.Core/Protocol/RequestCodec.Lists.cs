@@ -1,4 +1,4 @@
-using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Addressing;
 
 namespace OperatorPanel.Core.Protocol;
 

@@ -17,7 +17,6 @@ internal static class WriteCommand
     /// </summary>
     public static bool TryBuild(
         WriteRequest request,
-        byte sequence,
         CpuProfile? cpu,
         [NotNullWhen(true)] out PlcRequest? plcRequest,
         [NotNullWhen(false)] out WriteOutcome.Failed? refusal)
@@ -39,8 +38,8 @@ internal static class WriteCommand
 
         var protocolArea = ProtocolAreaExtensions.FromMemoryArea(address.Area)!.Value;
         plcRequest = request.BitValue is { } bit
-            ? new WriteBitRequest(request.Station, sequence, protocolArea, address.ByteOffset, address.Bit!.Value, bit)
-            : new WriteBlockRequest(request.Station, sequence, protocolArea, address.ByteOffset, request.Data);
+            ? new WriteBitRequest(request.Station, protocolArea, address.ByteOffset, address.Bit!.Value, bit)
+            : new WriteBlockRequest(request.Station, protocolArea, address.ByteOffset, request.Data);
         refusal = null;
         return true;
     }

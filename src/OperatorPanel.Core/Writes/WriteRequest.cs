@@ -1,6 +1,5 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Link;
 
 namespace OperatorPanel.Core.Writes;
 

@@ -1,6 +1,6 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Simulator.Stl.Freeport;
 

@@ -41,7 +41,7 @@ public static partial class HandlerOptionsCheck
 
         CheckBuffer(options, Add);
 
-        if (options.Station is < Core.Link.Station.Min or > Core.Link.Station.Max)
+        if (options.Station is < Core.Addressing.Station.Min or > Core.Addressing.Station.Max)
         {
             Add(StlDiagnostics.StationOutOfRange, $"station address {options.Station} is outside 1-126");
         }

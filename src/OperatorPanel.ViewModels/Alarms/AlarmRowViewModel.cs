@@ -1,6 +1,6 @@
+using CommunityToolkit.Mvvm.ComponentModel;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Alarms;
-using OperatorPanel.Core.Link;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Alarms;
 

@@ -1,3 +1,4 @@
+using CommunityToolkit.Mvvm.ComponentModel;
 using OperatorPanel.ViewModels.Shell;
 
 namespace OperatorPanel.ViewModels.Alarms;
@@ -7,20 +8,15 @@ namespace OperatorPanel.ViewModels.Alarms;
 /// saved layout and its visibility with it); <see cref="Alarms"/> is the current project's <see cref="AlarmsViewModel"/>,
 /// which the view shows through its DataTemplate.
 /// </summary>
-public sealed class AlarmsPaneViewModel : PaneViewModel
+public sealed partial class AlarmsPaneViewModel : PaneViewModel
 {
-    private AlarmsViewModel _alarms;
-
     public AlarmsPaneViewModel(AlarmsViewModel alarms)
         : base("Alarms", "alarms")
     {
         ArgumentNullException.ThrowIfNull(alarms);
-        _alarms = alarms;
+        Alarms = alarms;
     }
 
-    public AlarmsViewModel Alarms
-    {
-        get => _alarms;
-        internal set => SetProperty(ref _alarms, value);
-    }
+    [ObservableProperty]
+    public partial AlarmsViewModel Alarms { get; internal set; }
 }

@@ -1,10 +1,11 @@
 using System.Collections.ObjectModel;
 using System.Text;
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Alarms;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Mvvm;
 using OperatorPanel.ViewModels.Services;
-using OperatorPanel.ViewModels.Values;
 
 namespace OperatorPanel.ViewModels.Alarms;
 
@@ -12,35 +13,28 @@ namespace OperatorPanel.ViewModels.Alarms;
 /// The alarm window ("PLC messages", seed 000 §7): every alarm of the project with its state and times, acknowledge one or
 /// all, the history of every transition (kept in <see cref="AlarmHistoryFile"/> when the project has a path) and its CSV
 /// export. <see cref="ActiveCount"/> and <see cref="UnacknowledgedCount"/> feed the shell's status bar, window shown or not.
-/// Values arrive on the polling thread and are applied on the dispatcher's.
+/// Each alarm's flag is subscribed on the line like any other value, so a flag change arrives on the UI thread.
 /// </summary>
-public sealed class AlarmsViewModel : ObservableObject, IDisposable
+public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 {
     private readonly AlarmTracker _tracker;
     private readonly AlarmHistoryFile? _historyFile;
-    private readonly IUiDispatcher _dispatcher;
     private readonly IFileDialogService _files;
     private readonly string _projectName;
-    private readonly IDisposable _subscription;
-    private int _activeCount;
-    private int _unacknowledgedCount;
-    private string? _message;
+    private readonly List<IDisposable> _subscriptions = [];
 
     /// <param name="project">The project whose alarms are tracked.</param>
     /// <param name="projectPath">The project file, or null for a project not saved yet (history kept in memory only).</param>
-    /// <param name="values">Value changes from the polling engine (see <see cref="ValueChangeRelay"/>).</param>
+    /// <param name="values">The line's values (PanelSession.Values); callbacks come on the UI thread.</param>
     /// <param name="time">Times raised, cleared and acknowledged; its local zone for display.</param>
-    /// <param name="dispatcher">Where bound properties change.</param>
     /// <param name="files">The save dialog of the CSV export.</param>
-    public AlarmsViewModel(
-        PanelProject project, string? projectPath, IValueChangeSource values, TimeProvider time, IUiDispatcher dispatcher, IFileDialogService files)
+    public AlarmsViewModel(PanelProject project, string? projectPath, ILineValues values, TimeProvider time, IFileDialogService files)
     {
         ArgumentNullException.ThrowIfNull(project);
         ArgumentNullException.ThrowIfNull(values);
         ArgumentNullException.ThrowIfNull(time);
-        ArgumentNullException.ThrowIfNull(dispatcher);
         ArgumentNullException.ThrowIfNull(files);
-        (_dispatcher, _files, _projectName) = (dispatcher, files, project.Name);
+        (_files, _projectName) = (files, project.Name);
         _tracker = new AlarmTracker(project, time);
         if (projectPath is not null)
         {
@@ -48,7 +42,7 @@ public sealed class AlarmsViewModel : ObservableObject, IDisposable
             var load = _historyFile.Load();
             _tracker.Restore(load.Events);
             History = new ObservableCollection<AlarmEvent>(load.Events);
-            _message = load.Message;
+            Message = load.Message;
         }
         else
         {
@@ -56,11 +50,12 @@ public sealed class AlarmsViewModel : ObservableObject, IDisposable
         }
 
         Rows = new ObservableCollection<AlarmRowViewModel>(_tracker.Alarms.Select(a => new AlarmRowViewModel(a, time.LocalTimeZone)));
-        AcknowledgeCommand = new RelayCommand<AlarmRowViewModel>(Acknowledge, row => row.IsUnacknowledged);
-        AcknowledgeAllCommand = new RelayCommand(() => Record(_tracker.AcknowledgeAll()), () => UnacknowledgedCount > 0);
-        ExportCsvCommand = new RelayCommand(ExportCsv, () => History.Count > 0);
         UpdateCounts();
-        _subscription = values.Subscribe(changes => _dispatcher.Post(() => Record(_tracker.Apply(changes))));
+        foreach (var alarm in _tracker.Alarms)
+        {
+            var (station, flag) = (alarm.Station, alarm.Definition.Flag);
+            _subscriptions.Add(values.Subscribe(station, flag, value => Record(_tracker.Apply(station, flag, value) is { } entry ? [entry] : [])));
+        }
     }
 
     /// <summary>Every alarm of the project, in project order; the view filters on <see cref="AlarmRowViewModel.IsPending"/>.</summary>
@@ -69,15 +64,14 @@ public sealed class AlarmsViewModel : ObservableObject, IDisposable
     /// <summary>Every transition, oldest first, including those loaded from the history file.</summary>
     public ObservableCollection<AlarmEvent> History { get; }
 
-    public RelayCommand<AlarmRowViewModel> AcknowledgeCommand { get; }
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(Summary))]
+    public partial int ActiveCount { get; private set; }
 
-    public RelayCommand AcknowledgeAllCommand { get; }
-
-    public RelayCommand ExportCsvCommand { get; }
-
-    public int ActiveCount { get => _activeCount; private set => SetProperty(ref _activeCount, value); }
-
-    public int UnacknowledgedCount { get => _unacknowledgedCount; private set => SetProperty(ref _unacknowledgedCount, value); }
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(Summary))]
+    [NotifyCanExecuteChangedFor(nameof(AcknowledgeAllCommand))]
+    public partial int UnacknowledgedCount { get; private set; }
 
     /// <summary>For the status bar: "2 alarms active, 1 unacknowledged", or "no alarms".</summary>
     public string Summary => ActiveCount == 0 && UnacknowledgedCount == 0
@@ -85,10 +79,12 @@ public sealed class AlarmsViewModel : ObservableObject, IDisposable
         : $"{ActiveCount} alarm{(ActiveCount == 1 ? string.Empty : "s")} active, {UnacknowledgedCount} unacknowledged";
 
     /// <summary>The latest problem with the history file or the export, or the export's confirmation; null when none.</summary>
-    public string? Message { get => _message; private set => SetProperty(ref _message, value); }
+    [ObservableProperty]
+    public partial string? Message { get; private set; }
 
-    public void Dispose() => _subscription.Dispose();
+    public void Dispose() => _subscriptions.ForEach(s => s.Dispose());
 
+    [RelayCommand(CanExecute = nameof(CanAcknowledge))]
     private void Acknowledge(AlarmRowViewModel row)
     {
         if (_tracker.Acknowledge(row.Station, row.Status.Definition.Flag) is { } entry)
@@ -96,6 +92,13 @@ public sealed class AlarmsViewModel : ObservableObject, IDisposable
             Record([entry]);
         }
     }
+
+    private static bool CanAcknowledge(AlarmRowViewModel? row) => row?.IsUnacknowledged == true;
+
+    [RelayCommand(CanExecute = nameof(CanAcknowledgeAll))]
+    private void AcknowledgeAll() => Record(_tracker.AcknowledgeAll());
+
+    private bool CanAcknowledgeAll() => UnacknowledgedCount > 0;
 
     private void Record(IReadOnlyList<AlarmEvent> events)
     {
@@ -126,12 +129,11 @@ public sealed class AlarmsViewModel : ObservableObject, IDisposable
     {
         ActiveCount = _tracker.ActiveCount;
         UnacknowledgedCount = _tracker.UnacknowledgedCount;
-        OnPropertyChanged(nameof(Summary));
         AcknowledgeCommand.NotifyCanExecuteChanged();
-        AcknowledgeAllCommand.NotifyCanExecuteChanged();
         ExportCsvCommand.NotifyCanExecuteChanged();
     }
 
+    [RelayCommand(CanExecute = nameof(HasHistory))]
     private void ExportCsv()
     {
         var suggested = (string.IsNullOrWhiteSpace(_projectName) ? "alarms" : _projectName + " alarms") + ".csv";
@@ -151,4 +153,6 @@ public sealed class AlarmsViewModel : ObservableObject, IDisposable
             Message = $"The alarm history could not be exported to {path}: {ex.Message}";
         }
     }
+
+    private bool HasHistory() => History.Count > 0;
 }

@@ -1,14 +1,14 @@
 using System.Collections.ObjectModel;
 using System.Collections.Specialized;
 using System.ComponentModel;
-using OperatorPanel.ViewModels.Mvvm;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Shell;
 
 namespace OperatorPanel.ViewModels.Diagnostics;
 
 /// <summary>The Diagnostics window: per station the identified CPU vs the project's, RUN/STOP, scan times, link statistics.</summary>
-public sealed class DiagnosticsViewModel : PaneViewModel
+public sealed partial class DiagnosticsViewModel : PaneViewModel
 {
     private readonly PanelSession _session;
 
@@ -17,7 +17,6 @@ public sealed class DiagnosticsViewModel : PaneViewModel
     {
         ArgumentNullException.ThrowIfNull(session);
         _session = session;
-        IdentifyCommand = new AsyncRelayCommand(IdentifyAsync, () => _session.IsConnected);
         session.Stations.CollectionChanged += OnStationsChanged;
         session.PropertyChanged += OnSessionChanged;
         OnStationsChanged(null, new NotifyCollectionChangedEventArgs(NotifyCollectionChangedAction.Reset));
@@ -25,9 +24,8 @@ public sealed class DiagnosticsViewModel : PaneViewModel
 
     public ObservableCollection<StationDiagnosticsViewModel> Stations { get; } = [];
 
-    /// <summary>Asks every station for IDENTIFY again (after a download, a CPU swap, or a station that came back).</summary>
-    public AsyncRelayCommand IdentifyCommand { get; }
-
+    /// <summary>IdentifyCommand: asks every station for IDENTIFY again (after a download, a CPU swap, or a station that came back).</summary>
+    [RelayCommand(CanExecute = nameof(IsConnected))]
     private async Task IdentifyAsync()
     {
         try
@@ -39,6 +37,8 @@ public sealed class DiagnosticsViewModel : PaneViewModel
             _session.StatusLine.ShowError($"IDENTIFY failed: {exception.Message}");
         }
     }
+
+    private bool IsConnected() => _session.IsConnected;
 
     private void OnStationsChanged(object? sender, NotifyCollectionChangedEventArgs e)
     {

@@ -1,6 +1,6 @@
 using System.ComponentModel;
 using System.Globalization;
-using OperatorPanel.ViewModels.Mvvm;
+using CommunityToolkit.Mvvm.ComponentModel;
 using OperatorPanel.ViewModels.Session;
 
 namespace OperatorPanel.ViewModels.Diagnostics;
@@ -47,7 +47,7 @@ public sealed class StationDiagnosticsViewModel : ObservableObject
         StationHealth.Online or StationHealth.HandlerMismatch => Status.Identity is { ModeSwitchRun: false } ? "RUN, mode switch at TERM" : "RUN",
         StationHealth.Stopped => "STOP or TERM (no Freeport reply)",
         StationHealth.Offline => "unknown (offline)",
-        _ => "-",
+        StationHealth.Unknown => "-",
     };
 
     public string ScanTimesText => Status.Identity is { } id

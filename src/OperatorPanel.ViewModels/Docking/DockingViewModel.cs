@@ -1,5 +1,6 @@
 using System.Collections.ObjectModel;
-using OperatorPanel.ViewModels.Mvvm;
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
 
 namespace OperatorPanel.ViewModels.Docking;
 
@@ -8,10 +9,9 @@ namespace OperatorPanel.ViewModels.Docking;
 /// at start and saved at exit. Docking is built with plain WPF in the App (no AvalonDock in the registry copy); this
 /// class holds all of its state so it is tested here.
 /// </summary>
-public sealed class DockingViewModel : ObservableObject
+public sealed partial class DockingViewModel : ObservableObject
 {
     private readonly string _layoutPath;
-    private string? _message;
 
     public DockingViewModel(string layoutPath)
     {
@@ -19,23 +19,13 @@ public sealed class DockingViewModel : ObservableObject
         _layoutPath = layoutPath;
         Panes = new ReadOnlyCollection<DockPaneViewModel>(
             [.. DockLayout.Default.Panes.Select(p => new DockPaneViewModel(p, TitleOf(p.Id), $"{p.Id}Pane"))]);
-        ResetLayoutCommand = new RelayCommand(() => Apply(DockLayout.Default));
-        TogglePaneCommand = new RelayCommand<DockPaneId>(id => this[id].IsVisible = !this[id].IsVisible);
     }
 
     public IReadOnlyList<DockPaneViewModel> Panes { get; }
 
     /// <summary>Why the saved layout was not used or not saved; null when all went well.</summary>
-    public string? Message
-    {
-        get => _message;
-        private set => SetProperty(ref _message, value);
-    }
-
-    public IRelayCommand ResetLayoutCommand { get; }
-
-    /// <summary>View menu: shows a hidden pane, hides a shown one. Parameter: the <see cref="DockPaneId"/>.</summary>
-    public IRelayCommand TogglePaneCommand { get; }
+    [ObservableProperty]
+    public partial string? Message { get; private set; }
 
     public DockPaneViewModel this[DockPaneId id] => Panes.First(p => p.Id == id);
 
@@ -46,7 +36,6 @@ public sealed class DockingViewModel : ObservableObject
         DockPaneId.Memory => "Memory",
         DockPaneId.Alarms => "Alarms",
         DockPaneId.Diagnostics => "Diagnostics",
-        _ => throw new ArgumentOutOfRangeException(nameof(id), id, null),
     };
 
     /// <summary>Restores the layout saved for this user (default layout and a message when the file is unusable).</summary>
@@ -68,6 +57,13 @@ public sealed class DockingViewModel : ObservableObject
         Message = $"Window layout not saved ({_layoutPath}): {error}";
         return false;
     }
+
+    [RelayCommand]
+    private void ResetLayout() => Apply(DockLayout.Default);
+
+    /// <summary>View menu (TogglePaneCommand): shows a hidden pane, hides a shown one. Parameter: the <see cref="DockPaneId"/>.</summary>
+    [RelayCommand]
+    private void TogglePane(DockPaneId id) => this[id].IsVisible = !this[id].IsVisible;
 
     public DockLayout Capture() => new([.. Panes.Select(p => p.Capture())]);
 

@@ -1,49 +1,26 @@
 using System.Collections.ObjectModel;
 using System.Globalization;
-using System.Text;
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Projects;
 using OperatorPanel.StlGen;
 using OperatorPanel.StlGen.Merge;
 using OperatorPanel.StlGen.Options;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Generate;
 
-/// <summary>Generate (HandlerGenerator, and HandlerMerger when a program is given), the figures, the preview and Save.</summary>
+/// <summary>
+/// Generate (the <see cref="HandlerPackage"/> <c>opanel generate</c> writes too: handler, and merge when a program is
+/// given), the figures, the preview and Save.
+/// </summary>
 public sealed partial class GenerateCodeViewModel
 {
-    /// <summary>An exported Micro/WIN program larger than this is not a program block.</summary>
-    private const long MaxProgramBytes = 8 * 1024 * 1024;
-
-    private HandlerGenerationResult? _result;
-    private MergeResult? _merge;
-    private string? _mergeProgramPath;
-    private string _preview = string.Empty;
-    private string? _message;
-
-    public RelayCommand GenerateCommand { get; }
-
-    /// <summary>Asks for a folder and writes the files; enabled after a Generate without errors.</summary>
-    public RelayCommand SaveCommand { get; }
-
-    public RelayCommand BrowseMergeCommand { get; }
-
-    public RelayCommand ClearMergeCommand { get; }
+    private HandlerPackage? _package;
 
     /// <summary>A program exported from Micro/WIN (.awl) to merge the handler into; null = the handler alone.</summary>
-    public string? MergeProgramPath
-    {
-        get => _mergeProgramPath;
-        set
-        {
-            if (SetProperty(ref _mergeProgramPath, value))
-            {
-                ClearMergeCommand.NotifyCanExecuteChanged();
-                ClearResult();
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyCanExecuteChangedFor(nameof(ClearMergeCommand))]
+    public partial string? MergeProgramPath { get; set; }
 
     /// <summary>Why nothing was generated or merged (and merge warnings), in ID and line order.</summary>
     public ObservableCollection<GenerateDiagnosticRow> Diagnostics { get; } = [];
@@ -52,13 +29,16 @@ public sealed partial class GenerateCodeViewModel
     public ObservableCollection<string> Stats { get; } = [];
 
     /// <summary>The .awl text that Save writes (the merged program when merging).</summary>
-    public string Preview { get => _preview; private set => SetProperty(ref _preview, value); }
+    [ObservableProperty]
+    public partial string Preview { get; private set; } = string.Empty;
 
     /// <summary>What Generate or Save did, or why not; null before either.</summary>
-    public string? Message { get => _message; private set => SetProperty(ref _message, value); }
+    [ObservableProperty]
+    public partial string? Message { get; private set; }
 
-    public bool CanSave => _result is { Ok: true } && _merge is null or { Ok: true };
+    public bool CanSave => _package is { Ok: true };
 
+    [RelayCommand]
     private void Generate()
     {
         ClearResult();
@@ -68,7 +48,15 @@ public sealed partial class GenerateCodeViewModel
             return;
         }
 
-        var result = HandlerGenerator.Generate(options);
+        string? program = null;
+        if (MergeProgramPath is { } path && !HandlerPackage.TryReadProgram(path, out program, out var readError))
+        {
+            Message = readError;
+            return;
+        }
+
+        var package = HandlerPackage.Generate(options, FileStem, program);
+        var result = package.Handler;
         foreach (var diagnostic in result.Diagnostics)
         {
             Diagnostics.Add(new GenerateDiagnosticRow(diagnostic.Id, 0, diagnostic.Message));
@@ -80,12 +68,12 @@ public sealed partial class GenerateCodeViewModel
             return;
         }
 
-        if (MergeProgramPath is { } path && !TryMerge(path, options))
+        if (package.Merge is { } merge && !ShowMerge(merge, MergeProgramPath!))
         {
             return;
         }
 
-        _result = result;
+        _package = package;
         Stats.Add($"V memory: {result.Stats!.VRange} ({result.Stats.VBytes} bytes)");
         Stats.Add(string.Create(CultureInfo.InvariantCulture, $"Instructions: {result.Stats.Instructions}"));
         Stats.Add($"Interrupt events: {string.Join(", ", result.Stats.InterruptEvents)} (port {result.Stats.Port})");
@@ -94,12 +82,13 @@ public sealed partial class GenerateCodeViewModel
             Stats.Add($"{block.NumberText} {block.Name}: {block.Purpose}");
         }
 
-        Preview = _merge?.MergedText ?? result.AwlText;
-        Message = _merge is null ? "Generated; Save writes the handler, the symbol table and the technician's notes."
+        Preview = package.Merge?.MergedText ?? result.AwlText;
+        Message = package.Merge is null ? "Generated; Save writes the handler, the symbol table and the technician's notes."
             : "Merged without collisions; Save writes the merged program beside the handler's files.";
         NotifySave();
     }
 
+    [RelayCommand]
     private void BrowseMerge()
     {
         if (_files.PickFileToOpen("Program exported from Micro/WIN to merge with", "STL programs (*.awl)|*.awl|All files (*.*)|*.*") is { } path)
@@ -108,16 +97,16 @@ public sealed partial class GenerateCodeViewModel
         }
     }
 
-    private bool TryMerge(string path, HandlerOptions options)
-    {
-        if (!AtomicFile.TryReadAll(path, MaxProgramBytes, out var bytes, out var error))
-        {
-            Message = $"{path}: {error}";
-            return false;
-        }
+    [RelayCommand(CanExecute = nameof(HasMergeProgram))]
+    private void ClearMerge() => MergeProgramPath = null;
 
-        // Micro/WIN exports in the Windows code page; Latin-1 keeps every byte as it was for the merged file.
-        var merge = HandlerMerger.Merge(Encoding.Latin1.GetString(bytes), options);
+    private bool HasMergeProgram() => MergeProgramPath is not null;
+
+    partial void OnMergeProgramPathChanged(string? value) => ClearResult();
+
+    /// <summary>Lists the merge's findings; false (nothing to save) when the program collides with the handler.</summary>
+    private bool ShowMerge(MergeResult merge, string path)
+    {
         foreach (var finding in merge.Diagnostics)
         {
             Diagnostics.Add(new GenerateDiagnosticRow(finding.Id, finding.Line, finding.Message, finding.Severity == MergeSeverity.Warning));
@@ -129,7 +118,6 @@ public sealed partial class GenerateCodeViewModel
             return false;
         }
 
-        _merge = merge;
         return true;
     }
 
@@ -186,7 +174,7 @@ public sealed partial class GenerateCodeViewModel
 
     private void ClearResult()
     {
-        (_result, _merge) = (null, null);
+        _package = null;
         Diagnostics.Clear();
         Stats.Clear();
         Preview = string.Empty;

@@ -1,8 +1,8 @@
 using System.Globalization;
 using System.Runtime.CompilerServices;
+using CommunityToolkit.Mvvm.ComponentModel;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.StlGen.Options;
-using OperatorPanel.ViewModels.Mvvm;
 using OperatorPanel.ViewModels.Services;
 
 namespace OperatorPanel.ViewModels.Generate;
@@ -37,10 +37,6 @@ public sealed partial class GenerateCodeViewModel : ObservableObject
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(stationIndex, project.Stations.Length);
         (_project, _files) = (project, files);
         StationNames = [.. project.Stations.Select(s => string.Create(CultureInfo.InvariantCulture, $"{s.Name} (station {s.Address.Address}, {s.Cpu.DisplayName})"))];
-        GenerateCommand = new RelayCommand(Generate);
-        SaveCommand = new RelayCommand(Save, () => CanSave);
-        BrowseMergeCommand = new RelayCommand(BrowseMerge);
-        ClearMergeCommand = new RelayCommand(() => MergeProgramPath = null, () => MergeProgramPath is not null);
         StationIndex = stationIndex;
     }
 

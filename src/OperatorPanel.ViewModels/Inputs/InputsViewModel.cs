@@ -21,7 +21,6 @@ public sealed class InputsViewModel : PaneViewModel
                 _map.Rebuild();
             }
         };
-        session.ValuesChanged += (_, e) => _map.Apply(e);
         _map.Rebuild();
     }
 

@@ -1,18 +1,13 @@
+using CommunityToolkit.Mvvm.ComponentModel;
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Inputs;
 
 /// <summary>One symbolised I or Q bit as a lamp: the value shown is always the last one read from the PLC.</summary>
-public abstract class IoPointViewModel : ObservableObject
+public abstract partial class IoPointViewModel : ObservableObject
 {
-    private bool? _value;
-    private ValueQuality _quality = ValueQuality.Bad;
-    private string? _qualityText = "not read yet";
-
     protected IoPointViewModel(ProjectStation station, IoSymbol symbol)
     {
         ArgumentNullException.ThrowIfNull(station);
@@ -33,36 +28,17 @@ public abstract class IoPointViewModel : ObservableObject
     public string Comment { get; }
 
     /// <summary>The bit as last read; null when never read. A stale value keeps the last good read.</summary>
-    public bool? Value
-    {
-        get => _value;
-        private set
-        {
-            if (SetProperty(ref _value, value))
-            {
-                OnPropertyChanged(nameof(State));
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(State))]
+    public partial bool? Value { get; private set; }
 
-    public ValueQuality Quality
-    {
-        get => _quality;
-        private set
-        {
-            if (SetProperty(ref _quality, value))
-            {
-                OnPropertyChanged(nameof(State));
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(State))]
+    public partial ValueQuality Quality { get; private set; } = ValueQuality.Bad;
 
     /// <summary>Why the value is stale or bad (the link's error); null when good.</summary>
-    public string? QualityText
-    {
-        get => _qualityText;
-        private set => SetProperty(ref _qualityText, value);
-    }
+    [ObservableProperty]
+    public partial string? QualityText { get; private set; } = "not read yet";
 
     public LampState State => (Quality, Value) switch
     {
@@ -70,9 +46,10 @@ public abstract class IoPointViewModel : ObservableObject
         (ValueQuality.Good, false) => LampState.Off,
         (ValueQuality.Stale, true) => LampState.StaleOn,
         (ValueQuality.Stale, false) => LampState.StaleOff,
-        _ => LampState.Bad,
+        (ValueQuality.Bad, _) or (_, null) => LampState.Bad,
     };
 
+    /// <summary>The lamp's subscription to its address (PanelSession.Values): every value read, on the UI thread.</summary>
     internal void Apply(PolledValue value)
     {
         Value = value.AsBit;

@@ -1,55 +1,31 @@
+using CommunityToolkit.Mvvm.ComponentModel;
+
 namespace OperatorPanel.ViewModels.Memory;
 
 /// <summary>The editor's state: the text typed, the refusal, the write on its way, the last write's problem.</summary>
 public sealed partial class MemoryCellViewModel
 {
-    private bool _isEditing;
-    private string _editText = string.Empty;
-    private string? _editError;
-    private bool _isWriting;
-    private string? _writeError;
-
-    public bool IsEditing
-    {
-        get => _isEditing;
-        internal set
-        {
-            if (SetProperty(ref _isEditing, value))
-            {
-                NotifyCommands();
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyCanExecuteChangedFor(nameof(BeginEditCommand), nameof(CommitEditCommand), nameof(CancelEditCommand))]
+    public partial bool IsEditing { get; internal set; }
 
     public string EditText
     {
-        get => _editText;
-        set => SetProperty(ref _editText, value ?? string.Empty);
+        get;
+        set => SetProperty(ref field, value ?? string.Empty);
     }
+
+    = string.Empty;
 
     /// <summary>Why the typed value was refused ("VW104: 70000 is out of range..."); nothing was written.</summary>
-    public string? EditError
-    {
-        get => _editError;
-        internal set => SetProperty(ref _editError, value);
-    }
+    [ObservableProperty]
+    public partial string? EditError { get; internal set; }
 
-    public bool IsWriting
-    {
-        get => _isWriting;
-        internal set
-        {
-            if (SetProperty(ref _isWriting, value))
-            {
-                NotifyCommands();
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyCanExecuteChangedFor(nameof(CommitEditCommand))]
+    public partial bool IsWriting { get; internal set; }
 
     /// <summary>Why the last write was not confirmed (refused, read back different, link failure); cleared by the next.</summary>
-    public string? WriteError
-    {
-        get => _writeError;
-        internal set => SetProperty(ref _writeError, value);
-    }
+    [ObservableProperty]
+    public partial string? WriteError { get; internal set; }
 }

@@ -1,8 +1,9 @@
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Values;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Memory;
 
@@ -19,9 +20,6 @@ public sealed partial class MemoryCellViewModel : ObservableObject
     {
         (Station, Tag, _owner) = (station, tag, owner);
         FormatChoices = [.. Enum.GetValues<DisplayFormat>().Where(f => f.Fits(tag.Address.Width))];
-        BeginEditCommand = new RelayCommand(BeginEdit, () => CanEdit && !IsEditing);
-        CommitEditCommand = new AsyncRelayCommand(() => _owner.CommitAsync(this), () => IsEditing && !IsWriting);
-        CancelEditCommand = new RelayCommand(CancelEdit, () => IsEditing);
     }
 
     public ProjectStation Station { get; }
@@ -41,7 +39,7 @@ public sealed partial class MemoryCellViewModel : ObservableObject
         AccessWidth.Bit => "bit",
         AccessWidth.Byte => "byte",
         AccessWidth.Word => "word",
-        _ => "double word",
+        AccessWidth.DoubleWord => "double word",
     };
 
     public string Description => Tag.Description;
@@ -51,7 +49,7 @@ public sealed partial class MemoryCellViewModel : ObservableObject
     /// <summary>Only the formats that fit the width: Bool for a bit, Float only for a double word (DisplayFormats.Fits).</summary>
     public IReadOnlyList<DisplayFormat> FormatChoices { get; }
 
-    /// <summary>Changing it edits the project (it becomes unsaved).</summary>
+    /// <summary>Changing it edits the project (it becomes unsaved) through <see cref="ChangeFormatCommand"/>, which owns the edit's task.</summary>
     public DisplayFormat Format
     {
         get => Tag.Format;
@@ -59,7 +57,7 @@ public sealed partial class MemoryCellViewModel : ObservableObject
         {
             if (value != Tag.Format)
             {
-                _ = _owner.ChangeFormatAsync(this, value);
+                ChangeFormatCommand.Execute(value);
             }
         }
     }
@@ -73,14 +71,9 @@ public sealed partial class MemoryCellViewModel : ObservableObject
         ? ValueFormatter.Format(value.Raw.AsSpan(), Tag.Address.Width, Tag.Format)
         : "-";
 
-    public RelayCommand BeginEditCommand { get; }
-
-    public AsyncRelayCommand CommitEditCommand { get; }
-
-    public RelayCommand CancelEditCommand { get; }
-
     internal bool CanEdit => Writable && _owner.CanWrite();
 
+    /// <summary>The cell's subscription to its address (PanelSession.Values): every value read, on the UI thread.</summary>
     internal void Apply(PolledValue value)
     {
         _value = value;
@@ -89,6 +82,17 @@ public sealed partial class MemoryCellViewModel : ObservableObject
         OnPropertyChanged(nameof(QualityText));
     }
 
+    [RelayCommand(CanExecute = nameof(CanCommitEdit))]
+    private Task CommitEditAsync() => _owner.CommitAsync(this);
+
+    /// <summary>The format combo box's edit; never throws (the owner reports a failure on the status line).</summary>
+    [RelayCommand]
+    private Task ChangeFormatAsync(DisplayFormat format) => _owner.ChangeFormatAsync(this, format);
+
+    private bool CanBeginEdit() => CanEdit && !IsEditing;
+
+    private bool CanCommitEdit() => IsEditing && !IsWriting;
+
     internal void NotifyCommands()
     {
         BeginEditCommand.NotifyCanExecuteChanged();
@@ -96,6 +100,7 @@ public sealed partial class MemoryCellViewModel : ObservableObject
         CancelEditCommand.NotifyCanExecuteChanged();
     }
 
+    [RelayCommand(CanExecute = nameof(CanBeginEdit))]
     private void BeginEdit()
     {
         EditText = ValueText == "-" ? string.Empty : ValueText;
@@ -103,6 +108,7 @@ public sealed partial class MemoryCellViewModel : ObservableObject
         IsEditing = true;
     }
 
+    [RelayCommand(CanExecute = nameof(IsEditing))]
     private void CancelEdit()
     {
         EditError = null;

@@ -1,80 +1,43 @@
 using System.Collections.Immutable;
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Memory;
 
 /// <summary>The cell list: add (address checked against the station's CPU), remove, move up and down. Each edit marks the project unsaved.</summary>
 public sealed partial class MemoryViewModel
 {
-    private ImmutableArray<ProjectStation> _stationChoices = [];
-    private ProjectStation? _newStation;
-    private string _newAddress = string.Empty;
-    private string _newSymbol = string.Empty;
-    private string? _addError;
-
-    public AsyncRelayCommand AddCommand { get; }
-
-    public AsyncRelayCommand RemoveCommand { get; }
-
-    public AsyncRelayCommand MoveUpCommand { get; }
-
-    public AsyncRelayCommand MoveDownCommand { get; }
-
-    public ImmutableArray<ProjectStation> StationChoices
-    {
-        get => _stationChoices;
-        private set => SetProperty(ref _stationChoices, value);
-    }
+    [ObservableProperty]
+    public partial ImmutableArray<ProjectStation> StationChoices { get; private set; } = [];
 
     /// <summary>The station a new cell goes to; the first one unless the operator picks another.</summary>
-    public ProjectStation? NewStation
-    {
-        get => _newStation;
-        set
-        {
-            if (SetProperty(ref _newStation, value))
-            {
-                AddCommand.NotifyCanExecuteChanged();
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyCanExecuteChangedFor(nameof(AddCommand))]
+    public partial ProjectStation? NewStation { get; set; }
 
     public string NewAddress
     {
-        get => _newAddress;
-        set => SetProperty(ref _newAddress, value ?? string.Empty);
+        get;
+        set => SetProperty(ref field, value ?? string.Empty);
     }
+
+    = string.Empty;
 
     public string NewSymbol
     {
-        get => _newSymbol;
-        set => SetProperty(ref _newSymbol, value ?? string.Empty);
+        get;
+        set => SetProperty(ref field, value ?? string.Empty);
     }
+
+    = string.Empty;
 
     /// <summary>Why the new cell was refused ("VW10240: ... CPU 224 has V memory VB0-VB8191"); null when none.</summary>
-    public string? AddError
-    {
-        get => _addError;
-        private set => SetProperty(ref _addError, value);
-    }
+    [ObservableProperty]
+    public partial string? AddError { get; private set; }
 
-    private (AsyncRelayCommand, AsyncRelayCommand, AsyncRelayCommand, AsyncRelayCommand) CreateListCommands() =>
-    (
-        new AsyncRelayCommand(AddAsync, () => NewStation is not null),
-        new AsyncRelayCommand(RemoveAsync, () => SelectedCell is not null),
-        new AsyncRelayCommand(() => MoveAsync(-1), () => CanMove(-1)),
-        new AsyncRelayCommand(() => MoveAsync(+1), () => CanMove(+1))
-    );
-
-    private void NotifyListCommands()
-    {
-        RemoveCommand.NotifyCanExecuteChanged();
-        MoveUpCommand.NotifyCanExecuteChanged();
-        MoveDownCommand.NotifyCanExecuteChanged();
-    }
-
+    [RelayCommand(CanExecute = nameof(HasNewStation))]
     private async Task AddAsync()
     {
         AddError = null;
@@ -109,6 +72,7 @@ public sealed partial class MemoryViewModel
         }
     }
 
+    [RelayCommand(CanExecute = nameof(HasSelectedCell))]
     private async Task RemoveAsync()
     {
         if (SelectedCell is not { } cell)
@@ -119,9 +83,23 @@ public sealed partial class MemoryViewModel
         var tags = cell.Station.Tags;
         var index = tags.IndexOf(cell.Tag);
         var next = index + 1 < tags.Length ? tags[index + 1] : index > 0 ? tags[index - 1] : null;
-        var select = next is null ? ((Core.Link.Station, string)?)null : (cell.Station.Address, next.Symbol);
+        var select = next is null ? ((Core.Addressing.Station, string)?)null : (cell.Station.Address, next.Symbol);
         await ApplyEditAsync(ProjectEdits.WithTags(_session.Project, cell.Station.Address, tags.RemoveAt(index)), select, _session.StatusLine.ShowError);
     }
+
+    [RelayCommand(CanExecute = nameof(CanMoveUp))]
+    private Task MoveUpAsync() => MoveAsync(-1);
+
+    [RelayCommand(CanExecute = nameof(CanMoveDown))]
+    private Task MoveDownAsync() => MoveAsync(+1);
+
+    private bool HasNewStation() => NewStation is not null;
+
+    private bool HasSelectedCell() => SelectedCell is not null;
+
+    private bool CanMoveUp() => CanMove(-1);
+
+    private bool CanMoveDown() => CanMove(+1);
 
     private bool CanMove(int step) =>
         SelectedCell is { } cell && cell.Station.Tags.IndexOf(cell.Tag) + step is var target && target >= 0 && target < cell.Station.Tags.Length;

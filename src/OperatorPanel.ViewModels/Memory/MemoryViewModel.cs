@@ -1,6 +1,7 @@
 using System.Collections.ObjectModel;
 using System.ComponentModel;
-using OperatorPanel.Core.Link;
+using CommunityToolkit.Mvvm.ComponentModel;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
@@ -20,7 +21,7 @@ public sealed partial class MemoryViewModel : PaneViewModel
     private readonly IDialogService _dialogs;
     private readonly PanelOptions _options;
     private readonly ILogger _logger;
-    private MemoryCellViewModel? _selectedCell;
+    private readonly List<IDisposable> _subscriptions = [];
     private (Station Station, string Symbol)? _selectAfterRebuild;
 
     public MemoryViewModel(PanelSession session, IDialogService dialogs, PanelOptions options, ILogger? logger = null)
@@ -31,7 +32,6 @@ public sealed partial class MemoryViewModel : PaneViewModel
         ArgumentNullException.ThrowIfNull(options);
         (_session, _dialogs, _options) = (session, dialogs, options);
         _logger = (logger ?? Logger.None).ForContext<MemoryViewModel>();
-        (AddCommand, RemoveCommand, MoveUpCommand, MoveDownCommand) = CreateListCommands();
         session.ProjectChanged += (_, e) =>
         {
             if (e.Kind != ProjectChangeKind.Saved)
@@ -39,24 +39,15 @@ public sealed partial class MemoryViewModel : PaneViewModel
                 Rebuild();
             }
         };
-        session.ValuesChanged += (_, e) => ApplyValues(e);
         session.PropertyChanged += OnSessionChanged;
         Rebuild();
     }
 
     public ObservableCollection<MemoryCellViewModel> Cells { get; } = [];
 
-    public MemoryCellViewModel? SelectedCell
-    {
-        get => _selectedCell;
-        set
-        {
-            if (SetProperty(ref _selectedCell, value))
-            {
-                NotifyListCommands();
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyCanExecuteChangedFor(nameof(RemoveCommand), nameof(MoveUpCommand), nameof(MoveDownCommand))]
+    public partial MemoryCellViewModel? SelectedCell { get; set; }
 
     internal bool CanWrite() => _session.IsConnected && !_session.IsReadOnly;
 
@@ -64,6 +55,8 @@ public sealed partial class MemoryViewModel : PaneViewModel
     {
         var keep = _selectAfterRebuild ?? (SelectedCell is { } selected ? (selected.Station.Address, selected.Symbol) : null);
         _selectAfterRebuild = null;
+        _subscriptions.ForEach(s => s.Dispose());
+        _subscriptions.Clear();
         Cells.Clear();
         foreach (var station in _session.Project.Stations)
         {
@@ -78,29 +71,9 @@ public sealed partial class MemoryViewModel : PaneViewModel
             : null;
         StationChoices = _session.Project.Stations;
         NewStation = StationChoices.FirstOrDefault(s => s.Address == NewStation?.Address) ?? StationChoices.FirstOrDefault();
-        ApplyValues(new ValuesChangedEventArgs([], reset: true));
-    }
 
-    private void ApplyValues(ValuesChangedEventArgs e)
-    {
-        if (e.Reset)
-        {
-            foreach (var cell in Cells)
-            {
-                _session.TryGetValue(cell.Station.Address, cell.PlcAddress, out var value);
-                cell.Apply(value);
-            }
-
-            return;
-        }
-
-        foreach (var change in e.Changes)
-        {
-            foreach (var cell in Cells.Where(c => c.Station.Address == change.Station && c.PlcAddress == change.Address))
-            {
-                cell.Apply(change.Current);
-            }
-        }
+        // Each cell hears its own address only: the line routes a change to the cells showing it, no scan of the table.
+        _subscriptions.AddRange(Cells.Select(c => _session.Values.Subscribe(c.Station.Address, c.PlcAddress, c.Apply)));
     }
 
     private void OnSessionChanged(object? sender, PropertyChangedEventArgs e)

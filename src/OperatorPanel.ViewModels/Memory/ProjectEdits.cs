@@ -1,5 +1,5 @@
 using System.Collections.Immutable;
-using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.ViewModels.Memory;

@@ -39,7 +39,6 @@ public sealed class OutputsViewModel : PaneViewModel
                 _map.Rebuild();
             }
         };
-        session.ValuesChanged += (_, e) => _map.Apply(e);
         session.PropertyChanged += OnSessionChanged;
         _map.Rebuild();
     }

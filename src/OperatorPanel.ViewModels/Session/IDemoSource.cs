@@ -1,3 +1,5 @@
+using OperatorPanel.Core.Line;
+
 namespace OperatorPanel.ViewModels.Session;
 
 /// <summary>

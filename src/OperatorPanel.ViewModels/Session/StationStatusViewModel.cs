@@ -1,19 +1,15 @@
+using CommunityToolkit.Mvvm.ComponentModel;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Session;
 
 /// <summary>One station as the status bar and the Diagnostics window show it: health, last error, identity, link counters.</summary>
-public sealed class StationStatusViewModel(ProjectStation station) : ObservableObject
+public sealed partial class StationStatusViewModel(ProjectStation station) : ObservableObject
 {
-    private StationHealth _health;
-    private string? _lastError;
-    private LinkStatistics _statistics = LinkStatistics.Empty;
-    private StationIdentity? _identity;
-    private string? _identifyError;
     private bool _hasAnswered;
 
     public ProjectStation Station { get; } = station;
@@ -24,49 +20,22 @@ public sealed class StationStatusViewModel(ProjectStation station) : ObservableO
 
     public string PortText => $"{Station.Link.PortName} {Station.Link.LineText}";
 
-    public StationHealth Health
-    {
-        get => _health;
-        private set
-        {
-            if (SetProperty(ref _health, value))
-            {
-                OnPropertyChanged(nameof(HealthText));
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(HealthText))]
+    public partial StationHealth Health { get; private set; }
 
     /// <summary>The latest failure or refusal, kept after recovery so it can still be read.</summary>
-    public string? LastError
-    {
-        get => _lastError;
-        private set
-        {
-            if (SetProperty(ref _lastError, value))
-            {
-                OnPropertyChanged(nameof(HealthText));
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(HealthText))]
+    public partial string? LastError { get; private set; }
 
-    public LinkStatistics Statistics
-    {
-        get => _statistics;
-        private set => SetProperty(ref _statistics, value);
-    }
+    [ObservableProperty]
+    public partial LinkStatistics Statistics { get; private set; } = LinkStatistics.Empty;
 
     /// <summary>The station's IDENTIFY reply; null until it answered one.</summary>
-    public StationIdentity? Identity
-    {
-        get => _identity;
-        private set
-        {
-            if (SetProperty(ref _identity, value))
-            {
-                OnPropertyChanged(nameof(CpuMismatch));
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(CpuMismatch))]
+    public partial StationIdentity? Identity { get; private set; }
 
     /// <summary>The PLC reports another CPU than the project's: addresses were checked against the wrong sizes.</summary>
     public bool CpuMismatch => Identity?.Contradicts(Station.Cpu) == true;
@@ -78,15 +47,12 @@ public sealed class StationStatusViewModel(ProjectStation station) : ObservableO
         StationHealth.Stopped => "no answer: PLC in STOP, mode switch at TERM, or off the bus",
         StationHealth.HandlerMismatch =>
             $"handler protocol version {Identity?.ProtocolVersion} is not the panel's {Core.Protocol.HandlerIdentity.ProtocolVersion}: generate and download the PLC code again",
-        _ => "not connected",
+        StationHealth.Unknown => "not connected",
     };
 
     /// <summary>Why the last IDENTIFY brought no identity; null after one that did.</summary>
-    public string? IdentifyError
-    {
-        get => _identifyError;
-        private set => SetProperty(ref _identifyError, value);
-    }
+    [ObservableProperty]
+    public partial string? IdentifyError { get; private set; }
 
     internal void RecordIdentify(Core.Protocol.IdentifyResponse? reply, string? error)
     {
@@ -126,7 +92,7 @@ public sealed class StationStatusViewModel(ProjectStation station) : ObservableO
             StationState.Online => StationHealth.Online,
             StationState.Offline when !portGone && _hasAnswered => StationHealth.Stopped,
             StationState.Offline => StationHealth.Offline,
-            _ => StationHealth.Unknown,
+            StationState.Unknown => StationHealth.Unknown,
         };
     }
 }

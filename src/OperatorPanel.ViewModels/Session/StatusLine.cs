@@ -1,24 +1,15 @@
-using OperatorPanel.ViewModels.Mvvm;
+using CommunityToolkit.Mvvm.ComponentModel;
 
 namespace OperatorPanel.ViewModels.Session;
 
 /// <summary>The one line at the bottom of the shell: the latest thing the operator should know (a write, a failure).</summary>
-public sealed class StatusLine : ObservableObject
+public sealed partial class StatusLine : ObservableObject
 {
-    private string _text = "Ready";
-    private bool _isError;
+    [ObservableProperty]
+    public partial string Text { get; private set; } = "Ready";
 
-    public string Text
-    {
-        get => _text;
-        private set => SetProperty(ref _text, value);
-    }
-
-    public bool IsError
-    {
-        get => _isError;
-        private set => SetProperty(ref _isError, value);
-    }
+    [ObservableProperty]
+    public partial bool IsError { get; private set; }
 
     public void Show(string text) => (Text, IsError) = (text, false);
 

@@ -1,4 +1,4 @@
-using OperatorPanel.ViewModels.Mvvm;
+using CommunityToolkit.Mvvm.ComponentModel;
 
 namespace OperatorPanel.ViewModels.Shell;
 
@@ -6,17 +6,12 @@ namespace OperatorPanel.ViewModels.Shell;
 /// A dockable window (Inputs, Outputs, Memory, Alarms, Diagnostics): <see cref="ContentId"/> keys the saved layout,
 /// <see cref="IsVisible"/> is what the View menu toggles (the AvalonDock MVVM pattern of the house style).
 /// </summary>
-public abstract class PaneViewModel(string title, string contentId) : ObservableObject
+public abstract partial class PaneViewModel(string title, string contentId) : ObservableObject
 {
-    private bool _isVisible = true;
-
     public string Title { get; } = title;
 
     public string ContentId { get; } = contentId;
 
-    public bool IsVisible
-    {
-        get => _isVisible;
-        set => SetProperty(ref _isVisible, value);
-    }
+    [ObservableProperty]
+    public partial bool IsVisible { get; set; } = true;
 }

@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Line;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Wizard;

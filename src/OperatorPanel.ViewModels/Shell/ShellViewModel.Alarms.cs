@@ -1,7 +1,6 @@
 using System.ComponentModel;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Alarms;
-using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 
 namespace OperatorPanel.ViewModels.Shell;
@@ -41,8 +40,7 @@ public sealed partial class ShellViewModel : IDisposable
     private AlarmsViewModel CreateAlarms(PanelProject project, string? path)
     {
         (_alarmsProject, _alarmsPath) = (project, path);
-        // The session raises value changes on the UI thread already; a second hop through the dispatcher would only add delay.
-        var alarms = new AlarmsViewModel(project, path, Session, _time, OnUiThread.Instance, _services.Files);
+        var alarms = new AlarmsViewModel(project, path, Session.Values, _time, _services.Files);
         alarms.PropertyChanged += OnAlarmsChanged;
         return alarms;
     }
@@ -81,12 +79,5 @@ public sealed partial class ShellViewModel : IDisposable
         OnPropertyChanged(nameof(ActiveAlarmCount));
         OnPropertyChanged(nameof(UnacknowledgedAlarmCount));
         OnPropertyChanged(nameof(AlarmSummary));
-    }
-
-    private sealed class OnUiThread : IUiDispatcher
-    {
-        public static readonly OnUiThread Instance = new();
-
-        public void Post(Action action) => action();
     }
 }

@@ -1,5 +1,5 @@
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Mvvm;
 using OperatorPanel.ViewModels.Services;
 
 namespace OperatorPanel.ViewModels.Shell;
@@ -9,14 +9,6 @@ public sealed partial class ShellViewModel
 {
     /// <summary>At most this many problems of a corrupt file go into the message box; the log has them all.</summary>
     private const int ProblemsShown = 8;
-
-    public AsyncRelayCommand NewCommand { get; }
-
-    public AsyncRelayCommand OpenCommand { get; }
-
-    public AsyncRelayCommand SaveCommand { get; }
-
-    public AsyncRelayCommand SaveAsCommand { get; }
 
     /// <summary>
     /// For the window's Closing: asks about unsaved changes (Cancel keeps the window open: return false), then
@@ -40,14 +32,7 @@ public sealed partial class ShellViewModel
         return await ConfirmDiscardAsync() && await LoadAndReplaceAsync(path, demo: false);
     }
 
-    private (AsyncRelayCommand, AsyncRelayCommand, AsyncRelayCommand, AsyncRelayCommand) CreateFileCommands() =>
-    (
-        new AsyncRelayCommand(NewAsync),
-        new AsyncRelayCommand(OpenAsync),
-        new AsyncRelayCommand(async () => await SaveAsync(), () => HasProject),
-        new AsyncRelayCommand(async () => await SaveAsAsync(), () => HasProject)
-    );
-
+    [RelayCommand]
     private async Task NewAsync()
     {
         if (!await ConfirmDiscardAsync() || await _services.NewProjects.CreateAsync() is not { } project)
@@ -59,6 +44,7 @@ public sealed partial class ShellViewModel
         IsDirty = true;
     }
 
+    [RelayCommand]
     private async Task OpenAsync()
     {
         if (await ConfirmDiscardAsync() && _services.Files.PickFileToOpen("Open project", ProjectFilter) is { } path)
@@ -96,8 +82,11 @@ public sealed partial class ShellViewModel
         StatusLine.Show($"Opened {ProjectName}");
     }
 
+    /// <summary>SaveCommand; true when saved (false: cancelled or failed, the project stays unsaved).</summary>
+    [RelayCommand(CanExecute = nameof(HasProject))]
     private async Task<bool> SaveAsync() => ProjectPath is { } path ? await SaveToAsync(path) : await SaveAsAsync();
 
+    [RelayCommand(CanExecute = nameof(HasProject))]
     private async Task<bool> SaveAsAsync()
     {
         var path = _services.Files.PickFileToSave("Save project as", ProjectFilter, ProjectName + ProjectFile.Extension);
@@ -133,7 +122,7 @@ public sealed partial class ShellViewModel
         {
             SaveChangesAnswer.Save => await SaveAsync(),
             SaveChangesAnswer.Discard => true,
-            _ => false,
+            SaveChangesAnswer.Cancel => false,
         };
     }
 }

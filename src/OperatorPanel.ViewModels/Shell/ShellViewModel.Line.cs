@@ -1,26 +1,11 @@
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Polling;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Shell;
 
 /// <summary>The line: connect, disconnect, refresh mode (F5 refreshes in triggered mode), read-only mode, the demo.</summary>
 public sealed partial class ShellViewModel
 {
-    public AsyncRelayCommand ConnectCommand { get; }
-
-    public AsyncRelayCommand DisconnectCommand { get; }
-
-    /// <summary>F5: one full cycle of every station now.</summary>
-    public AsyncRelayCommand RefreshNowCommand { get; }
-
-    /// <summary>Continuous ⇄ triggered (seed 000 §7, the two refresh modes).</summary>
-    public RelayCommand ToggleRefreshModeCommand { get; }
-
-    public RelayCommand ToggleReadOnlyCommand { get; }
-
-    /// <summary>Opens the sample project on the simulated line; enabled when the App offers a demo.</summary>
-    public AsyncRelayCommand DemoCommand { get; }
-
     public bool IsConnected => Session.IsConnected;
 
     public bool IsContinuous
@@ -36,16 +21,7 @@ public sealed partial class ShellViewModel
         set => Session.IsReadOnly = value;
     }
 
-    private (AsyncRelayCommand, AsyncRelayCommand, AsyncRelayCommand, RelayCommand, RelayCommand, AsyncRelayCommand) CreateLineCommands() =>
-    (
-        new AsyncRelayCommand(ConnectAsync, () => HasProject && !Session.IsConnected),
-        new AsyncRelayCommand(DisconnectAsync, () => Session.IsConnected),
-        new AsyncRelayCommand(RefreshNowAsync, () => Session.IsConnected),
-        new RelayCommand(ToggleRefreshMode),
-        new RelayCommand(() => IsReadOnly = !IsReadOnly),
-        new AsyncRelayCommand(DemoAsync, () => _services.Demo is not null)
-    );
-
+    [RelayCommand(CanExecute = nameof(CanConnect))]
     private async Task ConnectAsync()
     {
         try
@@ -59,6 +35,7 @@ public sealed partial class ShellViewModel
         }
     }
 
+    [RelayCommand(CanExecute = nameof(IsConnected))]
     private async Task DisconnectAsync()
     {
         try
@@ -72,6 +49,8 @@ public sealed partial class ShellViewModel
         }
     }
 
+    /// <summary>F5 (RefreshNowCommand): one full cycle of every station now.</summary>
+    [RelayCommand(CanExecute = nameof(IsConnected))]
     private async Task RefreshNowAsync()
     {
         try
@@ -85,12 +64,19 @@ public sealed partial class ShellViewModel
         }
     }
 
+    /// <summary>Continuous ⇄ triggered (seed 000 §7, the two refresh modes).</summary>
+    [RelayCommand]
     private void ToggleRefreshMode()
     {
         IsContinuous = !IsContinuous;
         StatusLine.Show(IsContinuous ? "Refresh: continuous" : "Refresh: triggered; F5 refreshes");
     }
 
+    [RelayCommand]
+    private void ToggleReadOnly() => IsReadOnly = !IsReadOnly;
+
+    /// <summary>DemoCommand: opens the sample project on the simulated line; enabled when the App offers a demo.</summary>
+    [RelayCommand(CanExecute = nameof(HasDemo))]
     private async Task DemoAsync()
     {
         if (_services.Demo is not { } demo || !await ConfirmDiscardAsync() || !await LoadAndReplaceAsync(demo.SampleProjectPath, demo: true))
@@ -100,4 +86,8 @@ public sealed partial class ShellViewModel
 
         await ConnectAsync();
     }
+
+    private bool CanConnect() => HasProject && !Session.IsConnected;
+
+    private bool HasDemo() => _services.Demo is not null;
 }

@@ -1,5 +1,6 @@
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.ViewModels.Generate;
-using OperatorPanel.ViewModels.Mvvm;
 using OperatorPanel.ViewModels.Wizard;
 
 namespace OperatorPanel.ViewModels.Shell;
@@ -10,31 +11,21 @@ namespace OperatorPanel.ViewModels.Shell;
 /// </summary>
 public sealed partial class ShellViewModel
 {
-    private int _selectedStationIndex;
-    private GenerateCodeViewModel? _generateCode;
-
-    /// <summary>Opens the wizard on the station at <see cref="SelectedStationIndex"/>; Finish replaces the project (now unsaved).</summary>
-    public AsyncRelayCommand EditProjectCommand { get; }
-
     /// <summary>Opens Generate PLC code: sets <see cref="GenerateCode"/>, which the App shows while it is not null.</summary>
-    public RelayCommand GenerateCodeCommand { get; }
+    public IRelayCommand GenerateCodeCommand { get; }
 
     /// <summary>The station Edit project and Generate PLC code start on (index into the project's stations).</summary>
-    public int SelectedStationIndex
-    {
-        get => _selectedStationIndex;
-        set => SetProperty(ref _selectedStationIndex, value);
-    }
+    [ObservableProperty]
+    public partial int SelectedStationIndex { get; set; }
 
     /// <summary>The open Generate PLC code dialog; null when closed. The App closes it with <see cref="CloseGenerateCode"/>.</summary>
-    public GenerateCodeViewModel? GenerateCode
-    {
-        get => _generateCode;
-        private set => SetProperty(ref _generateCode, value);
-    }
+    [ObservableProperty]
+    public partial GenerateCodeViewModel? GenerateCode { get; private set; }
 
     public void CloseGenerateCode() => GenerateCode = null;
 
+    /// <summary>EditProjectCommand: the wizard on the station at <see cref="SelectedStationIndex"/>; Finish replaces the project (now unsaved).</summary>
+    [RelayCommand(CanExecute = nameof(CanEditProject))]
     private async Task EditProjectAsync()
     {
         if (_services is not { Wizards: { } presenter, ConnectionTester: { } tester, Ports: { } ports })
@@ -63,6 +54,8 @@ public sealed partial class ShellViewModel
             StatusLine.ShowError($"The edited project was kept but the line could not follow: {exception.Message}");
         }
     }
+
+    private bool CanEditProject() => HasProject && _services.Wizards is not null;
 
     private void OpenGenerateCode() =>
         GenerateCode = new GenerateCodeViewModel(Session.Project, Math.Clamp(SelectedStationIndex, 0, Session.Project.Stations.Length - 1), _services.Files);

@@ -1,11 +1,12 @@
 using System.Collections.ObjectModel;
 using System.ComponentModel;
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Alarms;
 using OperatorPanel.ViewModels.Diagnostics;
 using OperatorPanel.ViewModels.Inputs;
 using OperatorPanel.ViewModels.Memory;
-using OperatorPanel.ViewModels.Mvvm;
 using OperatorPanel.ViewModels.Outputs;
 using OperatorPanel.ViewModels.Session;
 using Serilog;
@@ -29,9 +30,6 @@ public sealed partial class ShellViewModel : ObservableObject
     private readonly ShellServices _services;
     private readonly TimeProvider _time;
     private readonly ILogger _logger;
-    private string? _projectPath;
-    private bool _isDirty;
-    private bool _isDemo;
 
     public ShellViewModel(PanelSession session, PanelOptions options, ShellServices services, TimeProvider? time = null, ILogger? logger = null)
     {
@@ -47,9 +45,6 @@ public sealed partial class ShellViewModel : ObservableObject
         Diagnostics = new DiagnosticsViewModel(session);
         AlarmsPane = new AlarmsPaneViewModel(CreateAlarms(session.Project, path: null));
         Panes = [Inputs, Outputs, Memory, AlarmsPane, Diagnostics];
-        (NewCommand, OpenCommand, SaveCommand, SaveAsCommand) = CreateFileCommands();
-        (ConnectCommand, DisconnectCommand, RefreshNowCommand, ToggleRefreshModeCommand, ToggleReadOnlyCommand, DemoCommand) = CreateLineCommands();
-        EditProjectCommand = new AsyncRelayCommand(EditProjectAsync, () => HasProject && _services.Wizards is not null);
         GenerateCodeCommand = new RelayCommand(OpenGenerateCode, () => HasProject);
         session.ProjectChanged += OnProjectChanged;
         session.PropertyChanged += OnSessionChanged;
@@ -78,42 +73,18 @@ public sealed partial class ShellViewModel : ObservableObject
     public StatusLine StatusLine => Session.StatusLine;
 
     /// <summary>The file the project was opened from or last saved to; null for a new or demo project.</summary>
-    public string? ProjectPath
-    {
-        get => _projectPath;
-        private set
-        {
-            if (SetProperty(ref _projectPath, value))
-            {
-                OnPropertyChanged(nameof(Title));
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(Title))]
+    public partial string? ProjectPath { get; private set; }
 
-    public bool IsDirty
-    {
-        get => _isDirty;
-        private set
-        {
-            if (SetProperty(ref _isDirty, value))
-            {
-                OnPropertyChanged(nameof(Title));
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(Title))]
+    public partial bool IsDirty { get; private set; }
 
     /// <summary>The sample project on the simulated line.</summary>
-    public bool IsDemo
-    {
-        get => _isDemo;
-        private set
-        {
-            if (SetProperty(ref _isDemo, value))
-            {
-                OnPropertyChanged(nameof(Title));
-            }
-        }
-    }
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(Title))]
+    public partial bool IsDemo { get; private set; }
 
     public bool HasProject => !Session.Project.Stations.IsEmpty;
 

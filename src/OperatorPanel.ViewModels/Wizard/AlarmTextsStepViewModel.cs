@@ -1,8 +1,8 @@
 using System.Collections.Immutable;
 using System.Collections.ObjectModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Alarms;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
@@ -10,14 +10,12 @@ namespace OperatorPanel.ViewModels.Wizard;
 /// Step 4: alarm texts on flag bits (seed 000 §7: "texts of messages, which will be displayed when activation of an
 /// appropriate marker in the PLC memory is detected"). Flags are M or V bits the CPU has; one alarm per flag.
 /// </summary>
-public sealed class AlarmTextsStepViewModel : WizardStepViewModel
+public sealed partial class AlarmTextsStepViewModel : WizardStepViewModel
 {
     internal AlarmTextsStepViewModel(IEnumerable<AlarmDefinition> alarms)
     {
         Alarms = new ObservableCollection<AlarmTextRowViewModel>(alarms.Select(a => new AlarmTextRowViewModel(a)));
         Track(Alarms);
-        AddCommand = new RelayCommand(() => Alarms.Add(new AlarmTextRowViewModel()));
-        RemoveCommand = new RelayCommand<AlarmTextRowViewModel>(row => Alarms.Remove(row));
     }
 
     public override int Number => 4;
@@ -26,9 +24,17 @@ public sealed class AlarmTextsStepViewModel : WizardStepViewModel
 
     public ObservableCollection<AlarmTextRowViewModel> Alarms { get; }
 
-    public RelayCommand AddCommand { get; }
+    [RelayCommand]
+    private void Add() => Alarms.Add(new AlarmTextRowViewModel());
 
-    public RelayCommand<AlarmTextRowViewModel> RemoveCommand { get; }
+    [RelayCommand]
+    private void Remove(AlarmTextRowViewModel? row)
+    {
+        if (row is not null)
+        {
+            Alarms.Remove(row);
+        }
+    }
 
     internal ImmutableArray<AlarmDefinition> Build() =>
         [.. Alarms.Select(r => new AlarmDefinition(PlcAddress.Parse(r.Flag.Trim()), r.Text.Trim(), r.Class, r.AcknowledgementRequired))];

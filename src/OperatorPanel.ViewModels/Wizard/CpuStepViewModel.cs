@@ -1,6 +1,6 @@
 using System.Globalization;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Link;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
@@ -38,7 +38,7 @@ public sealed class CpuStepViewModel : WizardStepViewModel
 
     /// <summary>The typed station address when valid.</summary>
     internal Station? Station =>
-        int.TryParse(StationAddress.Trim(), NumberStyles.Integer, CultureInfo.InvariantCulture, out var n) && Core.Link.Station.TryCreate(n, out var s, out _)
+        int.TryParse(StationAddress.Trim(), NumberStyles.Integer, CultureInfo.InvariantCulture, out var n) && Core.Addressing.Station.TryCreate(n, out var s, out _)
             ? s
             : null;
 
@@ -51,9 +51,9 @@ public sealed class CpuStepViewModel : WizardStepViewModel
 
         if (!int.TryParse(StationAddress.Trim(), NumberStyles.Integer, CultureInfo.InvariantCulture, out var number))
         {
-            yield return $"Station address '{StationAddress}' is not a number; use {Core.Link.Station.Min}-{Core.Link.Station.Max}.";
+            yield return $"Station address '{StationAddress}' is not a number; use {Core.Addressing.Station.Min}-{Core.Addressing.Station.Max}.";
         }
-        else if (!Core.Link.Station.TryCreate(number, out _, out var error))
+        else if (!Core.Addressing.Station.TryCreate(number, out _, out var error))
         {
             yield return $"The {error}.";
         }

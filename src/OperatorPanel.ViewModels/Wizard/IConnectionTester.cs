@@ -1,4 +1,4 @@
-using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 

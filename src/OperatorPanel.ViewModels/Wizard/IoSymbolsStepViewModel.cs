@@ -1,9 +1,10 @@
 using System.Collections.Immutable;
 using System.Collections.ObjectModel;
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
@@ -11,10 +12,9 @@ namespace OperatorPanel.ViewModels.Wizard;
 /// Step 2: names for input and output bits, typed in two tables or pasted from a Micro/WIN symbol table
 /// (<see cref="SymbolTableImport"/>). A pasted symbol for an address already listed replaces that row's symbol and comment.
 /// </summary>
-public sealed class IoSymbolsStepViewModel : WizardStepViewModel
+public sealed partial class IoSymbolsStepViewModel : WizardStepViewModel
 {
     private readonly Func<CpuProfile> _cpu;
-    private string? _pasteReport;
 
     internal IoSymbolsStepViewModel(IEnumerable<IoSymbol> inputs, IEnumerable<IoSymbol> outputs, Func<CpuProfile> cpu)
     {
@@ -23,11 +23,6 @@ public sealed class IoSymbolsStepViewModel : WizardStepViewModel
         Outputs = new ObservableCollection<IoSymbolRowViewModel>(outputs.Select(s => new IoSymbolRowViewModel(s)));
         Track(Inputs);
         Track(Outputs);
-        AddInputCommand = new RelayCommand(() => Inputs.Add(new IoSymbolRowViewModel()));
-        AddOutputCommand = new RelayCommand(() => Outputs.Add(new IoSymbolRowViewModel()));
-        RemoveCommand = new RelayCommand<IoSymbolRowViewModel>(row => _ = Inputs.Remove(row) || Outputs.Remove(row));
-        FillLocalPointsCommand = new RelayCommand(FillLocalPoints);
-        PasteCommand = new RelayCommand<string>(Paste);
     }
 
     public override int Number => 2;
@@ -38,24 +33,30 @@ public sealed class IoSymbolsStepViewModel : WizardStepViewModel
 
     public ObservableCollection<IoSymbolRowViewModel> Outputs { get; }
 
-    public RelayCommand AddInputCommand { get; }
-
-    public RelayCommand AddOutputCommand { get; }
-
-    public RelayCommand<IoSymbolRowViewModel> RemoveCommand { get; }
-
-    /// <summary>Replaces both tables with the CPU's on-board points and placeholder symbols (I0.0 Input_0_0 ...).</summary>
-    public RelayCommand FillLocalPointsCommand { get; }
-
-    /// <summary>Takes the clipboard text of a Micro/WIN symbol table.</summary>
-    public RelayCommand<string> PasteCommand { get; }
-
     /// <summary>What the last paste did, e.g. "Pasted 3 inputs and 2 outputs; 1 line rejected."</summary>
-    public string? PasteReport { get => _pasteReport; private set => SetProperty(ref _pasteReport, value); }
+    [ObservableProperty]
+    public partial string? PasteReport { get; private set; }
 
     /// <summary>The lines the last paste rejected: "line 4: VW100 is not an input or output bit; ...".</summary>
     public ObservableCollection<string> RejectedLines { get; } = [];
 
+    [RelayCommand]
+    private void AddInput() => Inputs.Add(new IoSymbolRowViewModel());
+
+    [RelayCommand]
+    private void AddOutput() => Outputs.Add(new IoSymbolRowViewModel());
+
+    [RelayCommand]
+    private void Remove(IoSymbolRowViewModel? row)
+    {
+        if (row is not null && !Inputs.Remove(row))
+        {
+            Outputs.Remove(row);
+        }
+    }
+
+    /// <summary>PasteCommand: takes the clipboard text of a Micro/WIN symbol table.</summary>
+    [RelayCommand]
     public void Paste(string text)
     {
         ArgumentNullException.ThrowIfNull(text);
@@ -127,9 +128,11 @@ public sealed class IoSymbolsStepViewModel : WizardStepViewModel
         }
     }
 
+    /// <summary>FillLocalPointsCommand: replaces both tables with the CPU's on-board points and placeholder symbols (I0.0 Input_0_0 ...).</summary>
+    [RelayCommand]
     private void FillLocalPoints()
     {
-        var starter = StarterProject.Create(string.Empty, _cpu(), new Core.Link.Station(2), "COM1").Stations[0];
+        var starter = StarterProject.Create(string.Empty, _cpu(), new Core.Addressing.Station(2), "COM1").Stations[0];
         Inputs.Clear();
         Outputs.Clear();
         foreach (var input in starter.Inputs)

@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
@@ -27,6 +28,6 @@ public sealed class LinkConnectionTester : IConnectionTester
     {
         ArgumentNullException.ThrowIfNull(link);
         await using var plcLink = new PlcLink(_openTransport(link), LinkOptions.For(link), _time);
-        return await plcLink.ExchangeAsync(new IdentifyRequest(station, 1), cancellationToken);
+        return await plcLink.ExchangeAsync(new IdentifyRequest(station), cancellationToken);
     }
 }

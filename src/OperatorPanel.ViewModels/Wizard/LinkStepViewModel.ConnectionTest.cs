@@ -1,4 +1,6 @@
 using System.Globalization;
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 
@@ -7,15 +9,16 @@ namespace OperatorPanel.ViewModels.Wizard;
 /// <summary>The link step's "test connection": one IDENTIFY, its answer decoded and compared with step 1's CPU.</summary>
 public sealed partial class LinkStepViewModel
 {
-    private string? _testResult;
-    private bool? _testSucceeded;
-
     /// <summary>What the test found, for the operator; null before the first test.</summary>
-    public string? TestResult { get => _testResult; private set => SetProperty(ref _testResult, value); }
+    [ObservableProperty]
+    public partial string? TestResult { get; private set; }
 
     /// <summary>True when the station answered and matches the chosen CPU; false on a failure or mismatch; null while untested or running.</summary>
-    public bool? TestSucceeded { get => _testSucceeded; private set => SetProperty(ref _testSucceeded, value); }
+    [ObservableProperty]
+    public partial bool? TestSucceeded { get; private set; }
 
+    /// <summary>TestConnectionCommand.</summary>
+    [RelayCommand]
     private async Task TestConnectionAsync()
     {
         var cpu = _cpuStep.Cpu;

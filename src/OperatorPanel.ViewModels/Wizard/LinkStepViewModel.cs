@@ -1,7 +1,7 @@
 using System.Collections.ObjectModel;
 using System.Globalization;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Transport;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
@@ -24,8 +24,6 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
     {
         (_cpuStep, _catalog, _tester) = (cpuStep, catalog, tester);
         (_portName, _baudRate, _parity, _dataBits, _kind) = (link.PortName, link.BaudRate, link.Parity, link.DataBits, link.Kind);
-        RefreshPortsCommand = new RelayCommand(RefreshPorts);
-        TestConnectionCommand = new AsyncRelayCommand(TestConnectionAsync);
         cpuStep.PropertyChanged += (_, e) =>
         {
             if (e.PropertyName == nameof(CpuStepViewModel.Cpu))
@@ -51,10 +49,6 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
     public IReadOnlyList<int> DataBitChoices { get; } = [8, 7];
 
     public IReadOnlyList<LinkKind> Kinds { get; } = Enum.GetValues<LinkKind>();
-
-    public RelayCommand RefreshPortsCommand { get; }
-
-    public AsyncRelayCommand TestConnectionCommand { get; }
 
     public string PortName
     {
@@ -106,6 +100,7 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
         }
     }
 
+    [RelayCommand]
     private void RefreshPorts()
     {
         Ports.Clear();

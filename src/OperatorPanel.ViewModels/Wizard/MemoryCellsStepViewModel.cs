@@ -1,8 +1,8 @@
 using System.Collections.Immutable;
 using System.Collections.ObjectModel;
+using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
@@ -10,17 +10,12 @@ namespace OperatorPanel.ViewModels.Wizard;
 /// Step 3: the memory cells the PLC memory window watches (seed 000 §7: any bit, byte, word or double word of M and V;
 /// I, Q and SM read-only as the project file allows). Each address is checked against the CPU, for writing when writable.
 /// </summary>
-public sealed class MemoryCellsStepViewModel : WizardStepViewModel
+public sealed partial class MemoryCellsStepViewModel : WizardStepViewModel
 {
     internal MemoryCellsStepViewModel(IEnumerable<ProjectTag> tags)
     {
         Cells = new ObservableCollection<MemoryCellRowViewModel>(tags.Select(t => new MemoryCellRowViewModel(t)));
         Track(Cells);
-        AddCommand = new RelayCommand(() => Cells.Add(new MemoryCellRowViewModel()));
-        RemoveCommand = new RelayCommand<MemoryCellRowViewModel>(row => Cells.Remove(row));
-        MoveUpCommand = new RelayCommand<MemoryCellRowViewModel>(row => Cells.Move(Cells.IndexOf(row), Cells.IndexOf(row) - 1), row => Cells.IndexOf(row) > 0);
-        MoveDownCommand = new RelayCommand<MemoryCellRowViewModel>(
-            row => Cells.Move(Cells.IndexOf(row), Cells.IndexOf(row) + 1), row => Cells.IndexOf(row) is var i && i >= 0 && i < Cells.Count - 1);
     }
 
     public override int Number => 3;
@@ -29,13 +24,29 @@ public sealed class MemoryCellsStepViewModel : WizardStepViewModel
 
     public ObservableCollection<MemoryCellRowViewModel> Cells { get; }
 
-    public RelayCommand AddCommand { get; }
+    [RelayCommand]
+    private void Add() => Cells.Add(new MemoryCellRowViewModel());
 
-    public RelayCommand<MemoryCellRowViewModel> RemoveCommand { get; }
+    [RelayCommand]
+    private void Remove(MemoryCellRowViewModel? row)
+    {
+        if (row is not null)
+        {
+            Cells.Remove(row);
+        }
+    }
 
-    public RelayCommand<MemoryCellRowViewModel> MoveUpCommand { get; }
+    [RelayCommand(CanExecute = nameof(CanMoveUp))]
+    private void MoveUp(MemoryCellRowViewModel? row) => Cells.Move(IndexOf(row), IndexOf(row) - 1);
 
-    public RelayCommand<MemoryCellRowViewModel> MoveDownCommand { get; }
+    [RelayCommand(CanExecute = nameof(CanMoveDown))]
+    private void MoveDown(MemoryCellRowViewModel? row) => Cells.Move(IndexOf(row), IndexOf(row) + 1);
+
+    private bool CanMoveUp(MemoryCellRowViewModel? row) => IndexOf(row) > 0;
+
+    private bool CanMoveDown(MemoryCellRowViewModel? row) => IndexOf(row) is var i && i >= 0 && i < Cells.Count - 1;
+
+    private int IndexOf(MemoryCellRowViewModel? row) => row is null ? -1 : Cells.IndexOf(row);
 
     internal ImmutableArray<ProjectTag> Build() =>
         [.. Cells.Select(r => new ProjectTag(r.Symbol.Trim(), PlcAddress.Parse(r.Address.Trim()), r.Format, r.Writable, r.Description.Trim()))];

@@ -1,7 +1,8 @@
+using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Mvvm;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
@@ -11,13 +12,12 @@ namespace OperatorPanel.ViewModels.Wizard;
 /// one station of it with every field prefilled ("the project can be freely edited later at any time"), and Finish may
 /// be pressed on any page. The result is in <see cref="Result"/> once <see cref="IsFinished"/>.
 /// </summary>
-public sealed class ProjectWizardViewModel : ObservableObject
+public sealed partial class ProjectWizardViewModel : ObservableObject
 {
     private readonly PanelProject _original;
     private readonly int _stationIndex;
     private int _currentIndex;
     private string? _finishMessage;
-    private PanelProject? _result;
 
     /// <summary>A new project: one CPU 224 at station 2 with its on-board I/O named, 9600 8N1 over a cable.</summary>
     public ProjectWizardViewModel(IConnectionTester tester, ISerialPortCatalog ports)
@@ -51,9 +51,6 @@ public sealed class ProjectWizardViewModel : ObservableObject
             step.Edited += OnEdited;
         }
 
-        BackCommand = new RelayCommand(() => CurrentIndex--, () => CurrentIndex > 0);
-        NextCommand = new RelayCommand(() => CurrentIndex++, () => CurrentIndex < Steps.Count - 1 && CurrentStep.IsValid);
-        FinishCommand = new RelayCommand(Finish, () => (IsEditing || CurrentIndex == Steps.Count - 1) && CurrentStep.IsValid);
         Revalidate();
     }
 
@@ -70,12 +67,6 @@ public sealed class ProjectWizardViewModel : ObservableObject
     public AlarmTextsStepViewModel AlarmStep { get; }
 
     public LinkStepViewModel LinkStep { get; }
-
-    public RelayCommand BackCommand { get; }
-
-    public RelayCommand NextCommand { get; }
-
-    public RelayCommand FinishCommand { get; }
 
     public int CurrentIndex
     {
@@ -95,7 +86,8 @@ public sealed class ProjectWizardViewModel : ObservableObject
     /// <summary>Why Next or Finish is refused: the current page's first problem, or what Finish found; null when all is well.</summary>
     public string? Message => _finishMessage ?? CurrentStep.Message;
 
-    public PanelProject? Result { get => _result; private set => SetProperty(ref _result, value); }
+    [ObservableProperty]
+    public partial PanelProject? Result { get; private set; }
 
     public bool IsFinished => Result is not null;
 
@@ -128,6 +120,19 @@ public sealed class ProjectWizardViewModel : ObservableObject
     private WizardContext ContextFor(WizardStepViewModel step) =>
         new(CpuStep.Cpu, step == MemoryStep ? IoStep.Symbols() : new HashSet<string>());
 
+    [RelayCommand(CanExecute = nameof(CanGoBack))]
+    private void Back() => CurrentIndex--;
+
+    [RelayCommand(CanExecute = nameof(CanGoNext))]
+    private void Next() => CurrentIndex++;
+
+    private bool CanGoBack() => CurrentIndex > 0;
+
+    private bool CanGoNext() => CurrentIndex < Steps.Count - 1 && CurrentStep.IsValid;
+
+    private bool CanFinish() => (IsEditing || CurrentIndex == Steps.Count - 1) && CurrentStep.IsValid;
+
+    [RelayCommand(CanExecute = nameof(CanFinish))]
     private void Finish()
     {
         foreach (var step in Steps)

@@ -1,7 +1,7 @@
 using System.Collections.Immutable;
 using System.Collections.ObjectModel;
 using System.Collections.Specialized;
-using OperatorPanel.ViewModels.Mvvm;
+using CommunityToolkit.Mvvm.ComponentModel;
 
 namespace OperatorPanel.ViewModels.Wizard;
 

@@ -1,4 +1,5 @@
 using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;

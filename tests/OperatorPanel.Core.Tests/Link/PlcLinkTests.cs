@@ -1,4 +1,5 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
@@ -7,16 +8,17 @@ using OperatorPanel.TestKit;
 namespace OperatorPanel.Core.Tests.Link;
 
 /// <summary>
-/// The link against annotated scripts. Frames are the worked examples' shape: station 02, SEQ 2A, READ of MB0 (1 byte).
+/// The link against annotated scripts. Frames are the worked examples' shape: station 02, READ of MB0 (1 byte), under
+/// SEQ 01, the number a new link stamps on its first request.
 /// </summary>
 public sealed class PlcLinkTests
 {
     private static readonly Station Station2 = new(2);
-    private static readonly ReadRequest ReadMb0 = new(Station2, 0x2A, [new ReadItem(ProtocolArea.M, 0, 1)]);
+    private static readonly ReadRequest ReadMb0 = new(Station2, [new ReadItem(ProtocolArea.M, 0, 1)]);
 
-    private static string Request => Ascii(RequestCodec.Encode(ReadMb0));
+    private static string Request => Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x01 }));
 
-    private static string Reply(byte data, byte sequence = 0x2A) =>
+    private static string Reply(byte data, byte sequence = 0x01) =>
         Ascii(ResponseCodec.Encode(new ReadResponse(Station2, sequence, [data])));
 
     [Fact]
@@ -108,7 +110,7 @@ public sealed class PlcLinkTests
         var transport = new ScriptedTransport($"""
             > "{Request}"
             < "{Request}"             // RS-485 adapter echoing our own request
-            < "{Reply(0x11, 0x29)}"   // late reply to SEQ 29
+            < "{Reply(0x11, 0xFF)}"   // late reply to SEQ FF, an earlier request
             < "xx{Reply(0x33)}"       // noise, then the real reply
             """, clock);
         var link = NewLink(transport, clock);
@@ -123,7 +125,7 @@ public sealed class PlcLinkTests
     public async Task Exchange_StationRefuses_ReturnsErrorResponseAndCountsIt()
     {
         var clock = new ManualTimeProvider();
-        var refusal = Ascii(ResponseCodec.Encode(new ErrorResponse(Station2, 0x2A, CommandCode.Read, ProtocolError.AddressOutOfRange)));
+        var refusal = Ascii(ResponseCodec.Encode(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange)));
         var transport = new ScriptedTransport($"""
             > "{Request}"
             < "{refusal}"
@@ -132,7 +134,7 @@ public sealed class PlcLinkTests
 
         var response = await link.ExchangeAsync(ReadMb0, default);
 
-        response.Should().BeEquivalentTo(new ErrorResponse(Station2, 0x2A, CommandCode.Read, ProtocolError.AddressOutOfRange));
+        response.Should().BeEquivalentTo(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange));
         link.IsOnline(Station2).Should().BeTrue();
         link.StatisticsFor(Station2).NegativeReplies.Should().Be(1);
     }
@@ -162,7 +164,7 @@ public sealed class PlcLinkTests
         var pair = new InMemoryTransportPair(clock);
         await pair.BusSide.OpenAsync(default);
         var link = new PlcLink(pair.PanelSide, LinkOptions.For(Some.SerialSettings()) with { InterFrameGap = TimeSpan.Zero }, clock);
-        var other = ReadMb0 with { Sequence = 0x2B };
+        var other = ReadMb0 with { Items = [new ReadItem(ProtocolArea.M, 1, 1)] };
 
         var first = link.ExchangeAsync(ReadMb0, default);
         var second = link.ExchangeAsync(other, default);
@@ -173,9 +175,40 @@ public sealed class PlcLinkTests
         nothingMore.Should().Be(0, "the second request waits for the first reply");
         await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x01)), default);
         (await first).Should().BeOfType<ReadResponse>();
-        (await ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(other)));
-        await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x02, 0x2B)), default);
+        (await ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(other with { Sequence = 0x02 })));
+        await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x02, 0x02)), default);
         ((ReadResponse)await second).Data.Should().Equal(0x02);
+    }
+
+    [Fact]
+    public async Task Exchange_EveryRequestIdentifyIncluded_GoesOutUnderTheLinksNextSequenceWhateverTheCallerSet()
+    {
+        var clock = new ManualTimeProvider();
+        var identify = new IdentifyRequest(Station2, 0x01);
+        var transport = new ScriptedTransport($"""
+            > "{Request}"                                                        // SEQ 01
+            < "{Reply(0x10)}"
+            > "{Ascii(RequestCodec.Encode(identify with { Sequence = 0x02 }))}"   // IDENTIFY under SEQ 02, not the caller's 01
+            < no response
+            > "{Ascii(RequestCodec.Encode(identify with { Sequence = 0x02 }))}"   // its retry keeps SEQ 02
+            < no response
+            > "{Ascii(RequestCodec.Encode(identify with { Sequence = 0x02 }))}"
+            < no response
+            > "{Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x03 }))}"    // SEQ 03
+            < "{Reply(0x99, 0x02)}"                                             // late answer to SEQ 02: skipped
+            < "{Reply(0x30, 0x03)}"
+            """, clock);
+        var link = NewLink(transport, clock);
+
+        var first = await link.ExchangeAsync(ReadMb0, default);
+        var silent = () => link.ExchangeAsync(identify, default);
+        await silent.Should().ThrowAsync<PlcCommunicationException>();
+        var third = await link.ExchangeAsync(ReadMb0, default);
+
+        first.Sequence.Should().Be(0x01);
+        ((ReadResponse)third).Data.Should().Equal(0x30);
+        third.Sequence.Should().Be(0x03);
+        transport.AssertComplete();
     }
 
     [Theory]

@@ -90,7 +90,7 @@ public sealed class PollingEngineListTests
         ReadListAssignment.For(plan).Should().Equal(new Dictionary<int, int> { [1] = 1 });
     }
 
-    private static PolledValue Value(PollingEngine engine, Core.Link.Station station, string address)
+    private static PolledValue Value(PollingEngine engine, Core.Addressing.Station station, string address)
     {
         engine.TryGetValue(station, PlcAddress.Parse(address), out var value).Should().BeTrue();
         return value;

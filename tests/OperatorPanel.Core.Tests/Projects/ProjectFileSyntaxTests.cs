@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.Core.Tests.Projects;

@@ -1,4 +1,5 @@
 using System.Text.Json.Nodes;
+using OperatorPanel.Core.Addressing;
 
 namespace OperatorPanel.Core.Tests.Projects;
 

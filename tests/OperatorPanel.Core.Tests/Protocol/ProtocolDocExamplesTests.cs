@@ -1,5 +1,6 @@
 using System.Text;
 using System.Text.RegularExpressions;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 

@@ -1,4 +1,5 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 

@@ -1,4 +1,5 @@
 using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;

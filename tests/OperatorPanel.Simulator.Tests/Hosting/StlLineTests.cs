@@ -32,7 +32,7 @@ public sealed class StlLineTests
     public void StlLine_Read_AnswersAsTheReferenceModelDoes()
     {
         var line = Line(runProcess: false, 2);
-        var reference = new ReferencePlc(new HandlerConfig(new Core.Link.Station(2), Cpu224));
+        var reference = new ReferencePlc(new HandlerConfig(new Core.Addressing.Station(2), Cpu224));
         line.Stations[0].Memory.M.AsSpan(0, 8).SetBytes([1, 2, 3, 4, 5, 6, 7, 8]);
         reference.Memory.M.AsSpan(0, 8).SetBytes([1, 2, 3, 4, 5, 6, 7, 8]);
         var request = Read(2, ProtocolArea.M, 2, 5, sequence: 9);

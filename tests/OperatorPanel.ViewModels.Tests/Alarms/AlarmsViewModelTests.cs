@@ -3,7 +3,6 @@ using OperatorPanel.Core.Polling;
 using OperatorPanel.TestKit;
 using OperatorPanel.ViewModels.Alarms;
 using OperatorPanel.ViewModels.Tests.Fakes;
-using OperatorPanel.ViewModels.Values;
 using static OperatorPanel.ViewModels.Tests.Fakes.AlarmProject;
 
 namespace OperatorPanel.ViewModels.Tests.Alarms;
@@ -12,7 +11,7 @@ public sealed class AlarmsViewModelTests : IDisposable
 {
     private const string JamText = "\"Conveyor jam, \"\"infeed\"\", stop\"";
     private readonly ManualTimeProvider _clock = new();
-    private readonly ValueChangeRelay _values = new();
+    private readonly FakeLineValues _values = new();
     private readonly ScriptedFileDialogs _files = new();
     private readonly TempFolder _folder = new();
 
@@ -184,5 +183,5 @@ public sealed class AlarmsViewModelTests : IDisposable
     }
 
     private AlarmsViewModel Create(string? projectPath = null) =>
-        new(AlarmProject.Create(), projectPath, _values, _clock, new InlineDispatcher(), _files);
+        new(AlarmProject.Create(), projectPath, _values, _clock, _files);
 }

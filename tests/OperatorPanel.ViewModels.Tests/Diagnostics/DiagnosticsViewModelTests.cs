@@ -19,7 +19,7 @@ public sealed class DiagnosticsViewModelTests : IAsyncDisposable
         _panel.Plc.CompleteScan(12);
         _panel.Plc.CompleteScan(9);
 
-        await _diagnostics.IdentifyCommand.ExecuteAsync().Guarded();
+        await _diagnostics.IdentifyCommand.ExecuteAsync(null).Guarded();
         await _panel.RefreshAsync();
 
         var station = _diagnostics.Stations.Should().ContainSingle().Subject;

@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;

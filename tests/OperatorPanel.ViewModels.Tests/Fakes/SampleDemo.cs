@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Line;
 using OperatorPanel.ViewModels.Session;
 
 namespace OperatorPanel.ViewModels.Tests.Fakes;

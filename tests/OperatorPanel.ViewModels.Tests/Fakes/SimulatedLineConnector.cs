@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;

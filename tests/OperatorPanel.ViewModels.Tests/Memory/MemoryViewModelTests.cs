@@ -30,7 +30,7 @@ public sealed class MemoryViewModelTests : IAsyncDisposable
         Speed.BeginEditCommand.Execute(null);
         Speed.EditText = "70000";
 
-        await Speed.CommitEditCommand.ExecuteAsync().Guarded();
+        await Speed.CommitEditCommand.ExecuteAsync(null).Guarded();
 
         Speed.EditError.Should().Be("VW10: 70000 is outside -32768..32767, the range of a signed word");
         Speed.IsEditing.Should().BeTrue("the operator corrects the value or presses Esc");
@@ -46,7 +46,7 @@ public sealed class MemoryViewModelTests : IAsyncDisposable
         Speed.BeginEditCommand.Execute(null);
         Speed.EditText = "-1500";
 
-        await Speed.CommitEditCommand.ExecuteAsync().Guarded();
+        await Speed.CommitEditCommand.ExecuteAsync(null).Guarded();
 
         _panel.Plc.Memory.ReadWord(ProtocolArea.V, 10).Should().Be(unchecked((ushort)-1500));
         Speed.ValueText.Should().Be("-1500");
@@ -100,7 +100,7 @@ public sealed class MemoryViewModelTests : IAsyncDisposable
         _memory.NewAddress = "vw100";
         _memory.NewSymbol = "Count";
 
-        await _memory.AddCommand.ExecuteAsync().Guarded();
+        await _memory.AddCommand.ExecuteAsync(null).Guarded();
         await _panel.RefreshAsync();
 
         _memory.AddError.Should().BeNull();
@@ -123,7 +123,7 @@ public sealed class MemoryViewModelTests : IAsyncDisposable
         _memory.NewAddress = address;
         _memory.NewSymbol = symbol;
 
-        await _memory.AddCommand.ExecuteAsync().Guarded();
+        await _memory.AddCommand.ExecuteAsync(null).Guarded();
 
         _memory.AddError.Should().StartWith(expectedStart);
         _panel.Session.Project.Should().BeSameAs(before);
@@ -136,15 +136,15 @@ public sealed class MemoryViewModelTests : IAsyncDisposable
         _memory.SelectedCell = _memory.Cells.Single(c => c.Symbol == "Temperature");
         _memory.MoveDownCommand.CanExecute(null).Should().BeFalse("it is last");
 
-        await _memory.MoveUpCommand.ExecuteAsync().Guarded();
-        await _memory.MoveUpCommand.ExecuteAsync().Guarded();
+        await _memory.MoveUpCommand.ExecuteAsync(null).Guarded();
+        await _memory.MoveUpCommand.ExecuteAsync(null).Guarded();
 
         _memory.Cells.Select(c => c.Symbol).Should().Equal("Temperature", "Speed", "Recipe");
         _memory.SelectedCell!.Symbol.Should().Be("Temperature");
         _memory.MoveUpCommand.CanExecute(null).Should().BeFalse("it is first");
 
         _memory.SelectedCell = _memory.Cells.Single(c => c.Symbol == "Speed");
-        await _memory.RemoveCommand.ExecuteAsync().Guarded();
+        await _memory.RemoveCommand.ExecuteAsync(null).Guarded();
 
         _memory.Cells.Select(c => c.Symbol).Should().Equal("Temperature", "Recipe");
         _memory.SelectedCell!.Symbol.Should().Be("Recipe");
@@ -158,11 +158,11 @@ public sealed class MemoryViewModelTests : IAsyncDisposable
         await ConnectAndRefreshAsync();
         _memory.SelectedCell = Speed;
 
-        await _memory.RemoveCommand.ExecuteAsync().Guarded();
+        await _memory.RemoveCommand.ExecuteAsync(null).Guarded();
         await _panel.RefreshAsync();
 
-        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out _).Should().BeFalse();
-        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("MB4"), out var recipe).Should().BeTrue();
+        _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out _).Should().BeFalse();
+        _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("MB4"), out var recipe).Should().BeTrue();
         recipe.Quality.Should().Be(Core.Polling.ValueQuality.Good);
     }
 

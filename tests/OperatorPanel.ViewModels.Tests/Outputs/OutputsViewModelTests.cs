@@ -22,7 +22,7 @@ public sealed class OutputsViewModelTests : IAsyncDisposable
         Conveyor.State.Should().Be(LampState.Off);
         var held = _panel.Transport.HoldNextReply();
 
-        var click = Conveyor.SwitchCommand.ExecuteAsync();
+        var click = Conveyor.SwitchCommand.ExecuteAsync(null);
         await held.Guarded();
 
         _panel.Plc.Memory.GetBit(ProtocolArea.Q, 0, 0).Should().BeTrue("the PLC has the write");
@@ -45,7 +45,7 @@ public sealed class OutputsViewModelTests : IAsyncDisposable
         _panel.Connector.Configure(new HandlerConfig(PanelFixture.Filler, PanelFixture.Project().Stations[0].Cpu, writeMask: 0x38)); // M, V, SM: no Q
         await ConnectAndRefreshAsync();
 
-        await Conveyor.SwitchCommand.ExecuteAsync().Guarded();
+        await Conveyor.SwitchCommand.ExecuteAsync(null).Guarded();
 
         Conveyor.State.Should().Be(LampState.Off);
         Conveyor.WriteError.Should().Be("station 2 refused the write: NotWritable");
@@ -59,7 +59,7 @@ public sealed class OutputsViewModelTests : IAsyncDisposable
         await ConnectAndRefreshAsync();
         _panel.Transport.RewriteReply = ReadBackZero;
 
-        await Conveyor.SwitchCommand.ExecuteAsync().Guarded();
+        await Conveyor.SwitchCommand.ExecuteAsync(null).Guarded();
 
         Conveyor.State.Should().Be(LampState.Off);
         Conveyor.WriteError.Should().Be("wrote 1, the PLC read back 0: its program changed it at once");
@@ -75,7 +75,7 @@ public sealed class OutputsViewModelTests : IAsyncDisposable
         var frames = _panel.Transport.FramesSent;
 
         Conveyor.SwitchCommand.CanExecute(null).Should().BeFalse();
-        await Conveyor.SwitchCommand.ExecuteAsync().Guarded();
+        await Conveyor.SwitchCommand.ExecuteAsync(null).Guarded();
         var direct = await _panel.Session.WriteAsync(Core.Writes.WriteRequest.Bit(PanelFixture.Filler, Conveyor.PlcAddress, true)).Guarded();
 
         _panel.Transport.FramesSent.Should().Be(frames);
@@ -91,7 +91,7 @@ public sealed class OutputsViewModelTests : IAsyncDisposable
         var frames = _panel.Transport.FramesSent;
         _panel.Dialogs.ConfirmAnswers.Enqueue(false);
 
-        await Conveyor.SwitchCommand.ExecuteAsync().Guarded();
+        await Conveyor.SwitchCommand.ExecuteAsync(null).Guarded();
 
         _panel.Dialogs.Questions.Should().Equal("Set Q0.0 (Conveyor) to 1?");
         _panel.Transport.FramesSent.Should().Be(frames);
@@ -102,7 +102,7 @@ public sealed class OutputsViewModelTests : IAsyncDisposable
     {
         await ConnectAndRefreshAsync();
 
-        await Conveyor.SwitchCommand.ExecuteAsync().Guarded();
+        await Conveyor.SwitchCommand.ExecuteAsync(null).Guarded();
 
         _panel.Log.Messages.Where(m => m.StartsWith("Write ", StringComparison.Ordinal))
             .Should().Equal("Write station 2 Q0.0: 0 -> 1 confirmed");

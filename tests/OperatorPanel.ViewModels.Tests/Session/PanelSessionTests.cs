@@ -32,6 +32,42 @@ public sealed class PanelSessionTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task Values_SubscribedAddress_GetsItsValueAtOnceEveryChangeAndNotReadAfterDisconnect()
+    {
+        var speed = new List<PolledValue>();
+        var recipe = new List<PolledValue>();
+        using var speedSubscription = _panel.Session.Values.Subscribe(PanelFixture.Filler, PlcAddress.Parse("VW10"), speed.Add);
+        using var recipeSubscription = _panel.Session.Values.Subscribe(PanelFixture.Filler, PlcAddress.Parse("MB4"), recipe.Add);
+        await _panel.ConnectAsync();
+        _panel.Plc.Memory.WriteWord(ProtocolArea.V, 10, 1234);
+        _panel.Plc.Memory.Area(ProtocolArea.M)[4] = 7;
+        await _panel.RefreshAsync();
+        _panel.Plc.Memory.WriteWord(ProtocolArea.V, 10, 1235);
+        await _panel.RefreshAsync();
+        await _panel.Session.DisconnectAsync();
+
+        speed[0].Error.Should().Be("not read yet", "a subscriber hears the value as it is when it subscribes");
+        speed.Where(v => v.HasValue).Select(v => Convert.ToHexString(v.Raw.AsSpan())).Should().Equal("04D2", "04D3");
+        speed[^1].Should().Match<PolledValue>(v => !v.HasValue && v.Quality == ValueQuality.Bad, "a disconnected line has no values");
+        recipe.Where(v => v.HasValue).Should().ContainSingle("MB4 did not change after its first read, so it hears no second batch")
+            .Which.Raw.Should().Equal(7);
+    }
+
+    [Fact]
+    public async Task Values_Unsubscribed_HearsNothingMore()
+    {
+        var speed = new List<PolledValue>();
+        await _panel.ConnectAsync();
+        var subscription = _panel.Session.Values.Subscribe(PanelFixture.Filler, PlcAddress.Parse("VW10"), speed.Add);
+        subscription.Dispose();
+
+        _panel.Plc.Memory.WriteWord(ProtocolArea.V, 10, 99);
+        await _panel.RefreshAsync();
+
+        speed.Should().ContainSingle("only the value at subscription time arrived");
+    }
+
+    [Fact]
     public async Task Connect_StationAnswers_OnlineAndIdentified()
     {
         await _panel.ConnectAsync();
@@ -56,14 +92,14 @@ public sealed class PanelSessionTests : IAsyncDisposable
         var station = _panel.Session.Stations.Single();
         station.Health.Should().Be(StationHealth.Offline);
         station.HealthText.Should().Contain("PortUnavailable").And.Contain("COM7");
-        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var stale).Should().BeTrue();
+        _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var stale).Should().BeTrue();
         stale.Quality.Should().Be(ValueQuality.Stale);
 
         _panel.Transport.Vanished = false;
         await _panel.RefreshAsync();
 
         station.Health.Should().Be(StationHealth.Online);
-        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var good).Should().BeTrue();
+        _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var good).Should().BeTrue();
         good.Quality.Should().Be(ValueQuality.Good);
     }
 
@@ -120,7 +156,7 @@ public sealed class PanelSessionTests : IAsyncDisposable
 
         _panel.Session.IsConnected.Should().BeFalse();
         _panel.Session.Stations.Single().Health.Should().Be(StationHealth.Unknown);
-        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out _).Should().BeFalse();
+        _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out _).Should().BeFalse();
     }
 
     public async ValueTask DisposeAsync() => await _panel.DisposeAsync();

@@ -61,7 +61,7 @@ public sealed class ShellAlarmsTests : IAsyncDisposable
         ProjectFile.TrySave(PanelFixture.Project() with { Name = "Capper" }, path, out _).Should().BeTrue();
         _panel.Files.FileToOpen = path;
 
-        await _shell.OpenCommand.ExecuteAsync().Guarded();
+        await _shell.OpenCommand.ExecuteAsync(null).Guarded();
         await _panel.ConnectAsync();
         _panel.Plc.Memory.SetBit(ProtocolArea.M, 1, 0, true);
         await _panel.RefreshAsync();
@@ -77,7 +77,7 @@ public sealed class ShellAlarmsTests : IAsyncDisposable
     {
         var path = _folder.File("filler.opproj");
         _panel.Files.FileToSave = path;
-        await _shell.SaveAsCommand.ExecuteAsync().Guarded();
+        await _shell.SaveAsCommand.ExecuteAsync(null).Guarded();
         await _panel.ConnectAsync();
 
         _panel.Plc.Memory.SetBit(ProtocolArea.M, 1, 0, true);

@@ -22,7 +22,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
 
         _shell.Title.Should().Be("Filler line * - Operator Panel");
         _panel.Files.FileToSave = Path.Combine(_folder, "filler.opproj");
-        await _shell.SaveCommand.ExecuteAsync().Guarded();
+        await _shell.SaveCommand.ExecuteAsync(null).Guarded();
         _shell.Title.Should().Be("Filler line - Operator Panel");
         _shell.IsDirty.Should().BeFalse();
     }
@@ -103,7 +103,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
         await File.WriteAllTextAsync(path, "{ \"schemaVersion\": 1, \"name\": ");
         _panel.Files.FileToOpen = path;
 
-        await _shell.OpenCommand.ExecuteAsync().Guarded();
+        await _shell.OpenCommand.ExecuteAsync(null).Guarded();
 
         var error = _panel.Dialogs.Errors.Should().ContainSingle().Subject;
         error.Title.Should().Be("Project not opened");
@@ -122,7 +122,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
         _panel.Dialogs.SaveAnswers.Enqueue(SaveChangesAnswer.Cancel);
         _panel.Files.FileToOpen = Path.Combine(_folder, "never-read.opproj");
 
-        await _shell.OpenCommand.ExecuteAsync().Guarded();
+        await _shell.OpenCommand.ExecuteAsync(null).Guarded();
 
         _panel.Session.Project.Should().BeSameAs(project);
         _panel.Dialogs.Errors.Should().BeEmpty("the file was never opened");
@@ -132,7 +132,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     [Fact]
     public async Task New_NothingUnsaved_StarterProjectUnsavedAndUntitled()
     {
-        await _shell.NewCommand.ExecuteAsync().Guarded();
+        await _shell.NewCommand.ExecuteAsync(null).Guarded();
 
         _shell.Title.Should().Be("Untitled * - Operator Panel");
         _shell.ProjectPath.Should().BeNull();
@@ -147,7 +147,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
         await _panel.ConnectAsync();
         _panel.Files.FileToOpen = path;
 
-        await _shell.OpenCommand.ExecuteAsync().Guarded();
+        await _shell.OpenCommand.ExecuteAsync(null).Guarded();
 
         _shell.Title.Should().Be("Capper - Operator Panel");
         _shell.ProjectPath.Should().Be(path);
@@ -158,8 +158,8 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     [Fact]
     public async Task Demo_SampleProject_OpensOnTheSimulatedLineWithLiveValues()
     {
-        await _shell.DemoCommand.ExecuteAsync().Guarded();
-        await _shell.RefreshNowCommand.ExecuteAsync().Guarded();
+        await _shell.DemoCommand.ExecuteAsync(null).Guarded();
+        await _shell.RefreshNowCommand.ExecuteAsync(null).Guarded();
 
         _shell.IsDemo.Should().BeTrue();
         _shell.Title.Should().Be("Bottling line 1 (demo) - Operator Panel");
@@ -186,7 +186,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     public async Task ReadOnly_Toggled_EveryWritingCommandDisabled()
     {
         await _panel.ConnectAsync();
-        await _shell.RefreshNowCommand.ExecuteAsync().Guarded();
+        await _shell.RefreshNowCommand.ExecuteAsync(null).Guarded();
         var conveyor = _shell.Outputs.Groups[0].Points[0];
         var speed = _shell.Memory.Cells[0];
         conveyor.SwitchCommand.CanExecute(null).Should().BeTrue();
@@ -205,7 +205,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
         _shell.ConnectCommand.CanExecute(null).Should().BeTrue();
         _shell.RefreshNowCommand.CanExecute(null).Should().BeFalse();
 
-        await _shell.ConnectCommand.ExecuteAsync().Guarded();
+        await _shell.ConnectCommand.ExecuteAsync(null).Guarded();
 
         _shell.ConnectCommand.CanExecute(null).Should().BeFalse();
         _shell.DisconnectCommand.CanExecute(null).Should().BeTrue();
@@ -224,7 +224,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
         await _panel.ConnectAsync();
         _shell.Memory.NewAddress = "VW100";
         _shell.Memory.NewSymbol = "Count";
-        await _shell.Memory.AddCommand.ExecuteAsync().Guarded();
+        await _shell.Memory.AddCommand.ExecuteAsync(null).Guarded();
         _shell.IsDirty.Should().BeTrue();
     }
 }

@@ -40,7 +40,7 @@ public sealed class ShellWizardTests : IAsyncDisposable
             return Task.CompletedTask;
         };
 
-        await _shell.NewCommand.ExecuteAsync().Guarded();
+        await _shell.NewCommand.ExecuteAsync(null).Guarded();
 
         _presenter.Shown.Should().ContainSingle().Which.IsEditing.Should().BeFalse();
         _shell.Session.Project.Should().BeSameAs(_presenter.Shown[0].Result);
@@ -55,7 +55,7 @@ public sealed class ShellWizardTests : IAsyncDisposable
         var project = _panel.Session.Project;
         _presenter.Cancel = true;
 
-        await _shell.NewCommand.ExecuteAsync().Guarded();
+        await _shell.NewCommand.ExecuteAsync(null).Guarded();
 
         _panel.Session.Project.Should().BeSameAs(project);
         _shell.IsDirty.Should().BeFalse();
@@ -73,13 +73,13 @@ public sealed class ShellWizardTests : IAsyncDisposable
             return Task.CompletedTask;
         };
 
-        await _shell.EditProjectCommand.ExecuteAsync().Guarded();
+        await _shell.EditProjectCommand.ExecuteAsync(null).Guarded();
         await _panel.RefreshAsync();
 
         _presenter.Shown.Should().ContainSingle().Which.IsEditing.Should().BeTrue();
         _shell.IsDirty.Should().BeTrue();
         _shell.Title.Should().Be("Filler line * - Operator Panel");
-        _panel.Session.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW100"), out var count).Should().BeTrue();
+        _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW100"), out var count).Should().BeTrue();
         count.Raw.Should().Equal(0, 77);
         _shell.Memory.Cells.Select(c => c.Symbol).Should().Contain("Count");
     }
@@ -90,7 +90,7 @@ public sealed class ShellWizardTests : IAsyncDisposable
         var project = _panel.Session.Project;
         _presenter.Cancel = true;
 
-        await _shell.EditProjectCommand.ExecuteAsync().Guarded();
+        await _shell.EditProjectCommand.ExecuteAsync(null).Guarded();
 
         _panel.Session.Project.Should().BeSameAs(project);
         _shell.IsDirty.Should().BeFalse();
@@ -101,9 +101,9 @@ public sealed class ShellWizardTests : IAsyncDisposable
     {
         await _panel.ConnectAsync();
         _presenter.Cancel = true;
-        _presenter.Operator = wizard => wizard.LinkStep.TestConnectionCommand.ExecuteAsync();
+        _presenter.Operator = wizard => wizard.LinkStep.TestConnectionCommand.ExecuteAsync(null);
 
-        await _shell.EditProjectCommand.ExecuteAsync().Guarded();
+        await _shell.EditProjectCommand.ExecuteAsync(null).Guarded();
 
         var link = _presenter.Shown[0].LinkStep;
         link.TestSucceeded.Should().BeFalse();
@@ -117,9 +117,9 @@ public sealed class ShellWizardTests : IAsyncDisposable
     {
         _tester.Reply = new ErrorResponse(PanelFixture.Filler, 1, CommandCode.Identify, ProtocolError.AddressOutOfRange);
         _presenter.Cancel = true;
-        _presenter.Operator = wizard => wizard.LinkStep.TestConnectionCommand.ExecuteAsync();
+        _presenter.Operator = wizard => wizard.LinkStep.TestConnectionCommand.ExecuteAsync(null);
 
-        await _shell.EditProjectCommand.ExecuteAsync().Guarded();
+        await _shell.EditProjectCommand.ExecuteAsync(null).Guarded();
 
         _tester.Asked.Should().ContainSingle().Which.Link.PortName.Should().Be(PanelFixture.Port);
     }

@@ -1,4 +1,5 @@
 using System.Text;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
@@ -46,7 +47,7 @@ public sealed class LinkStepViewModelTests
         var link = Wizard().LinkStep;
         _tester.Reply = Identify(CpuModel.Cpu224, smb6: 0x20);
 
-        await link.TestConnectionCommand.ExecuteAsync();
+        await link.TestConnectionCommand.ExecuteAsync(null);
 
         link.TestSucceeded.Should().BeTrue();
         link.TestResult.Should().Be($"{Where} answered: handler for CPU 224, protocol 1, handler revision 1, mode switch RUN, last scan 3 ms. Matches CPU 224.");
@@ -59,7 +60,7 @@ public sealed class LinkStepViewModelTests
         var link = Wizard().LinkStep;
         _tester.Reply = Identify(CpuModel.Cpu226, smb6: 0x90);
 
-        await link.TestConnectionCommand.ExecuteAsync();
+        await link.TestConnectionCommand.ExecuteAsync(null);
 
         link.TestSucceeded.Should().BeFalse();
         link.TestResult.Should().EndWith("CPU mismatch with CPU 224: the PLC reports SMB6 16#90 (CPU 226), CPU 224 has 16#20; "
@@ -72,7 +73,7 @@ public sealed class LinkStepViewModelTests
         var link = Wizard().LinkStep;
         _tester.Failure = new PlcCommunicationException(PlcErrorKind.NoAnswer, new Station(2), "no valid reply to Identify after 2 attempts");
 
-        await link.TestConnectionCommand.ExecuteAsync();
+        await link.TestConnectionCommand.ExecuteAsync(null);
 
         link.TestSucceeded.Should().BeFalse();
         link.TestResult.Should().Be($"{Where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
@@ -86,7 +87,7 @@ public sealed class LinkStepViewModelTests
         var plc = new ReferencePlc(new HandlerConfig(new Station(2), CpuProfiles.For(CpuModel.Cpu224)));
         var link = Wizard(new LinkConnectionTester(_ => new ReferencePlcTransport(plc), clock)).LinkStep;
 
-        await link.TestConnectionCommand.ExecuteAsync();
+        await link.TestConnectionCommand.ExecuteAsync(null);
 
         link.TestResult.Should().StartWith($"{Where} answered: handler for CPU 224, protocol 1").And.EndWith("Matches CPU 224.");
         link.TestSucceeded.Should().BeTrue();
@@ -105,7 +106,7 @@ public sealed class LinkStepViewModelTests
             """, clock, "COM3");
         var link = Wizard(new LinkConnectionTester(_ => transport, clock)).LinkStep;
 
-        var test = link.TestConnectionCommand.ExecuteAsync();
+        var test = link.TestConnectionCommand.ExecuteAsync(null);
         for (var step = 0; step < 1000 && !test.IsCompleted; step++)
         {
             clock.Advance(TimeSpan.FromMilliseconds(5));

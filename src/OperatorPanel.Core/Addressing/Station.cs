@@ -1,7 +1,7 @@
 using System.Diagnostics.CodeAnalysis;
 using System.Globalization;
 
-namespace OperatorPanel.Core.Link;
+namespace OperatorPanel.Core.Addressing;
 
 /// <summary>An RS-485 station address of a PLC running the handler, 1-126 (several PLCs share one bus).</summary>
 public readonly record struct Station

@@ -1,11 +1,11 @@
 using OperatorPanel.Core.Projects;
 
-namespace OperatorPanel.ViewModels.Session;
+namespace OperatorPanel.Core.Line;
 
 /// <summary>
-/// Turns a project into byte pipes, one per serial port (one RS-485 bus, <see cref="Core.Polling.ProjectBus"/>). The App
-/// implements it with serial ports, or with the simulated PLC in demo mode; tests with the simulator. The view models
-/// never see which.
+/// Turns a project into byte pipes, one per serial port (one RS-485 bus, <see cref="Polling.ProjectBus"/>), for a
+/// <see cref="ProjectLine"/>: real ports (<see cref="SerialLineConnector"/>), or simulated PLCs in demo mode and in tests.
+/// The line never sees which.
 /// </summary>
 public interface ILineConnector
 {

@@ -1,9 +1,8 @@
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
-using OperatorPanel.ViewModels.Session;
 
-namespace OperatorPanel.App.Services;
+namespace OperatorPanel.Core.Line;
 
 /// <summary>One serial port per bus of the project (COM port with a PC/PPI cable or an FTDI radio module).</summary>
 public sealed class SerialLineConnector : ILineConnector

@@ -1,10 +1,10 @@
 using OperatorPanel.Core.Transport;
 
-namespace OperatorPanel.ViewModels.Session;
+namespace OperatorPanel.Core.Line;
 
 /// <summary>
 /// The transports an <see cref="ILineConnector"/> opened for a project, by port name (ignoring case, as Windows names
-/// ports). The session's links own and dispose the transports; <paramref name="onClose"/> is for what the connector
+/// ports). The <see cref="ProjectLine"/>'s links own and dispose the transports; <paramref name="onClose"/> is for what the connector
 /// runs beside them (the demo line's simulated PLCs), and runs before the transports close.
 /// </summary>
 public sealed class LineConnection(IReadOnlyDictionary<string, ITransport> transports, Func<ValueTask>? onClose = null) : IAsyncDisposable
@@ -22,7 +22,7 @@ public sealed class LineConnection(IReadOnlyDictionary<string, ITransport> trans
     {
         if (Interlocked.Exchange(ref _onClose, null) is { } close)
         {
-            await close();
+            await close().ConfigureAwait(false);
         }
     }
 }

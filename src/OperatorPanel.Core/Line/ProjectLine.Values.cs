@@ -1,0 +1,102 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Polling;
+
+namespace OperatorPanel.Core.Line;
+
+/// <summary>
+/// The line's values: subscribers by watched item, so an engine's batch of changes reaches exactly the subscribers of the
+/// changed addresses (a dictionary look-up per change, no scan). Connect, disconnect, another project or a new engine
+/// push every subscriber its value now, so nobody ever has to pull.
+/// </summary>
+public sealed partial class ProjectLine : ILineValues
+{
+    private readonly Lock _gate = new();
+    private readonly Dictionary<WatchedItem, ImmutableArray<Action<PolledValue>>> _subscribers = [];
+
+    public IDisposable Subscribe(Station station, PlcAddress address, Action<PolledValue> onValue)
+    {
+        ArgumentNullException.ThrowIfNull(onValue);
+        var item = new WatchedItem(station, address);
+        lock (_gate)
+        {
+            _subscribers[item] = _subscribers.GetValueOrDefault(item, []).Add(onValue);
+        }
+
+        TryGetValue(station, address, out var now);
+        onValue(now);
+        return new Subscription(() =>
+        {
+            lock (_gate)
+            {
+                var left = _subscribers[item].Remove(onValue);
+                if (left.IsEmpty)
+                {
+                    _subscribers.Remove(item);
+                }
+                else
+                {
+                    _subscribers[item] = left;
+                }
+            }
+        });
+    }
+
+    public bool TryGetValue(Station station, PlcAddress address, out PolledValue value)
+    {
+        if (BusOf(station) is { } bus)
+        {
+            return bus.Line.Engine.TryGetValue(station, address, out value);
+        }
+
+        value = PolledValue.NotRead(_time.GetUtcNow());
+        return false;
+    }
+
+    /// <summary>On a polling loop's thread: one engine batch, routed by address and handed to <see cref="ProjectLineOptions.Deliver"/> whole.</summary>
+    private void OnEngineChanges(IReadOnlyList<ValueChange> changes)
+    {
+        var calls = new List<(Action<PolledValue> Subscriber, PolledValue Value)>();
+        lock (_gate)
+        {
+            foreach (var change in changes)
+            {
+                if (_subscribers.TryGetValue(new WatchedItem(change.Station, change.Address), out var subscribers))
+                {
+                    calls.AddRange(subscribers.Select(s => (s, change.Current)));
+                }
+            }
+        }
+
+        Deliver(calls);
+    }
+
+    /// <summary>Every subscriber gets its value now: after connect, disconnect, another project or new engines.</summary>
+    private void PushAll()
+    {
+        List<(WatchedItem Item, ImmutableArray<Action<PolledValue>> Subscribers)> all;
+        lock (_gate)
+        {
+            all = [.. _subscribers.Select(p => (p.Key, p.Value))];
+        }
+
+        var calls = new List<(Action<PolledValue> Subscriber, PolledValue Value)>();
+        foreach (var (item, subscribers) in all)
+        {
+            TryGetValue(item.Station, item.Address, out var now);
+            calls.AddRange(subscribers.Select(s => (s, now)));
+        }
+
+        Deliver(calls);
+    }
+
+    private void Deliver(List<(Action<PolledValue> Subscriber, PolledValue Value)> calls) =>
+        _options.Deliver(() => calls.ForEach(c => c.Subscriber(c.Value)));
+
+    private sealed class Subscription(Action unsubscribe) : IDisposable
+    {
+        private Action? _unsubscribe = unsubscribe;
+
+        public void Dispose() => Interlocked.Exchange(ref _unsubscribe, null)?.Invoke();
+    }
+}

@@ -1,0 +1,20 @@
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Transport;
+
+namespace OperatorPanel.Core.Line;
+
+/// <summary>How a <see cref="ProjectLine"/> sets up its buses and where it hands values to subscribers.</summary>
+public sealed record ProjectLineOptions
+{
+    /// <summary>Timing and retry rules of each bus's link; the medium's defaults unless a caller allows longer PLC scans.</summary>
+    public Func<SerialSettings, LinkOptions> LinkOptionsFor { get; init; } = serial => LinkOptions.For(serial);
+
+    /// <summary>
+    /// Runs one batch of subscriber calls. The polling loops run on their own threads: the panel passes its UI
+    /// dispatcher here, so every <see cref="ILineValues.Subscribe"/> callback runs on the UI thread. Default: at once.
+    /// </summary>
+    public Action<Action> Deliver { get; init; } = work => work();
+
+    /// <summary>DEFINE LIST / READ LIST (default) or plain READs only (see PollingEngine.UseReadLists).</summary>
+    public bool UseReadLists { get; init; } = true;
+}

@@ -1,0 +1,68 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Line;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.TestKit;
+
+namespace OperatorPanel.Core.Tests.Line;
+
+/// <summary>
+/// The line without a PLC: a triggered project on an in-memory port whose far end nobody reads, so nothing is exchanged
+/// and every value stays not read. What is tested is who hears what, and when.
+/// </summary>
+public sealed class ProjectLineTests
+{
+    private static readonly Station Two = new(2);
+    private static readonly PlcAddress Vw10 = PlcAddress.Parse("VW10");
+    private readonly ManualTimeProvider _clock = new();
+
+    [Fact]
+    public async Task Subscribe_BeforeConnect_HearsTheValueNowThenOnConnectAndOnDisconnect()
+    {
+        var heard = new List<PolledValue>();
+        var line = new ProjectLine(Project(), time: _clock);
+
+        using var subscription = line.Subscribe(Two, Vw10, heard.Add);
+        await line.ConnectAsync(new PairConnector(_clock));
+        line.TryGetValue(Two, Vw10, out _).Should().BeTrue("a connected line watches VW10");
+        await line.DisconnectAsync();
+
+        heard.Should().HaveCount(3, "subscribe, connect and disconnect each hand the subscriber the value of the moment");
+        heard.Should().OnlyContain(v => !v.HasValue && v.Quality == ValueQuality.Bad);
+        line.TryGetValue(Two, Vw10, out _).Should().BeFalse("a disconnected line has no values");
+    }
+
+    [Fact]
+    public async Task Edit_StationsChangeWhileConnected_RefusedThenTakenOnceDisconnected()
+    {
+        var line = new ProjectLine(Project(), time: _clock);
+        await line.ConnectAsync(new PairConnector(_clock));
+        var moved = Project() with { Stations = [Project().Stations[0] with { Address = new Station(3) }] };
+
+        var whileConnected = () => line.EditAsync(moved);
+
+        await whileConnected.Should().ThrowAsync<InvalidOperationException>().WithMessage("*disconnect*");
+        line.Project.Stations[0].Address.Should().Be(Two);
+        await line.DisconnectAsync();
+        await line.EditAsync(moved);
+        line.Project.Should().Be(moved);
+    }
+
+    private static PanelProject Project() => new(
+        "Line",
+        new RefreshSettings(RefreshMode.OnDemand, TimeSpan.FromMilliseconds(100)),
+        [
+            new ProjectStation(
+                "Filler", Two, Some.Cpu(), new SerialSettings { PortName = "COM7" },
+                [], [], [new ProjectTag("Speed", Vw10, DisplayFormat.Signed, Writable: true, Description: string.Empty)], []),
+        ]);
+
+    /// <summary>One in-memory port per bus; the bus end is never read, as if no PLC were attached.</summary>
+    private sealed class PairConnector(TimeProvider time) : ILineConnector
+    {
+        public Task<LineConnection> ConnectAsync(PanelProject project, CancellationToken cancellationToken) =>
+            Task.FromResult(new LineConnection(ProjectBus.Of(project).ToDictionary(
+                b => b.Serial.PortName, b => (ITransport)new InMemoryTransportPair(time, b.Serial.PortName, b.Serial.PortName + " bus").PanelSide)));
+    }
+}

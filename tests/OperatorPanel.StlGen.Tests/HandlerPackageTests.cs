@@ -1,0 +1,66 @@
+using System.Text;
+using OperatorPanel.StlGen.Tests.Merge.UserPrograms;
+
+namespace OperatorPanel.StlGen.Tests;
+
+public sealed class HandlerPackageTests : IDisposable
+{
+    private readonly string _folder = Path.Combine(Path.GetTempPath(), "opanel-package-" + Guid.NewGuid().ToString("N"));
+
+    public void Dispose()
+    {
+        if (Directory.Exists(_folder))
+        {
+            Directory.Delete(_folder, recursive: true);
+        }
+    }
+
+    [Fact]
+    public void Generate_WithUserProgram_WritesHandlerSymbolsNotesAndMergedUnderTheStem()
+    {
+        var package = HandlerPackage.Generate(UserProgram.Cpu224, "Filler", UserProgram.Ob1("LD     SM0.0", "=      Q0.0"));
+
+        package.TryWrite(_folder, out var written, out var error).Should().BeTrue(error);
+
+        written.Select(Path.GetFileName).Should().Equal("Filler-handler.awl", "Filler-symbols.txt", "Filler-README.txt", "Filler-merged.awl");
+        File.ReadAllText(Path.Combine(_folder, "Filler-merged.awl")).Should().Be(package.Merge!.MergedText);
+        File.ReadAllText(Path.Combine(_folder, "Filler-handler.awl")).Should().Be(package.Handler.AwlText);
+    }
+
+    [Fact]
+    public void Generate_ProgramCollides_NothingToWriteAndTheFolderIsNotCreated()
+    {
+        var package = HandlerPackage.Generate(UserProgram.Cpu224, "Filler", UserProgram.Ob1("LD     SM0.0", "MOVB   1, VB8000"));
+
+        package.Ok.Should().BeFalse();
+        package.Files.Should().BeEmpty();
+        package.TryWrite(_folder, out _, out var error).Should().BeFalse();
+        error.Should().StartWith("nothing to write");
+        Directory.Exists(_folder).Should().BeFalse();
+    }
+
+    [Fact]
+    public void TryReadProgram_FileAboveTheLimit_RefusedNamingTheFile()
+    {
+        Directory.CreateDirectory(_folder);
+        var path = Path.Combine(_folder, "huge.awl");
+        File.WriteAllBytes(path, new byte[HandlerPackage.MaxProgramBytes + 1]);
+
+        HandlerPackage.TryReadProgram(path, out var text, out var error).Should().BeFalse();
+
+        text.Should().BeNull();
+        error.Should().StartWith($"cannot read {path}: ");
+    }
+
+    [Fact]
+    public void TryReadProgram_WindowsCodePageBytes_KeptOneCharacterPerByte()
+    {
+        Directory.CreateDirectory(_folder);
+        var path = Path.Combine(_folder, "user.awl");
+        File.WriteAllBytes(path, [0x4C, 0x44, 0x20, 0xE4]);
+
+        HandlerPackage.TryReadProgram(path, out var text, out _).Should().BeTrue();
+
+        text.Should().Be(Encoding.Latin1.GetString([0x4C, 0x44, 0x20, 0xE4])).And.HaveLength(4);
+    }
+}
