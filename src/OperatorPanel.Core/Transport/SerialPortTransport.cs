@@ -221,14 +221,12 @@ public sealed class SerialPortTransport : ITransport
         }
     }
 
-#pragma warning disable CS8524 // only named Parity values exist; a new one still fails the build here (CS8509)
     private static PortParity ToPortParity(Parity parity) => parity switch
     {
         Parity.None => PortParity.None,
         Parity.Even => PortParity.Even,
         Parity.Odd => PortParity.Odd,
     };
-#pragma warning restore CS8524
 
     /// <summary>Windows: blocking reads of at most one slice each until a byte comes or <paramref name="timeout"/> passes.</summary>
     private static int ReadInSlices(SerialPort port, Memory<byte> buffer, TimeSpan timeout, CancellationToken cancellationToken)
