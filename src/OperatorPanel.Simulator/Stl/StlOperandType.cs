@@ -29,4 +29,16 @@ internal enum StlOperandType
 
     /// <summary>A port number 0 or 1 (RCV, XMT).</summary>
     Port,
+
+    /// <summary>The timer a TON/TONR/TOF box owns: T0-T255.</summary>
+    Timer,
+
+    /// <summary>The counter a CTU/CTD/CTUD box owns: C0-C255.</summary>
+    Counter,
+
+    /// <summary>A double word in memory that BMD starts at: no constant.</summary>
+    DWordArea,
+
+    /// <summary>A signed byte (SHRB length N, -64 to +64).</summary>
+    SignedByteIn,
 }
