@@ -59,7 +59,7 @@ public sealed class StlRun
             AccessWidth.Bit => (bytes[offset] >> operand.Bit!.Value) & 1,
             AccessWidth.Byte => bytes[offset],
             AccessWidth.Word => (short)((bytes[offset] << 8) | bytes[offset + 1]),
-            AccessWidth.DoubleWord => watch.IsReal ? BitConverter.UInt32BitsToSingle(DoubleWord(bytes, offset)) : (int)DoubleWord(bytes, offset),
+            AccessWidth.DoubleWord => watch.IsReal ? (double)BitConverter.UInt32BitsToSingle(DoubleWord(bytes, offset)) : (int)DoubleWord(bytes, offset),
             _ => throw new ArgumentOutOfRangeException(nameof(watch), operand.Width, null),
         };
     }
