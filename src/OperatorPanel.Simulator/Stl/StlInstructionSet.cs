@@ -159,6 +159,9 @@ internal static class StlInstructionSet
             ["TODW"] = (StlOpCode.Todw, [ByteArea]),
         }.ToFrozenDictionary(StringComparer.Ordinal);
 
+    /// <summary>Every mnemonic of the table (compares are read by form, not listed).</summary>
+    public static IEnumerable<string> Mnemonics => Table.Keys;
+
     public static bool TryGet(string mnemonic, out StlOpCode code, out StlOperandType[] operands)
     {
         if (Table.TryGetValue(mnemonic, out var entry))
