@@ -11,10 +11,10 @@ public sealed class StlProgramLoaderTests
     [Fact]
     public void Load_UnknownInstruction_ReportsNameAndLineAndGivesNoProgram()
     {
-        var result = Load("LD     SM0.0\nBIR    VB0, VB1");
+        var result = Load("LD     SM0.0\nHSC    0");
 
         result.Succeeded.Should().BeFalse();
-        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: BIR is not implemented by the simulator");
+        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: HSC is not implemented by the simulator");
     }
 
     [Theory]
@@ -26,7 +26,15 @@ public sealed class StlProgramLoaderTests
     [InlineData("ATCH   INT_9, 23", "not the name of an interrupt routine")]
     [InlineData("XMT    VB0, 1", "port number 0-0")]
     [InlineData("JMP    4", "no LBL 4")]
-    [InlineData("MOVW   T37, VW0", "timers")]
+    [InlineData("MOVB   T37, VB0", "a bit or a word")]
+    [InlineData("MOVW   T256, VW0", "T0-T255")]
+    [InlineData("TON    T0, +10", "TONR timer")]
+    [InlineData("TONR   T37, +10", "TON/TOF timer")]
+    [InlineData("CTU    T5, +10", "not a counter")]
+    [InlineData("BIR    VB0, VB1", "input (I)")]
+    [InlineData("=I     M0.0", "output (Q)")]
+    [InlineData("LSCR   M0.0", "S bit")]
+    [InlineData("SHRB   I0.0, V0.0, 200", "signed byte")]
     [InlineData("MOVB   #x, VB0", "not declared")]
     public void Load_BadOperand_IsReportedWithLine(string instruction, string reason)
     {
