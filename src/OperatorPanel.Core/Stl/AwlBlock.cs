@@ -25,5 +25,13 @@ public sealed record AwlBlock(
         _ => $"INT_{Number}",
     };
 
+    /// <summary>The numeric reference exports write in CALL and ATCH: SBR6, INT0 (OB1 for the main program).</summary>
+    public string NumberName => Kind switch
+    {
+        AwlBlockKind.OrganizationBlock => $"OB{Number}",
+        AwlBlockKind.Subroutine => $"SBR{Number}",
+        _ => $"INT{Number}",
+    };
+
     public IEnumerable<AwlInstruction> Instructions => Networks.SelectMany(n => n.Instructions);
 }

@@ -1,7 +1,12 @@
 namespace OperatorPanel.Core.Stl;
 
-/// <summary>A problem found in .awl text, with its 1-based line: "line 57: ...".</summary>
+/// <summary>
+/// A problem found in .awl text, with its 1-based line: "line 57: ...". Refusals of <see cref="Checks.AwlProgramCheck"/>
+/// carry a stable <see cref="Id"/> (AWL001 ...); parse problems have none.
+/// </summary>
 public sealed record AwlDiagnostic(int Line, string Message)
 {
-    public override string ToString() => $"line {Line}: {Message}";
+    public string Id { get; init; } = string.Empty;
+
+    public override string ToString() => Id.Length == 0 ? $"line {Line}: {Message}" : $"line {Line}: {Id} {Message}";
 }

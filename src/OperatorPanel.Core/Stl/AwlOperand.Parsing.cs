@@ -97,12 +97,15 @@ public sealed partial record AwlOperand
         }
 
         error = null;
+        var characters = input[1..^1];
+        var ascii = input[0] == '\'';
         operand = new AwlOperand
         {
             Kind = AwlOperandKind.Constant,
             Text = input,
-            ConstantKind = AwlConstantKind.String,
-            Name = input[1..^1],
+            ConstantKind = ascii ? AwlConstantKind.Ascii : AwlConstantKind.String,
+            Name = characters,
+            Integer = ascii && characters.Length <= 4 ? characters.Aggregate(0L, (value, c) => (value * 256) + (c & 0xFF)) : 0,
         };
         return true;
     }
@@ -171,8 +174,9 @@ public sealed partial record AwlOperand
             return true;
         }
 
-        // A name that is not an address (OP_RX, INT_0, SBR_3) is a block or symbol name; "M10.8" is a bad address.
-        if (IsIdentifier(input) && !LooksLikeAddress(input))
+        // A name that is not an address (OP_RX, INT_0, SBR_3) is a block or symbol name; so are SBR6 and INT0, the
+        // numeric POU references exports write (CALL SBR6, ATCH INT0, 10); "M10.8" is a bad address.
+        if (IsIdentifier(input) && (!LooksLikeAddress(input) || IsPouNumber(input)))
         {
             error = null;
             operand = new AwlOperand { Kind = AwlOperandKind.Symbol, Text = input, Name = input };
@@ -194,6 +198,11 @@ public sealed partial record AwlOperand
 
         return letters is > 0 and <= 3 && letters < input.Length && input[letters..].All(char.IsAsciiDigit);
     }
+
+    /// <summary>SBRn or INTn: a subroutine or interrupt routine by number.</summary>
+    public static bool IsPouNumber(string text) =>
+        (text.StartsWith("SBR", StringComparison.OrdinalIgnoreCase) || text.StartsWith("INT", StringComparison.OrdinalIgnoreCase))
+        && text.Length > 3 && text.Length <= 6 && text[3..].All(char.IsAsciiDigit);
 
     internal static bool IsIdentifier(string text) =>
         text.Length > 0 && (char.IsAsciiLetter(text[0]) || text[0] == '_') && text.All(c => char.IsAsciiLetterOrDigit(c) || c == '_');

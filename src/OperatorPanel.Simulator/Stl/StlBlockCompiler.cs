@@ -8,7 +8,7 @@ namespace OperatorPanel.Simulator.Stl;
 internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlock> blocks, List<AwlDiagnostic> diagnostics)
 {
     private readonly StlOperandResolver _resolver = new(cpu);
-    private readonly StlOperandRules _rules = new();
+    private readonly StlTimerNumbers _rules = new();
 
     public int EdgeCount { get; private set; }
 

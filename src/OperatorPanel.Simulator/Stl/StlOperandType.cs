@@ -18,6 +18,9 @@ internal enum StlOperandType
     /// <summary>A word in memory that BMW starts at: no constant.</summary>
     WordArea,
 
+    /// <summary>A double word in memory that BMD starts at: no constant.</summary>
+    DWordArea,
+
     /// <summary>A label number 0-255 (JMP, LBL).</summary>
     Label,
 
@@ -30,14 +33,11 @@ internal enum StlOperandType
     /// <summary>A port number 0 or 1 (RCV, XMT).</summary>
     Port,
 
-    /// <summary>The timer a TON/TONR/TOF box owns: T0-T255.</summary>
+    /// <summary>The timer itself, T0-T255 (TON, TONR, TOF).</summary>
     Timer,
 
-    /// <summary>The counter a CTU/CTD/CTUD box owns: C0-C255.</summary>
+    /// <summary>The counter itself, C0-C255 (CTU, CTD, CTUD).</summary>
     Counter,
-
-    /// <summary>A double word in memory that BMD starts at: no constant.</summary>
-    DWordArea,
 
     /// <summary>A signed byte (SHRB length N, -64 to +64).</summary>
     SignedByteIn,

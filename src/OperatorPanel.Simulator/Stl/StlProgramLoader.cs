@@ -1,10 +1,12 @@
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Stl;
+using OperatorPanel.Core.Stl.Checks;
 
 namespace OperatorPanel.Simulator.Stl;
 
 /// <summary>
-/// Checks a parsed .awl program against a CPU and compiles it for <see cref="StlPlc"/>. Every instruction the
+/// Checks a parsed .awl program against a CPU (<see cref="AwlProgramCheck"/>: what Micro/WIN refuses) and compiles it
+/// for <see cref="StlPlc"/>. Every instruction the
 /// simulator does not implement, every operand outside the CPU's ranges and every unknown block name is reported
 /// with its line ("line 57: BIR is not implemented by the simulator"); a program with any of them is not returned.
 /// </summary>
@@ -24,6 +26,7 @@ public static class StlProgramLoader
     {
         ArgumentNullException.ThrowIfNull(program);
         ArgumentNullException.ThrowIfNull(cpu);
+        var refusals = AwlProgramCheck.Check(program, cpu);
         var diagnostics = new List<AwlDiagnostic>();
         var ordered = program.Blocks.Where(b => b.Kind == AwlBlockKind.OrganizationBlock)
             .Concat(program.Blocks.Where(b => b.Kind != AwlBlockKind.OrganizationBlock)).ToArray();
@@ -37,6 +40,9 @@ public static class StlProgramLoader
             block.Ops = compiler.Compile(block, locals[block.Index]);
         }
 
+        // What Micro/WIN refuses is said once, by the program check; the compiler's word on the same line goes.
+        diagnostics.RemoveAll(d => refusals.Any(r => r.Line == d.Line));
+        diagnostics.AddRange(refusals);
         return diagnostics.Count == 0
             ? new StlLoadResult(new StlProgram(cpu, blocks, compiler.EdgeCount), [])
             : new StlLoadResult(null, [.. diagnostics.OrderBy(d => d.Line)]);
@@ -80,8 +86,10 @@ public static class StlProgramLoader
 
         foreach (var block in blocks)
         {
-            // The default names (SBR_3, INT_0) reach a block too, unless another block carries that name.
+            // The default names (SBR_3, INT_0) and the numbers exports write (SBR3, INT0) reach a block too, unless
+            // another block carries that name.
             names.TryAdd(block.Source.DefaultName, block);
+            names.TryAdd(block.Source.NumberName, block);
         }
 
         var numbers = blocks.GroupBy(b => b.Source.DefaultName, StringComparer.OrdinalIgnoreCase).Where(g => g.Count() > 1);

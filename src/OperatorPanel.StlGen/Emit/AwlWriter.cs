@@ -6,6 +6,7 @@ namespace OperatorPanel.StlGen.Emit;
 /// <summary>
 /// Writes a program in the .awl format Micro/WIN 4 exports and imports (/work/briefs/stl-dialect.md): blocks in the
 /// order OB1, SBRs, INTs; networks "Network n // title"; mnemonic padded to 7 characters, operands joined by ", ".
+/// Every instruction passes <see cref="EmittedInstructionCheck"/> first: the generator writes only what the table has.
 /// </summary>
 public static class AwlWriter
 {
@@ -29,7 +30,7 @@ public static class AwlWriter
             var number = 1;
             foreach (var network in block.Networks)
             {
-                WriteNetwork(w, network, number++);
+                WriteNetwork(w, network, number++, block.Kind);
             }
 
             w.Line("END_" + keyword);
@@ -49,7 +50,7 @@ public static class AwlWriter
         return instruction.Comment is null ? line : line + " // " + instruction.Comment;
     }
 
-    private static void WriteNetwork(LineWriter w, StlNetwork network, int number)
+    private static void WriteNetwork(LineWriter w, StlNetwork network, int number, StlBlockKind block)
     {
         w.Line($"Network {number.ToString(CultureInfo.InvariantCulture)} // {network.Title}");
         foreach (var comment in network.Comments)
@@ -59,6 +60,7 @@ public static class AwlWriter
 
         foreach (var instruction in network.Instructions)
         {
+            EmittedInstructionCheck.Ensure(instruction, block);
             w.Line(FormatInstruction(instruction));
         }
     }

@@ -1,5 +1,6 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Stl;
+using OperatorPanel.Core.Stl.Checks;
 using OperatorPanel.StlGen.Diagnostics;
 using OperatorPanel.StlGen.Options;
 
@@ -8,7 +9,8 @@ namespace OperatorPanel.StlGen.Merge;
 /// <summary>
 /// Adds the handler to a program the user exported from Micro/WIN (File &gt; Export): checks for collisions first
 /// (block numbers and names, interrupt events, the port, its special memory, SMB34, V bytes) and writes one combined
-/// .awl only when there are none. Warnings (what the text alone cannot show) do not stop the merge.
+/// .awl only when there are none. What Micro/WIN itself would refuse in the user's program (Core AwlProgramCheck) is an
+/// error too. Warnings (what the text alone cannot show) do not stop the merge.
 /// </summary>
 public static class HandlerMerger
 {
@@ -37,7 +39,8 @@ public static class HandlerMerger
 
         var cpu = options.Cpu;
         var handler = new HandlerFootprint(options);
-        var found = new List<MergeDiagnostic>();
+        var found = AwlProgramCheck.Check(user, cpu).Select(d => new MergeDiagnostic(
+            StlDiagnostics.UserProgramRefused, MergeSeverity.Error, d.Line, $"Micro/WIN refuses the user's program here ({d.Id}): {d.Message}")).ToList();
         found.AddRange(BlockCollisions.Find(user, handler, cpu.Subroutines, cpu.InterruptRoutines));
         found.AddRange(new InstructionCollisions(user, handler, cpu.CommunicationPorts, HandlerDefaults.VBytes(cpu)).Find());
         var lines = MergedProgramWriter.SplitLines(userText);

@@ -40,7 +40,13 @@ public sealed class AwlOperandTests
     public void TryParse_OtherKinds_AreClassified()
     {
         Parse("1.5").Real.Should().Be(1.5);
-        Parse("'AB'").Should().Match<AwlOperand>(o => o.ConstantKind == AwlConstantKind.String && o.Name == "AB");
+        Parse("'AB'").Should().Match<AwlOperand>(o => o.ConstantKind == AwlConstantKind.Ascii && o.Name == "AB" && o.Integer == 0x4142);
+        Parse("'A'").Integer.Should().Be(65);
+        Parse("\"AB\"").Should().Match<AwlOperand>(o => o.ConstantKind == AwlConstantKind.String && o.Name == "AB");
+        Parse("SBR6").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Symbol && o.Name == "SBR6");
+        Parse("INT0").Kind.Should().Be(AwlOperandKind.Symbol);
+        Parse("T37").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Address && o.Area == MemoryArea.T && o.ByteOffset == 37);
+        Parse("C1").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Address && o.Area == MemoryArea.C && o.ByteOffset == 1);
         Parse("&VB100").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Pointer && o.Area == MemoryArea.V && o.ByteOffset == 100);
         Parse("*VD10").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Indirect && o.Area == MemoryArea.V && o.ByteOffset == 10);
         Parse("*LD4").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Indirect && o.Area == MemoryArea.L);

@@ -1,6 +1,7 @@
 using System.Globalization;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Stl;
+using OperatorPanel.Core.Stl.Checks;
 using OperatorPanel.StlGen.Merge;
 using OperatorPanel.StlGen.Options;
 
@@ -9,7 +10,8 @@ namespace OperatorPanel.StlGen.Tests.Handler;
 /// <summary>
 /// Reads a generated handler with the Core parser and lists every way it leaves what it says it reserves: addresses
 /// outside the CPU, V bytes outside <see cref="HandlerStats"/>' range, blocks or events it does not list, RCV/XMT on
-/// the other port, special memory written beyond SMB30/130, SMB86-94/186-194 and SMB34. Operand roles (written or
+/// the other port, special memory written beyond SMB30/130, SMB86-94/186-194 and SMB34, and every instruction the Core
+/// instruction table (via <see cref="AwlProgramCheck"/> for the CPU) refuses. Operand roles (written or
 /// read, widened by a count) come from the merge's <see cref="InstructionOperands"/>, so both share one reading.
 /// </summary>
 internal sealed class HandlerFootprintAudit
@@ -50,6 +52,7 @@ internal sealed class HandlerFootprintAudit
         var parsed = AwlParser.Parse(tamper is null ? result.AwlText : tamper(result.AwlText));
         var audit = new HandlerFootprintAudit(options, result.Stats!);
         audit._problems.AddRange(parsed.Diagnostics.Select(d => $"parse: {d}"));
+        audit._problems.AddRange(AwlProgramCheck.Check(parsed.Program, options.Cpu).Select(d => $"instruction table: {d}"));
         audit.Check(parsed.Program);
         return audit._problems;
     }

@@ -55,6 +55,10 @@ public sealed class HandlerFootprintTests
     [InlineData("MOVD   &VB8183, AC3", "MOVD   &IB4, AC3", "a pointer outside V")]
     [InlineData("CALL   OP_PANEL", "CALL   SBR_0", "not the handler's subroutine")]
     [InlineData("ATCH   OP_TX, 9", "ATCH   OP_TX, 8", "not the routine's event 9")]
+    [InlineData("SLW    AC0, 3", "SHLW   AC0, 3", "AWL001 SHLW is not an S7-200 STL instruction")]
+    [InlineData("SLW    AC0, 3", "SLW    VB1, 3", "AWL008 SLW: 'VB1' is a byte; OUT is a WORD")]
+    [InlineData("ATCH   OP_TX, 9", "ATCH   OP_TX, 26", "AWL006 ATCH: the CPU 224 has no interrupt event 26")]
+    [InlineData("CRETI", "RETI", "AWL002 RETI is not written in STL")]
     public void Audit_TamperedHandler_ReportsTheProblem(string original, string tampered, string expected)
     {
         var options = HandlerGoldenTests.Cpu224Port0Station2;

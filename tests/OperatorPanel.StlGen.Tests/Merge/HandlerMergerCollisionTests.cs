@@ -90,7 +90,8 @@ public sealed class HandlerMergerCollisionTests
     [Fact]
     public void Merge_UserAttachesOtherPortAndTimedOne_NoCollision()
     {
-        var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.1", "ATCH   MY_RX, 24", "ATCH   MY_TICK, 11", "RCV    VB100, 1"), UserProgram.Cpu224);
+        // Port 1 and its event 24 exist on the CPU 226 only (a CPU 224 program with them is refused, STL029).
+        var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.1", "ATCH   MY_RX, 24", "ATCH   MY_TICK, 11", "RCV    VB100, 1"), UserProgram.Cpu226);
 
         result.Diagnostics.Should().BeEmpty();
     }
@@ -221,5 +222,19 @@ public sealed class HandlerMergerCollisionTests
         var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.1", "MOVB   16#09, SMB30", "ATCH   MY_RX, 23", "RCV    VB100, 0"), UserProgram.Cpu226 with { Port = 1 });
 
         result.Diagnostics.Should().BeEmpty();
+    }
+
+    [Theory]
+    [InlineData("SHLW   VW0, 1", "(AWL001): SHLW is not an S7-200 STL instruction")]
+    [InlineData("LDW==  VW0, 1", "(AWL003): LDW==")]
+    [InlineData("ATCH   INT0, 26", "(AWL006): ATCH: the CPU 224 has no interrupt event 26")]
+    [InlineData("MEND", "(AWL002): MEND is not written in STL")]
+    public void Merge_UserProgramMicroWinRefuses_IsRefusedAtItsLine(string instruction, string reason)
+    {
+        var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.0", instruction), UserProgram.Cpu224);
+
+        result.MergedText.Should().BeEmpty();
+        result.Errors.Should().ContainSingle().Which.Should().Match<MergeDiagnostic>(
+            d => d.Id == StlDiagnostics.UserProgramRefused && d.Line == Line + 1 && d.Message.Contains(reason));
     }
 }
