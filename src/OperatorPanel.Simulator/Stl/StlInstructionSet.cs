@@ -158,6 +158,7 @@ internal static class StlInstructionSet
             ["WDR"] = StlOpCode.Wdr,
             ["TODR"] = StlOpCode.Todr,
             ["TODW"] = StlOpCode.Todw,
+            ["LDS"] = StlOpCode.Lds,
         }.ToFrozenDictionary(StringComparer.Ordinal);
 
     /// <summary>Every mnemonic with an op code (compares map by form and are not listed).</summary>

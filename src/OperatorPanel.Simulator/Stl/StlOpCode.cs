@@ -21,5 +21,5 @@ internal enum StlOpCode
     Dtr, Round, Trunc, Bcdi, Ibcd, Deco, Enco, Seg, Ita, Dta, Rta,
     MovR, Bmd, Rlb, Rrb, Rlw, Rrw, Rld, Rrd, Shrb,
     Att, Fifo, Lifo, Fnd, Fill,
-    Lscr, Scrt, Scre, Cscre, Stop, Wdr, Todr, Todw,
+    Lscr, Scrt, Scre, Cscre, Stop, Wdr, Todr, Todw, Lds,
 }

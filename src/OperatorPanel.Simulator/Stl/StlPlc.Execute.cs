@@ -55,6 +55,7 @@ public sealed partial class StlPlc
             case StlOpCode.Oni: _stack |= ReadPhysicalInput(op.A!) ? 0u : 1u; return op.Cost;
             case StlOpCode.AssignI: WriteImmediate(op.A!, 1, Top); return op.Cost;
             case StlOpCode.Aeno: _stack &= _eno ? ~0u : ~1u; return op.Cost;
+            case StlOpCode.Lds: Push(((_stack >> (int)Read(op.A!, 1)) & 1) != 0); return op.Cost;
             case StlOpCode.Lscr: LoadScr(op); return op.Cost;
             case StlOpCode.Scre: _activeScr = null; return op.Cost;
             default:

@@ -57,6 +57,13 @@ public sealed class BasicsCorpusTests
         new[] { run.Value("Q0.0"), run.Value("Q0.1"), run.Value("Q0.2"), run.Value("Q0.3") }.Should().Equal(q0, q1, q2, q3);
     }
 
+    [Theory]
+    [InlineData("I0.0=1", 1)]
+    [InlineData("I0.1=1", 0)]
+    [InlineData("I0.2=1", 0)]
+    public void Lds_CopiesTheNthStackLevelToTheTop(string input, int expected) =>
+        CorpusProgram.Run("Basics.awl", 0.05, input).Value("Q1.4").Should().Be(expected);
+
     [Fact]
     public void Edges_CountRisingAndFallingOnce()
     {
