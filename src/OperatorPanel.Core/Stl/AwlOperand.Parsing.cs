@@ -52,9 +52,10 @@ public sealed partial record AwlOperand
             return false;
         }
 
-        if (target.Width != AccessWidth.Byte && target.Area is not (MemoryArea.T or MemoryArea.C))
+        // MOVD IN takes &VB, &IB, &QB, &MB, &SB, &SMB, &T, &C, &AIW, &AQW (docs/stl-instructions.md, MOVD).
+        if (target.Width != AccessWidth.Byte && target.Area is not (MemoryArea.T or MemoryArea.C or MemoryArea.AI or MemoryArea.AQ))
         {
-            error = $"'{input}': a pointer takes the address of a byte (&VB100), a timer or a counter";
+            error = $"'{input}': a pointer takes the address of a byte (&VB100), a timer, a counter or an analog word (&AIW0)";
             return false;
         }
 

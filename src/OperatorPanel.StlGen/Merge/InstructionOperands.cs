@@ -40,13 +40,13 @@ internal static class InstructionOperands
         }
     }
 
-    private static long Elements(StlOperandSpec slot, long? count) => (slot.Extent, count) switch
+    /// <summary>Elements covered; a widened operand whose count is not a constant counts as its first element only.</summary>
+    private static long Elements(StlOperandSpec slot, long? count) => slot.Extent switch
     {
-        (StlExtent.One, _) => slot.Length,
-        (_, null) => 1,
-        (StlExtent.Count, { } n) => n,
-        (StlExtent.HalfCount, { } n) => (n + 1) / 2,
-        (StlExtent.AbsoluteCount, { } n) => Math.Abs(n),
+        StlExtent.One => slot.Length,
+        StlExtent.Count => count ?? 1,
+        StlExtent.HalfCount => count is { } n ? (n + 1) / 2 : 1,
+        StlExtent.AbsoluteCount => count is { } n ? Math.Abs(n) : 1,
         _ => throw new ArgumentOutOfRangeException(nameof(slot), slot.Extent, null),
     };
 

@@ -45,6 +45,7 @@ public sealed class AwlOperandTests
         Parse("\"AB\"").Should().Match<AwlOperand>(o => o.ConstantKind == AwlConstantKind.String && o.Name == "AB");
         Parse("SBR6").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Symbol && o.Name == "SBR6");
         Parse("INT0").Kind.Should().Be(AwlOperandKind.Symbol);
+        Parse("&AIW0").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Pointer && o.Area == MemoryArea.AI);
         Parse("T37").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Address && o.Area == MemoryArea.T && o.ByteOffset == 37);
         Parse("C1").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Address && o.Area == MemoryArea.C && o.ByteOffset == 1);
         Parse("&VB100").Should().Match<AwlOperand>(o => o.Kind == AwlOperandKind.Pointer && o.Area == MemoryArea.V && o.ByteOffset == 100);

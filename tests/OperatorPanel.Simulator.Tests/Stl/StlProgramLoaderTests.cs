@@ -57,4 +57,31 @@ public sealed class StlProgramLoaderTests
 
         result.Diagnostics.Select(d => d.Line).Should().Equal(1, 5);
     }
+
+    [Fact]
+    public void Load_NumericPouReferences_ReachTheNumberedBlocks()
+    {
+        const string blocks = "SUBROUTINE_BLOCK MY_SUB:SBR3\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\n=      M0.0\r\nEND_SUBROUTINE_BLOCK\r\n"
+            + "INTERRUPT_BLOCK MY_INT:INT2\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\n=      M0.1\r\nEND_INTERRUPT_BLOCK\r\n";
+
+        var result = Load("LD     SM0.0\nCALL   SBR3\nATCH   INT2, 10\nENI", blocks);
+
+        result.Diagnostics.Should().BeEmpty();
+    }
+
+    [Fact]
+    public void Load_WhatMicroWinRefuses_IsReportedOnceWithItsId()
+    {
+        var result = Load("LD     SM0.0\nSHLW   VW0, 1");
+
+        result.Diagnostics.Should().ContainSingle().Which.ToString().Should().Be("line 5: AWL001 SHLW is not an S7-200 STL instruction (see docs/stl-instructions.md)");
+    }
+
+    [Fact]
+    public void Load_TableInstructionTheSimulatorDoesNotExecute_IsRefusedByNameAndLine()
+    {
+        var result = Load("LD     SM0.0\nNETR   VB0, 0");
+
+        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: NETR is not implemented by the simulator");
+    }
 }

@@ -111,11 +111,10 @@ public static class AwlProgramCheck
             : Refuse(AwlCheckIds.WrongBlockKind, 0, $"{spec.Mnemonic} can only be used in {Where(spec.Placement)}, not in {block.Name} ({block.DefaultName})");
     }
 
-    private static string Where(StlPlacement placement) => placement switch
+    private static string Where(StlPlacement placement)
     {
-        StlPlacement.Main => "the main program (OB1)",
-        StlPlacement.Subroutine => "a subroutine",
-        StlPlacement.InterruptRoutine => "an interrupt routine",
-        _ => "the main program or a subroutine",
-    };
+        (StlPlacement Flag, string Words)[] blocks =
+            [(StlPlacement.Main, "the main program (OB1)"), (StlPlacement.Subroutine, "a subroutine"), (StlPlacement.InterruptRoutine, "an interrupt routine")];
+        return string.Join(" or ", blocks.Where(b => placement.HasFlag(b.Flag)).Select(b => b.Words));
+    }
 }

@@ -53,12 +53,15 @@ internal static class StlInstructionOperandsCheck
         return operand is { Kind: AwlOperandKind.Constant, ConstantKind: AwlConstantKind.Integer } ? CheckCpuNumber(operandSpec, operand, cpu) : null;
     }
 
-    private static (string Id, string Message)? CheckCpuNumber(StlOperandSpec spec, AwlOperand operand, CpuProfile cpu) => spec.Type switch
+    private static (string Id, string Message)? CheckCpuNumber(StlOperandSpec spec, AwlOperand operand, CpuProfile cpu)
     {
-        StlDataType.Event when !StlInterruptEvents.IsOnCpu(cpu, operand.Integer) =>
-            (AwlCheckIds.EventNotOnCpu, $"the {cpu.Name} has no interrupt event {operand.Integer} (it has events {StlInterruptEvents.RangeText(cpu)})"),
-        StlDataType.Port when operand.Integer >= cpu.CommunicationPorts =>
-            (AwlCheckIds.OutOfRange, $"the {cpu.Name} has no port {operand.Integer} (ports 0-{cpu.CommunicationPorts - 1})"),
-        _ => null,
-    };
+        if (spec.Type == StlDataType.Event && !StlInterruptEvents.IsOnCpu(cpu, operand.Integer))
+        {
+            return (AwlCheckIds.EventNotOnCpu, $"the {cpu.Name} has no interrupt event {operand.Integer} (it has events {StlInterruptEvents.RangeText(cpu)})");
+        }
+
+        return spec.Type == StlDataType.Port && operand.Integer >= cpu.CommunicationPorts
+            ? (AwlCheckIds.OutOfRange, $"the {cpu.Name} has no port {operand.Integer} (ports 0-{cpu.CommunicationPorts - 1})")
+            : null;
+    }
 }

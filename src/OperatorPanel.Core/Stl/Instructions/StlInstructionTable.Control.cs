@@ -24,8 +24,8 @@ public static partial class StlInstructionTable
         yield return Entry("CSCRE", Group.ProgramControl, StlSources.Scr);
         yield return Entry("DLED", Group.ProgramControl, StlSources.DiagnosticLed, ByteIn("IN")) with { Firmware = StlFirmware.Version2 };
         var subroutine = new StlOperandSpec("SBR_n", StlDataType.Subroutine, Kinds.Pou, StlAccess.Read);
-        yield return Entry("CALL", Group.Subroutine, StlSources.Subroutine, subroutine) with { TakesParameters = true, EnoErrors = "SM4.3 (run-time), 0008 (maximum subroutine nesting exceeded)" };
-        yield return Entry("CRET", Group.Subroutine, StlSources.Subroutine) with { Placement = StlPlacement.Subroutine };
+        yield return Entry("CALL", Group.Subroutine, StlSources.Call, subroutine) with { TakesParameters = true, EnoErrors = "SM4.3 (run-time), 0008 (maximum subroutine nesting exceeded)" };
+        yield return Entry("CRET", Group.Subroutine, StlSources.Call) with { Placement = StlPlacement.Subroutine };
         yield return Entry("RET", Group.Subroutine, StlSources.Subroutine) with { Placement = StlPlacement.None };
     }
 

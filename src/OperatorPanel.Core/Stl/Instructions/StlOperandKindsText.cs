@@ -18,12 +18,9 @@ public static class StlOperandKindsText
     {
         ArgumentNullException.ThrowIfNull(spec);
         var width = spec.Bytes switch { 1 => "B", 2 => "W", 4 => "D", _ => string.Empty };
-        var words = Order.Where(o => (spec.Kinds & o.Kind) != 0).Select(o => o.Kind switch
-        {
-            StlOperandKinds.I or StlOperandKinds.Q or StlOperandKinds.V or StlOperandKinds.M or StlOperandKinds.SM
-                or StlOperandKinds.S or StlOperandKinds.L or StlOperandKinds.AI or StlOperandKinds.AQ => o.Prefix + width,
-            _ => o.Prefix,
-        });
+        const StlOperandKinds sized = StlOperandKinds.I | StlOperandKinds.Q | StlOperandKinds.V | StlOperandKinds.M
+            | StlOperandKinds.SM | StlOperandKinds.S | StlOperandKinds.L | StlOperandKinds.AI | StlOperandKinds.AQ;
+        var words = Order.Where(o => (spec.Kinds & o.Kind) != 0).Select(o => (sized & o.Kind) != 0 ? o.Prefix + width : o.Prefix);
         return string.Join(", ", words);
     }
 }

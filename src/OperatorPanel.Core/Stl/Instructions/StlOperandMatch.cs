@@ -48,7 +48,8 @@ public static class StlOperandMatch
     {
         MemoryArea.V => StlOperandKinds.IndirectV,
         MemoryArea.L => StlOperandKinds.IndirectL,
-        _ => StlOperandKinds.IndirectAc,
+        MemoryArea.AC => StlOperandKinds.IndirectAc,
+        _ => throw new ArgumentOutOfRangeException(nameof(holder), holder, "a pointer is held in VD, LD or AC1-AC3"),
     };
 
     private static StlOperandRefusal? CheckAddress(StlOperandSpec spec, AwlOperand operand)
@@ -105,7 +106,8 @@ public static class StlOperandMatch
         MemoryArea.HC => "a high-speed counter",
         MemoryArea.AI => "an analog input",
         MemoryArea.AQ => "an analog output",
-        _ => $"{area} memory",
+        MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM or MemoryArea.S or MemoryArea.L => $"{area} memory",
+        _ => throw new ArgumentOutOfRangeException(nameof(area), area, null),
     };
 
     private static string SizeName(int bytes) => bytes switch

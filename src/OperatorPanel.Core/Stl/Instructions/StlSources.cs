@@ -11,7 +11,7 @@ internal static class StlSources
 
     public const string ImmediateContacts = "unsourced";
 
-    public const string LogicStack = "unsourced";
+    public const string LogicStack = "C233 p. 9-194; ML1312858 p. 83; SMART p. 174 (AENO)";
 
     public const string Coils = "unsourced";
 
@@ -19,9 +19,9 @@ internal static class StlSources
 
     public const string Nop = "unsourced";
 
-    public const string Compare = "unsourced";
+    public const string Compare = "C233 p. 9-10; CMP Table 6-15";
 
-    public const string StringCompare = "unsourced";
+    public const string StringCompare = "CMP Table 6-15 (Compare String)";
 
     public const string Move = "unsourced";
 
@@ -31,9 +31,9 @@ internal static class StlSources
 
     public const string ImmediateMove = "unsourced";
 
-    public const string IntegerMath = "unsourced";
+    public const string IntegerMath = "MWHELP s7-28hir.htm; C233 p. 9-76; ML801761 p. 154";
 
-    public const string RealMath = "unsourced";
+    public const string RealMath = "ML801761 p. 154";
 
     public const string RealFunctions = "unsourced";
 
@@ -45,11 +45,11 @@ internal static class StlSources
 
     public const string Invert = "unsourced";
 
-    public const string Shift = "C233 p. 9-116";
+    public const string Shift = "C233 p. 9-116; ML801761 p. 193";
 
-    public const string Rotate = "unsourced";
+    public const string Rotate = "ML801761 p. 193";
 
-    public const string ShiftRegister = "unsourced";
+    public const string ShiftRegister = "SMART p. 318 (sibling product)";
 
     public const string Conversion = "unsourced";
 
@@ -65,11 +65,11 @@ internal static class StlSources
 
     public const string StringConversion = "unsourced";
 
-    public const string Timer = "unsourced";
+    public const string Timer = "C233 p. 9-16; ML801761 p. 211";
 
     public const string IntervalTimer = "unsourced";
 
-    public const string Counter = "unsourced";
+    public const string Counter = "C233 p. 9-24; MWHELP s7-27o4z.htm";
 
     public const string Table = "unsourced";
 
@@ -77,9 +77,9 @@ internal static class StlSources
 
     public const string Fill = "unsourced";
 
-    public const string Clock = "unsourced";
+    public const string Clock = "A5E02 p. 9-72";
 
-    public const string ClockExtended = "unsourced";
+    public const string ClockExtended = "SMART p. 168 (sibling product)";
 
     public const string Strings = "unsourced";
 
@@ -87,11 +87,11 @@ internal static class StlSources
 
     public const string PulseOutput = "unsourced";
 
-    public const string End = "unsourced";
+    public const string End = "MWHELP s7-250fn.htm, s7-29khe.htm";
 
     public const string Stop = "unsourced";
 
-    public const string Watchdog = "unsourced";
+    public const string Watchdog = "MWHELP s7-27sz5.htm; A5E02 p. 9-146";
 
     public const string Jump = "unsourced";
 
@@ -101,17 +101,19 @@ internal static class StlSources
 
     public const string DiagnosticLed = "unsourced";
 
-    public const string Subroutine = "unsourced";
+    public const string Subroutine = "MWHELP s7-250fn.htm (RET)";
 
-    public const string InterruptEnable = "unsourced";
+    public const string Call = "unsourced";
 
-    public const string InterruptReturn = "unsourced";
+    public const string InterruptEnable = "SMART p. 326 (sibling product); C235 p. 5-15";
 
-    public const string Attach = "C233 p. 9-165; MWHELP s7-245wz.htm";
+    public const string InterruptReturn = "MWHELP s7-250fn.htm (RETI)";
+
+    public const string Attach = "C233 p. 9-165; MWHELP s7-245wz.htm; A5E02 (ML1303220 p. 357); ML801761 p. 172";
 
     public const string ClearEvent = "unsourced";
 
-    public const string Freeport = "unsourced";
+    public const string Freeport = "ML801761 p. 101";
 
     public const string Network = "unsourced";
 
