@@ -4,7 +4,7 @@ namespace OperatorPanel.Simulator.Stl;
 /// Rotates and the shift register (A5E00307987-04 chapter 6, "Shift and Rotate Instructions"). RLB/RRB/RLW/RRW/RLD/RRD
 /// OUT, N rotate by N modulo the width; SM1.1 is the last bit rotated, SM1.0 is set when the value is zero; a count that
 /// is 0 after the modulo rotates nothing and leaves SM1.1 alone. SHRB DATA, S_BIT, N shifts DATA into a register of |N|
-/// bits from S_BIT (manual p. 182, Figure 6-35): N &gt; 0 into S_BIT and out of the most significant bit, N &lt; 0 into the
+/// bits from S_BIT (ML801761 printed p. 182, Figure 6-35): N &gt; 0 into S_BIT and out of the most significant bit, N &lt; 0 into the
 /// most significant bit and out of S_BIT; the bit shifted out goes to SM1.1. |N| is 1 to 64; any other N sets ENO = 0
 /// (error 0092, count field) and shifts nothing.
 /// </summary>

@@ -1,10 +1,10 @@
 namespace OperatorPanel.Simulator.Stl;
 
 /// <summary>
-/// TON, TONR and TOF (System Manual C79000-G7076-C233-01 p. 9-16, Table 9-1; A5E00307987-04 chapter 6, "Timer
+/// TON, TONR and TOF (System Manual C79000-G7076-C233-01 p. 9-16, Table 9-1; ML801761 = manualslib 801761 p. 211-212, printed 197-198, Table 6-74; "Timer
 /// Instructions"). The timer number fixes the resolution: TONR T0/T64 1 ms, T1-T4/T65-T68 10 ms, T5-T31/T69-T95
 /// 100 ms; TON/TOF T32/T96 1 ms, T33-T36/T97-T100 10 ms, T37-T63/T101-T255 100 ms. The current value counts to
-/// 32767 at most. How each resolution is updated (A5E00307987-04, "Understanding how the S7-200 updates timers"):
+/// 32767 at most. How each resolution is updated (ML801761 printed p. 198, "Understanding How Resolution Affects the Timer Action"):
 /// 1 ms timers every millisecond, asynchronously to the scan (here: whenever the timer is read or executed);
 /// 10 ms timers at the start of each scan, so bit and value stay constant through a scan; 100 ms timers when their
 /// instruction executes, by the 100 ms intervals elapsed since its previous execution. The part of an interval not

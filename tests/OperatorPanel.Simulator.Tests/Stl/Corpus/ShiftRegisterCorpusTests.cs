@@ -1,6 +1,6 @@
 namespace OperatorPanel.Simulator.Tests.Stl.Corpus;
 
-/// <summary>ShiftRegister.awl: the SHRB example of A5E00307987-04 p. 182 (V100 0101 -> 1011 overflow 0 -> 0110 overflow 1).</summary>
+/// <summary>ShiftRegister.awl: the SHRB example of System Manual ML801761 (manualslib 801761 p. 196, printed p. 182) (V100 0101 -> 1011 overflow 0 -> 0110 overflow 1).</summary>
 public sealed class ShiftRegisterCorpusTests
 {
     private static readonly string[] ManualSequence =

@@ -1,7 +1,7 @@
 namespace OperatorPanel.Simulator.Tests.Stl.Corpus;
 
 /// <summary>
-/// TimerOnDelay/TimerRetentive/TimerOffDelay.awl against the manual's timer rules (A5E00307987-04 p. 197;
+/// TimerOnDelay.awl (the TON example of ML801761, manualslib 801761 p. 212, printed 198), TimerRetentive, TimerOffDelay and TimerOneShot.awl against the timer rules (ML801761 p. 211-212;
 /// C79000-G7076-C233-01 p. 9-16 Table 9-1 resolutions, p. 9-17 Table 9-2 timer actions).
 /// </summary>
 public sealed class TimerCorpusTests
@@ -118,5 +118,15 @@ public sealed class TimerCorpusTests
         run.Value("Q0.0").Should().Be(1);
         run.Value("T38").Should().Be(0);
         run.Value("Q0.1").Should().Be(1, "the 10 ms TOF T34 as well");
+    }
+
+    [Fact]
+    public void SelfResettingTimers_BehaveAsFigure94Shows()
+    {
+        var run = CorpusProgram.Run("TimerOneShot.awl", 2);
+
+        run.Value("VW0").Should().Be(0, "10 ms: the box resets the bit before LD T33 reads it (C233-01 p. 9-19)");
+        run.Value("VW2").Should().Be(6, "100 ms: one scan at each preset of 300 ms");
+        run.Value("VW6").Should().Be(6, "10 ms reset by Q0.3: one scan each 300 ms");
     }
 }
