@@ -28,9 +28,9 @@ public static partial class StlInstructionTable
     {
         var table = new StlOperandSpec("TBL", StlDataType.Word, WordMemory, StlAccess.ReadWrite);
         const string eno = "SM4.3 (run-time), 0006 (indirect address), 0091 (operand out of range)";
-        yield return Entry("ATT", Group.Table, StlSources.Table, WordIn("DATA"), table) with { StatusBits = TableFull, EnoErrors = eno };
-        yield return Entry("FIFO", Group.Table, StlSources.Table, table, WordOut("DATA")) with { StatusBits = TableEmpty, EnoErrors = eno };
-        yield return Entry("LIFO", Group.Table, StlSources.Table, table, WordOut("DATA")) with { StatusBits = TableEmpty, EnoErrors = eno };
+        yield return Entry("ATT", Group.Table, StlSources.Table, WordIn("DATA"), table) with { StatusBits = TableFull, EnoErrors = "SM1.4 (table overflow), " + eno };
+        yield return Entry("FIFO", Group.Table, StlSources.Table, table, WordOut("DATA")) with { StatusBits = TableEmpty, EnoErrors = "SM1.5 (empty table), " + eno };
+        yield return Entry("LIFO", Group.Table, StlSources.Table, table, WordOut("DATA")) with { StatusBits = TableEmpty, EnoErrors = "SM1.5 (empty table), " + eno };
         foreach (var relation in (string[])["=", "<>", "<", ">"])
         {
             yield return Entry("FND" + relation, Group.Table, StlSources.TableFind, table with { Access = StlAccess.Read }, WordIn("PTN"), WordInOut("INDX")) with { EnoErrors = eno };

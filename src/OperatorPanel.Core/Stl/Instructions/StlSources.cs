@@ -51,9 +51,9 @@ internal static class StlSources
 
     public const string ShiftRegister = "SMART p. 318 (sibling product)";
 
-    public const string Conversion = "unsourced";
+    public const string Conversion = "DE-SH p. 102 (DTR, DTI, ITD)";
 
-    public const string Bcd = "unsourced";
+    public const string Bcd = "DE-SH p. 102";
 
     public const string Decode = "unsourced";
 
@@ -71,7 +71,7 @@ internal static class StlSources
 
     public const string Counter = "C233 p. 9-24; MWHELP s7-27o4z.htm";
 
-    public const string Table = "unsourced";
+    public const string Table = "C233 p. 9-109 (LIFO)";
 
     public const string TableFind = "unsourced";
 
