@@ -279,7 +279,6 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
         StlOpCode.Ret or StlOpCode.Cret => kind == AwlBlockKind.Subroutine,
         StlOpCode.Reti or StlOpCode.Creti => kind == AwlBlockKind.InterruptRoutine,
         StlOpCode.End or StlOpCode.Mend => kind == AwlBlockKind.OrganizationBlock,
-        StlOpCode.Lscr or StlOpCode.Scrt or StlOpCode.Scre or StlOpCode.Cscre => kind == AwlBlockKind.OrganizationBlock,
         _ => true,
     };
 

@@ -1,7 +1,8 @@
 namespace OperatorPanel.Simulator.Stl;
 
 /// <summary>
-/// Sequence control relays (A5E00307987-04 chapter 6, "Sequence Control Relay (SCR) Instructions"), main program only.
+/// Sequence control relays (A5E00307987-04 chapter 6, "Sequence Control Relay (SCR) Instructions"); where they may be
+/// written is the Core instruction table's rule.
 /// LSCR S_bit loads the S bit onto the logic stack and, when it is 0, skips the segment to its SCRE; SCRT S_bit (with
 /// power flow) sets the referenced S bit and resets the S bit of the active segment; CSCRE (with power flow) ends the
 /// segment here; SCRE marks its end.
