@@ -38,6 +38,7 @@ internal static class OpanelApp
         yield return WatchCommand.Create(context);
         yield return BenchCommand.Create(context);
         yield return GenerateCommand.Create(context);
+        yield return StlCommand.Create(context);
     }
 }
 

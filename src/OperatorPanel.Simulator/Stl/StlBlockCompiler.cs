@@ -8,6 +8,7 @@ namespace OperatorPanel.Simulator.Stl;
 internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlock> blocks, List<AwlDiagnostic> diagnostics)
 {
     private readonly StlOperandResolver _resolver = new(cpu);
+    private readonly StlTimerNumbers _rules = new();
 
     public int EdgeCount { get; private set; }
 
@@ -16,6 +17,7 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
         var ops = new List<StlOp>();
         var labels = new Dictionary<int, int>();
         var forStack = new Stack<StlOp>();
+        var segment = new List<StlOp>();
         foreach (var instruction in block.Source.Instructions)
         {
             if (CompileOne(block, instruction, locals) is not { } op)
@@ -36,6 +38,10 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
             {
                 LinkNext(op, forStack, block, ops.Count);
             }
+            else if (op.Code is StlOpCode.Lscr or StlOpCode.Cscre or StlOpCode.Scre)
+            {
+                LinkScr(op, segment, ops.Count);
+            }
 
             ops.Add(op);
         }
@@ -43,6 +49,11 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
         foreach (var open in forStack)
         {
             Report(open.Line, $"FOR without NEXT in {block.Name}");
+        }
+
+        if (segment.Count > 0)
+        {
+            Report(segment[0].Line, $"LSCR without SCRE in {block.Name}");
         }
 
         foreach (var jump in ops.Where(o => o.Code == StlOpCode.Jmp))
@@ -75,6 +86,32 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
         loop.N = index + 1;
     }
 
+    /// <summary>LSCR skips past its SCRE, CSCRE jumps to it; segments do not nest (A5E00307987-04, SCR restrictions).</summary>
+    private void LinkScr(StlOp op, List<StlOp> segment, int index)
+    {
+        if (op.Code == StlOpCode.Lscr && segment.Count > 0)
+        {
+            Report(op.Line, "LSCR inside an SCR segment: close the segment with SCRE first");
+        }
+        else if (op.Code != StlOpCode.Lscr && segment.Count == 0)
+        {
+            Report(op.Line, $"{op.Mnemonic} outside an SCR segment (no LSCR before it)");
+        }
+        else if (op.Code == StlOpCode.Scre)
+        {
+            segment[0].N = index + 1;
+            foreach (var end in segment.Skip(1))
+            {
+                end.N = index;
+            }
+
+            segment.Clear();
+            return;
+        }
+
+        segment.Add(op);
+    }
+
     private StlOp? CompileOne(
         StlBlock block, AwlInstruction instruction, IReadOnlyDictionary<string, (StlLoc Loc, int Bytes, bool IsBit)> locals)
     {
@@ -103,12 +140,17 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
             Code = code,
             Mnemonic = instruction.Mnemonic,
             Line = line,
-            Width = code is StlOpCode.CmpLd or StlOpCode.CmpA or StlOpCode.CmpO ? StlOperandResolver.BytesOf(types[0]) : 0,
+            Width = code is StlOpCode.CmpLd or StlOpCode.CmpA or StlOpCode.CmpO or StlOpCode.CmpRLd or StlOpCode.CmpRA or StlOpCode.CmpRO
+                ? StlOperandResolver.BytesOf(types[0]) : 0,
         };
         if (op.Width > 0)
         {
-            var tail = instruction.Mnemonic[(code == StlOpCode.CmpLd ? 3 : 2)..];
+            var tail = instruction.Mnemonic[(code is StlOpCode.CmpLd or StlOpCode.CmpRLd ? 3 : 2)..];
             op.N = StlInstructionSet.RelationOf(tail)!.Value;
+        }
+        else if (code == StlOpCode.Fnd)
+        {
+            op.N = StlInstructionSet.RelationOf(instruction.Mnemonic[3..])!.Value;
         }
         else if (code is StlOpCode.Eu or StlOpCode.Ed)
         {
@@ -128,6 +170,7 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
         }
 
         (op.A, op.B, op.C) = (locs[0], locs[1], locs[2]);
+        ok = ok && _rules.Check(op, Report);
         op.Cost = StlTiming.Base(code) + (op.Parameters.Length * StlTiming.PerParameter)
             + (StlTiming.IndirectOperand * (locs.Count(l => l?.Kind == StlLocKind.Indirect)
                 + op.Parameters.Count(p => p.Actual.Kind == StlLocKind.Indirect)));

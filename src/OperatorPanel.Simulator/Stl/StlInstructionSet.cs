@@ -92,7 +92,77 @@ internal static class StlInstructionSet
             ["DISI"] = StlOpCode.Disi,
             ["RCV"] = StlOpCode.Rcv,
             ["XMT"] = StlOpCode.Xmt,
+            ["TON"] = StlOpCode.Ton,
+            ["TONR"] = StlOpCode.Tonr,
+            ["TOF"] = StlOpCode.Tof,
+            ["CTU"] = StlOpCode.Ctu,
+            ["CTD"] = StlOpCode.Ctd,
+            ["CTUD"] = StlOpCode.Ctud,
+            ["LDI"] = StlOpCode.Ldi,
+            ["LDNI"] = StlOpCode.Ldni,
+            ["AI"] = StlOpCode.Ai,
+            ["ANI"] = StlOpCode.Ani,
+            ["OI"] = StlOpCode.Oi,
+            ["ONI"] = StlOpCode.Oni,
+            ["=I"] = StlOpCode.AssignI,
+            ["SI"] = StlOpCode.SetI,
+            ["RI"] = StlOpCode.ResetI,
+            ["BIR"] = StlOpCode.Bir,
+            ["BIW"] = StlOpCode.Biw,
+            ["AENO"] = StlOpCode.Aeno,
+            ["MUL"] = StlOpCode.Mul,
+            ["DIV"] = StlOpCode.Div,
+            ["+R"] = StlOpCode.AddR,
+            ["-R"] = StlOpCode.SubR,
+            ["*R"] = StlOpCode.MulR,
+            ["/R"] = StlOpCode.DivR,
+            ["SQRT"] = StlOpCode.Sqrt,
+            ["LN"] = StlOpCode.Ln,
+            ["EXP"] = StlOpCode.Exp,
+            ["SIN"] = StlOpCode.Sin,
+            ["COS"] = StlOpCode.Cos,
+            ["TAN"] = StlOpCode.Tan,
+            ["DTR"] = StlOpCode.Dtr,
+            ["ROUND"] = StlOpCode.Round,
+            ["TRUNC"] = StlOpCode.Trunc,
+            ["BCDI"] = StlOpCode.Bcdi,
+            ["IBCD"] = StlOpCode.Ibcd,
+            ["DECO"] = StlOpCode.Deco,
+            ["ENCO"] = StlOpCode.Enco,
+            ["SEG"] = StlOpCode.Seg,
+            ["ITA"] = StlOpCode.Ita,
+            ["DTA"] = StlOpCode.Dta,
+            ["RTA"] = StlOpCode.Rta,
+            ["MOVR"] = StlOpCode.MovR,
+            ["BMD"] = StlOpCode.Bmd,
+            ["RLB"] = StlOpCode.Rlb,
+            ["RRB"] = StlOpCode.Rrb,
+            ["RLW"] = StlOpCode.Rlw,
+            ["RRW"] = StlOpCode.Rrw,
+            ["RLD"] = StlOpCode.Rld,
+            ["RRD"] = StlOpCode.Rrd,
+            ["SHRB"] = StlOpCode.Shrb,
+            ["ATT"] = StlOpCode.Att,
+            ["FIFO"] = StlOpCode.Fifo,
+            ["LIFO"] = StlOpCode.Lifo,
+            ["FND="] = StlOpCode.Fnd,
+            ["FND<>"] = StlOpCode.Fnd,
+            ["FND<"] = StlOpCode.Fnd,
+            ["FND>"] = StlOpCode.Fnd,
+            ["FILL"] = StlOpCode.Fill,
+            ["LSCR"] = StlOpCode.Lscr,
+            ["SCRT"] = StlOpCode.Scrt,
+            ["SCRE"] = StlOpCode.Scre,
+            ["CSCRE"] = StlOpCode.Cscre,
+            ["STOP"] = StlOpCode.Stop,
+            ["WDR"] = StlOpCode.Wdr,
+            ["TODR"] = StlOpCode.Todr,
+            ["TODW"] = StlOpCode.Todw,
+            ["LDS"] = StlOpCode.Lds,
         }.ToFrozenDictionary(StringComparer.Ordinal);
+
+    /// <summary>Every mnemonic with an op code (compares map by form and are not listed).</summary>
+    public static IEnumerable<string> Mnemonics => Codes.Keys;
 
     /// <summary>The op code and operand types of a mnemonic the simulator executes; false for any other.</summary>
     public static bool TryGet(string mnemonic, out StlOpCode code, out StlOperandType[] operands)
@@ -115,7 +185,7 @@ internal static class StlInstructionSet
         return index < 0 ? null : index;
     }
 
-    /// <summary>Compares of bytes, words and double words map by form (LD, A, O); real and string compares are not executed yet.</summary>
+    /// <summary>Compares of bytes, words, double words and reals map by form (LD, A, O); string compares are not executed yet.</summary>
     private static bool TryCode(StlInstructionSpec spec, out StlOpCode code)
     {
         if (!spec.IsCompare)
@@ -124,7 +194,16 @@ internal static class StlInstructionSet
         }
 
         var form = spec.Mnemonic.StartsWith("LD", StringComparison.Ordinal) ? "LD" : spec.Mnemonic[..1];
-        code = form switch { "LD" => StlOpCode.CmpLd, "A" => StlOpCode.CmpA, _ => StlOpCode.CmpO };
-        return spec.Mnemonic[form.Length] is 'B' or 'W' or 'D';
+        var real = spec.Mnemonic[form.Length] == 'R';
+        code = (form, real) switch
+        {
+            ("LD", false) => StlOpCode.CmpLd,
+            ("A", false) => StlOpCode.CmpA,
+            (_, false) => StlOpCode.CmpO,
+            ("LD", true) => StlOpCode.CmpRLd,
+            ("A", true) => StlOpCode.CmpRA,
+            (_, true) => StlOpCode.CmpRO,
+        };
+        return spec.Mnemonic[form.Length] is 'B' or 'W' or 'D' or 'R';
     }
 }

@@ -7,4 +7,10 @@ internal enum StlLocKind
     Local,
     Accumulator,
     Indirect,
+
+    /// <summary>Timer Tn (n in Offset): its bit as a bit operand, its current value as a word.</summary>
+    Timer,
+
+    /// <summary>Counter Cn (n in Offset): its bit as a bit operand, its current value as a word.</summary>
+    Counter,
 }

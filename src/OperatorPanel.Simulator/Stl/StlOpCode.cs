@@ -14,4 +14,12 @@ internal enum StlOpCode
     Ath, Hta,
     For, Next, Jmp, Lbl, Call, Cret, Ret, Creti, Reti, End, Mend, Nop,
     Atch, Dtch, Eni, Disi, Rcv, Xmt,
+    Ton, Tonr, Tof, Ctu, Ctd, Ctud,
+    Ldi, Ldni, Ai, Ani, Oi, Oni, AssignI, SetI, ResetI, Bir, Biw, Aeno,
+    Mul, Div, AddR, SubR, MulR, DivR, Sqrt, Ln, Exp, Sin, Cos, Tan,
+    CmpRLd, CmpRA, CmpRO,
+    Dtr, Round, Trunc, Bcdi, Ibcd, Deco, Enco, Seg, Ita, Dta, Rta,
+    MovR, Bmd, Rlb, Rrb, Rlw, Rrw, Rld, Rrd, Shrb,
+    Att, Fifo, Lifo, Fnd, Fill,
+    Lscr, Scrt, Scre, Cscre, Stop, Wdr, Todr, Todw, Lds,
 }

@@ -17,10 +17,15 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
         loc = null!;
         var bytes = BytesOf(type);
         var output = type is StlOperandType.BitOut or StlOperandType.ByteOut or StlOperandType.WordOut or StlOperandType.DWordOut;
-        if (operand is { Kind: AwlOperandKind.Address, Area: MemoryArea.AC } && type is StlOperandType.ByteArea or StlOperandType.WordArea)
+        if (operand is { Kind: AwlOperandKind.Address, Area: MemoryArea.AC } && type is StlOperandType.ByteArea or StlOperandType.WordArea or StlOperandType.DWordArea)
         {
             error = $"'{operand.Text}': an accumulator cannot hold a buffer; use a memory address or *AC";
             return false;
+        }
+
+        if (type is StlOperandType.Timer or StlOperandType.Counter || operand is { Kind: AwlOperandKind.Address, Area: MemoryArea.T or MemoryArea.C })
+        {
+            return TryTimerOrCounter(operand, type, out loc, out error);
         }
 
         switch (operand.Kind)
@@ -29,6 +34,8 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
                 return TryAddress(operand, bytes, output, out loc, out error);
             case AwlOperandKind.Constant when type is StlOperandType.ByteIn or StlOperandType.WordIn or StlOperandType.DWordIn:
                 return TryConstant(operand, bytes, out loc, out error);
+            case AwlOperandKind.Constant when type is StlOperandType.SignedByteIn:
+                return TrySignedByte(operand, out loc, out error);
             case AwlOperandKind.Pointer when type == StlOperandType.DWordIn:
                 return TryPointer(operand, out loc, out error);
             case AwlOperandKind.Indirect when bytes > 0:
@@ -48,17 +55,70 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
     public static int BytesOf(StlOperandType type) => type switch
     {
         StlOperandType.BitIn or StlOperandType.BitOut => 0,
-        StlOperandType.ByteIn or StlOperandType.ByteOut or StlOperandType.ByteArea => 1,
-        StlOperandType.WordIn or StlOperandType.WordOut or StlOperandType.WordArea => 2,
+        StlOperandType.ByteIn or StlOperandType.ByteOut or StlOperandType.ByteArea or StlOperandType.SignedByteIn => 1,
+        StlOperandType.WordIn or StlOperandType.WordOut or StlOperandType.WordArea or StlOperandType.Timer or StlOperandType.Counter => 2,
         _ => 4,
     };
+
+    /// <summary>
+    /// T0-T255 and C0-C255 (System Manual A5E00307987-04, "Timer" and "Counter" operand tables): the box operand of a
+    /// timer or counter, its bit where a bit is read or written (LD T37, R C1, 1), its current value where a word is
+    /// (LDW&gt;= C1, 50, MOVW T37, VW0).
+    /// </summary>
+    private static bool TryTimerOrCounter(AwlOperand operand, StlOperandType type, out StlLoc loc, out string error)
+    {
+        loc = null!;
+        var wanted = type switch
+        {
+            StlOperandType.Timer => MemoryArea.T,
+            StlOperandType.Counter => MemoryArea.C,
+            _ => operand.Area,
+        };
+        var bytes = BytesOf(type);
+        if (operand.Kind != AwlOperandKind.Address || operand.Area != wanted)
+        {
+            error = $"'{operand.Text}' is not a {(wanted == MemoryArea.T ? "timer (T0-T255)" : "counter (C0-C255)")}";
+            return false;
+        }
+
+        if (operand.ByteOffset > 255)
+        {
+            error = $"'{operand.Text}': the S7-200 has {(wanted == MemoryArea.T ? "T0-T255" : "C0-C255")}";
+            return false;
+        }
+
+        if (bytes is not (0 or 2) || type is StlOperandType.WordArea)
+        {
+            error = $"'{operand.Text}' is a bit or a word (current value); a {WidthName(bytes)} is expected here";
+            return false;
+        }
+
+        error = string.Empty;
+        loc = new StlLoc { Kind = wanted == MemoryArea.T ? StlLocKind.Timer : StlLocKind.Counter, Offset = operand.ByteOffset };
+        return true;
+    }
+
+    /// <summary>SHRB's N: a signed length, written +4 or -14.</summary>
+    private static bool TrySignedByte(AwlOperand operand, out StlLoc loc, out string error)
+    {
+        loc = null!;
+        if (operand.ConstantKind != AwlConstantKind.Integer || operand.Integer is < sbyte.MinValue or > sbyte.MaxValue)
+        {
+            error = $"'{operand.Text}' is not a signed byte constant (-128 to +127)";
+            return false;
+        }
+
+        error = string.Empty;
+        loc = new StlLoc { Kind = StlLocKind.Constant, Value = (uint)(byte)(sbyte)operand.Integer };
+        return true;
+    }
 
     private bool TryAddress(AwlOperand operand, int bytes, bool output, out StlLoc loc, out string error)
     {
         loc = null!;
-        if (operand.Area is MemoryArea.T or MemoryArea.C or MemoryArea.HC)
+        if (operand.Area is MemoryArea.HC)
         {
-            error = $"'{operand.Text}': timers, counters and high-speed counters are not implemented by the simulator";
+            error = $"'{operand.Text}': high-speed counters are not implemented by the simulator";
             return false;
         }
 
@@ -198,7 +258,7 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
 
     private static string Describe(StlOperandType type) => type switch
     {
-        StlOperandType.ByteArea or StlOperandType.WordArea => $"{WidthName(BytesOf(type))} in memory",
+        StlOperandType.ByteArea or StlOperandType.WordArea or StlOperandType.DWordArea => $"{WidthName(BytesOf(type))} in memory",
         StlOperandType.BitOut or StlOperandType.ByteOut or StlOperandType.WordOut or StlOperandType.DWordOut =>
             $"writable {WidthName(BytesOf(type))}",
         _ => WidthName(BytesOf(type)),

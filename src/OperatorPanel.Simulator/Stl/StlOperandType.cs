@@ -38,4 +38,7 @@ internal enum StlOperandType
 
     /// <summary>The counter itself, C0-C255 (CTU, CTD, CTUD).</summary>
     Counter,
+
+    /// <summary>A signed byte (SHRB length N, -64 to +64).</summary>
+    SignedByteIn,
 }

@@ -29,6 +29,7 @@ internal static class StlOperandTypes
             (1, true, _) => StlOperandType.ByteArea,
             (2, true, _) => StlOperandType.WordArea,
             (4, true, _) => StlOperandType.DWordArea,
+            (1, false, true) when spec.Min < 0 => StlOperandType.SignedByteIn,
             (1, false, true) => StlOperandType.ByteIn,
             (1, false, false) => StlOperandType.ByteOut,
             (2, false, true) => StlOperandType.WordIn,

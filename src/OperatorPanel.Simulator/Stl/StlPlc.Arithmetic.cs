@@ -51,7 +51,8 @@ public sealed partial class StlPlc
             case StlOpCode.Slw: Shift(op, 2, left: true); break;
             case StlOpCode.Srw: Shift(op, 2, left: false); break;
             case StlOpCode.Sld: Shift(op, 4, left: true); break;
-            default: Shift(op, 4, left: false); break;
+            case StlOpCode.Srd: Shift(op, 4, left: false); break;
+            default: WideArithmetic(op); break;
         }
     }
 
@@ -68,6 +69,7 @@ public sealed partial class StlPlc
         Write(target, bytes, (uint)wrapped);
         SetFlags(Zero | Overflow | Negative,
             (byte)((wrapped == 0 ? Zero : 0) | (wrapped != result ? Overflow : 0) | (wrapped < 0 ? Negative : 0)));
+        _eno &= wrapped == result;
     }
 
     /// <summary>INCB/DECB: bytes are unsigned; SM1.1 on the wrap from 255 to 0 or 0 to 255.</summary>
@@ -84,6 +86,7 @@ public sealed partial class StlPlc
         if (divisor == 0)
         {
             SetFlags(Zero | Overflow | Negative | DivideByZero, DivideByZero);
+            _eno = false;
             return;
         }
 
@@ -97,6 +100,7 @@ public sealed partial class StlPlc
         if (value < min || value > max)
         {
             SetFlags(Overflow, Overflow);
+            _eno = false;
             return;
         }
 

@@ -10,6 +10,9 @@ public sealed partial class StlPlc
 {
     private const uint StackMask = 0x1FF;
 
+    /// <summary>ENO of the last box instruction, for AENO: 0 when it had no power flow or met an error condition.</summary>
+    private bool _eno;
+
     private bool Top => (_stack & 1) != 0;
 
     /// <summary>Executes <paramref name="op"/>; returns its cost in ns.</summary>
@@ -39,9 +42,26 @@ public sealed partial class StlPlc
             case StlOpCode.CmpLd: Push(Compare(op)); return op.Cost;
             case StlOpCode.CmpA: _stack &= Compare(op) ? ~0u : ~1u; return op.Cost;
             case StlOpCode.CmpO: _stack |= Compare(op) ? 1u : 0u; return op.Cost;
+            case StlOpCode.CmpRLd: Push(CompareReal(op)); return op.Cost;
+            case StlOpCode.CmpRA: _stack &= CompareReal(op) ? ~0u : ~1u; return op.Cost;
+            case StlOpCode.CmpRO: _stack |= CompareReal(op) ? 1u : 0u; return op.Cost;
+            case StlOpCode.Ton or StlOpCode.Tonr or StlOpCode.Tof: Timer(op); return op.Cost;
+            case StlOpCode.Ctu or StlOpCode.Ctd or StlOpCode.Ctud: Counter(op); return op.Cost;
+            case StlOpCode.Ldi: Push(ReadPhysicalInput(op.A!)); return op.Cost;
+            case StlOpCode.Ldni: Push(!ReadPhysicalInput(op.A!)); return op.Cost;
+            case StlOpCode.Ai: _stack &= ReadPhysicalInput(op.A!) ? ~0u : ~1u; return op.Cost;
+            case StlOpCode.Ani: _stack &= ReadPhysicalInput(op.A!) ? ~1u : ~0u; return op.Cost;
+            case StlOpCode.Oi: _stack |= ReadPhysicalInput(op.A!) ? 1u : 0u; return op.Cost;
+            case StlOpCode.Oni: _stack |= ReadPhysicalInput(op.A!) ? 0u : 1u; return op.Cost;
+            case StlOpCode.AssignI: WriteImmediate(op.A!, 1, Top); return op.Cost;
+            case StlOpCode.Aeno: _stack &= _eno ? ~0u : ~1u; return op.Cost;
+            case StlOpCode.Lds: Push(((_stack >> (int)Read(op.A!, 1)) & 1) != 0); return op.Cost;
+            case StlOpCode.Lscr: LoadScr(op); return op.Cost;
+            case StlOpCode.Scre: _activeScr = null; return op.Cost;
             default:
                 if (!Top)
                 {
+                    _eno = false;
                     if (op.Code == StlOpCode.For)
                     {
                         _frames[_depth].Pc = op.N;
@@ -57,6 +77,7 @@ public sealed partial class StlPlc
     /// <summary>Instructions that run only with power flow (top of stack 1).</summary>
     private long ExecuteBox(StlOp op)
     {
+        _eno = true;
         switch (op.Code)
         {
             case StlOpCode.Set: WriteBits(op.A!, (int)Read(op.B!, 1), true); break;
@@ -82,6 +103,19 @@ public sealed partial class StlPlc
             case StlOpCode.Eni: EnableInterrupts(true); break;
             case StlOpCode.Disi: EnableInterrupts(false); break;
             case StlOpCode.Rcv or StlOpCode.Xmt: PortInstruction(op); break;
+            case StlOpCode.SetI: WriteImmediate(op.A!, (int)Read(op.B!, 1), true); break;
+            case StlOpCode.ResetI: WriteImmediate(op.A!, (int)Read(op.B!, 1), false); break;
+            case StlOpCode.Bir: Write(op.B!, 1, InputImage[op.A!.Offset]); break;
+            case StlOpCode.Biw: WriteOutputByteImmediate(op.B!, (byte)Read(op.A!, 1)); break;
+            case StlOpCode.MovR: Write(op.B!, 4, Read(op.A!, 4)); break;
+            case StlOpCode.Bmd: return BlockMove(op, 4);
+            case StlOpCode.Scrt: TransitionScr(op); break;
+            case StlOpCode.Cscre: _frames[_depth].Pc = op.N; break;
+            case StlOpCode.Stop: _stopRequest ??= new StlFault("Stop", "the program executed STOP", _frames[_depth].Block.Name, op.Line); break;
+            case StlOpCode.Wdr: _watchdogFrom = _now; break;
+            case StlOpCode.Todr: ReadClock(op); break;
+            case StlOpCode.Todw: WriteClock(op); break;
+            case StlOpCode.Att or StlOpCode.Fifo or StlOpCode.Lifo or StlOpCode.Fnd or StlOpCode.Fill: Table(op); break;
             default: Arithmetic(op); break;
         }
 

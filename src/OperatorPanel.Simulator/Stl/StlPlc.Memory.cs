@@ -40,6 +40,10 @@ public sealed partial class StlPlc
                 return ReadBytes(_l, _lBase + loc.Offset, bytes);
             case StlLocKind.Accumulator:
                 return _ac[loc.Offset] & Mask(bytes);
+            case StlLocKind.Timer:
+                return (ushort)TimerValue(loc.Offset) & Mask(bytes);
+            case StlLocKind.Counter:
+                return (ushort)_counters[loc.Offset].Value & Mask(bytes);
             default:
                 return TryPointer(loc, bytes, out var area, out var offset) ? ReadBytes(area, offset, bytes) : 0;
         }
@@ -59,6 +63,12 @@ public sealed partial class StlPlc
             case StlLocKind.Accumulator:
                 _ac[loc.Offset] = (_ac[loc.Offset] & ~Mask(bytes)) | (value & Mask(bytes));
                 break;
+            case StlLocKind.Timer:
+                SetTimerValue(loc.Offset, (short)value);
+                break;
+            case StlLocKind.Counter:
+                _counters[loc.Offset].Value = (short)value;
+                break;
             case StlLocKind.Indirect:
                 if (TryPointer(loc, bytes, out var area, out var offset))
                 {
@@ -71,12 +81,22 @@ public sealed partial class StlPlc
         }
     }
 
-    private bool ReadBit(StlLoc loc) => loc.Kind == StlLocKind.Local
-        ? ((_l[_lBase + loc.Offset] >> loc.Bit) & 1) != 0
-        : ((_areas[loc.Area][loc.Offset] >> loc.Bit) & 1) != 0;
+    private bool ReadBit(StlLoc loc) => loc.Kind switch
+    {
+        StlLocKind.Local => ((_l[_lBase + loc.Offset] >> loc.Bit) & 1) != 0,
+        StlLocKind.Timer => TimerBit(loc.Offset),
+        StlLocKind.Counter => _counters[loc.Offset].Bit,
+        _ => ((_areas[loc.Area][loc.Offset] >> loc.Bit) & 1) != 0,
+    };
 
     private void WriteBit(StlLoc loc, bool value)
     {
+        if (loc.Kind is StlLocKind.Timer or StlLocKind.Counter)
+        {
+            WriteTimerOrCounterBit(loc, value);
+            return;
+        }
+
         var (area, offset) = loc.Kind == StlLocKind.Local ? (_l, _lBase + loc.Offset) : (_areas[loc.Area], loc.Offset);
         area[offset] = value ? (byte)(area[offset] | (1 << loc.Bit)) : (byte)(area[offset] & ~(1 << loc.Bit));
     }
@@ -84,6 +104,16 @@ public sealed partial class StlPlc
     /// <summary>S/R N: N consecutive bits from the operand on, across byte boundaries, stopping at the end of the area.</summary>
     private void WriteBits(StlLoc loc, int count, bool value)
     {
+        if (loc.Kind is StlLocKind.Timer or StlLocKind.Counter)
+        {
+            for (var n = loc.Offset; n < loc.Offset + count && n <= 255; n++)
+            {
+                WriteTimerOrCounterBit(new StlLoc { Kind = loc.Kind, Offset = n }, value);
+            }
+
+            return;
+        }
+
         var length = loc.Kind == StlLocKind.Local ? LBytes : _areas[loc.Area].Length;
         var first = (loc.Offset * 8) + loc.Bit;
         for (var n = first; n < first + count && n < length * 8; n++)

@@ -18,6 +18,10 @@ public sealed partial class StlPlc
     private long _busy;
     private long _scanStart;
     private long _overheadUntil;
+    private long _watchdogFrom;
+
+    /// <summary>Set by STOP: the CPU finishes the scan, then goes to STOP (A5E00307987-04, "STOP" instruction).</summary>
+    private StlFault? _stopRequest;
     private bool _firstScan;
     private bool _scanClock;
     private int _minScan = int.MaxValue;
@@ -77,7 +81,7 @@ public sealed partial class StlPlc
         {
             EnterStop(Fault);
         }
-        else if (_now - _scanStart > Watchdog)
+        else if (_now - _watchdogFrom > Watchdog)
         {
             Failed("Watchdog", "the scan took longer than 500 ms");
             EnterStop(Fault);
@@ -97,6 +101,8 @@ public sealed partial class StlPlc
         }
 
         _scanStart = _now;
+        _watchdogFrom = _now;
+        CountTenMillisecondTimers();
         Array.Copy(InputImage, Memory.I, Memory.I.Length);
         _scanClock = !_scanClock;
         Memory.SM[0] = (byte)(0x01
@@ -117,6 +123,13 @@ public sealed partial class StlPlc
 
     private void EndScan()
     {
+        if (_stopRequest is { } stop)
+        {
+            _stopRequest = null;
+            EnterStop(stop);
+            return;
+        }
+
         Array.Copy(Memory.Q, OutputImage, OutputImage.Length);
         _overheadUntil = _now + StlTiming.ScanOverhead;
         _busy += StlTiming.ScanOverhead;

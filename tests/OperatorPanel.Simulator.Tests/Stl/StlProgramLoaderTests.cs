@@ -11,10 +11,10 @@ public sealed class StlProgramLoaderTests
     [Fact]
     public void Load_UnknownInstruction_ReportsNameAndLineAndGivesNoProgram()
     {
-        var result = Load("LD     SM0.0\nBIR    IB0, VB1");
+        var result = Load("LD     SM0.0\nHSC    0");
 
         result.Succeeded.Should().BeFalse();
-        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: BIR is not implemented by the simulator");
+        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: HSC is not implemented by the simulator");
     }
 
     [Theory]
@@ -26,7 +26,15 @@ public sealed class StlProgramLoaderTests
     [InlineData("ATCH   INT_9, 23", "not the name of an interrupt routine")]
     [InlineData("XMT    VB0, 1", "the CPU 221 has no port 1")]
     [InlineData("JMP    4", "no LBL 4")]
-    [InlineData("MOVW   T37, VW0", "timers")]
+    [InlineData("MOVB   T37, VB0", "'T37' (a timer) cannot be IN")]
+    [InlineData("MOVW   T256, VW0", "T0-T255")]
+    [InlineData("TON    T0, +10", "TONR timer")]
+    [InlineData("TONR   T37, +10", "TON/TOF timer")]
+    [InlineData("CTU    T5, +10", "cannot be Cxxx")]
+    [InlineData("BIR    VB0, VB1", "cannot be IN (BYTE: IB")]
+    [InlineData("=I     M0.0", "(BOOL: Q)")]
+    [InlineData("LSCR   M0.0", "(BOOL: S)")]
+    [InlineData("SHRB   I0.0, V0.0, 200", "outside N's range -64-64")]
     [InlineData("MOVB   #x, VB0", "not declared")]
     public void Load_BadOperand_IsReportedWithLine(string instruction, string reason)
     {

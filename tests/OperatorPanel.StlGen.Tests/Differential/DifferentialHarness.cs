@@ -33,7 +33,8 @@ internal sealed class DifferentialHarness
     private readonly HandlerOptions _options;
     private TimeSpan _now = TimeSpan.FromMilliseconds(50);
 
-    public DifferentialHarness(HandlerOptions options, Random random, string? userProgram = null)
+    /// <param name="inputsOff">Field inputs 0 from power-up instead of random (a user's program that stops on an input).</param>
+    public DifferentialHarness(HandlerOptions options, Random random, string? userProgram = null, bool inputsOff = false)
     {
         _options = options;
         var generated = HandlerGenerator.Generate(options);
@@ -62,6 +63,12 @@ internal sealed class DifferentialHarness
         _plc.AttachPort(_port);
         _reference = new ReferencePlc(new HandlerConfig(new Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs));
         Fill(random);
+        if (inputsOff)
+        {
+            Poke(ProtocolArea.I, 0, new byte[_plc.InputImage.Length]);
+            Array.Clear(_plc.Memory.I);
+        }
+
         _plc.RunUntil(_now);
     }
 

@@ -1,0 +1,91 @@
+using System.Runtime.CompilerServices;
+using System.Text.Json;
+
+namespace OperatorPanel.Cli.Tests.Commands;
+
+/// <summary><c>opanel stl run</c> on the corpus programs (tests/StlCorpus) and on programs it must refuse.</summary>
+public sealed class StlRunCommandTests
+{
+    private static string Corpus(string name, [CallerFilePath] string self = "") =>
+        Path.GetFullPath(Path.Combine(Path.GetDirectoryName(self)!, "..", "..", "StlCorpus", name));
+
+    [Fact]
+    public void Run_TimerProgram_PrintsEachAddressAndValueAndExitsZero()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("TimerOnDelay.awl"), "--cpu", "224", "--for", "1.5s",
+            "--set", "I0.0=1", "--print", "T37", "--print", "T37.bit", "--print", "Q0.0", "--print", "VW0");
+
+        exit.Should().Be(0, error);
+        output.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal("T37 14", "T37.BIT 1", "Q0.0 1", "VW0 14");
+    }
+
+    [Fact]
+    public void Run_TimedSettings_AppliedAtTheirSimulatedTimes()
+    {
+        var (exit, output, _) = CliRunner.Run("stl", "run", Corpus("TimerOffDelay.awl"), "--cpu", "226", "--for", "3s",
+            "--set", "I0.0=1@1s", "--set", "I0.0=0@2s", "--print", "T38", "--print", "Q0.0");
+
+        exit.Should().Be(0);
+        output.Should().Be($"T38 9{Environment.NewLine}Q0.0 1{Environment.NewLine}");
+    }
+
+    [Fact]
+    public void Run_Json_GivesValuesScansAndMode()
+    {
+        var (exit, output, _) = CliRunner.Run("stl", "run", Corpus("RealMath.awl"), "--cpu", "224XP", "--for", "100ms",
+            "--print", "VD0:real", "--print", "C5", "--json");
+
+        exit.Should().Be(0);
+        using var json = JsonDocument.Parse(output);
+        json.RootElement.GetProperty("mode").GetString().Should().Be("Run");
+        json.RootElement.GetProperty("scans").GetInt64().Should().BePositive();
+        var values = json.RootElement.GetProperty("values").EnumerateArray().Select(v => (v.GetProperty("address").GetString(), v.GetProperty("value").GetDouble()));
+        values.Should().Equal(("VD0:REAL", 12.5), ("C5", 0));
+    }
+
+    [Fact]
+    public void Run_UnimplementedInstructions_ExitOneWithFileAndLineForEach()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("Refused.awl"), "--cpu", "224", "--print", "Q0.0");
+
+        exit.Should().Be(1);
+        output.Should().BeEmpty();
+        error.Should().Contain("Refused.awl:8: HSC is not implemented").And.Contain("Refused.awl:12: NETW is not implemented");
+    }
+
+    [Fact]
+    public void Run_StopInstruction_ReportsTheStopAndStillPrints()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("StopWdr.awl"), "--cpu", "222", "--for", "1s",
+            "--set", "I0.7=1@0.5s", "--print", "Q0.0");
+
+        exit.Should().Be(0);
+        output.Should().Be($"Q0.0 0{Environment.NewLine}");
+        error.Should().Contain("StopWdr.awl:").And.Contain("went to STOP (Stop");
+    }
+
+    [Theory]
+    [InlineData("--print", "T300", "0-255")]
+    [InlineData("--print", "VB9000", "VB9000")]
+    [InlineData("--print", "VW0.bit", ".bit is for timers")]
+    [InlineData("--set", "I0.0=2", "does not fit a bit")]
+    [InlineData("--set", "SMB0=1", "written by the CPU")]
+    [InlineData("--set", "I0.0=1@soon", "not a time")]
+    [InlineData("--for", "forever", "not a time")]
+    public void Run_BadOption_ExitOneNamingIt(string option, string value, string reason)
+    {
+        var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("Counters.awl"), "--cpu", "221", option, value);
+
+        exit.Should().Be(1);
+        error.Should().Contain(reason);
+    }
+
+    [Fact]
+    public void Run_MissingFile_ExitOne()
+    {
+        var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("NoSuch.awl"), "--cpu", "224");
+
+        exit.Should().Be(1);
+        error.Should().Contain("cannot read");
+    }
+}
