@@ -1,7 +1,4 @@
 using System.ComponentModel;
-using System.Windows;
-using System.Windows.Automation;
-using System.Windows.Controls;
 using OperatorPanel.ViewModels.Docking;
 
 namespace OperatorPanel.App.Docking;

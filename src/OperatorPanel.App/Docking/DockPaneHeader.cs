@@ -1,6 +1,3 @@
-using System.Windows;
-using System.Windows.Automation;
-using System.Windows.Controls;
 using OperatorPanel.ViewModels.Docking;
 
 namespace OperatorPanel.App.Docking;

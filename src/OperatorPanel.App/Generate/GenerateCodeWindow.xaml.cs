@@ -1,4 +1,3 @@
-using System.Windows;
 using OperatorPanel.ViewModels.Generate;
 
 namespace OperatorPanel.App.Generate;

@@ -1,6 +1,5 @@
 using System.IO;
 using OperatorPanel.ViewModels.Session;
-using Serilog;
 
 namespace OperatorPanel.App.Services;
 

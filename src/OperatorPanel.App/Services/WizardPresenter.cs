@@ -1,6 +1,4 @@
-using System.Windows;
 using OperatorPanel.App.Wizard;
-using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Wizard;
 
 namespace OperatorPanel.App.Services;

@@ -1,4 +1,3 @@
-using System.Windows;
 using OperatorPanel.ViewModels.Services;
 
 namespace OperatorPanel.App.Services;

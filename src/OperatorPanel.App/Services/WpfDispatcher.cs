@@ -1,4 +1,3 @@
-using System.Windows.Threading;
 using OperatorPanel.ViewModels.Services;
 
 namespace OperatorPanel.App.Services;

@@ -1,5 +1,4 @@
 using System.IO;
-using Microsoft.Win32;
 using OperatorPanel.ViewModels.Services;
 
 namespace OperatorPanel.App.Services;

@@ -1,5 +1,3 @@
-using System.Windows.Controls;
-
 namespace OperatorPanel.App.Views;
 
 /// <summary>The Alarms window; all behaviour is in AlarmsViewModel.</summary>

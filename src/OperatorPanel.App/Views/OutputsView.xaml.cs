@@ -1,5 +1,3 @@
-using System.Windows.Controls;
-
 namespace OperatorPanel.App.Views;
 
 /// <summary>The Outputs window: lamps with switches; all behaviour is in OutputsViewModel.</summary>

@@ -1,5 +1,4 @@
 using System.ComponentModel;
-using System.Windows;
 using OperatorPanel.ViewModels.Wizard;
 
 namespace OperatorPanel.App.Wizard;

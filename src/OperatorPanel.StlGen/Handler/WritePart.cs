@@ -24,13 +24,13 @@ internal static class WritePart
         yield return JumpIf("WRITE: body = 8 + LENGTH bytes", "Error 04.", e04, Op("LDW<>", "AC0", "AC3"));
         yield return Always(
             "WRITE: check the block", "One item from buffer byte 8 through the item checks of label 30.",
-            Op("MOVD", l.Ptr(8), "AC2"), Op("MOVB", "1", l.B(I)), Op("MOVD", "0", "AC1"), Op("JMP", Dec(HandlerLabels.CheckItems)));
+            Op("MOVD", l.Ptr(8), "AC2"), Op("MOVB", "1", l.B(I)), Op("MOVD", "0", "AC1"), Op("MOVB", Dec(SlicePart.StepCheckItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
         yield return Label(HandlerLabels.WriteBit, "04 WRITE BIT");
         yield return JumpIf("WRITE BIT: body exactly 9 bytes", "Error 04 unless count = 20.", e04, Op("LDB<>", l.B(0), "20"));
         yield return Always(
             "WRITE BIT: check the byte", "N = BIT; a LENGTH of 1 in its place makes a one-byte block for the item checks.",
             Op("MOVB", l.B(11), l.B(N)), Op("MOVB", "1", l.B(11)), Op("MOVD", l.Ptr(8), "AC2"), Op("MOVB", "1", l.B(I)),
-            Op("MOVD", "0", "AC1"), Op("JMP", Dec(HandlerLabels.CheckItems)));
+            Op("MOVD", "0", "AC1"), Op("MOVB", Dec(SlicePart.StepCheckItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
     }
 
     public static IEnumerable<StlNetwork> Execute(HandlerContext c)

@@ -6,8 +6,6 @@ using OperatorPanel.ViewModels.Inputs;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Shell;
-using Serilog;
-using Serilog.Core;
 
 namespace OperatorPanel.ViewModels.Outputs;
 

@@ -1,6 +1,5 @@
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
-using Serilog;
 
 namespace OperatorPanel.ViewModels.Session;
 
