@@ -1,10 +1,15 @@
 using System.IO;
+using System.Windows;
+using System.Windows.Threading;
+using Microsoft.Extensions.DependencyInjection;
 using OperatorPanel.App.Services;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.ViewModels.Docking;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Shell;
 using OperatorPanel.ViewModels.Wizard;
+using Serilog;
 
 namespace OperatorPanel.App;
 

@@ -1,4 +1,8 @@
 using System.ComponentModel;
+using System.Windows;
+using System.Windows.Automation;
+using System.Windows.Controls;
+using System.Windows.Data;
 using OperatorPanel.App.Generate;
 using OperatorPanel.App.Views;
 using OperatorPanel.ViewModels.Docking;

@@ -1,4 +1,7 @@
 using System.ComponentModel;
+using System.Windows;
+using System.Windows.Automation;
+using System.Windows.Controls;
 using OperatorPanel.ViewModels.Docking;
 
 namespace OperatorPanel.App.Docking;

@@ -1,3 +1,6 @@
+using System.Windows;
+using System.Windows.Automation;
+using System.Windows.Controls;
 using OperatorPanel.ViewModels.Docking;
 
 namespace OperatorPanel.App.Docking;

@@ -1,4 +1,6 @@
 using System.ComponentModel;
+using System.Windows;
+using System.Windows.Automation;
 using OperatorPanel.ViewModels.Docking;
 
 namespace OperatorPanel.App.Docking;

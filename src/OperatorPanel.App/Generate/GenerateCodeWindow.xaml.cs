@@ -1,3 +1,4 @@
+using System.Windows;
 using OperatorPanel.ViewModels.Generate;
 
 namespace OperatorPanel.App.Generate;

@@ -1,7 +1,13 @@
 using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
+using OperatorPanel.StlGen;
+using OperatorPanel.StlGen.Options;
 using OperatorPanel.ViewModels.Session;
+using Serilog;
 
 namespace OperatorPanel.App.Services;
 

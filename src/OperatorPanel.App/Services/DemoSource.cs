@@ -1,5 +1,6 @@
 using System.IO;
 using OperatorPanel.ViewModels.Session;
+using Serilog;
 
 namespace OperatorPanel.App.Services;
 

@@ -1,7 +1,9 @@
 using System.IO;
 using System.Text;
 using System.Text.Json;
+using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Session;
+using Serilog;
 
 namespace OperatorPanel.App.Services;
 

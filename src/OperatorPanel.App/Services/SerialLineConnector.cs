@@ -1,3 +1,6 @@
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.ViewModels.Session;
 
 namespace OperatorPanel.App.Services;

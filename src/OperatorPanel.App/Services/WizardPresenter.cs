@@ -1,4 +1,6 @@
+using System.Windows;
 using OperatorPanel.App.Wizard;
+using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Wizard;
 
 namespace OperatorPanel.App.Services;

@@ -1,3 +1,4 @@
+using System.Windows;
 using OperatorPanel.ViewModels.Services;
 
 namespace OperatorPanel.App.Services;

@@ -1,4 +1,5 @@
 using System.IO;
+using Microsoft.Win32;
 using OperatorPanel.ViewModels.Services;
 
 namespace OperatorPanel.App.Services;

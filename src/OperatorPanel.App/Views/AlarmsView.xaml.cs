@@ -1,3 +1,5 @@
+using System.Windows.Controls;
+
 namespace OperatorPanel.App.Views;
 
 /// <summary>The Alarms window; all behaviour is in AlarmsViewModel.</summary>

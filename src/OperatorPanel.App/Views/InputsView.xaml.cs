@@ -1,3 +1,5 @@
+using System.Windows.Controls;
+
 namespace OperatorPanel.App.Views;
 
 /// <summary>The Inputs window: lamps grouped by input byte; all behaviour is in InputsViewModel.</summary>

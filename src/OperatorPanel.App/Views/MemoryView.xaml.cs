@@ -1,3 +1,5 @@
+using System.Windows.Controls;
+
 namespace OperatorPanel.App.Views;
 
 /// <summary>The Memory window: M and V cells, edited in place; all behaviour is in MemoryViewModel.</summary>

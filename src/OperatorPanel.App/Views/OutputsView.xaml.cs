@@ -1,3 +1,5 @@
+using System.Windows.Controls;
+
 namespace OperatorPanel.App.Views;
 
 /// <summary>The Outputs window: lamps with switches; all behaviour is in OutputsViewModel.</summary>

@@ -1,4 +1,5 @@
 using System.ComponentModel;
+using System.Windows;
 using OperatorPanel.ViewModels.Wizard;
 
 namespace OperatorPanel.App.Wizard;

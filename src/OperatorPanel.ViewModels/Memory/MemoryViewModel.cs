@@ -5,6 +5,8 @@ using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Shell;
+using Serilog;
+using Serilog.Core;
 
 namespace OperatorPanel.ViewModels.Memory;
 

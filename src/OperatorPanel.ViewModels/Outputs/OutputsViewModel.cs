@@ -6,6 +6,8 @@ using OperatorPanel.ViewModels.Inputs;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Shell;
+using Serilog;
+using Serilog.Core;
 
 namespace OperatorPanel.ViewModels.Outputs;
 

@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
+using Serilog;
 
 namespace OperatorPanel.ViewModels.Session;
 

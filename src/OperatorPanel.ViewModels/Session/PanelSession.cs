@@ -6,6 +6,8 @@ using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Writes;
 using OperatorPanel.ViewModels.Mvvm;
 using OperatorPanel.ViewModels.Services;
+using Serilog;
+using Serilog.Core;
 
 namespace OperatorPanel.ViewModels.Session;
 

@@ -8,6 +8,8 @@ using OperatorPanel.ViewModels.Memory;
 using OperatorPanel.ViewModels.Mvvm;
 using OperatorPanel.ViewModels.Outputs;
 using OperatorPanel.ViewModels.Session;
+using Serilog;
+using Serilog.Core;
 
 namespace OperatorPanel.ViewModels.Shell;
 
