@@ -66,7 +66,10 @@ internal static class WritePart
             Op("HTA", "*AC3", l.B(10), "2"), Op("MOVD", l.Ptr(12), "AC1"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
     }
 
-    /// <summary>Error 03: I; areas outside the write mask; SM bytes the panel must not touch (docs/protocol.md section 3).</summary>
+    /// <summary>
+    /// Error 03: I; areas outside the write mask; the handler's own V bytes (a WRITE there could make the read-back
+    /// run past the buffer, and the CPU stop); SM bytes the panel must not touch (docs/protocol.md section 3).
+    /// </summary>
     private static IEnumerable<StlNetwork> Writable(HandlerContext c)
     {
         var l = c.Layout;
@@ -78,14 +81,26 @@ internal static class WritePart
             yield return JumpIf($"Writable: not {name}", $"{name} is not in the write mask: error 03.", e03, Op("LDB=", l.B(8), Dec(code)));
         }
 
+        if (!c.MayWrite(4) && !c.MayWrite(5))
+        {
+            yield break;
+        }
+
+        yield return Always("Writable: first and last byte", "AC0 = OFFSET, AC3 = OFFSET + LENGTH - 1.",
+            Op("MOVW", l.W(9), "AC0"), Op("BTI", l.B(11), "AC3"), Op("+I", "AC0", "AC3"), Op("DECW", "AC3"));
+        if (c.MayWrite(4))
+        {
+            yield return JumpIf(
+                $"Writable: not the handler's own bytes", $"VB{l.BufferStart}-VB{l.LastByte}, buffer and work bytes: a block touching them is refused whole, error 03.",
+                e03, Op("LDB=", l.B(8), "4"), Op("AW<=", "AC0", Dec(l.LastByte)), Op("AW>=", "AC3", Dec(l.BufferStart)));
+        }
+
         if (!c.MayWrite(5))
         {
             yield break;
         }
 
         var readOnly = c.Options.Cpu.ReadOnlySmBytes;
-        yield return Always("Writable: first and last byte", "AC0 = OFFSET, AC3 = OFFSET + LENGTH - 1.",
-            Op("MOVW", l.W(9), "AC0"), Op("BTI", l.B(11), "AC3"), Op("+I", "AC0", "AC3"), Op("DECW", "AC3"));
         yield return JumpIf($"Writable: SMB0-SMB{readOnly - 1}", "System status bytes: error 03.", e03, Op("LDB=", l.B(8), "5"), Op("AW<", "AC0", Dec(readOnly)));
         foreach (var (first, last, what) in new[]
         {

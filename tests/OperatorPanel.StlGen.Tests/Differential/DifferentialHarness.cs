@@ -59,7 +59,7 @@ internal sealed class DifferentialHarness
         Line = new LineSettings(options.BaudRate, options.Parity, options.DataBits);
         _port = new FreeportPort(options.Port, _plc.Memory, options.Cpu, Line);
         _plc.AttachPort(_port);
-        _reference = new ReferencePlc(new HandlerConfig(new Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs));
+        _reference = new ReferencePlc(new HandlerConfig(new Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs, options.EffectiveBufferStart));
         Fill(random);
         _plc.RunUntil(_now);
     }
