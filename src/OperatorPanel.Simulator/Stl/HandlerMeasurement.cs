@@ -16,6 +16,9 @@ public static class HandlerMeasurement
     /// <summary>A 119-byte V range the requests read and write; the caller keeps it clear of the handler's bytes.</summary>
     public const int DataBytes = 119;
 
+    /// <summary>The first entry: the handler's scans without a request (its Instructions: the most in one scan).</summary>
+    public const string IdleName = "no request (a scan)";
+
     /// <summary>
     /// Serves the worst-case requests to the handler in <paramref name="awlText"/> on <paramref name="port"/> at
     /// <paramref name="station"/>; <paramref name="dataStart"/> is the first of <see cref="DataBytes"/> free V bytes.
@@ -36,6 +39,7 @@ public static class HandlerMeasurement
         plc.AttachPort(freeport);
         var session = new MeasurementSession(plc, freeport, line, port);
         var builder = ImmutableArray.CreateBuilder<MeasuredRequest>();
+        builder.Add(session.Idle(IdleName));
         foreach (var (name, frame) in WorstCases(station, dataStart))
         {
             builder.Add(session.Serve(name, frame));

@@ -43,6 +43,18 @@ internal sealed class MeasurementSession
         _plc.RunUntil(_now);
     }
 
+    /// <summary>The handler's scans without a request: 20 ms of them.</summary>
+    public MeasuredRequest Idle(string name)
+    {
+        _runs.Clear();
+        _scans.Clear();
+        _now += TimeSpan.FromMilliseconds(20);
+        _plc.RunUntil(_now);
+        return new MeasuredRequest(
+            name, 0, 0, _scans.Count == 0 ? 0 : _scans.Max(s => s.Instructions), TimeSpan.Zero, TimeSpan.Zero,
+            _scans.Count == 0 ? TimeSpan.Zero : _scans.Max(s => s.Scan.Busy - Overhead), 0);
+    }
+
     public MeasuredRequest Serve(string name, byte[] frame)
     {
         _runs.Clear();

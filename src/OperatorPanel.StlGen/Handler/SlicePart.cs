@@ -19,19 +19,29 @@ internal static class SlicePart
     /// <summary>Character pairs one block check pass XORs (40 characters).</summary>
     public const int PairsPerPass = 20;
 
+    /// <summary>
+    /// What the technician notes promise, at the StlTiming figures; HandlerCostTests measures every golden
+    /// configuration against them: the longest interrupt routine, the most added to one scan while serving a request
+    /// and without one, and the scans a reply takes (IDENTIFY the fewest, a 20-item READ the most).
+    /// </summary>
+    public const string InterruptBoundMs = "0.3", ScanBoundMs = "10", IdleScanBoundMs = "0.3";
+
+    /// <inheritdoc cref="InterruptBoundMs"/>
+    public const int FewestScans = 3, MostScans = 30;
+
     /// <summary>STEP values: where the next scan goes on (0 = no request).</summary>
     public const int StepStart = 1, StepRequestCheck = 2, StepHeader = 3, StepCheckItems = 4, StepItemsChecked = 5,
-        StepBuildItems = 6, StepReplyCheck = 7, StepReplyCheckPass = 8;
+        StepBuildItems = 6, StepReplyCheck = 7, StepReplyCheckPass = 8, StepWriteReadBack = 9;
 
     /// <summary>The labels OP_PANEL goes on at; 30 and 40 are the item loops' own.</summary>
     public const int RequestCheckPass = 71, Header = 72, ItemsChecked = 73, ReplyCheck = 74, ReplyCheckPass = 75,
-        Yield = 90, EndOfSlice = 99;
+        WriteReadBack = 76, Yield = 90, EndOfSlice = 99;
 
     private static readonly (int Step, int Label)[] Resumes =
     [
         (StepRequestCheck, RequestCheckPass), (StepHeader, Header), (StepCheckItems, HandlerLabels.CheckItems),
         (StepItemsChecked, ItemsChecked), (StepBuildItems, HandlerLabels.BuildItems), (StepReplyCheck, ReplyCheck),
-        (StepReplyCheckPass, ReplyCheckPass),
+        (StepReplyCheckPass, ReplyCheckPass), (StepWriteReadBack, WriteReadBack),
     ];
 
     /// <summary>The start of the work on a request: nothing to do, or accumulators back and on where STEP says.</summary>

@@ -49,9 +49,13 @@ internal static class WritePart
         yield return Always("Write: the target byte", "AC3 = area start + OFFSET.", Op("MOVW", l.W(9), "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"));
         yield return JumpIf("Write: WRITE BIT", "On to label 52.", HandlerLabels.WriteBitExecute, Op("LDB=", l.B(Cmd), "4"));
         yield return Always(
-            "WRITE: copy the data, read it back",
-            "BMB the LENGTH data bytes from buffer byte 12 to the target; HTA them back as the reply from byte 10.",
-            Op("BMB", l.B(12), "*AC3", l.B(11)), Op("BTI", l.B(11), "AC0"), Op("SLW", "AC0", "1"), Op("HTA", "*AC3", l.B(10), "AC0"),
+            "WRITE: copy the data", "BMB the LENGTH data bytes from buffer byte 12 to the target (AC3).",
+            Op("BMB", l.B(12), "*AC3", l.B(11)));
+        yield return SlicePart.Pause(c, "WRITE: written", SlicePart.StepWriteReadBack);
+        yield return Label(SlicePart.WriteReadBack, "WRITE read-back");
+        yield return Always(
+            "WRITE: read it back", "HTA the LENGTH bytes at the target back as the reply from buffer byte 10.",
+            Op("BTI", l.B(11), "AC0"), Op("SLW", "AC0", "1"), Op("HTA", "*AC3", l.B(10), "AC0"),
             Op("ITD", "AC0", "AC0"), Op("MOVD", l.Ptr(10), "AC1"), Op("+D", "AC0", "AC1"), Op("MOVB", "0", l.B(List)),
             Op("JMP", Dec(HandlerLabels.Finish)));
         yield return Label(HandlerLabels.WriteBitExecute, "WRITE BIT on the target byte");
