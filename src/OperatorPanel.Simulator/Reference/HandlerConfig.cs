@@ -16,10 +16,10 @@ public sealed record HandlerConfig
     public const byte DefaultWriteMask = 0x3C;
 
     /// <summary>
-    /// The handler's own V bytes: the 256-byte buffer and 38 work bytes (docs/protocol.md "Work bytes"; the same
+    /// The handler's own V bytes: the 256-byte buffer and 36 work bytes (docs/protocol.md "Work bytes"; the same
     /// figure as StlGen's HandlerLayout, which a StlGen test compares).
     /// </summary>
-    public const int HandlerVBytes = 256 + 38;
+    public const int HandlerVBytes = 256 + 36;
 
     public HandlerConfig(Station station, CpuProfile cpu, int port = 0, byte writeMask = DefaultWriteMask, byte replyDelayMs = 5, int? bufferStart = null)
     {
@@ -39,7 +39,7 @@ public sealed record HandlerConfig
         ArgumentOutOfRangeException.ThrowIfGreaterThan(BufferStart + HandlerVBytes, vBytes, nameof(bufferStart));
     }
 
-    /// <summary>V byte offset of the handler's buffer; its own bytes are BufferStart .. BufferStart + 293.</summary>
+    /// <summary>V byte offset of the handler's buffer; its own bytes are BufferStart .. BufferStart + 291.</summary>
     public int BufferStart { get; }
 
     public Station Station { get; }

@@ -13,11 +13,11 @@ namespace OperatorPanel.StlGen.Handler;
 /// </summary>
 internal static class SlicePart
 {
-    /// <summary>Loop passes per scan: block check passes of <see cref="PairsPerPass"/> character pairs, items checked or replied.</summary>
+    /// <summary>Loop passes per scan: block check passes of <see cref="CharactersPerPass"/> characters, items checked or replied.</summary>
     public const int PassesPerScan = 2;
 
-    /// <summary>Character pairs one block check pass XORs (40 characters).</summary>
-    public const int PairsPerPass = 20;
+    /// <summary>Characters one block check pass XORs.</summary>
+    public const int CharactersPerPass = 20;
 
     /// <summary>
     /// What the technician notes promise, at the StlTiming figures; HandlerCostTests measures every golden
@@ -27,7 +27,7 @@ internal static class SlicePart
     public const string InterruptBoundMs = "0.3", ScanBoundMs = "10", IdleScanBoundMs = "0.3";
 
     /// <inheritdoc cref="InterruptBoundMs"/>
-    public const int FewestScans = 3, MostScans = 30;
+    public const int FewestScans = 3, MostScans = 40;
 
     /// <summary>STEP values: where the next scan goes on (0 = no request).</summary>
     public const int StepStart = 1, StepRequestCheck = 2, StepHeader = 3, StepCheckItems = 4, StepItemsChecked = 5,
@@ -82,32 +82,28 @@ internal static class SlicePart
     }
 
     /// <summary>
-    /// Block check of the request or reply in passes of <see cref="PairsPerPass"/> character pairs: BCC = XOR of
-    /// buffer bytes 2 .. count-3 (an even number of them: the body is even), taken a word at a time into OP_XOR,
-    /// then its two bytes XORed. <paramref name="walker"/> walks the characters, AC3 counts the pairs left.
+    /// Block check of the request or reply in passes of <see cref="CharactersPerPass"/> characters: BCC = XOR of
+    /// buffer bytes 2 .. count-3. <paramref name="walker"/> walks the characters, AC3 counts those left.
     /// </summary>
     public static IEnumerable<StlNetwork> BlockCheck(HandlerContext c, string walker, string what, int passLabel, int passStep)
     {
         var l = c.Layout;
         yield return Always(
             $"Block check of the {what}",
-            "BCC = XOR of the body characters before the last two: buffer bytes 2 .. count-3, (count-4)/2 pairs.",
-            Op("MOVW", "0", l.W(XorWord)), Op("MOVD", l.Ptr(2), walker), Op("BTI", l.B(0), "AC3"), Op("-I", "4", "AC3"),
-            Op("SRW", "AC3", "1"));
+            "BCC = XOR of the body characters before the last two: buffer bytes 2 .. count-3, count-4 of them.",
+            Op("MOVB", "0", l.B(Bcc)), Op("MOVD", l.Ptr(2), walker), Op("BTI", l.B(0), "AC3"), Op("-I", "4", "AC3"));
         yield return Label(passLabel, $"one pass of the {what} block check");
-        yield return Always($"Pass of the {what} block check", $"CHUNK = pairs left, at most {PairsPerPass}; one loop pass used.",
+        yield return Always($"Pass of the {what} block check", $"CHUNK = characters left, at most {CharactersPerPass}; one loop pass used.",
             Op("MOVW", "AC3", l.W(Chunk)), Op("DECB", l.B(Budget)));
-        yield return new NetworkBuilder("At most one pass worth", $"CHUNK = {PairsPerPass} when more pairs are left.")
-            .Op("LDW>", l.W(Chunk), Dec(PairsPerPass)).Op("MOVW", Dec(PairsPerPass), l.W(Chunk)).Build();
-        yield return Always($"XOR CHUNK pairs of the {what}", "Fewer pairs left; AC0 counts the loop.",
+        yield return new NetworkBuilder("At most one pass worth", $"CHUNK = {CharactersPerPass} when more characters are left.")
+            .Op("LDW>", l.W(Chunk), Dec(CharactersPerPass)).Op("MOVW", Dec(CharactersPerPass), l.W(Chunk)).Build();
+        yield return Always($"XOR CHUNK {what} characters", "AC3 = characters left after this pass; AC0 counts the loop.",
             Op("-I", l.W(Chunk), "AC3"), Op("FOR", "AC0", "1", l.W(Chunk)));
-        yield return Always($"XOR one pair of {what} characters", "OP_XOR = OP_XOR XOR the word; next pair.",
-            Op("XORW", "*" + walker, l.W(XorWord)), Op("+D", "2", walker));
+        yield return Always($"XOR one {what} character", "BCC = BCC XOR character; next character.",
+            Op("XORB", "*" + walker, l.B(Bcc)), Op("INCD", walker));
         yield return new NetworkBuilder($"End of the {what} pass").Op("NEXT").Build();
-        yield return JumpIf($"{what} check: scan's passes used", "Pairs left, no pass left in this scan: the next scan goes on.",
+        yield return JumpIf($"{what} check: scan's passes used", "Characters left, no pass left in this scan: the next scan goes on.",
             Yield, Op("LDW>", "AC3", "0"), Op("AB=", l.B(Budget), "0"), Op("MOVB", Dec(passStep), l.B(Step)));
-        yield return JumpIf($"{what} check: next pass", "Pairs left: another pass.", passLabel, Op("LDW>", "AC3", "0"));
-        yield return Always($"{what} check: BCC", "BCC = high byte XOR low byte of OP_XOR.",
-            Op("MOVB", l.B(XorWord), l.B(Bcc)), Op("XORB", l.B(XorWord + 1), l.B(Bcc)));
+        yield return JumpIf($"{what} check: next pass", "Characters left: another pass.", passLabel, Op("LDW>", "AC3", "0"));
     }
 }

@@ -49,10 +49,10 @@ public sealed class HandlerFootprintTests
     [InlineData("MOVB   5, SMB34", "MOVB   5, SMB35", "SMB35, not a byte the handler reserves")]
     [InlineData("MOVB   5, SMB34", "MOVB   5, SMB550", "SMB550 is past the last SM byte SMB549")]
     [InlineData("MOVB   16#E0, SMB87", "MOVB   16#E0, SMB29", "read-only system status bytes")]
-    [InlineData("XMT    VB7898, 0", "XMT    VB7898, 1", "not on port 0")]
+    [InlineData("XMT    VB7900, 0", "XMT    VB7900, 1", "not on port 0")]
     [InlineData("DTCH   9\r\n", "DTCH   26\r\n", "events")]
-    [InlineData("MOVD   &VB8161, AC3", "MOVD   &VB7897, AC3", "VB7897-VB7897 outside VB7898-VB8191")]
-    [InlineData("MOVD   &VB8161, AC3", "MOVD   &IB4, AC3", "a pointer outside V")]
+    [InlineData("MOVD   &VB8163, AC3", "MOVD   &VB7899, AC3", "VB7899-VB7899 outside VB7900-VB8191")]
+    [InlineData("MOVD   &VB8163, AC3", "MOVD   &IB4, AC3", "a pointer outside V")]
     [InlineData("CALL   OP_PANEL", "CALL   SBR_0", "not the handler's subroutine")]
     [InlineData("ATCH   OP_TX, 9", "ATCH   OP_TX, 8", "not the routine's event 9")]
     public void Audit_TamperedHandler_ReportsTheProblem(string original, string tampered, string expected)
