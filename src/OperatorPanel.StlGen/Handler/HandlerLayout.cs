@@ -25,7 +25,7 @@ public sealed class HandlerLayout(int bufferStart)
 
     public int LastByte => BufferStart + 256 + WorkBytes - 1;
 
-    /// <summary>"VB7920" for buffer byte 0.</summary>
+    /// <summary>"VB7900" for buffer byte 0.</summary>
     public string B(int offset) => "VB" + Abs(offset);
 
     public string W(int offset) => "VW" + Abs(offset);
