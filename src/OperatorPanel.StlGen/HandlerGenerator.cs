@@ -45,7 +45,7 @@ public static class HandlerGenerator
         var context = new HandlerContext(options);
         var purposes = new Dictionary<string, string>(StringComparer.Ordinal)
         {
-            [options.Names.Panel] = "port set-up, RUN/TERM switching; call from OB1 every scan",
+            [options.Names.Panel] = "port set-up, RUN/TERM switching, serves requests a part per scan; call from OB1 every scan",
             [options.Names.Receive] = $"receive message complete, event {context.ReceiveEvent}",
             [options.Names.Delay] = $"reply delay, event {HandlerContext.DelayEvent} (timed interrupt 0)",
             [options.Names.Transmit] = $"transmit complete, event {context.TransmitEvent}",

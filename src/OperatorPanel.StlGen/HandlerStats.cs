@@ -16,7 +16,7 @@ public sealed record HandlerStats(
 {
     public int VBytes => LastVByte - FirstVByte + 1;
 
-    /// <summary>"VB7920-VB8191".</summary>
+    /// <summary>"VB7900-VB8191".</summary>
     public string VRange => $"VB{FirstVByte}-VB{LastVByte}";
 }
 

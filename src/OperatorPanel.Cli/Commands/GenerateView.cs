@@ -45,17 +45,26 @@ internal static class GenerateView
         cli.Out.WriteLine($"instructions generated: {stats.Instructions}");
         cli.Out.WriteLine($"interrupt events used:  {string.Join(", ", stats.InterruptEvents)}");
         cli.Out.WriteLine($"blocks used:            {string.Join(", ", stats.Blocks.Select(b => $"{b.Name} ({b.NumberText})"))}");
-        cli.Out.WriteLine("measured in the interpreter (instructions in the handler's interrupt routines, added to the scan; times estimated):");
+        cli.Out.WriteLine("measured in the interpreter at the manual's execution times (conservative where it has none):");
+        cli.Out.WriteLine("  request                  chars in -> out  instructions  total ms  worst interrupt ms  worst scan ms  scans");
         foreach (var m in measured)
         {
-            cli.Out.WriteLine(FormattableString.Invariant($"  {m.Name,-24} {m.RequestChars,3} -> {m.ReplyChars,3} chars  {m.Instructions,5} instructions  {m.ExecutionTime.TotalMilliseconds,7:0.000} ms"));
+            cli.Out.WriteLine(FormattableString.Invariant(
+                $"  {m.Name,-24} {m.RequestChars,3} -> {m.ReplyChars,3}      {m.Instructions,6}  {Ms(m.ExecutionTime),8}  {Ms(m.WorstInterrupt),18}  {Ms(m.WorstScan),13}  {m.Scans,5}"));
         }
 
-        var worst = Worst(measured);
-        cli.Out.WriteLine(FormattableString.Invariant($"worst case per request:  {worst.Instructions} instructions, {worst.ExecutionTime.TotalMilliseconds:0.000} ms ({worst.Name})"));
+        var interrupt = measured.MaxBy(m => m.WorstInterrupt)!;
+        var scan = measured.MaxBy(m => m.WorstScan)!;
+        cli.Out.WriteLine(FormattableString.Invariant($"worst interrupt routine: {Ms(interrupt.WorstInterrupt)} ms ({interrupt.Name})"));
+        cli.Out.WriteLine(FormattableString.Invariant($"worst added to one scan: {Ms(scan.WorstScan)} ms ({scan.Name})"));
+        cli.Out.WriteLine(FormattableString.Invariant($"most scans per reply:    {measured.Max(m => m.Scans)}"));
     }
 
+    private static string Ms(TimeSpan time) => time.TotalMilliseconds.ToString("0.000", System.Globalization.CultureInfo.InvariantCulture);
+
     private static MeasuredRequest Worst(ImmutableArray<MeasuredRequest> measured) => measured.MaxBy(m => m.ExecutionTime)!;
+
+    private static long Us(TimeSpan time) => (long)Math.Round(time.TotalMicroseconds);
 
     private static object StatsJson(HandlerStats stats, ImmutableArray<MeasuredRequest> measured) => new
     {
@@ -66,8 +75,21 @@ internal static class GenerateView
         port = stats.Port,
         interruptEvents = stats.InterruptEvents,
         blocks = stats.Blocks.Select(b => new { name = b.Name, block = b.NumberText, purpose = b.Purpose }),
-        measured = measured.Select(m => new { request = m.Name, requestChars = m.RequestChars, replyChars = m.ReplyChars, instructions = m.Instructions, microseconds = (long)Math.Round(m.ExecutionTime.TotalMicroseconds) }),
+        measured = measured.Select(m => new
+        {
+            request = m.Name,
+            requestChars = m.RequestChars,
+            replyChars = m.ReplyChars,
+            instructions = m.Instructions,
+            microseconds = Us(m.ExecutionTime),
+            worstInterruptMicroseconds = Us(m.WorstInterrupt),
+            worstScanMicroseconds = Us(m.WorstScan),
+            scans = m.Scans,
+        }),
         worstInstructions = measured.Max(m => m.Instructions),
-        worstMicroseconds = (long)Math.Round(Worst(measured).ExecutionTime.TotalMicroseconds),
+        worstMicroseconds = Us(Worst(measured).ExecutionTime),
+        worstInterruptMicroseconds = Us(measured.Max(m => m.WorstInterrupt)),
+        worstScanMicroseconds = Us(measured.Max(m => m.WorstScan)),
+        mostScansPerReply = measured.Max(m => m.Scans),
     };
 }

@@ -63,7 +63,7 @@ internal static class WriteCommand
             case null:
                 return new WriteOutcome.Failed($"the link returned no reply object for a write to {request.Station}", WriteFailureKind.UnexpectedReply);
             case ErrorResponse refused:
-                return new WriteOutcome.Failed($"{request.Station} refused the write: {refused.Error}", WriteFailureKind.RefusedByPlc);
+                return new WriteOutcome.Failed($"{request.Station} refused the write: {ProtocolErrorText.Describe(refused.Error)}", WriteFailureKind.RefusedByPlc);
             default:
                 return new WriteOutcome.Failed($"{request.Station} answered a write with a {response.Command} reply", WriteFailureKind.UnexpectedReply);
         }

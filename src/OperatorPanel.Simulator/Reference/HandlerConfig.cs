@@ -6,14 +6,21 @@ namespace OperatorPanel.Simulator.Reference;
 
 /// <summary>
 /// What the handler is generated with: station, port, write mask (bit n = area code n writable; bit 1, I, never),
-/// reply delay (1-255 ms, SMB34) and the CPU. Invalid settings are programming errors and throw.
+/// reply delay (1-255 ms, SMB34), the CPU and where its own V bytes start (by default where the generator puts them:
+/// the end of V). Invalid settings are programming errors and throw.
 /// </summary>
 public sealed record HandlerConfig
 {
     /// <summary>Q, M, V and SM writable (bits 2-5).</summary>
     public const byte DefaultWriteMask = 0x3C;
 
-    public HandlerConfig(Station station, CpuProfile cpu, int port = 0, byte writeMask = DefaultWriteMask, byte replyDelayMs = 5)
+    /// <summary>
+    /// The handler's own V bytes: the 256-byte buffer and 36 work bytes (docs/protocol.md "Work bytes"; the same
+    /// figure as StlGen's HandlerLayout, which a StlGen test compares).
+    /// </summary>
+    public const int HandlerVBytes = 256 + 36;
+
+    public HandlerConfig(Station station, CpuProfile cpu, int port = 0, byte writeMask = DefaultWriteMask, byte replyDelayMs = 5, int? bufferStart = null)
     {
         ArgumentNullException.ThrowIfNull(cpu);
         ArgumentOutOfRangeException.ThrowIfNegative(port);
@@ -25,7 +32,14 @@ public sealed record HandlerConfig
         }
 
         (Station, Cpu, Port, WriteMask, ReplyDelayMs) = (station, cpu, port, writeMask, replyDelayMs);
+        var vBytes = cpu.TryGetArea(MemoryArea.V, out var v) ? v.ByteCount : 0;
+        BufferStart = bufferStart ?? ((vBytes - HandlerVBytes) & ~1);
+        ArgumentOutOfRangeException.ThrowIfNegative(BufferStart, nameof(bufferStart));
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(BufferStart + HandlerVBytes, vBytes, nameof(bufferStart));
     }
+
+    /// <summary>V byte offset of the handler's buffer; its own bytes are BufferStart .. BufferStart + 291.</summary>
+    public int BufferStart { get; }
 
     public Station Station { get; }
 
@@ -38,6 +52,9 @@ public sealed record HandlerConfig
     public byte ReplyDelayMs { get; }
 
     public bool MayWrite(ProtocolArea area) => (WriteMask & (1 << (int)area)) != 0;
+
+    /// <summary>A V byte of the handler's buffer or work bytes: refused to the panel (error 03).</summary>
+    public bool IsHandlerVByte(int offset) => offset >= BufferStart && offset < BufferStart + HandlerVBytes;
 
     /// <summary>
     /// SM bytes refused to the panel: SMB0-SMB29 (system status), SMB34 (timed interrupt 0, the reply delay) and the

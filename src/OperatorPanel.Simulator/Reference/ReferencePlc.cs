@@ -153,7 +153,7 @@ public sealed class ReferencePlc : IRequestTarget, IDemoPlc
 
         for (var i = offset; i < offset + length; i++)
         {
-            if (area == ProtocolArea.SM && Config.IsProtectedSmByte(i))
+            if ((area == ProtocolArea.SM && Config.IsProtectedSmByte(i)) || (area == ProtocolArea.V && Config.IsHandlerVByte(i)))
             {
                 return false;
             }

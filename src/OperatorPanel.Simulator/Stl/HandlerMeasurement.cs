@@ -9,12 +9,15 @@ namespace OperatorPanel.Simulator.Stl;
 /// <summary>
 /// Measures a handler by running it: loads the .awl text in the interpreter, serves the worst-case request of each
 /// kind (docs/protocol.md Limits: the largest READ reply, the most items, the longest WRITE, a full list) and counts
-/// what its interrupt routines execute. Times are StlTiming estimates; only +14 us per indirect operand is confirmed.
+/// what its interrupt routines and its slices in OP_PANEL execute, at the StlTiming figures (manual where published, conservative elsewhere).
 /// </summary>
 public static class HandlerMeasurement
 {
     /// <summary>A 119-byte V range the requests read and write; the caller keeps it clear of the handler's bytes.</summary>
     public const int DataBytes = 119;
+
+    /// <summary>The first entry: the handler's scans without a request (its Instructions: the most in one scan).</summary>
+    public const string IdleName = "no request (a scan)";
 
     /// <summary>
     /// Serves the worst-case requests to the handler in <paramref name="awlText"/> on <paramref name="port"/> at
@@ -36,6 +39,7 @@ public static class HandlerMeasurement
         plc.AttachPort(freeport);
         var session = new MeasurementSession(plc, freeport, line, port);
         var builder = ImmutableArray.CreateBuilder<MeasuredRequest>();
+        builder.Add(session.Idle(IdleName));
         foreach (var (name, frame) in WorstCases(station, dataStart))
         {
             builder.Add(session.Serve(name, frame));

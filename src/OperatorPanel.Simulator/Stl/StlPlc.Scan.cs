@@ -17,6 +17,7 @@ public sealed partial class StlPlc
     private long _now;
     private long _busy;
     private long _scanStart;
+    private long _scanBusyStart;
     private long _overheadUntil;
     private long _watchdogFrom;
 
@@ -26,6 +27,9 @@ public sealed partial class StlPlc
     private bool _scanClock;
     private int _minScan = int.MaxValue;
     private int _maxScan;
+
+    /// <summary>Raised at the start of each scan for the one before it (not for the first scan).</summary>
+    public event EventHandler<StlScan>? ScanCompleted;
 
     /// <summary>Executes scans and interrupts until simulated time <paramref name="until"/>; in STOP time just passes.</summary>
     public void RunUntil(TimeSpan until)
@@ -98,10 +102,12 @@ public sealed partial class StlPlc
             Memory.WriteWord(Core.Protocol.ProtocolArea.SM, 22, (ushort)scan);
             Memory.WriteWord(Core.Protocol.ProtocolArea.SM, 24, (ushort)_minScan);
             Memory.WriteWord(Core.Protocol.ProtocolArea.SM, 26, (ushort)_maxScan);
+            ScanCompleted?.Invoke(this, new StlScan(TimeSpan.FromTicks(_scanStart / 100), TimeSpan.FromTicks(_now / 100), TimeSpan.FromTicks((_busy - _scanBusyStart) / 100)));
         }
 
         _scanStart = _now;
         _watchdogFrom = _now;
+        _scanBusyStart = _busy;
         CountTenMillisecondTimers();
         Array.Copy(InputImage, Memory.I, Memory.I.Length);
         _scanClock = !_scanClock;

@@ -1,3 +1,4 @@
+using OperatorPanel.StlGen.Handler;
 using OperatorPanel.StlGen.Options;
 
 namespace OperatorPanel.StlGen.Emit;
@@ -29,7 +30,8 @@ public static class TechnicianNotes
         w.Line("  4. Compile, download, and put the CPU in RUN with the mode switch at RUN.");
         w.Line(string.Empty);
         w.Line("What it reserves (do not use these in your program)");
-        w.Line($"  V memory     {stats.VRange} ({stats.VBytes} bytes: a 256-byte buffer and 16 work bytes)");
+        w.Line($"  V memory     {stats.VRange} ({stats.VBytes} bytes: a 256-byte buffer and {HandlerLayout.WorkBytes} work bytes); the panel cannot");
+        w.Line("               write there either (error 03)");
         foreach (var block in stats.Blocks)
         {
             w.Line($"  {block.NumberText,-12} {block.Name}: {block.Purpose}");
@@ -37,15 +39,20 @@ public static class TechnicianNotes
 
         w.Line($"  Events       {string.Join(", ", stats.InterruptEvents)} (ATCH by the handler; do not attach your own routines to them)");
         w.Line($"  Port         port {options.Port}: SMB{(options.Port == 0 ? 30 : 130)}, SMB{(options.Port == 0 ? 86 : 186)}-SMB{(options.Port == 0 ? 94 : 194)}; timed interrupt 0 (SMB34)");
-        w.Line($"  Accumulators AC0-AC3 inside its interrupt routines (the CPU saves and restores them)");
+        w.Line($"  Accumulators AC0-AC3: {options.Names.Panel} changes them while it serves a request (it keeps its own");
+        w.Line("               in V between scans); code after the CALL must not expect values from before it");
         w.Line(string.Empty);
         w.Line("Programming device and TERM");
         w.Line("  In STOP the CPU gives the port back to PPI by itself. With the mode switch at TERM the handler");
         w.Line("  gives it back to PPI too, so Micro/WIN can connect while the program keeps running; turning the");
         w.Line("  switch back to RUN takes the port again for the panel. No panel request is answered meanwhile.");
         w.Line(string.Empty);
-        w.Line("Timing");
-        w.Line($"  The reply leaves {options.ReplyDelayMs} ms after the request has been checked (timed interrupt 0), so a");
+        w.Line("Timing (at the manual's execution times; conservative where the manual gives none)");
+        w.Line($"  The receive interrupt only notes that a request has arrived (under {SlicePart.InterruptBoundMs} ms). {options.Names.Panel} then");
+        w.Line($"  checks it and builds the reply a part per scan: it adds at most {SlicePart.ScanBoundMs} ms to a scan while it");
+        w.Line($"  works on a request, under {SlicePart.IdleScanBoundMs} ms to a scan without one. A reply takes {SlicePart.FewestScans} to {SlicePart.MostScans} scans");
+        w.Line("  (IDENTIFY the fewest, a READ of 20 items the most), so a long scan of your program slows the panel.");
+        w.Line($"  The reply leaves {options.ReplyDelayMs} ms after the last of those scans (timed interrupt 0), so a");
         w.Line("  PC/PPI or RS-232/RS-485 converter can turn the line around.");
         w.Line(options.CharTimeoutMs == 0
             ? "  A request cut off mid-way waits for the next '<' (no inter-character timeout)."

@@ -4,24 +4,28 @@ namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
 /// Where the handler keeps its bytes in V memory (docs/protocol.md, "Work bytes"): the 256-byte buffer (byte 0 =
-/// RCV/XMT count, bytes 1-255 the frame) and 16 work bytes after it. Pointers live in AC1-AC3, nothing in L memory.
-/// The order of the work bytes matters: one ATH fills N, I, CMD from the header; one HTA writes CMD|80 and STATUS
-/// (kept in LIST) into the reply; START and LCOUNT are indexed by the list id.
+/// RCV/XMT count, bytes 1-255 the frame) and 36 work bytes after it. Pointers live in AC0-AC3 while OP_PANEL works on
+/// a request and in SAVE between its scans (a user's program may use the accumulators); nothing in L memory. The
+/// order of the work bytes matters: one ATH fills N, I, CMD from the header; one HTA writes CMD|80 and STATUS (kept
+/// in LIST) into the reply; START and LCOUNT are indexed by the list id; SAVE holds AC0-AC3 in that order.
 /// </summary>
 public sealed class HandlerLayout(int bufferStart)
 {
-    public const int WorkBytes = 16;
+    public const int WorkBytes = 36;
     public const int Subroutines = 1;
     public const int Interrupts = 3;
 
     /// <summary>Offsets from the buffer start.</summary>
     public const int N = 256, I = 257, Cmd = 258, List = 259, D = 260, Bcc = 261, MaxD = 262, LastFree = 263, Start1 = 264, LCount1 = 268;
 
+    /// <summary>Offsets of the scan-slice state (docs/protocol.md, "Work bytes").</summary>
+    public const int Step = 272, Budget = 273, Chunk = 274, Save = 276;
+
     public int BufferStart { get; } = bufferStart;
 
     public int LastByte => BufferStart + 256 + WorkBytes - 1;
 
-    /// <summary>"VB7920" for buffer byte 0.</summary>
+    /// <summary>"VB7900" for buffer byte 0.</summary>
     public string B(int offset) => "VB" + Abs(offset);
 
     public string W(int offset) => "VW" + Abs(offset);
@@ -46,6 +50,10 @@ public sealed class HandlerLayout(int bufferStart)
         ("OP_LAST_FREE", B(LastFree), "Panel handler: last buffer byte below the stored lists (255 = none)"),
         .. Enumerable.Range(1, 4).Select(n => ($"OP_START{n}", B(Start1 + n - 1), $"Panel handler: first buffer byte of READ list {n}")),
         .. Enumerable.Range(1, 4).Select(n => ($"OP_LCOUNT{n}", B(LCount1 + n - 1), $"Panel handler: item count of READ list {n} (0 = not defined)")),
+        ("OP_STEP", B(Step), "Panel handler: 0 = idle, else where OP_PANEL goes on with the request in the next scan"),
+        ("OP_BUDGET", B(Budget), "Panel handler: loop passes left in this scan"),
+        ("OP_CHUNK", W(Chunk), "Panel handler: characters of this pass of the block check"),
+        .. Enumerable.Range(0, 4).Select(n => ($"OP_AC{n}", Dw(Save + (4 * n)), $"Panel handler: AC{n} kept between scans")),
     ];
 
     private string Abs(int offset) => (BufferStart + offset).ToString(CultureInfo.InvariantCulture);

@@ -43,23 +43,6 @@ internal static class HandlerSnippets
 
     public static (string, string[]) Op(string mnemonic, params string[] operands) => (mnemonic, operands);
 
-    /// <summary>
-    /// XOR of buffer characters 2 .. count-3 into BCC: the body without its last two characters, for a request and
-    /// for a reply alike (count = '&lt;' + body + '&gt;'). <paramref name="walker"/> is the pointer the loop advances.
-    /// </summary>
-    public static IEnumerable<StlNetwork> XorLoop(HandlerLayout l, string walker, string what)
-    {
-        yield return new NetworkBuilder(
-                $"Block check of the {what}",
-                "BCC = XOR of the body characters before the last two: buffer bytes 2 .. count-3, count-4 of them.",
-                $"{walker} walks the characters; AC0 counts the loop, AC3 holds its end.")
-            .Op("LD", "SM0.0").Op("MOVB", "0", l.B(Bcc)).Op("MOVD", l.Ptr(2), walker).Op("BTI", l.B(0), "AC3")
-            .Op("-I", "4", "AC3").Op("FOR", "AC0", "1", "AC3").Build();
-        yield return new NetworkBuilder($"XOR one {what} character", "BCC = BCC XOR character; next character.")
-            .Op("LD", "SM0.0").Op("XORB", "*" + walker, l.B(Bcc)).Op("INCD", walker).Build();
-        yield return new NetworkBuilder($"End of the {what} block check loop").Op("NEXT").Build();
-    }
-
     /// <summary>AC3 = pointer to the first byte of the area whose protocol code is in <paramref name="code"/>.</summary>
     public static IEnumerable<StlNetwork> AreaStart(string code)
     {

@@ -13,7 +13,7 @@ internal static class InitPart
         new NetworkBuilder(
                 "Operator panel: call the port handler every scan",
                 $"{c.Names.Panel} sets port {c.Port} to Freeport at RUN and gives it back to PPI at TERM.",
-                "The requests themselves are served in interrupt routines; keep this call in every scan.")
+                "It also serves the requests, a bounded part per scan: keep this call in every scan.")
             .Op("LD", "SM0.0").Op("CALL", c.Names.Panel).Build();
 
     public static IEnumerable<StlNetwork> Subroutine(HandlerContext c)
@@ -26,7 +26,7 @@ internal static class InitPart
                 c.Options.CharTimeoutMs == 0
                     ? $"{c.SmB(87)} = 16#E0: no idle line, no timer."
                     : $"{c.SmB(87)} = 16#E4: a frame cut off ends after {c.Options.CharTimeoutMs} ms without a character ({c.SmW(92)}).",
-                $"Clear the READ lists, attach {c.Names.Receive} (event {c.ReceiveEvent}) and {c.Names.Transmit} (event {c.TransmitEvent}), enable interrupts, start receiving.")
+                $"Clear the READ lists, attach {c.Names.Receive} (event {c.ReceiveEvent}) and {c.Names.Transmit} (event {c.TransmitEvent}), enable interrupts, no request waiting, start receiving.")
             .Op("LD", "SM0.7").Op("EU").Op("LD", "SM0.1").Op("A", "SM0.7").Op("OLD")
             .Op("MOVB", Hex(c.FreeportControl), c.SmB(30))
             .Op("MOVB", c.Options.CharTimeoutMs == 0 ? "16#E0" : "16#E4", c.SmB(87))
@@ -38,15 +38,15 @@ internal static class InitPart
 
         freeport.Op("MOVB", "255", c.SmB(94)).ClearLists(l).Op("DTCH", Dec(DelayEvent))
             .Op("ATCH", c.Names.Receive, Dec(c.ReceiveEvent)).Op("ATCH", c.Names.Transmit, Dec(c.TransmitEvent))
-            .Op("ENI").Op("RCV", l.B(0), c.PortOperand);
+            .Op("ENI").Op("MOVB", "0", l.B(HandlerLayout.Step)).Op("RCV", l.B(0), c.PortOperand);
         yield return freeport.Build();
 
         yield return new NetworkBuilder(
                 "PPI again: first scan at TERM, or switch turned to TERM",
                 $"{c.SmB(30)} = 0 gives port {c.Port} back to PPI, so a programming device can connect without stopping the CPU.",
-                $"Detach the handler's events {c.ReceiveEvent}, {c.TransmitEvent} and {DelayEvent}; the READ lists are forgotten.")
+                $"Detach the handler's events {c.ReceiveEvent}, {c.TransmitEvent} and {DelayEvent}; a request being served and the READ lists are forgotten.")
             .Op("LD", "SM0.7").Op("ED").Op("LD", "SM0.1").Op("AN", "SM0.7").Op("OLD")
             .Op("MOVB", "0", c.SmB(30)).Op("DTCH", Dec(c.ReceiveEvent)).Op("DTCH", Dec(c.TransmitEvent))
-            .Op("DTCH", Dec(DelayEvent)).ClearLists(l).Build();
+            .Op("DTCH", Dec(DelayEvent)).Op("MOVB", "0", l.B(HandlerLayout.Step)).ClearLists(l).Build();
     }
 }

@@ -36,7 +36,7 @@ internal static class ListPart
         yield return PlaceDescriptors(l, 10);
         yield return Always(
             "DEFINE LIST: check the items", "Label 30 checks N items from AC2; the sum of lengths comes back in AC1.",
-            Op("MOVB", l.B(N), l.B(I)), Op("MOVD", "0", "AC1"), Op("JMP", Dec(HandlerLabels.CheckItems)));
+            Op("MOVB", l.B(N), l.B(I)), Op("MOVD", "0", "AC1"), Op("MOVB", Dec(SlicePart.StepCheckItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
         foreach (var network in Store(c))
         {
             yield return network;
@@ -57,7 +57,7 @@ internal static class ListPart
         yield return JumpIf("READ LIST: list not defined", "LCOUNT = 0: error 07.", e07, Op("LDB=", "*AC3", "0"));
         yield return Always(
             "READ LIST: build the reply", "Its items exactly like a READ's, from buffer byte 10.",
-            Op("MOVB", "*AC3", l.B(I)), Op("MOVD", l.Ptr(10), "AC1"), Op("JMP", Dec(HandlerLabels.BuildItems)));
+            Op("MOVB", "*AC3", l.B(I)), Op("MOVD", l.Ptr(10), "AC1"), Op("MOVB", Dec(SlicePart.StepBuildItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
     }
 
     private static IEnumerable<StlNetwork> Store(HandlerContext c)

@@ -32,7 +32,7 @@ internal static class ReadPart
         yield return PlaceDescriptors(l, 9);
         yield return Always(
             "READ: check the items", "Label 30 checks N items from AC2; the sum of lengths comes back in AC1.",
-            Op("MOVB", l.B(N), l.B(I)), Op("MOVD", "0", "AC1"), Op("JMP", Dec(HandlerLabels.CheckItems)));
+            Op("MOVB", l.B(N), l.B(I)), Op("MOVD", "0", "AC1"), Op("MOVB", Dec(SlicePart.StepCheckItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
     }
 
     public static IEnumerable<StlNetwork> Reply(HandlerContext c)
@@ -48,7 +48,7 @@ internal static class ReadPart
         yield return PlaceDescriptors(l, 9);
         yield return Always(
             "READ: build the reply", "N items from AC2; the data characters start at buffer byte 10 (AC1).",
-            Op("MOVB", l.B(N), l.B(I)), Op("MOVD", l.Ptr(10), "AC1"), Op("JMP", Dec(HandlerLabels.BuildItems)));
+            Op("MOVB", l.B(N), l.B(I)), Op("MOVD", l.Ptr(10), "AC1"), Op("MOVB", Dec(SlicePart.StepBuildItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
     }
 
     /// <summary>In: AC2 at the first descriptor, I = item count, AC1 at the first data character. Out: AC1 after the data.</summary>
@@ -66,7 +66,10 @@ internal static class ReadPart
             "AC3 = area start + OFFSET; HTA writes 2 x LENGTH characters at AC1; AC1 and AC2 move on; one item fewer.",
             Op("INCD", "AC2"), Op("MOVW", "*AC2", "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"), Op("INCD", "AC2"),
             Op("INCD", "AC2"), Op("BTI", "*AC2", "AC0"), Op("SLW", "AC0", "1"), Op("HTA", "*AC3", "*AC1", "AC0"),
-            Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC1"), Op("INCD", "AC2"), Op("DECB", l.B(I)));
+            Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC1"), Op("INCD", "AC2"), Op("DECB", l.B(I)), Op("DECB", l.B(Budget)));
+        yield return JumpIf(
+            "Reply item: scan's passes used", "Items left, no pass left in this scan: the next scan goes on at label 40.", SlicePart.Yield,
+            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"), Op("MOVB", Dec(SlicePart.StepBuildItems), l.B(Step)));
         yield return JumpIf("Reply item: more items", "Back to label 40 while items are left.", HandlerLabels.BuildItems, Op("LDB<>", l.B(I), "0"));
         yield return Always("Reply items done", "STATUS 00; finish the reply.", Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
     }

@@ -6,8 +6,9 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// The start of the receive-complete routine: docs/protocol.md section 4, steps 1-5. Every failed check up to the
-/// dispatch means silence (label 1: receive again).
+/// docs/protocol.md section 4, steps 1-5: the receive-complete routine only takes a frame ended by '&gt;' and sets
+/// STEP = 1; OP_PANEL checks it in the next scans. Every failed check up to the dispatch means silence (label 1:
+/// receive again).
 /// </summary>
 internal static class ReceivePart
 {
@@ -17,10 +18,9 @@ internal static class ReceivePart
         (4, HandlerLabels.WriteBit, "WRITE BIT"), (5, HandlerLabels.DefineList, "DEFINE LIST"), (6, HandlerLabels.ReadList, "READ LIST"),
     ];
 
-    public static IEnumerable<StlNetwork> Networks(HandlerContext c)
+    public static IEnumerable<StlNetwork> Interrupt(HandlerContext c)
     {
         var l = c.Layout;
-        const int silence = HandlerLabels.Silence;
         yield return new NetworkBuilder(
                 "Step 1: a long frame reached the stored READ lists",
                 "The received characters fill buffer bytes 1 .. count. If count > LAST_FREE they overwrote stored",
@@ -30,14 +30,25 @@ internal static class ReceivePart
                 "Step 1: only a frame ended by '>' is processed",
                 $"{c.SmB(86)} bit 5 = end character received. Ended by count, timer or parity error: receive again.")
             .Op("LDN", $"SM{c.SmPort(86)}.5").Op("RCV", l.B(0), c.PortOperand).Op("CRETI").Build();
+        yield return Always(
+            "A request is waiting", $"{c.Names.Panel} checks and answers it in the next scans, a bounded part per scan.",
+            Op("MOVB", Dec(SlicePart.StepStart), l.B(Step)));
+    }
+
+    public static IEnumerable<StlNetwork> Networks(HandlerContext c)
+    {
+        var l = c.Layout;
+        const int silence = HandlerLabels.Silence;
         yield return JumpIf(
             "Step 2: body length", "Silence when the body has fewer than 8 characters (count < 10) or an odd number.",
             silence, Op("LDB<", l.B(0), "10"), Op("O", l.Bit(0, 0)));
-        foreach (var network in XorLoop(l, "AC1", "request"))
+        foreach (var network in SlicePart.BlockCheck(c, "AC1", "request", SlicePart.RequestCheckPass, SlicePart.StepRequestCheck))
         {
             yield return network;
         }
 
+        yield return SlicePart.Pause(c, "Request block check done", SlicePart.StepHeader);
+        yield return Label(SlicePart.Header, "header and payload to binary");
         yield return Always(
             "Step 2: header to binary", "ATH the characters of STATION, SEQ and CMD (buffer bytes 2-7) into N, I and CMD.",
             Op("ATH", l.B(2), l.B(N), "6"));

@@ -33,7 +33,9 @@ internal static class ReplyPart
                 "Reply: would it reach the stored lists?",
                 "A reply longer than LAST_FREE overwrites stored descriptors: forget every list (invalidation 3).")
             .Op("LDB>", l.B(0), l.B(LastFree)).ClearLists(l).Build();
-        foreach (var network in XorLoop(l, "AC2", "reply"))
+        yield return SlicePart.Pause(c, "Reply built", SlicePart.StepReplyCheck);
+        yield return Label(SlicePart.ReplyCheck, "block check of the reply");
+        foreach (var network in SlicePart.BlockCheck(c, "AC2", "reply", SlicePart.ReplyCheckPass, SlicePart.StepReplyCheckPass))
         {
             yield return network;
         }
@@ -42,8 +44,10 @@ internal static class ReplyPart
             "Reply: BCC, '>', reply delay",
             $"BCC as 2 characters at AC1, then '>'. Timed interrupt 0 sends the reply in {c.Options.ReplyDelayMs} ms (SMB34).",
             Op("HTA", l.B(Bcc), "*AC1", "2"), Op("INCD", "AC1"), Op("INCD", "AC1"), Op("MOVB", "16#3E", "*AC1"),
-            Op("MOVB", Dec(c.Options.ReplyDelayMs), "SMB34"), Op("ATCH", c.Names.Delay, Dec(DelayEvent)), Op("CRETI"));
+            Op("MOVB", Dec(c.Options.ReplyDelayMs), "SMB34"), Op("ATCH", c.Names.Delay, Dec(DelayEvent)), SlicePart.Done(c), Op("JMP", Dec(SlicePart.EndOfSlice)));
         yield return Label(HandlerLabels.Silence, "no reply");
-        yield return Always("No reply: receive again", "Silence: the port listens for the next frame at once.", Op("RCV", l.B(0), c.PortOperand));
+        yield return Always(
+            "No reply: receive again", "Silence: the port listens for the next frame at once.",
+            Op("RCV", l.B(0), c.PortOperand), SlicePart.Done(c), Op("JMP", Dec(SlicePart.EndOfSlice)));
     }
 }

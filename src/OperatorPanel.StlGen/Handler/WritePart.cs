@@ -24,13 +24,13 @@ internal static class WritePart
         yield return JumpIf("WRITE: body = 8 + LENGTH bytes", "Error 04.", e04, Op("LDW<>", "AC0", "AC3"));
         yield return Always(
             "WRITE: check the block", "One item from buffer byte 8 through the item checks of label 30.",
-            Op("MOVD", l.Ptr(8), "AC2"), Op("MOVB", "1", l.B(I)), Op("MOVD", "0", "AC1"), Op("JMP", Dec(HandlerLabels.CheckItems)));
+            Op("MOVD", l.Ptr(8), "AC2"), Op("MOVB", "1", l.B(I)), Op("MOVD", "0", "AC1"), Op("MOVB", Dec(SlicePart.StepCheckItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
         yield return Label(HandlerLabels.WriteBit, "04 WRITE BIT");
         yield return JumpIf("WRITE BIT: body exactly 9 bytes", "Error 04 unless count = 20.", e04, Op("LDB<>", l.B(0), "20"));
         yield return Always(
             "WRITE BIT: check the byte", "N = BIT; a LENGTH of 1 in its place makes a one-byte block for the item checks.",
             Op("MOVB", l.B(11), l.B(N)), Op("MOVB", "1", l.B(11)), Op("MOVD", l.Ptr(8), "AC2"), Op("MOVB", "1", l.B(I)),
-            Op("MOVD", "0", "AC1"), Op("JMP", Dec(HandlerLabels.CheckItems)));
+            Op("MOVD", "0", "AC1"), Op("MOVB", Dec(SlicePart.StepCheckItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
     }
 
     public static IEnumerable<StlNetwork> Execute(HandlerContext c)
@@ -49,9 +49,13 @@ internal static class WritePart
         yield return Always("Write: the target byte", "AC3 = area start + OFFSET.", Op("MOVW", l.W(9), "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"));
         yield return JumpIf("Write: WRITE BIT", "On to label 52.", HandlerLabels.WriteBitExecute, Op("LDB=", l.B(Cmd), "4"));
         yield return Always(
-            "WRITE: copy the data, read it back",
-            "BMB the LENGTH data bytes from buffer byte 12 to the target; HTA them back as the reply from byte 10.",
-            Op("BMB", l.B(12), "*AC3", l.B(11)), Op("BTI", l.B(11), "AC0"), Op("SLW", "AC0", "1"), Op("HTA", "*AC3", l.B(10), "AC0"),
+            "WRITE: copy the data", "BMB the LENGTH data bytes from buffer byte 12 to the target (AC3).",
+            Op("BMB", l.B(12), "*AC3", l.B(11)));
+        yield return SlicePart.Pause(c, "WRITE: written", SlicePart.StepWriteReadBack);
+        yield return Label(SlicePart.WriteReadBack, "WRITE read-back");
+        yield return Always(
+            "WRITE: read it back", "HTA the LENGTH bytes at the target back as the reply from buffer byte 10.",
+            Op("BTI", l.B(11), "AC0"), Op("SLW", "AC0", "1"), Op("HTA", "*AC3", l.B(10), "AC0"),
             Op("ITD", "AC0", "AC0"), Op("MOVD", l.Ptr(10), "AC1"), Op("+D", "AC0", "AC1"), Op("MOVB", "0", l.B(List)),
             Op("JMP", Dec(HandlerLabels.Finish)));
         yield return Label(HandlerLabels.WriteBitExecute, "WRITE BIT on the target byte");
@@ -66,7 +70,10 @@ internal static class WritePart
             Op("HTA", "*AC3", l.B(10), "2"), Op("MOVD", l.Ptr(12), "AC1"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
     }
 
-    /// <summary>Error 03: I; areas outside the write mask; SM bytes the panel must not touch (docs/protocol.md section 3).</summary>
+    /// <summary>
+    /// Error 03: I; areas outside the write mask; the handler's own V bytes (a WRITE there could make the read-back
+    /// run past the buffer, and the CPU stop); SM bytes the panel must not touch (docs/protocol.md section 3).
+    /// </summary>
     private static IEnumerable<StlNetwork> Writable(HandlerContext c)
     {
         var l = c.Layout;
@@ -78,14 +85,26 @@ internal static class WritePart
             yield return JumpIf($"Writable: not {name}", $"{name} is not in the write mask: error 03.", e03, Op("LDB=", l.B(8), Dec(code)));
         }
 
+        if (!c.MayWrite(4) && !c.MayWrite(5))
+        {
+            yield break;
+        }
+
+        yield return Always("Writable: first and last byte", "AC0 = OFFSET, AC3 = OFFSET + LENGTH - 1.",
+            Op("MOVW", l.W(9), "AC0"), Op("BTI", l.B(11), "AC3"), Op("+I", "AC0", "AC3"), Op("DECW", "AC3"));
+        if (c.MayWrite(4))
+        {
+            yield return JumpIf(
+                $"Writable: not the handler's own bytes", $"VB{l.BufferStart}-VB{l.LastByte}, buffer and work bytes: a block touching them is refused whole, error 03.",
+                e03, Op("LDB=", l.B(8), "4"), Op("AW<=", "AC0", Dec(l.LastByte)), Op("AW>=", "AC3", Dec(l.BufferStart)));
+        }
+
         if (!c.MayWrite(5))
         {
             yield break;
         }
 
         var readOnly = c.Options.Cpu.ReadOnlySmBytes;
-        yield return Always("Writable: first and last byte", "AC0 = OFFSET, AC3 = OFFSET + LENGTH - 1.",
-            Op("MOVW", l.W(9), "AC0"), Op("BTI", l.B(11), "AC3"), Op("+I", "AC0", "AC3"), Op("DECW", "AC3"));
         yield return JumpIf($"Writable: SMB0-SMB{readOnly - 1}", "System status bytes: error 03.", e03, Op("LDB=", l.B(8), "5"), Op("AW<", "AC0", Dec(readOnly)));
         foreach (var (first, last, what) in new[]
         {

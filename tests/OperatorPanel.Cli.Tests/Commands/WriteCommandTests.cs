@@ -49,7 +49,7 @@ public sealed class WriteCommandTests
         var run = CliRunner.Run("write", "SMB34=9", "--demo");
 
         run.ExitCode.Should().Be(1);
-        run.Out.Should().Contain("SMB34    0 -> 9  failed: station 2 refused the write: NotWritable");
+        run.Out.Should().Contain("SMB34    0 -> 9  failed: station 2 refused the write: error 03: the PLC refuses writes there (inputs, an area without write access, protected SM bytes, or the handler's own V bytes: its buffer and work bytes)");
     }
 
     [Theory]

@@ -128,7 +128,7 @@ public sealed class PollingEngineWritesTests
 
         var outcome = await WriteThroughCycle(engine, WriteRequest.Bytes(One, PlcAddress.Parse("SMB34"), [0x05]));
 
-        outcome.Should().BeEquivalentTo(new WriteOutcome.Failed("station 1 refused the write: NotWritable", WriteFailureKind.RefusedByPlc));
+        outcome.Should().BeEquivalentTo(new WriteOutcome.Failed("station 1 refused the write: error 03: the PLC refuses writes there (inputs, an area without write access, protected SM bytes, or the handler's own V bytes: its buffer and work bytes)", WriteFailureKind.RefusedByPlc));
     }
 
     [Theory]

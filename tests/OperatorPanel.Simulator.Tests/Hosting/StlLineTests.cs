@@ -22,7 +22,9 @@ public sealed class StlLineTests
 
         Decode(reply).Payload.Should().Equal(0x00, 0x12, 0x34, 0x56, 0x78);
         var first = reply[0].At - requestEnd;
-        first.Should().BeGreaterThanOrEqualTo(ReplyDelay + CharacterTime).And.BeLessThan(ReplyDelay + CharacterTime + TimeSpan.FromMilliseconds(2));
+        // OP_PANEL checks the request and builds the reply over a few scans (about 14 ms for this READ at the manual's
+        // execution times) before the reply delay starts.
+        first.Should().BeGreaterThan(ReplyDelay + CharacterTime + TimeSpan.FromMilliseconds(5)).And.BeLessThan(ReplyDelay + CharacterTime + TimeSpan.FromMilliseconds(30));
         reply.Zip(reply.Skip(1), (a, b) => b.At - a.At).Should().OnlyContain(gap => (gap - CharacterTime).Duration() <= TimeSpan.FromTicks(1));
         line.Replies.Should().Be(1);
         line.FramesReceived.Should().Be(1);
@@ -106,12 +108,22 @@ public sealed class StlLineTests
         line.RunUntil(TimeSpan.FromSeconds(3));
         var station = line.Stations[0];
 
-        var reply = Exchange(line, Read(2, ProtocolArea.Q, 0, 2), TimeSpan.FromMilliseconds(50));
+        var before = station.Memory.Q.Take(2).ToArray();
+        var reply = Exchange(line, Read(2, ProtocolArea.Q, 0, 2), TimeSpan.FromMilliseconds(100));
+        var after = station.Memory.Q.Take(2).ToArray();
 
         line.Processes.Should().ContainSingle().Which.Elapsed.Should().BeGreaterThan(TimeSpan.FromSeconds(2.9));
         station.Plc.InputImage.Should().Equal(station.Memory.I);
-        station.Memory.Q.Take(2).Should().NotEqual(new byte[2]);
-        Decode(reply).Payload.Skip(1).Should().Equal(station.Memory.Q.Take(2));
+        after.Should().NotEqual(new byte[2]);
+
+        // The reply shows Q as it was when OP_PANEL built it, some scans into the exchange: every bit that stayed the
+        // same over the exchange must be in the reply as it is in Q.
+        var payload = Decode(reply).Payload.Skip(1).ToArray();
+        for (var i = 0; i < 2; i++)
+        {
+            var stable = (byte)~(before[i] ^ after[i]);
+            (payload[i] & stable).Should().Be(after[i] & stable);
+        }
     }
 
     [Fact]
@@ -122,7 +134,7 @@ public sealed class StlLineTests
         var station = line.Stations[0];
         var value = (byte)(station.Memory.Q[0] ^ 0x01);
 
-        Exchange(line, Write(2, ProtocolArea.Q, 0, [value]), TimeSpan.FromMilliseconds(50));
+        Exchange(line, Write(2, ProtocolArea.Q, 0, [value]), TimeSpan.FromMilliseconds(200));
         line.RunUntil(line.Now + TimeSpan.FromMilliseconds(200));
 
         station.IsOwnedByPanel(0, 0).Should().BeTrue();

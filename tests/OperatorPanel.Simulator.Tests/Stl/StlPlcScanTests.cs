@@ -42,8 +42,8 @@ public sealed class StlPlcScanTests
     [Fact]
     public void ScanTimes_AreReportedInSmw22To26()
     {
-        // A 10-iteration loop of BMB over 200 bytes makes a scan of a few ms.
-        var plc = Plc("LD     SM0.0\nFOR    VW0, 1, 10\nNetwork 2\nLD     SM0.0\nBMB    VB100, VB400, 200\nNetwork 3\nNEXT");
+        // A 2-iteration loop of BMB over 100 bytes makes a scan of a few ms (17 us per byte, StlTiming.PerByte).
+        var plc = Plc("LD     SM0.0\nFOR    VW0, 1, 2\nNetwork 2\nLD     SM0.0\nBMB    VB100, VB400, 100\nNetwork 3\nNEXT");
         plc.RunUntil(TimeSpan.FromMilliseconds(100));
 
         var last = plc.Memory.ReadWord(ProtocolArea.SM, 22);
@@ -88,12 +88,13 @@ public sealed class StlPlcScanTests
     public void DisabledInterrupts_AreQueuedUpToTheQueueDepthAndServedAfterEni()
     {
         var plc = Plc(
-            "LD     SM0.1\nMOVB   1, SMB34\nATCH   TICK, 10\nNetwork 2\nLD     I0.0\nENI\nNetwork 3\nLDN    I0.0\nDISI",
+            "LD     SM0.1\nMOVB   4, SMB34\nATCH   TICK, 10\nNetwork 2\nLD     I0.0\nENI\nNetwork 3\nLDN    I0.0\nDISI",
             "INTERRUPT_BLOCK TICK:INT0\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\nINCB   VB0\r\nMOVB   SMB4, VB1\r\nEND_INTERRUPT_BLOCK\r\n");
-        plc.RunUntil(TimeSpan.FromMilliseconds(20.5));
+        // Ticks every 4 ms: 9 by 37 ms, one more than the queue holds; the 8 queued ones take about 1.2 ms to serve.
+        plc.RunUntil(TimeSpan.FromMilliseconds(37));
         plc.Memory.V[0].Should().Be(0);
         plc.InputImage[0] = 1;
-        plc.RunUntil(TimeSpan.FromMilliseconds(20.9));
+        plc.RunUntil(TimeSpan.FromMilliseconds(39.9));
 
         plc.Memory.V[0].Should().Be(8, "the timed queue holds 8 events");
         (plc.Memory.V[1] & 0x04).Should().Be(0x04, "SM4.2 reports the lost timed events");

@@ -45,7 +45,7 @@ public sealed class HandlerFragmentTests
     {
         var program = HandlerGenerator.Generate(HandlerGoldenTests.Cpu226Port1Station17).Program!;
 
-        program.Blocks[2].Networks.SelectMany(n => n.Instructions).Select(AwlText).Should().Contain("LDB<> VB1256, 17");
+        program.Blocks[1].Networks.SelectMany(n => n.Instructions).Select(AwlText).Should().Contain("LDB<> VB1256, 17");
     }
 
     [Fact]
@@ -53,16 +53,16 @@ public sealed class HandlerFragmentTests
     {
         var program = HandlerGenerator.Generate(HandlerGoldenTests.Cpu224Port0Station2).Program!;
 
-        program.Blocks[3].Networks.Single().Instructions.Select(AwlText).Should().Equal("LD SM0.0", "DTCH 10", "XMT VB7920, 0");
+        program.Blocks[3].Networks.Single().Instructions.Select(AwlText).Should().Equal("LD SM0.0", "DTCH 10", "XMT VB7900, 0");
     }
 
     [Fact]
     public void Writable_MaskWithoutSm_RefusesSmAndSkipsTheSmByteChecks()
     {
         var program = HandlerGenerator.Generate(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), WriteMask = 0x1C }).Program!;
-        var all = program.Blocks[2].Networks.SelectMany(n => n.Instructions).Select(AwlText).ToList();
+        var all = program.Blocks[1].Networks.SelectMany(n => n.Instructions).Select(AwlText).ToList();
 
-        all.Should().Contain("LDB= VB7928, 5").And.NotContain(i => i.StartsWith("AW<", StringComparison.Ordinal));
+        all.Should().Contain("LDB= VB7908, 5").And.NotContain(i => i.StartsWith("AW< ", StringComparison.Ordinal));
     }
 
     [Fact]

@@ -1,0 +1,45 @@
+using System.Globalization;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Simulator.Stl;
+using OperatorPanel.Simulator.Stl.Freeport;
+using OperatorPanel.StlGen.Handler;
+using OperatorPanel.StlGen.Options;
+using OperatorPanel.StlGen.Tests.Golden;
+
+namespace OperatorPanel.StlGen.Tests.Handler;
+
+/// <summary>
+/// The handler run in the interpreter at the StlTiming figures keeps what the technician notes promise
+/// (SlicePart's bounds): no interrupt routine longer than 0.3 ms (the limit is 10 ms), at most 10 ms added
+/// to a scan while serving, 0.3 ms without a request, and 3 to 30 scans per reply, for every worst-case request.
+/// </summary>
+public sealed class HandlerCostTests
+{
+    public static TheoryData<string> Configurations => ["Cpu224_Port0_9600_2", "Cpu226_Port1_19200_17", "Cpu221Early_Port0_9600_1", "Cpu226AllWritable_115200"];
+
+    [Theory]
+    [MemberData(nameof(Configurations))]
+    public void WorstCaseRequests_StayWithinTheBoundsTheNotesGive(string name)
+    {
+        var options = name == "Cpu226AllWritable_115200"
+            ? new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu226), Port = 1, BaudRate = 115200, Station = 5, WriteMask = 0x3C }
+            : HandlerGoldenTests.OptionsFor(name);
+        var generated = HandlerGenerator.Generate(options);
+        var stats = generated.Stats!;
+        var dataStart = stats.FirstVByte >= HandlerMeasurement.DataBytes ? 0 : stats.LastVByte + 1;
+
+        HandlerMeasurement.TryMeasure(
+            generated.AwlText, options.Cpu, options.Port, new Station(options.Station),
+            new LineSettings(options.BaudRate, options.Parity, options.DataBits), dataStart, out var measured, out var error).Should().BeTrue(error);
+
+        var idle = measured.Single(m => m.Name == HandlerMeasurement.IdleName);
+        var requests = measured.Where(m => m != idle).ToList();
+        requests.Should().HaveCount(8).And.OnlyContain(m => m.WorstInterrupt <= Ms(SlicePart.InterruptBoundMs) && m.WorstScan <= Ms(SlicePart.ScanBoundMs));
+        requests.Where(m => m.ReplyChars > 0).Should().OnlyContain(m => m.Scans >= SlicePart.FewestScans && m.Scans <= SlicePart.MostScans);
+        idle.WorstScan.Should().BeLessThan(Ms(SlicePart.IdleScanBoundMs));
+        requests.Single(m => m.Name.StartsWith("READ 20", StringComparison.Ordinal)).Scans.Should().BeGreaterThan(SlicePart.MostScans / 2, "the bound is near what a 20-item READ takes");
+    }
+
+    private static TimeSpan Ms(string text) => TimeSpan.FromMilliseconds(double.Parse(text, CultureInfo.InvariantCulture));
+}

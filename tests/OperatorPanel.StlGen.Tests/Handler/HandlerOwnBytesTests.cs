@@ -1,0 +1,86 @@
+using System.Collections.Immutable;
+using System.Text;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Simulator.Reference;
+using OperatorPanel.StlGen.Handler;
+using OperatorPanel.StlGen.Options;
+using OperatorPanel.StlGen.Tests.Differential;
+
+namespace OperatorPanel.StlGen.Tests.Handler;
+
+/// <summary>
+/// The handler's own V bytes (buffer and work bytes, docs/protocol.md "Work bytes") are refused to WRITE and WRITE
+/// BIT with error 03 by the generated STL and by the reference model alike, and the station keeps answering.
+/// </summary>
+public sealed class HandlerOwnBytesTests
+{
+    private static readonly HandlerOptions Options = new() { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 };
+
+    /// <summary>
+    /// Buffer byte 0 (count) and 1 ('&lt;'); byte 11, the WRITE's own LENGTH: before the check, writing FF there made the
+    /// read-back HTA 510 characters past the buffer and the CPU stopped on the indirect address (silent until restarted);
+    /// the stored-list tail, LAST_FREE, STEP and the last saved accumulator byte.
+    /// </summary>
+    public static TheoryData<int> HandlerOffsets => [0, 1, 11, 200, 255, HandlerLayout.LastFree, HandlerLayout.Step, HandlerLayout.Save + 15];
+
+    [Theory]
+    [MemberData(nameof(HandlerOffsets))]
+    public void Write_IntoTheHandlersOwnBytes_IsRefusedWithError03AndTheStationStillAnswers(int offset)
+    {
+        var harness = new DifferentialHarness(Options, new Random(9));
+        var at = Options.EffectiveBufferStart + offset;
+
+        var write = Send(harness, new WriteBlockRequest(new Station(2), 1, ProtocolArea.V, at, [0xFF]));
+        var bit = Send(harness, new WriteBitRequest(new Station(2), 2, ProtocolArea.V, at, 0, false));
+        var identify = Send(harness, new IdentifyRequest(new Station(2), 3));
+
+        write.Stl.Should().Be(write.Reference).And.Be(ErrorReply(1, CommandCode.Write));
+        bit.Stl.Should().Be(bit.Reference).And.Be(ErrorReply(2, CommandCode.WriteBit));
+        identify.Stl.Should().StartWith("<020381").And.Be(identify.Reference);
+    }
+
+    [Fact]
+    public void Write_BlockReachingIntoTheBuffer_IsRefusedWhole()
+    {
+        var harness = new DifferentialHarness(Options, new Random(9));
+        harness.Poke(ProtocolArea.V, Options.EffectiveBufferStart - 2, 0xAA);
+
+        var write = Send(harness, new WriteBlockRequest(new Station(2), 1, ProtocolArea.V, Options.EffectiveBufferStart - 2, [1, 2, 3]));
+
+        write.Stl.Should().Be(write.Reference).And.Be(ErrorReply(1, CommandCode.Write));
+        harness.Interpreted(ProtocolArea.V)[Options.EffectiveBufferStart - 2].Should().Be(0xAA, "nothing of a refused block is written");
+    }
+
+    [Fact]
+    public void Write_EndingJustBeforeTheBuffer_IsConfirmed()
+    {
+        var harness = new DifferentialHarness(Options, new Random(9));
+
+        var write = Send(harness, new WriteBlockRequest(new Station(2), 1, ProtocolArea.V, Options.EffectiveBufferStart - 2, [0x12, 0x34]));
+
+        write.Stl.Should().Be(write.Reference).And.StartWith("<02018300");
+    }
+
+    [Theory]
+    [InlineData(CpuModel.Cpu221)]
+    [InlineData(CpuModel.Cpu222)]
+    [InlineData(CpuModel.Cpu224)]
+    [InlineData(CpuModel.Cpu224XP)]
+    [InlineData(CpuModel.Cpu226)]
+    public void ReferenceModel_DefaultHandlerBytes_AreWhereTheGeneratorPutsThem(CpuModel model)
+    {
+        var cpu = CpuProfiles.For(model);
+        var config = new HandlerConfig(new Station(1), cpu);
+        var stats = HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu }).Stats!;
+
+        (config.BufferStart, config.BufferStart + HandlerConfig.HandlerVBytes - 1).Should().Be((stats.FirstVByte, stats.LastVByte));
+    }
+
+    private static (string Stl, string Reference) Send(DifferentialHarness harness, PlcRequest request) =>
+        harness.Exchange([WireChunk.Now(RequestCodec.Encode(request))]);
+
+    private static string ErrorReply(byte sequence, CommandCode command) =>
+        Encoding.ASCII.GetString(FrameCodec.Encode(new FreeportFrame(2, sequence, (byte)((byte)command | FreeportFrame.ReplyBit), ImmutableArray.Create((byte)ProtocolError.NotWritable))));
+}
