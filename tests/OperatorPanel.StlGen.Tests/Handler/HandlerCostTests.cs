@@ -1,4 +1,5 @@
 using System.Globalization;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Simulator.Stl;

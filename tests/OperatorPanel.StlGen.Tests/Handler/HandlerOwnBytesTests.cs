@@ -1,5 +1,6 @@
 using System.Collections.Immutable;
 using System.Text;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
