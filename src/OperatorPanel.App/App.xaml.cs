@@ -36,8 +36,10 @@ public partial class App : Application
         _services = Compose();
         var shell = _services.GetRequiredService<ShellViewModel>();
         _services.GetRequiredService<DockingViewModel>().Load();
+        _services.GetRequiredService<LiveValueWitness>();
         var window = _services.GetRequiredService<MainWindow>();
         MainWindow = window;
+        window.Closed += OnMainWindowClosed;
         window.Show();
         Log.Information("Operator Panel started");
 
@@ -54,15 +56,25 @@ public partial class App : Application
 
     protected override void OnExit(ExitEventArgs e)
     {
-        if (_services is not null)
-        {
-            _services.GetRequiredService<PanelOptionsStore>().Save(_services.GetRequiredService<PanelOptions>());
-            _services.Dispose();
-        }
-
         Log.Information("Operator Panel closed");
         Log.CloseAndFlush();
         base.OnExit(e);
+    }
+
+    /// <summary>
+    /// The shell has closed (its line is disconnected): options are saved and the services disposed while the dispatcher
+    /// still runs, because the session is only asynchronously disposable; then the application ends (explicit shutdown).
+    /// </summary>
+    private async void OnMainWindowClosed(object? sender, EventArgs e)
+    {
+        if (_services is { } services)
+        {
+            _services = null;
+            services.GetRequiredService<PanelOptionsStore>().Save(services.GetRequiredService<PanelOptions>());
+            await services.DisposeAsync();
+        }
+
+        Shutdown();
     }
 
     private ServiceProvider Compose()
@@ -100,6 +112,7 @@ public partial class App : Application
             sp.GetRequiredService<ShellServices>(),
             TimeProvider.System,
             sp.GetRequiredService<ILogger>()));
+        services.AddSingleton(sp => new LiveValueWitness(sp.GetRequiredService<ShellViewModel>().Memory, Dispatcher, sp.GetRequiredService<ILogger>()));
         services.AddSingleton<MainWindow>();
         return services.BuildServiceProvider();
     }
@@ -108,7 +121,16 @@ public partial class App : Application
     private void OnUnhandled(object sender, DispatcherUnhandledExceptionEventArgs e)
     {
         Log.Error(e.Exception, "Unhandled error in the panel");
-        MessageBox.Show(MainWindow, e.Exception.Message, "Operator Panel: unexpected error", MessageBoxButton.OK, MessageBoxImage.Error);
+        const string Caption = "Operator Panel: unexpected error";
+        if (MainWindow is { IsLoaded: true } owner)
+        {
+            MessageBox.Show(owner, e.Exception.Message, Caption, MessageBoxButton.OK, MessageBoxImage.Error);
+        }
+        else
+        {
+            MessageBox.Show(e.Exception.Message, Caption, MessageBoxButton.OK, MessageBoxImage.Error);
+        }
+
         e.Handled = true;
     }
 }
