@@ -41,12 +41,16 @@ public partial class App : Application
         MainWindow = window;
         window.Closed += OnMainWindowClosed;
         window.Show();
-        Log.Information("Operator Panel started");
+        Log.Information("Operator Panel {Version} started", typeof(App).Assembly.GetName().Version);
 
         var project = e.Args.FirstOrDefault(a => !a.StartsWith("--", StringComparison.Ordinal));
         if (project is not null)
         {
-            await shell.OpenFileAsync(project);
+            // A double-clicked .opproj arrives here (the installer's open verb passes its path); the log says what became of it.
+            if (await shell.OpenFileAsync(project))
+            {
+                Log.Information("Opened {Path} from the command line: {Project}", project, shell.ProjectName);
+            }
         }
         else if (e.Args.Contains("--demo") || SerialPortDiscovery.List().Count == 0)
         {
