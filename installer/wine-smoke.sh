@@ -191,6 +191,7 @@ grep -aq 'OperatorPanel.exe' "$shortcut" || fail "the Start-menu shortcut does n
 # ---- run the installed panel ---------------------------------------------------------------------------------------
 log_has() { grep -qsF "$1" "$logs"/*.log; }
 log_count() { cat "$logs"/*.log 2>/dev/null | grep -cF "$1" || true; }
+log_count_above() { [ "$(log_count "$1")" -gt "$2" ]; }
 app_alive() { [ -n "$app_pid" ] && kill -0 "$app_pid" 2>/dev/null; }
 screenshot() { /usr/bin/import -display "$DISPLAY" -window root "$1"; }
 colours() { /usr/bin/convert "$1" -format %k info:; }
@@ -201,7 +202,7 @@ close_panel() {
   closed_before=$(log_count "Operator Panel closed")
   # WM_CLOSE to the panel's windows, as the window's close button sends: the panel shuts down the way a user closes it.
   w 30 taskkill /im OperatorPanel.exe >/dev/null || fail "taskkill could not reach the panel"
-  wait_for 90 test "$(log_count "Operator Panel closed")" -gt "$closed_before" || fail "the panel did not close within 90 s"
+  wait_for 90 log_count_above "Operator Panel closed" "$closed_before" || fail "the panel did not close within 90 s"
   settle
 }
 
