@@ -60,7 +60,7 @@ public partial class MainWindow : Window
             Docking.CloseFloatingWindows();
             // Closed again after this Closing has returned: when the shell answers at once (no line to disconnect), the
             // await does not yield and WPF refuses Close() from inside Closing.
-            Dispatcher.InvokeAsync(Close);
+            _ = Dispatcher.InvokeAsync(Close);
         }
     }
 
