@@ -263,7 +263,9 @@ next_code=$(msi_property "$next_msi" ProductCode)
 
 begin "refuse the downgrade to $version"
 if msiexec downgrade.log /i "$(winepath -w "$msi")"; then fail "msiexec installed $version over $next"; fi
-grep -aq "A newer version of Operator Panel is already installed" "$work/downgrade.log" || fail "the refusal is not the downgrade message (log: downgrade.log)"
+# The reason: MajorUpgrade's downgrade detection (Wine's msi logs the property, not the condition's message text).
+grep -aq "WIX_DOWNGRADE_DETECTED = {" "$work/downgrade.log" || fail "msiexec refused $version, but not as a downgrade (log: downgrade.log)"
+[ "$(strings -el "$pf/OperatorPanel.dll" | grep -cx "$next.0")" -gt 0 ] || fail "the refused downgrade changed the installed files"
 [ "$(reg_value "$(uninstall_key "$next_code")" DisplayVersion)" = "$next" ] || fail "$next is no longer installed after the refused downgrade"
 
 begin "uninstall"
