@@ -37,15 +37,21 @@ public partial class App : Application
         _services = Compose();
         var shell = _services.GetRequiredService<ShellViewModel>();
         _services.GetRequiredService<DockingViewModel>().Load();
+        _services.GetRequiredService<LiveValueWitness>();
         var window = _services.GetRequiredService<MainWindow>();
         MainWindow = window;
+        window.Closed += OnMainWindowClosed;
         window.Show();
-        Log.Information("Operator Panel started");
+        Log.Information("Operator Panel {Version} started", typeof(App).Assembly.GetName().Version);
 
         var project = e.Args.FirstOrDefault(a => !a.StartsWith("--", StringComparison.Ordinal));
         if (project is not null)
         {
-            await shell.OpenFileAsync(project);
+            // A double-clicked .opproj arrives here (the installer's open verb passes its path); the log says what became of it.
+            if (await shell.OpenFileAsync(project))
+            {
+                Log.Information("Opened {Path} from the command line: {Project}", project, shell.ProjectName);
+            }
         }
         else if (e.Args.Contains("--demo") || SerialPortDiscovery.List().Count == 0)
         {
@@ -55,15 +61,25 @@ public partial class App : Application
 
     protected override void OnExit(ExitEventArgs e)
     {
-        if (_services is not null)
-        {
-            _services.GetRequiredService<PanelOptionsStore>().Save(_services.GetRequiredService<PanelOptions>());
-            _services.Dispose();
-        }
-
         Log.Information("Operator Panel closed");
         Log.CloseAndFlush();
         base.OnExit(e);
+    }
+
+    /// <summary>
+    /// The shell has closed (its line is disconnected): options are saved and the services disposed while the dispatcher
+    /// still runs, because the session is only asynchronously disposable; then the application ends (explicit shutdown).
+    /// </summary>
+    private async void OnMainWindowClosed(object? sender, EventArgs e)
+    {
+        if (_services is { } services)
+        {
+            _services = null;
+            services.GetRequiredService<PanelOptionsStore>().Save(services.GetRequiredService<PanelOptions>());
+            await services.DisposeAsync();
+        }
+
+        Shutdown();
     }
 
     private ServiceProvider Compose()
@@ -101,6 +117,7 @@ public partial class App : Application
             sp.GetRequiredService<ShellServices>(),
             TimeProvider.System,
             sp.GetRequiredService<ILogger>()));
+        services.AddSingleton(sp => new LiveValueWitness(sp.GetRequiredService<ShellViewModel>().Memory, Dispatcher, sp.GetRequiredService<ILogger>()));
         services.AddSingleton<MainWindow>();
         return services.BuildServiceProvider();
     }
@@ -109,7 +126,16 @@ public partial class App : Application
     private void OnUnhandled(object sender, DispatcherUnhandledExceptionEventArgs e)
     {
         Log.Error(e.Exception, "Unhandled error in the panel");
-        MessageBox.Show(MainWindow, e.Exception.Message, "Operator Panel: unexpected error", MessageBoxButton.OK, MessageBoxImage.Error);
+        const string Caption = "Operator Panel: unexpected error";
+        if (MainWindow is { IsLoaded: true } owner)
+        {
+            MessageBox.Show(owner, e.Exception.Message, Caption, MessageBoxButton.OK, MessageBoxImage.Error);
+        }
+        else
+        {
+            MessageBox.Show(e.Exception.Message, Caption, MessageBoxButton.OK, MessageBoxImage.Error);
+        }
+
         e.Handled = true;
     }
 }

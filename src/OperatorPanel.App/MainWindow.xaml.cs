@@ -58,7 +58,9 @@ public partial class MainWindow : Window
             _closeConfirmed = true;
             _docking.Save();
             Docking.CloseFloatingWindows();
-            Close();
+            // Closed again after this Closing has returned: when the shell answers at once (no line to disconnect), the
+            // await does not yield and WPF refuses Close() from inside Closing.
+            _ = Dispatcher.InvokeAsync(Close);
         }
     }
 

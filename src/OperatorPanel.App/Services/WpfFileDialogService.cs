@@ -1,4 +1,3 @@
-using System.IO;
 using Microsoft.Win32;
 using OperatorPanel.ViewModels.Services;
 
@@ -19,13 +18,9 @@ public sealed class WpfFileDialogService : IFileDialogService
         return dialog.ShowDialog() == true ? dialog.FileName : null;
     }
 
-    /// <summary>
-    /// A folder through the save dialog (the operator picks where the first file goes): the folder dialog of newer WPF
-    /// versions is not in the reference assemblies the compile check uses, and this works on every Windows.
-    /// </summary>
     public string? PickFolder(string title)
     {
-        var dialog = new SaveFileDialog { Title = title, FileName = "Save here", Filter = "Folder|*.folder", OverwritePrompt = false, CheckPathExists = true };
-        return dialog.ShowDialog() == true ? Path.GetDirectoryName(dialog.FileName) : null;
+        var dialog = new OpenFolderDialog { Title = title };
+        return dialog.ShowDialog() == true ? dialog.FolderName : null;
     }
 }

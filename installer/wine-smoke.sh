@@ -1,0 +1,283 @@
+#!/usr/bin/env bash
+# The installed panel, end to end, under Wine: installer/wine-smoke.sh [MSI]
+#
+# In a throwaway Wine prefix under Xvfb: installs the MSI silently (building it with build.sh when none is given),
+# checks the installed files, registry, shortcut and file association, starts the installed panel with --demo and
+# waits until its log says it showed a live value change, screenshots it, closes it, opens a project the way a
+# double-click does (ShellExecute through the .opproj association), upgrades to a build with a higher version, checks
+# that the older MSI is then refused, uninstalls, and checks that nothing of the panel is left while the user's
+# project and logs are. Screenshots and logs go to artifacts/wine-smoke/. Exits non-zero naming the failed step.
+#
+# Test-environment settings, never shipped: a font named "Arial" (Liberation Sans renamed; WPF fails fast without
+# one, dotnet/wpf#4464), DOTNET_EnableWriteXorExecute=0 (Wine 8 otherwise crashes the CLR within ~25 s), WPF's
+# software renderer (Xvfb has no GPU), no crash debugger and no desktop-menu builder.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+started=$(date +%s)
+step="setup"
+art="$root/artifacts/wine-smoke"
+work=""
+xvfb_pid=""
+app_pid=""
+logs=""
+
+say() { echo "== [$(($(date +%s) - started)) s] $*"; }
+begin() { step=$1; say "$1"; }
+fail() {
+  echo "wine-smoke.sh: FAILED at step '$step': $*" >&2
+  exit 1
+}
+trap 'fail "command failed (exit $?): $BASH_COMMAND"' ERR
+
+# Bounded wait: until COMMAND succeeds, at most SECONDS seconds, polling every second.
+wait_for() {
+  local seconds=$1
+  shift
+  local deadline=$(($(date +%s) + seconds))
+  until "$@"; do
+    [ "$(date +%s)" -lt "$deadline" ] || return 1
+    sleep 1
+  done
+}
+
+# ---- tools -------------------------------------------------------------------------------------------------------
+need_install=""
+for tool in wine Xvfb xdotool msiinfo wixl /usr/bin/import /usr/bin/convert; do
+  command -v "$tool" >/dev/null 2>&1 || need_install=yes
+done
+/usr/bin/python3 -c 'import fontTools' 2>/dev/null || need_install=yes
+[ -f /usr/share/fonts/truetype/liberation2/LiberationSans-Regular.ttf ] || need_install=yes
+if [ -n "$need_install" ]; then
+  begin "install Wine, Xvfb and helpers"
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  $SUDO apt-get update -qq
+  $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq -o DPkg::Lock::Timeout=600 --no-install-recommends \
+    wine wine64 xvfb fonts-liberation2 python3-fonttools imagemagick xdotool msitools wixl >/dev/null
+fi
+
+# ---- the two MSIs (before any Wine setting touches HOME) -------------------------------------------------------
+msi=${1:-}
+if [ -z "$msi" ]; then
+  begin "build the MSI"
+  bash installer/build.sh
+  version=$(sed -n 's|.*<Version>\(.*\)</Version>.*|\1|p' Directory.Build.props | head -n 1)
+  msi="$root/artifacts/installer/OperatorPanel-$version-x64.msi"
+fi
+[ -f "$msi" ] || fail "no MSI at '$msi'"
+msi=$(cd "$(dirname "$msi")" && pwd)/$(basename "$msi")
+msi_property() { msiinfo export "$1" Property | tr -d '\r' | awk -F '\t' -v p="$2" '$1 == p { print $2 }'; }
+msi_files() { msiinfo export "$1" File | tail -n +4 | wc -l; }
+version=$(msi_property "$msi" ProductVersion)
+product_code=$(msi_property "$msi" ProductCode)
+IFS=. read -r major minor patch <<<"$version"
+next="$major.$minor.$((patch + 1))"
+
+rm -rf "$art"
+mkdir -p "$art"
+work=$(mktemp -d /tmp/opanel-wine-smoke.XXXXXX)
+
+cleanup() {
+  local status=$?
+  trap - ERR
+  if [ -n "$work" ] && [ -d "$work/prefix" ]; then
+    cp "$work"/*.log "$art/" 2>/dev/null || true
+    [ -z "$logs" ] || cp "$logs"/*.log "$art/" 2>/dev/null || true
+    # Everything this script started in its own prefix, ended by that prefix's server; then the PIDs it started.
+    timeout 30 wineserver -k 2>/dev/null || true
+  fi
+  for pid in $app_pid $xvfb_pid; do
+    kill "$pid" 2>/dev/null || true
+  done
+  [ -n "$work" ] && rm -rf "$work"
+  if [ "$status" -eq 0 ]; then
+    echo "wine-smoke.sh: passed in $(($(date +%s) - started)) s; screenshots and logs in $art"
+  else
+    echo "wine-smoke.sh: failed at step '$step' after $(($(date +%s) - started)) s; screenshots and logs in $art" >&2
+  fi
+  exit "$status"
+}
+trap cleanup EXIT
+
+begin "build the upgrade MSI ($next)"
+bash installer/build.sh --version "$next" --out "$work/upgrade"
+next_msi="$work/upgrade/OperatorPanel-$next-x64.msi"
+
+# ---- Xvfb and the prefix -----------------------------------------------------------------------------------------
+begin "start Xvfb"
+display=""
+for n in $(seq 90 150); do
+  if [ ! -e "/tmp/.X11-unix/X$n" ] && [ ! -e "/tmp/.X$n-lock" ]; then display=$n; break; fi
+done
+[ -n "$display" ] || fail "no free X display number in 90-150"
+Xvfb ":$display" -screen 0 1280x800x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
+xvfb_pid=$!
+wait_for 30 test -e "/tmp/.X11-unix/X$display" || fail "Xvfb :$display did not come up ($(cat "$work/xvfb.log"))"
+
+export DISPLAY=":$display" WINEPREFIX="$work/prefix" WINEARCH=win64 WINEDEBUG=-all HOME="$work/home"
+export DOTNET_EnableWriteXorExecute=0
+# No crash debugger (it would hold a crashed panel open) and no desktop entries written outside the prefix.
+export WINEDLLOVERRIDES="winedbg.exe=d;winemenubuilder.exe=d"
+mkdir -p "$HOME"
+w() { timeout "$1" wine "${@:2}"; }
+settle() { timeout 60 wineserver -w || fail "Wine did not settle within 60 s"; }
+
+begin "create the Wine prefix"
+# mscoree/mshtml off for the first boot only: no offer to download Wine Mono or Gecko (the panel brings its own .NET).
+WINEDLLOVERRIDES="$WINEDLLOVERRIDES;mscoree,mshtml=" timeout 300 wineboot -i >"$work/wineboot.log" 2>&1 || fail "wineboot failed ($(tail -3 "$work/wineboot.log"))"
+settle
+profile=$(w 60 cmd /c 'echo %USERPROFILE%' | tr -d '\r')
+profile_unix=$(winepath -u "$profile")
+logs="$profile_unix/AppData/Local/OperatorPanel/logs"
+pf="$WINEPREFIX/drive_c/Program Files/Operator Panel"
+
+begin "test fonts and settings in the prefix"
+fonts="$WINEPREFIX/drive_c/windows/Fonts"
+liberation=/usr/share/fonts/truetype/liberation2
+{
+  printf 'REGEDIT4\r\n\r\n[HKEY_LOCAL_MACHINE\\Software\\Microsoft\\Windows NT\\CurrentVersion\\Fonts]\r\n'
+  for entry in Regular:arial Bold:arialbd Italic:ariali BoldItalic:arialbi; do
+    style=${entry%%:*}
+    file=${entry##*:}
+    full=$(/usr/bin/python3 installer/wine-test-font.py "$liberation/LiberationSans-$style.ttf" "$fonts/$file.ttf" Arial "${style/BoldItalic/Bold Italic}")
+    printf '"%s (TrueType)"="%s.ttf"\r\n' "$full" "$file"
+  done
+  printf '\r\n[HKEY_CURRENT_USER\\Software\\Microsoft\\Avalon.Graphics]\r\n"DisableHWAcceleration"=dword:00000001\r\n'
+  printf '\r\n[-HKEY_LOCAL_MACHINE\\Software\\Microsoft\\Windows NT\\CurrentVersion\\AeDebug]\r\n'
+} >"$work/test-settings.reg"
+w 60 regedit /S "$(winepath -w "$work/test-settings.reg")"
+settle
+w 30 reg query 'HKLM\Software\Microsoft\Windows NT\CurrentVersion\Fonts' /v 'Arial (TrueType)' >/dev/null || fail "the test font is not registered"
+
+# ---- install -----------------------------------------------------------------------------------------------------
+msiexec() {
+  local log=$1
+  shift
+  local rc=0
+  timeout 600 wine msiexec "$@" /qn /l*v "$(winepath -w "$work")\\$log" || rc=$?
+  settle
+  return $rc
+}
+# One value of a registry key ($2 empty: the default value); empty when there is none.
+reg_value() {
+  local which=(/ve)
+  [ -z "${2:-}" ] || which=(/v "$2")
+  { w 30 reg query "$1" "${which[@]}" 2>/dev/null || true; } | tr -d '\r' | awk -F '    ' 'NF >= 4 { print $4 }' | head -n 1
+}
+uninstall_key() { echo "HKLM\\Software\\Microsoft\\Windows\\CurrentVersion\\Uninstall\\$1"; }
+start_menu_link() { sed -n 's/^Property(S): ProgramMenuFolder = \(.*\)$/\1/p' "$work/$1" | tr -d '\r' | head -n 1; }
+
+begin "install $version silently"
+msiexec install.log /i "$(winepath -w "$msi")" || fail "msiexec /i exited $? (log: install.log)"
+
+begin "check the installed files"
+[ -f "$pf/OperatorPanel.exe" ] || fail "no OperatorPanel.exe in $pf"
+[ -f "$pf/samples/bottling-line.opproj" ] || fail "the demo sample project is missing"
+installed=$(find "$pf" -type f | wc -l)
+[ "$installed" -eq "$(msi_files "$msi")" ] || fail "$installed files installed, the MSI holds $(msi_files "$msi")"
+
+begin "check registry, shortcut and association"
+[ "$(reg_value "$(uninstall_key "$product_code")" DisplayVersion)" = "$version" ] ||
+  fail "no per-machine Add/Remove Programs entry for $version under $(uninstall_key "$product_code")"
+[ "$(reg_value 'HKLM\Software\Classes\.opproj')" = "OperatorPanel.Project" ] || fail ".opproj is not associated with OperatorPanel.Project (per machine)"
+open_command=$(reg_value 'HKCR\OperatorPanel.Project\shell\open\command')
+[ "$open_command" = '"C:\Program Files\Operator Panel\OperatorPanel.exe" "%1"' ] || fail "open command is '$open_command'"
+menu=$(winepath -u "$(start_menu_link install.log)")
+shortcut="$menu/Operator Panel.lnk"
+[ -f "$shortcut" ] || fail "no Start-menu shortcut at $shortcut"
+grep -aq 'OperatorPanel.exe' "$shortcut" || fail "the Start-menu shortcut does not point at OperatorPanel.exe"
+
+# ---- run the installed panel ---------------------------------------------------------------------------------------
+log_has() { grep -qsF "$1" "$logs"/*.log; }
+log_count() { cat "$logs"/*.log 2>/dev/null | grep -cF "$1" || true; }
+log_count_above() { [ "$(log_count "$1")" -gt "$2" ]; }
+app_alive() { [ -n "$app_pid" ] && kill -0 "$app_pid" 2>/dev/null; }
+screenshot() { /usr/bin/import -display "$DISPLAY" -window root "$1"; }
+colours() { /usr/bin/convert "$1" -format %k info:; }
+# A panel window is up when Wine has mapped a top-level window whose title names the panel.
+window_titled() { xdotool search --onlyvisible --name "$1" >/dev/null 2>&1; }
+close_panel() {
+  local closed_before
+  closed_before=$(log_count "Operator Panel closed")
+  # WM_CLOSE to the panel's windows, as the window's close button sends: the panel shuts down the way a user closes it.
+  w 30 taskkill /im OperatorPanel.exe >/dev/null || fail "taskkill could not reach the panel"
+  wait_for 90 log_count_above "Operator Panel closed" "$closed_before" || fail "the panel did not close within 90 s"
+  settle
+}
+
+begin "start the installed panel with --demo"
+wine 'C:\Program Files\Operator Panel\OperatorPanel.exe' --demo >"$work/panel-demo.out" 2>&1 &
+app_pid=$!
+wait_for 180 log_has "Operator Panel $version.0 started" || fail "no start in the log within 180 s ($(tail -5 "$work/panel-demo.out"))"
+
+begin "wait for live values"
+wait_for 240 log_has "Live values shown" || fail "the panel showed no changing value within 240 s (app alive: $(app_alive && echo yes || echo no); $(tail -5 "$work/panel-demo.out"))"
+grep -h -m 1 -F "Live values shown" "$logs"/*.log
+
+begin "screenshot the live demo"
+# The log line is written on the UI thread; the picture reaches the X server later. Take pictures until three in a row
+# differ from one another (the values are moving on screen), at most 90 s; the last one is kept.
+shot="$art/panel-demo.png"
+screenshot "$work/a.png"
+changes=0
+for _ in $(seq 1 30); do
+  sleep 3
+  screenshot "$work/b.png"
+  if cmp -s "$work/a.png" "$work/b.png"; then changes=0; else changes=$((changes + 1)); fi
+  mv "$work/b.png" "$work/a.png"
+  [ "$changes" -lt 2 ] || break
+done
+cp "$work/a.png" "$shot"
+[ "$changes" -ge 2 ] || fail "the screen did not change for 90 s after the log showed live values (see $shot)"
+[ "$(colours "$shot")" -gt 100 ] || fail "the screenshot is nearly blank ($(colours "$shot") colours)"
+window_titled 'Bottling line 1 \(demo\) - Operator Panel' || fail "no window titled 'Bottling line 1 (demo) - Operator Panel'"
+
+begin "close the panel"
+close_panel
+wait_for 30 bash -c "! kill -0 $app_pid 2>/dev/null" || fail "the panel process $app_pid is still running after its log said closed"
+app_pid=""
+
+begin "open a project the way a double-click does"
+project_unix="$profile_unix/Documents/Smoke line.opproj"
+mkdir -p "$(dirname "$project_unix")"
+sed 's/"name": "Bottling line 1"/"name": "Smoke line"/' samples/bottling-line.opproj >"$project_unix"
+project_win=$(winepath -w "$project_unix")
+# start.exe opens a document through ShellExecute: the .opproj association and its open verb, as Explorer does.
+wine start /unix "$project_unix" >"$work/panel-project.out" 2>&1 &
+app_pid=$!
+wait_for 180 log_has "Opened $project_win from the command line: Smoke line" || fail "the log does not say the panel opened $project_win ($(tail -5 "$work/panel-project.out"))"
+wait_for 60 window_titled "Smoke line - Operator Panel" || fail "no window titled 'Smoke line - Operator Panel'"
+sleep 5
+screenshot "$art/panel-project.png"
+close_panel
+app_pid=""
+
+begin "upgrade to $next"
+msiexec upgrade.log /i "$(winepath -w "$next_msi")" || fail "msiexec /i $next exited $? (log: upgrade.log)"
+next_code=$(msi_property "$next_msi" ProductCode)
+[ "$(reg_value "$(uninstall_key "$next_code")" DisplayVersion)" = "$next" ] || fail "Add/Remove Programs does not list $next"
+! w 30 reg query "$(uninstall_key "$product_code")" >/dev/null 2>&1 || fail "$version is still registered beside $next"
+[ "$(strings -el "$pf/OperatorPanel.dll" | grep -cx "$next.0")" -gt 0 ] || fail "the installed OperatorPanel.dll's file version is not $next.0"
+[ "$(find "$pf" -type f | wc -l)" -eq "$(msi_files "$next_msi")" ] || fail "file count after the upgrade differs from the $next MSI"
+
+begin "refuse the downgrade to $version"
+if msiexec downgrade.log /i "$(winepath -w "$msi")"; then fail "msiexec installed $version over $next"; fi
+# The reason: MajorUpgrade's downgrade detection (Wine's msi logs the property, not the condition's message text).
+grep -aq "WIX_DOWNGRADE_DETECTED = {" "$work/downgrade.log" || fail "msiexec refused $version, but not as a downgrade (log: downgrade.log)"
+[ "$(strings -el "$pf/OperatorPanel.dll" | grep -cx "$next.0")" -gt 0 ] || fail "the refused downgrade changed the installed files"
+[ "$(reg_value "$(uninstall_key "$next_code")" DisplayVersion)" = "$next" ] || fail "$next is no longer installed after the refused downgrade"
+
+begin "uninstall"
+msiexec uninstall.log /x "$(winepath -w "$next_msi")" || fail "msiexec /x exited $? (log: uninstall.log)"
+
+begin "check that nothing is left but the user's files"
+[ ! -e "$pf" ] || fail "$pf is still there: $(find "$pf" | head -5)"
+[ ! -e "$shortcut" ] || fail "the Start-menu shortcut is still there"
+! w 30 reg query 'HKCR\.opproj' >/dev/null 2>&1 || fail ".opproj is still associated"
+! w 30 reg query 'HKCR\OperatorPanel.Project' >/dev/null 2>&1 || fail "the OperatorPanel.Project class is still registered"
+! w 30 reg query "$(uninstall_key "$next_code")" >/dev/null 2>&1 || fail "Add/Remove Programs still lists the panel"
+[ -f "$project_unix" ] || fail "the uninstall removed the user's project"
+ls "$logs"/panel-*.log >/dev/null 2>&1 || fail "the uninstall removed the user's logs"
+
+step="done"
