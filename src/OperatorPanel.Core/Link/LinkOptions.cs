@@ -5,7 +5,8 @@ namespace OperatorPanel.Core.Link;
 
 /// <summary>
 /// Timing and retry rules of a <see cref="PlcLink"/>. The reply timeout follows docs/protocol.md, "Timing": request
-/// time + reply delay + scan allowance + reply time + what the medium adds (<see cref="RadioModuleProfile"/>) + margin.
+/// time + reply delay + scan allowance + the handler's scans (<see cref="HandlerTurnaround"/>) x handler scan allowance
+/// + reply time + what the medium adds (<see cref="RadioModuleProfile"/>) + margin.
 /// </summary>
 public sealed record LinkOptions
 {
@@ -38,6 +39,12 @@ public sealed record LinkOptions
     /// <summary>Longest time the PLC may take before it starts serving the request (up to one scan).</summary>
     public TimeSpan ScanAllowance { get; init; } = TimeSpan.FromMilliseconds(100);
 
+    /// <summary>
+    /// Time allowed for each scan the handler takes to serve a request: the user's program plus the handler's slice
+    /// of at most 10 ms. 30 ms covers programs scanning in up to 20 ms (most lines; IDENTIFY reports SMW22-26).
+    /// </summary>
+    public TimeSpan HandlerScanAllowance { get; init; } = TimeSpan.FromMilliseconds(30);
+
     /// <summary>Quiet time on the line between the end of one exchange and the next request.</summary>
     public TimeSpan InterFrameGap { get; init; } = TimeSpan.Zero;
 
@@ -52,6 +59,7 @@ public sealed record LinkOptions
         ArgumentNullException.ThrowIfNull(request);
         var replyChars = 2 + (2 * (FreeportFrame.OverheadBytes + 1 + ResponseCodec.ExpectedDataBytes(request)));
         return (Serial.CharacterTime * (requestChars + replyChars))
-            + ReplyDelay + ScanAllowance + Medium.ExtraFor(Serial, requestChars, replyChars) + Margin;
+            + ReplyDelay + ScanAllowance + (HandlerScanAllowance * HandlerTurnaround.ScansFor(requestChars, replyChars))
+            + Medium.ExtraFor(Serial, requestChars, replyChars) + Margin;
     }
 }

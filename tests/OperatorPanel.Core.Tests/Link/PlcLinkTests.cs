@@ -212,12 +212,12 @@ public sealed class PlcLinkTests
     }
 
     [Theory]
-    [InlineData(LinkKind.Cable, 179.17)]
-    [InlineData(LinkKind.RadioModule, 483.33)]
-    public void ReplyTimeout_Identify9600_IsLineTimePlusDelayScanMediumAndMargin(LinkKind kind, double milliseconds)
+    [InlineData(LinkKind.Cable, 449.17)]
+    [InlineData(LinkKind.RadioModule, 753.33)]
+    public void ReplyTimeout_Identify9600_IsLineTimePlusDelayScansMediumAndMargin(LinkKind kind, double milliseconds)
     {
         // IDENTIFY: 10 request + 42 reply characters, 10 bits each at 9600 baud = 54.17 ms; + 5 ms delay + 100 ms scan
-        // + 20 ms margin; a radio module adds 250 ms and the line time once more.
+        // + 9 handler scans (4 + 1 + 4) x 30 ms + 20 ms margin; a radio module adds 250 ms and the line time once more.
         var options = LinkOptions.For(Some.SerialSettings(9600, kind));
 
         options.ReplyTimeoutFor(new IdentifyRequest(Station2, 1)).TotalMilliseconds.Should().BeApproximately(milliseconds, 0.01);
