@@ -1,5 +1,6 @@
 using System.Globalization;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.StlGen.Options;
 
@@ -68,4 +69,10 @@ internal sealed class HandlerContext
     public static string Hex(int value) => "16#" + value.ToString("X2", CultureInfo.InvariantCulture);
 
     public static string Dec(int value) => value.ToString(CultureInfo.InvariantCulture);
+
+    /// <summary>A command code as the constant the handler compares CMD with, taken from Core's protocol by name.</summary>
+    public static string Dec(CommandCode code) => Dec((byte)code);
+
+    /// <summary>An error code as the two digits docs/protocol.md and the handler's comments use ("04").</summary>
+    public static string Digits(ProtocolError error) => ((byte)error).ToString("D2", CultureInfo.InvariantCulture);
 }
