@@ -60,7 +60,6 @@ public sealed record RadioModuleProfile(
     {
         LinkKind.Cable => Cable,
         LinkKind.RadioModule => RadioModule,
-        _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "unknown link kind"),
     };
 
     /// <summary>

@@ -57,7 +57,7 @@ internal sealed class HandlerContext
     {
         get
         {
-            var parity = Options.Parity switch { Parity.Even => 0b01, Parity.Odd => 0b11, _ => 0b00 };
+            var parity = Options.Parity switch { Parity.Even => 0b01, Parity.Odd => 0b11, Parity.None => 0b00 };
             var sevenBits = Options.DataBits == 7 ? 1 : 0;
             var baud = Options.Cpu.FreeportBaudCode(Options.BaudRate) ?? 0;
             return (parity << 6) | (sevenBits << 5) | (baud << 2) | 0b01;
