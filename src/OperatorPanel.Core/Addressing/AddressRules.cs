@@ -59,7 +59,9 @@ public static class AddressRules
         (MemoryArea.AQ, true) => "analog output word",
         (MemoryArea.I, true) => "input byte",
         (MemoryArea.Q, true) => "output byte",
-        (_, true) => $"{AreaSyntax.Prefix(area)} byte",
-        _ => $"{AreaSyntax.Prefix(area)} memory",
+        (MemoryArea.M or MemoryArea.V or MemoryArea.SM or MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AC or MemoryArea.HC or MemoryArea.L, true) =>
+            $"{AreaSyntax.Prefix(area)} byte",
+        (MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM or MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AC or MemoryArea.HC or MemoryArea.L, false) =>
+            $"{AreaSyntax.Prefix(area)} memory",
     };
 }
