@@ -73,7 +73,6 @@ public partial class MainWindow : Window
             DockPaneId.Memory => new MemoryView(),
             DockPaneId.Alarms => new AlarmsView(),
             DockPaneId.Diagnostics => new DiagnosticsView(),
-            _ => throw new ArgumentOutOfRangeException(nameof(id), id, null),
         };
         view.SetBinding(DataContextProperty, new Binding(id.ToString()) { Source = _shell });
         return view;

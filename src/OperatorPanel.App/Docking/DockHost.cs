@@ -198,7 +198,7 @@ public sealed class DockHost : ContentControl
         {
             DockPlacement.Left => _grid.ColumnDefinitions[0].ActualWidth,
             DockPlacement.Right => _grid.ColumnDefinitions[4].ActualWidth,
-            _ => _grid.RowDefinitions[2].ActualHeight,
+            DockPlacement.Bottom or DockPlacement.Center or DockPlacement.Floating => _grid.RowDefinitions[2].ActualHeight,
         };
         foreach (var tab in _regions[region].Items.Cast<TabItem>())
         {

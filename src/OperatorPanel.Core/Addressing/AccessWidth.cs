@@ -17,7 +17,6 @@ public static class AccessWidthExtensions
         AccessWidth.Bit or AccessWidth.Byte => 1,
         AccessWidth.Word => 2,
         AccessWidth.DoubleWord => 4,
-        _ => throw new ArgumentOutOfRangeException(nameof(width), width, null),
     };
 
     /// <summary>The manual's width letter: B, W or D ("" for a bit).</summary>
@@ -27,6 +26,5 @@ public static class AccessWidthExtensions
         AccessWidth.Byte => "B",
         AccessWidth.Word => "W",
         AccessWidth.DoubleWord => "D",
-        _ => throw new ArgumentOutOfRangeException(nameof(width), width, null),
     };
 }

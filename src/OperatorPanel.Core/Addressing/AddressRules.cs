@@ -33,7 +33,8 @@ public static class AddressRules
         MemoryArea.SM when address.ByteOffset < cpu.ReadOnlySmBytes =>
             new AddressError(AddressErrorKind.NotWritable, $"{address}: SMB0-SMB{cpu.ReadOnlySmBytes - 1} are read-only system status bytes"),
         MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM => null,
-        _ => new AddressError(AddressErrorKind.NotWritable, $"{address}: the panel link writes only Q, M, V and SMB{cpu.ReadOnlySmBytes} and up"),
+        MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AQ or MemoryArea.AC or MemoryArea.HC or MemoryArea.L =>
+            new AddressError(AddressErrorKind.NotWritable, $"{address}: the panel link writes only Q, M, V and SMB{cpu.ReadOnlySmBytes} and up"),
     };
 
     private static string OutOfRangeMessage(PlcAddress address, CpuArea area, CpuProfile cpu)
@@ -58,7 +59,9 @@ public static class AddressRules
         (MemoryArea.AQ, true) => "analog output word",
         (MemoryArea.I, true) => "input byte",
         (MemoryArea.Q, true) => "output byte",
-        (_, true) => $"{AreaSyntax.Prefix(area)} byte",
-        _ => $"{AreaSyntax.Prefix(area)} memory",
+        (MemoryArea.M or MemoryArea.V or MemoryArea.SM or MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AC or MemoryArea.HC or MemoryArea.L, true) =>
+            $"{AreaSyntax.Prefix(area)} byte",
+        (MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM or MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AC or MemoryArea.HC or MemoryArea.L, false) =>
+            $"{AreaSyntax.Prefix(area)} memory",
     };
 }

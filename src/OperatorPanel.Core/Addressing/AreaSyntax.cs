@@ -31,7 +31,7 @@ internal static class AreaSyntax
         MemoryArea.SM => "SM",
         MemoryArea.AI => "AI",
         MemoryArea.AQ => "AQ",
-        _ => area.ToString(),
+        MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AC or MemoryArea.HC or MemoryArea.L => area.ToString(),
     };
 
     /// <summary>Analog areas are words only; every other parsed area takes bits, bytes, words and double words.</summary>

@@ -166,7 +166,7 @@ public readonly partial record struct PlcAddress
         AccessWidth.Byte => "byte",
         AccessWidth.Word => "word",
         AccessWidth.DoubleWord => "double word",
-        _ => throw new ArgumentOutOfRangeException(nameof(width), width, null),
+        AccessWidth.Bit => throw new ArgumentOutOfRangeException(nameof(width), width, null),
     };
 
     private static AddressError Trailing(string input, string rest) =>

@@ -15,7 +15,6 @@ public static class CpuModelNames
         CpuModel.Cpu224 => "224",
         CpuModel.Cpu224XP => "224XP",
         CpuModel.Cpu226 => "226",
-        _ => throw new ArgumentOutOfRangeException(nameof(model), model, null),
     };
 
     public static bool TryParse([NotNullWhen(true)] string? text, out CpuModel model, [NotNullWhen(false)] out string? error)

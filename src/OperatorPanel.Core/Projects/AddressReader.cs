@@ -49,6 +49,6 @@ internal static class AddressReader
         AccessWidth.Bit => "a bit",
         AccessWidth.Byte => "a byte",
         AccessWidth.Word => "a word",
-        _ => "a double word",
+        AccessWidth.DoubleWord => "a double word",
     };
 }

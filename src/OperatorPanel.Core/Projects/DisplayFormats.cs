@@ -10,7 +10,7 @@ public static class DisplayFormats
     {
         DisplayFormat.Bool => width == AccessWidth.Bit,
         DisplayFormat.Float => width == AccessWidth.DoubleWord,
-        _ => width != AccessWidth.Bit,
+        DisplayFormat.Unsigned or DisplayFormat.Signed or DisplayFormat.Hex or DisplayFormat.Binary or DisplayFormat.Ascii => width != AccessWidth.Bit,
     };
 
     /// <summary>The format a tag gets when its file entry names none: Bool for a bit, Unsigned otherwise.</summary>

@@ -14,7 +14,6 @@ internal static class RefreshModeWords
     {
         RefreshMode.Continuous => Continuous,
         RefreshMode.OnDemand => Triggered,
-        _ => throw new ArgumentOutOfRangeException(nameof(mode), mode, null),
     };
 
     public static bool TryParse(string text, out RefreshMode mode)

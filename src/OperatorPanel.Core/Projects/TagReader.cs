@@ -41,6 +41,7 @@ internal static class TagReader
     {
         DisplayFormat.Bool => "bool is for bits",
         DisplayFormat.Float => "float is for double words (VD, MD)",
-        _ => $"{JsonWords.Of(format)} is for bytes, words and double words; use bool for a bit",
+        DisplayFormat.Unsigned or DisplayFormat.Signed or DisplayFormat.Hex or DisplayFormat.Binary or DisplayFormat.Ascii =>
+            $"{JsonWords.Of(format)} is for bytes, words and double words; use bool for a bit",
     };
 }

@@ -26,7 +26,6 @@ public static class HandlerIdentity
         CpuModel.Cpu224 => 3,
         CpuModel.Cpu224XP => 4,
         CpuModel.Cpu226 => 5,
-        _ => throw new ArgumentOutOfRangeException(nameof(model), model, null),
     };
 
     /// <summary>CPU_REVISION: 0 = Early, 1 = Current.</summary>

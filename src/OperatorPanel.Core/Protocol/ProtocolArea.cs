@@ -21,7 +21,6 @@ public static class ProtocolAreaExtensions
         ProtocolArea.M => MemoryArea.M,
         ProtocolArea.V => MemoryArea.V,
         ProtocolArea.SM => MemoryArea.SM,
-        _ => throw new ArgumentOutOfRangeException(nameof(area), area, null),
     };
 
     /// <summary>The wire code of an area the link serves; null for areas the protocol does not carry.</summary>
@@ -32,6 +31,6 @@ public static class ProtocolAreaExtensions
         MemoryArea.M => ProtocolArea.M,
         MemoryArea.V => ProtocolArea.V,
         MemoryArea.SM => ProtocolArea.SM,
-        _ => null,
+        MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AI or MemoryArea.AQ or MemoryArea.AC or MemoryArea.HC or MemoryArea.L => null,
     };
 }

@@ -25,15 +25,18 @@ public static partial class RequestCodec
 
         var station = new Station(frame.Station);
         var p = frame.Payload.AsSpan();
-        error = frame.Command switch
+        var command = (CommandCode)frame.Command;
+
+        // A code off the wire that names no command is error 05; the named ones are switched over by name, so a new
+        // command fails the build here until it is parsed.
+        error = !Enum.IsDefined(command) ? ProtocolError.UnknownCommand : command switch
         {
-            (byte)CommandCode.Identify => ParseIdentify(station, frame, out request),
-            (byte)CommandCode.Read => ParseRead(station, frame, p, target, out request),
-            (byte)CommandCode.Write => ParseWrite(station, frame, p, target, out request),
-            (byte)CommandCode.WriteBit => ParseWriteBit(station, frame, p, target, out request),
-            (byte)CommandCode.DefineList => ParseDefineList(station, frame, p, target, out request),
-            (byte)CommandCode.ReadList => ParseReadList(station, frame, p, out request),
-            _ => ProtocolError.UnknownCommand,
+            CommandCode.Identify => ParseIdentify(station, frame, out request),
+            CommandCode.Read => ParseRead(station, frame, p, target, out request),
+            CommandCode.Write => ParseWrite(station, frame, p, target, out request),
+            CommandCode.WriteBit => ParseWriteBit(station, frame, p, target, out request),
+            CommandCode.DefineList => ParseDefineList(station, frame, p, target, out request),
+            CommandCode.ReadList => ParseReadList(station, frame, p, out request),
         };
         if (error != ProtocolError.None)
         {

@@ -68,14 +68,15 @@ public static class ResponseCodec
             return false;
         }
 
-        response = request switch
+        // By command code, not by request type: a new command fails the build here until its reply is decoded.
+        response = request.Command switch
         {
-            IdentifyRequest => Identify(request, data),
-            ReadRequest => new ReadResponse(request.Station, request.Sequence, [.. data]),
-            WriteBlockRequest => new WriteBlockResponse(request.Station, request.Sequence, [.. data]),
-            DefineListRequest => new DefineListResponse(request.Station, request.Sequence),
-            ReadListRequest => new ReadListResponse(request.Station, request.Sequence, [.. data]),
-            _ => new WriteBitResponse(request.Station, request.Sequence, data[0]),
+            CommandCode.Identify => Identify(request, data),
+            CommandCode.Read => new ReadResponse(request.Station, request.Sequence, [.. data]),
+            CommandCode.Write => new WriteBlockResponse(request.Station, request.Sequence, [.. data]),
+            CommandCode.WriteBit => new WriteBitResponse(request.Station, request.Sequence, data[0]),
+            CommandCode.DefineList => new DefineListResponse(request.Station, request.Sequence),
+            CommandCode.ReadList => new ReadListResponse(request.Station, request.Sequence, [.. data]),
         };
         return true;
     }

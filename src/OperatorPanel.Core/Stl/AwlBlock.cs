@@ -22,7 +22,7 @@ public sealed record AwlBlock(
     {
         AwlBlockKind.OrganizationBlock => $"OB{Number}",
         AwlBlockKind.Subroutine => $"SBR_{Number}",
-        _ => $"INT_{Number}",
+        AwlBlockKind.InterruptRoutine => $"INT_{Number}",
     };
 
     /// <summary>The numeric reference exports write in CALL and ATCH: SBR6, INT0 (OB1 for the main program).</summary>
@@ -30,7 +30,7 @@ public sealed record AwlBlock(
     {
         AwlBlockKind.OrganizationBlock => $"OB{Number}",
         AwlBlockKind.Subroutine => $"SBR{Number}",
-        _ => $"INT{Number}",
+        AwlBlockKind.InterruptRoutine => $"INT{Number}",
     };
 
     public IEnumerable<AwlInstruction> Instructions => Networks.SelectMany(n => n.Instructions);

@@ -76,7 +76,7 @@ public sealed partial record AwlOperand
         {
             MemoryArea.V or MemoryArea.L => holder.Width == AccessWidth.DoubleWord,
             MemoryArea.AC => holder.ByteOffset is >= 1 and <= 3,
-            _ => false,
+            MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.SM or MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AI or MemoryArea.AQ or MemoryArea.HC => false,
         };
         if (!isHolder)
         {

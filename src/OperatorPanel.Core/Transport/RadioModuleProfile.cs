@@ -56,12 +56,14 @@ public sealed record RadioModuleProfile(
         Retries: 3,
         InterFrameGap: TimeSpan.FromMilliseconds(20));
 
-    public static RadioModuleProfile For(LinkKind kind) => kind switch
-    {
-        LinkKind.Cable => Cable,
-        LinkKind.RadioModule => RadioModule,
-        _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "unknown link kind"),
-    };
+    /// <summary>The profile of a link kind; a value outside the named kinds (a bad cast) is refused by name.</summary>
+    public static RadioModuleProfile For(LinkKind kind) => !Enum.IsDefined(kind)
+        ? throw new ArgumentOutOfRangeException(nameof(kind), kind, "unknown link kind")
+        : kind switch
+        {
+            LinkKind.Cable => Cable,
+            LinkKind.RadioModule => RadioModule,
+        };
 
     /// <summary>
     /// What this link adds to the reply timeout of one exchange: the fixed latency plus the extra line time of the

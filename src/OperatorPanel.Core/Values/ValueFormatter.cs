@@ -38,7 +38,6 @@ public static class ValueFormatter
             DisplayFormat.Binary => Binary(raw),
             DisplayFormat.Float => BitConverter.UInt32BitsToSingle(BinaryPrimitives.ReadUInt32BigEndian(raw)).ToString(CultureInfo.InvariantCulture),
             DisplayFormat.Ascii => Ascii(raw),
-            _ => throw new ArgumentOutOfRangeException(nameof(format), format, null),
         };
     }
 

@@ -14,7 +14,7 @@ public static partial class ValueParser
         {
             DisplayFormat.Hex => 16,
             DisplayFormat.Binary => 2,
-            _ => 10,
+            DisplayFormat.Unsigned or DisplayFormat.Signed or DisplayFormat.Bool or DisplayFormat.Float or DisplayFormat.Ascii => 10,
         };
         if (!IntegerText.TryRead(input, defaultRadix, out var number))
         {
@@ -49,18 +49,21 @@ public static partial class ValueParser
         return (ulong)value & range.UnsignedMax;
     }
 
-    private static string Allowed(DisplayFormat format, WidthRange range, bool signed) => format switch
-    {
-        _ when signed => $"{range.SignedText}, the range of a signed {range.Name}",
-        DisplayFormat.Hex => $"{range.HexText}, the range of a {range.Name}",
-        DisplayFormat.Binary => $"{range.BinaryText}, the range of a {range.Name}",
-        _ => $"{range.UnsignedText}, the range of an unsigned {range.Name} (a signed {range.Name} takes {range.SignedText})",
-    };
+    private static string Allowed(DisplayFormat format, WidthRange range, bool signed) => signed
+        ? $"{range.SignedText}, the range of a signed {range.Name}"
+        : format switch
+        {
+            DisplayFormat.Hex => $"{range.HexText}, the range of a {range.Name}",
+            DisplayFormat.Binary => $"{range.BinaryText}, the range of a {range.Name}",
+            DisplayFormat.Unsigned or DisplayFormat.Signed or DisplayFormat.Bool or DisplayFormat.Float or DisplayFormat.Ascii =>
+                $"{range.UnsignedText}, the range of an unsigned {range.Name} (a signed {range.Name} takes {range.SignedText})",
+        };
 
     private static string Notation(DisplayFormat format) => format switch
     {
         DisplayFormat.Hex => "a hexadecimal number; write e.g. 16#FF or 0xFF",
         DisplayFormat.Binary => "a binary number; write e.g. 2#1010 or 2#0000_1010",
-        _ => "a whole number; write e.g. 42, -7, 16#2A or 2#1010",
+        DisplayFormat.Unsigned or DisplayFormat.Signed or DisplayFormat.Bool or DisplayFormat.Float or DisplayFormat.Ascii =>
+            "a whole number; write e.g. 42, -7, 16#2A or 2#1010",
     };
 }

@@ -44,7 +44,7 @@ public static partial class ValueParser
             DisplayFormat.Bool => ParseBit(input, address, out error),
             DisplayFormat.Float => ParseFloat(input, address, out error),
             DisplayFormat.Ascii => ParseAscii(input, address, range, out error),
-            _ => ParseInteger(input, address, format, range, out error),
+            DisplayFormat.Unsigned or DisplayFormat.Signed or DisplayFormat.Hex or DisplayFormat.Binary => ParseInteger(input, address, format, range, out error),
         };
         bytes = parsed ?? default;
         return parsed is not null;
@@ -54,7 +54,8 @@ public static partial class ValueParser
     {
         DisplayFormat.Bool => $"Bool takes a bit address, not a {new WidthRange(width).Name}",
         DisplayFormat.Float => "a REAL (Float) needs a double word such as VD100",
-        _ => $"{format} needs a byte, word or double word, not a bit (a bit takes 0/1, true/false or on/off)",
+        DisplayFormat.Unsigned or DisplayFormat.Signed or DisplayFormat.Hex or DisplayFormat.Binary or DisplayFormat.Ascii =>
+            $"{format} needs a byte, word or double word, not a bit (a bit takes 0/1, true/false or on/off)",
     };
 
     private static ImmutableArray<byte>? ParseBit(string input, PlcAddress address, out ValueError? error)

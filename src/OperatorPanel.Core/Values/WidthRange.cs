@@ -19,7 +19,7 @@ internal readonly record struct WidthRange(AccessWidth Width)
         AccessWidth.Bit => "bit",
         AccessWidth.Byte => "byte",
         AccessWidth.Word => "word",
-        _ => "double word",
+        AccessWidth.DoubleWord => "double word",
     };
 
     public string UnsignedText => string.Create(CultureInfo.InvariantCulture, $"0..{UnsignedMax}");

@@ -100,7 +100,7 @@ internal sealed partial class DemoProgram(IDemoPlc plc)
             DemoFillStep.Filling when full || timedOut => DemoFillStep.HeadUp,
             DemoFillStep.HeadUp when _stepMs >= HeadTravelMs => DemoFillStep.Release,
             DemoFillStep.Release when _stepMs >= ReleaseMs && !atHead => DemoFillStep.WaitBottle,
-            _ => _step,
+            DemoFillStep.WaitBottle or DemoFillStep.HeadDown or DemoFillStep.Filling or DemoFillStep.HeadUp or DemoFillStep.Release => _step,
         };
         if (next == _step)
         {

@@ -37,7 +37,6 @@ public sealed class PlcMemory
         ProtocolArea.M => M,
         ProtocolArea.V => V,
         ProtocolArea.SM => SM,
-        _ => throw new ArgumentOutOfRangeException(nameof(area), area, null),
     };
 
     public bool GetBit(ProtocolArea area, int offset, int bit) => (Area(area)[offset] & (1 << bit)) != 0;

@@ -57,7 +57,7 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
         StlOperandType.BitIn or StlOperandType.BitOut => 0,
         StlOperandType.ByteIn or StlOperandType.ByteOut or StlOperandType.ByteArea or StlOperandType.SignedByteIn => 1,
         StlOperandType.WordIn or StlOperandType.WordOut or StlOperandType.WordArea or StlOperandType.Timer or StlOperandType.Counter => 2,
-        _ => 4,
+        StlOperandType.DWordIn or StlOperandType.DWordOut or StlOperandType.DWordArea or StlOperandType.Label or StlOperandType.Block or StlOperandType.Event or StlOperandType.Port => 4,
     };
 
     /// <summary>
@@ -72,7 +72,8 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
         {
             StlOperandType.Timer => MemoryArea.T,
             StlOperandType.Counter => MemoryArea.C,
-            _ => operand.Area,
+            StlOperandType.BitIn or StlOperandType.BitOut or StlOperandType.ByteIn or StlOperandType.ByteOut or StlOperandType.WordIn or StlOperandType.WordOut or StlOperandType.DWordIn or StlOperandType.DWordOut or StlOperandType.ByteArea or StlOperandType.WordArea or StlOperandType.DWordArea or StlOperandType.Label or StlOperandType.Block or StlOperandType.Event or StlOperandType.Port or StlOperandType.SignedByteIn =>
+                operand.Area,
         };
         var bytes = BytesOf(type);
         if (operand.Kind != AwlOperandKind.Address || operand.Area != wanted)
@@ -261,6 +262,7 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
         StlOperandType.ByteArea or StlOperandType.WordArea or StlOperandType.DWordArea => $"{WidthName(BytesOf(type))} in memory",
         StlOperandType.BitOut or StlOperandType.ByteOut or StlOperandType.WordOut or StlOperandType.DWordOut =>
             $"writable {WidthName(BytesOf(type))}",
-        _ => WidthName(BytesOf(type)),
+        StlOperandType.BitIn or StlOperandType.ByteIn or StlOperandType.WordIn or StlOperandType.DWordIn or StlOperandType.SignedByteIn or StlOperandType.Label or StlOperandType.Block or StlOperandType.Event or StlOperandType.Port or StlOperandType.Timer or StlOperandType.Counter =>
+            WidthName(BytesOf(type)),
     };
 }

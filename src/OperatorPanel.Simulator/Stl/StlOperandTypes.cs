@@ -16,7 +16,6 @@ internal static class StlOperandTypes
         StlDataType.Bool => spec.Access == StlAccess.Read ? StlOperandType.BitIn : StlOperandType.BitOut,
         StlDataType.Byte or StlDataType.String or StlDataType.Word or StlDataType.Int or StlDataType.DWord or StlDataType.DInt
             or StlDataType.Real => Sized(spec),
-        _ => throw new ArgumentOutOfRangeException(nameof(spec), spec.Type, null),
     };
 
     /// <summary>Memory without accumulator or constant is an area a block instruction starts at (BMB IN, RCV TBL).</summary>

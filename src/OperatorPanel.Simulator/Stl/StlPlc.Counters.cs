@@ -50,7 +50,7 @@ public sealed partial class StlPlc
 
                 _stack = (_stack >> 1) | (top ? 1u : 0u);
                 break;
-            default:
+            case StlOpCode.Ctud:
                 var countUp = Rising(ref c.LastUp, third);
                 var countDown = Rising(ref c.LastDown, second);
                 if (top)

@@ -28,26 +28,16 @@ public sealed partial class StlPlc
         }
     }
 
-    private uint Read(StlLoc loc, int bytes)
+    private uint Read(StlLoc loc, int bytes) => loc.Kind switch
     {
-        switch (loc.Kind)
-        {
-            case StlLocKind.Constant:
-                return loc.Value & Mask(bytes);
-            case StlLocKind.Direct:
-                return ReadBytes(_areas[loc.Area], loc.Offset, bytes);
-            case StlLocKind.Local:
-                return ReadBytes(_l, _lBase + loc.Offset, bytes);
-            case StlLocKind.Accumulator:
-                return _ac[loc.Offset] & Mask(bytes);
-            case StlLocKind.Timer:
-                return (ushort)TimerValue(loc.Offset) & Mask(bytes);
-            case StlLocKind.Counter:
-                return (ushort)_counters[loc.Offset].Value & Mask(bytes);
-            default:
-                return TryPointer(loc, bytes, out var area, out var offset) ? ReadBytes(area, offset, bytes) : 0;
-        }
-    }
+        StlLocKind.Constant => loc.Value & Mask(bytes),
+        StlLocKind.Direct => ReadBytes(_areas[loc.Area], loc.Offset, bytes),
+        StlLocKind.Local => ReadBytes(_l, _lBase + loc.Offset, bytes),
+        StlLocKind.Accumulator => _ac[loc.Offset] & Mask(bytes),
+        StlLocKind.Timer => (ushort)TimerValue(loc.Offset) & Mask(bytes),
+        StlLocKind.Counter => (ushort)_counters[loc.Offset].Value & Mask(bytes),
+        StlLocKind.Indirect => TryPointer(loc, bytes, out var area, out var offset) ? ReadBytes(area, offset, bytes) : 0,
+    };
 
     /// <summary>A byte or word written to an accumulator replaces its low byte or word only (unconfirmed; the manual's tables allow AC as OUT).</summary>
     private void Write(StlLoc loc, int bytes, uint value)
@@ -76,7 +66,7 @@ public sealed partial class StlPlc
                 }
 
                 break;
-            default:
+            case StlLocKind.Constant:
                 throw new InvalidOperationException("the loader lets no constant be written");
         }
     }
@@ -86,7 +76,8 @@ public sealed partial class StlPlc
         StlLocKind.Local => ((_l[_lBase + loc.Offset] >> loc.Bit) & 1) != 0,
         StlLocKind.Timer => TimerBit(loc.Offset),
         StlLocKind.Counter => _counters[loc.Offset].Bit,
-        _ => ((_areas[loc.Area][loc.Offset] >> loc.Bit) & 1) != 0,
+        StlLocKind.Constant or StlLocKind.Direct or StlLocKind.Accumulator or StlLocKind.Indirect =>
+            ((_areas[loc.Area][loc.Offset] >> loc.Bit) & 1) != 0,
     };
 
     private void WriteBit(StlLoc loc, bool value)
@@ -129,7 +120,8 @@ public sealed partial class StlPlc
         {
             StlLocKind.Direct => (_areas[loc.Area], loc.Offset),
             StlLocKind.Local => (_l, _lBase + loc.Offset),
-            _ => (Array.Empty<byte>(), 0),
+            StlLocKind.Constant or StlLocKind.Accumulator or StlLocKind.Indirect or StlLocKind.Timer or StlLocKind.Counter =>
+                (Array.Empty<byte>(), 0),
         };
         if (loc.Kind == StlLocKind.Indirect)
         {

@@ -122,7 +122,7 @@ public sealed partial class StlPlc
                 CountOnExecution(timer);
                 t.Running = false;
                 break;
-            default:
+            case StlOpCode.Tof:
                 TimeOff(timer, ref t, input);
                 break;
         }

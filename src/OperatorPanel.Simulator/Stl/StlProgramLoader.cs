@@ -63,7 +63,7 @@ public static class StlProgramLoader
             {
                 AwlBlockKind.Subroutine => cpu.Subroutines,
                 AwlBlockKind.InterruptRoutine => cpu.InterruptRoutines,
-                _ => 2,
+                AwlBlockKind.OrganizationBlock => 2,
             };
             if (block.Source.Number >= limit || (block.Kind == AwlBlockKind.OrganizationBlock && block.Source.Number != 1))
             {

@@ -69,6 +69,6 @@ public static class AwlWriter
     {
         StlBlockKind.Organization => "ORGANIZATION_BLOCK",
         StlBlockKind.Subroutine => "SUBROUTINE_BLOCK",
-        _ => "INTERRUPT_BLOCK",
+        StlBlockKind.Interrupt => "INTERRUPT_BLOCK",
     };
 }

@@ -34,7 +34,6 @@ public static class EmittedInstructionCheck
             StlBlockKind.Organization => StlPlacement.Main,
             StlBlockKind.Subroutine => StlPlacement.Subroutine,
             StlBlockKind.Interrupt => StlPlacement.InterruptRoutine,
-            _ => throw new ArgumentOutOfRangeException(nameof(block), block, null),
         };
         if ((spec.Placement & here) == 0)
         {

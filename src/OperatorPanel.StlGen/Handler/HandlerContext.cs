@@ -1,5 +1,6 @@
 using System.Globalization;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.StlGen.Options;
 
@@ -56,7 +57,7 @@ internal sealed class HandlerContext
     {
         get
         {
-            var parity = Options.Parity switch { Parity.Even => 0b01, Parity.Odd => 0b11, _ => 0b00 };
+            var parity = Options.Parity switch { Parity.Even => 0b01, Parity.Odd => 0b11, Parity.None => 0b00 };
             var sevenBits = Options.DataBits == 7 ? 1 : 0;
             var baud = Options.Cpu.FreeportBaudCode(Options.BaudRate) ?? 0;
             return (parity << 6) | (sevenBits << 5) | (baud << 2) | 0b01;
@@ -68,4 +69,10 @@ internal sealed class HandlerContext
     public static string Hex(int value) => "16#" + value.ToString("X2", CultureInfo.InvariantCulture);
 
     public static string Dec(int value) => value.ToString(CultureInfo.InvariantCulture);
+
+    /// <summary>A command code as the constant the handler compares CMD with, taken from Core's protocol by name.</summary>
+    public static string Dec(CommandCode code) => Dec((byte)code);
+
+    /// <summary>An error code as the two digits docs/protocol.md and the handler's comments use ("04").</summary>
+    public static string Digits(ProtocolError error) => ((byte)error).ToString("D2", CultureInfo.InvariantCulture);
 }

@@ -1,3 +1,5 @@
+using OperatorPanel.Core.Protocol;
+
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>The jump labels of the receive routine (LBL 0-255, local to the block).</summary>
@@ -22,7 +24,7 @@ internal static class HandlerLabels
     public const int WriteBitExecute = 52;
     public const int DefineItemsChecked = 60;
 
-    public static string Error(int code) => HandlerContext.Dec(ErrorBase + code);
+    public static int Error(ProtocolError error) => ErrorBase + (byte)error;
 
     public static string Of(int label) => HandlerContext.Dec(label);
 }

@@ -21,7 +21,7 @@ internal static class IdentifyPart
         };
         var chars = string.Concat(fixedBytes.Select(b => b.ToString("X2", CultureInfo.InvariantCulture)));
         yield return Label(HandlerLabels.Identify, "01 IDENTIFY");
-        yield return JumpIf("IDENTIFY: body exactly 4 bytes", "Error 04 unless count = 10.", HandlerLabels.ErrorBase + 4, Op("LDB<>", l.B(0), "10"));
+        yield return JumpIf("IDENTIFY: body exactly 4 bytes", "Error 04 unless count = 10.", HandlerLabels.Error(ProtocolError.BadLength), Op("LDB<>", l.B(0), "10"));
         yield return new NetworkBuilder(
                 "IDENTIFY: fixed part of the reply",
                 $"Characters '{chars}': protocol 1, revision 1, CPU model and revision, write mask, 119, reply delay.",

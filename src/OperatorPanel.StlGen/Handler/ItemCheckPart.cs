@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.StlGen.Model;
 using static OperatorPanel.StlGen.Handler.HandlerContext;
 using static OperatorPanel.StlGen.Handler.HandlerLayout;
@@ -16,8 +17,8 @@ internal static class ItemCheckPart
     public static IEnumerable<StlNetwork> Networks(HandlerContext c)
     {
         var l = c.Layout;
-        var e02 = HandlerLabels.ErrorBase + 2;
-        var e04 = HandlerLabels.ErrorBase + 4;
+        var e02 = HandlerLabels.Error(ProtocolError.AddressOutOfRange);
+        var e04 = HandlerLabels.Error(ProtocolError.BadLength);
         yield return Label(HandlerLabels.CheckItems, "check the next item");
         yield return Always("Item: where its LENGTH is", "AC3 points at LENGTH, 3 bytes after AREA.", Op("MOVD", "AC2", "AC3"), Op("+D", "3", "AC3"));
         yield return JumpIf("Item: LENGTH 0", "Error 04.", e04, Op("LDB=", "*AC3", "0"));
@@ -48,13 +49,13 @@ internal static class ItemCheckPart
         yield return Label(SlicePart.ItemsChecked, "items checked");
         yield return JumpIf(
             "Items checked: WRITE and WRITE BIT", "Their one block passed: on to the write checks.",
-            HandlerLabels.Writable, Op("LDB=", l.B(Cmd), "3"), Op("OB=", l.B(Cmd), "4"));
+            HandlerLabels.Writable, Op("LDB=", l.B(Cmd), Dec(CommandCode.Write)), Op("OB=", l.B(Cmd), Dec(CommandCode.WriteBit)));
         yield return Always(
             "Items checked: 2D + 4N", "AC0 = 2 x (sum of lengths) + 4 x COUNT.",
             Op("MOVW", "AC1", "AC0"), Op("+I", "AC1", "AC0"), Op("BTI", l.B(N), "AC3"), Op("SLW", "AC3", "2"), Op("+I", "AC3", "AC0"));
         yield return JumpIf("Items checked: too much data", "2D + 4N > 243: the reply would reach the descriptors, error 04.", e04, Op("LDW>", "AC0", "243"));
         yield return Always("Items checked: keep D", "D = sum of the lengths (at most 119 now).", Op("MOVB", "AC1", l.B(D)));
-        yield return JumpIf("Items checked: DEFINE LIST", "On to the capacity rule.", HandlerLabels.DefineItemsChecked, Op("LDB=", l.B(Cmd), "5"));
+        yield return JumpIf("Items checked: DEFINE LIST", "On to the capacity rule.", HandlerLabels.DefineItemsChecked, Op("LDB=", l.B(Cmd), Dec(CommandCode.DefineList)));
         yield return JumpIf("Items checked: READ", "On to the reply.", HandlerLabels.ReadItemsChecked, Op("LD", "SM0.0"));
     }
 }

@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.StlGen.Model;
 using static OperatorPanel.StlGen.Handler.HandlerContext;
 using static OperatorPanel.StlGen.Handler.HandlerLayout;
@@ -14,7 +15,7 @@ internal static class ListPart
     public static IEnumerable<StlNetwork> Define(HandlerContext c)
     {
         var l = c.Layout;
-        var e04 = HandlerLabels.ErrorBase + 4;
+        var e04 = HandlerLabels.Error(ProtocolError.BadLength);
         yield return Label(HandlerLabels.DefineList, "05 DEFINE LIST");
         yield return JumpIf("DEFINE LIST: body at least 6 bytes", "Error 04 when count < 14.", e04, Op("LDB<", l.B(0), "14"));
         yield return JumpIf("DEFINE LIST: COUNT 1-20", "Error 04.", e04, Op("LDB=", l.B(9), "0"), Op("OB>", l.B(9), "20"));
@@ -22,7 +23,7 @@ internal static class ListPart
             "DEFINE LIST: expected length", "14 + 8N characters: AC0 = 14 + 8N, AC3 = count.",
             Op("BTI", l.B(9), "AC0"), Op("SLW", "AC0", "3"), Op("+I", "14", "AC0"), Op("BTI", l.B(0), "AC3"));
         yield return JumpIf("DEFINE LIST: body = 6 + 4 x COUNT bytes", "Error 04.", e04, Op("LDW<>", "AC0", "AC3"));
-        yield return JumpIf("DEFINE LIST: LIST 1-4", "Error 06.", HandlerLabels.ErrorBase + 6, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), "4"));
+        yield return JumpIf("DEFINE LIST: LIST 1-4", "Error 06.", HandlerLabels.Error(ProtocolError.BadParameter), Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), "4"));
         yield return Always(
             "DEFINE LIST: is the list defined?", "LIST and N from the request; AC3 points at LCOUNT of the list.",
             Op("MOVB", l.B(8), l.B(List)), Op("MOVB", l.B(9), l.B(N)), Op("MOVD", l.Ptr(LCount1 - 1), "AC3"),
@@ -46,9 +47,9 @@ internal static class ListPart
     public static IEnumerable<StlNetwork> Read(HandlerContext c)
     {
         var l = c.Layout;
-        var e07 = HandlerLabels.ErrorBase + 7;
+        var e07 = HandlerLabels.Error(ProtocolError.ListNotDefined);
         yield return Label(HandlerLabels.ReadList, "06 READ LIST");
-        yield return JumpIf("READ LIST: body exactly 5 bytes", "Error 04 unless count = 12.", HandlerLabels.ErrorBase + 4, Op("LDB<>", l.B(0), "12"));
+        yield return JumpIf("READ LIST: body exactly 5 bytes", "Error 04 unless count = 12.", HandlerLabels.Error(ProtocolError.BadLength), Op("LDB<>", l.B(0), "12"));
         yield return JumpIf("READ LIST: LIST 1-4", "Any other LIST is never defined: error 07.", e07, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), "4"));
         yield return Always(
             "READ LIST: the list's descriptors", "AC3 points at START of the list, AC2 at its first descriptor; then AC3 at LCOUNT.",
@@ -72,7 +73,7 @@ internal static class ListPart
             Op("SLW", "AC0", "1"), Op("+I", "12", "AC0"), Op("BTI", l.B(LastFree), "AC3"), Op("BTI", l.B(N), "AC2"),
             Op("SLW", "AC2", "2"), Op("-I", "AC2", "AC3"));
         yield return JumpIf("DEFINE LIST: the lists do not fit together", "A reply would reach the new floor: error 04, nothing stored.",
-            HandlerLabels.ErrorBase + 4, Op("LDW>", "AC0", "AC3"));
+            HandlerLabels.Error(ProtocolError.BadLength), Op("LDW>", "AC0", "AC3"));
         yield return Always(
             "DEFINE LIST: store", "START = LAST_FREE + 1 - 4N, LCOUNT = N, LAST_FREE = START - 1. The descriptors are in place already.",
             Op("MOVD", l.Ptr(Start1 - 1), "AC3"), Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"),

@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.StlGen.Model;
 using static OperatorPanel.StlGen.Handler.HandlerContext;
 using static OperatorPanel.StlGen.Handler.HandlerLayout;
@@ -14,7 +15,7 @@ internal static class ReadPart
     public static IEnumerable<StlNetwork> Entry(HandlerContext c)
     {
         var l = c.Layout;
-        var e04 = HandlerLabels.ErrorBase + 4;
+        var e04 = HandlerLabels.Error(ProtocolError.BadLength);
         yield return Label(HandlerLabels.Read, "02 READ");
         yield return JumpIf("READ: body at least 5 bytes", "Error 04 when count < 12.", e04, Op("LDB<", l.B(0), "12"));
         yield return JumpIf("READ: COUNT 1-20", "Error 04.", e04, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), "20"));

@@ -1,3 +1,5 @@
+using System.Numerics;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.StlGen.Model;
 using static OperatorPanel.StlGen.Handler.HandlerContext;
 using static OperatorPanel.StlGen.Handler.HandlerLayout;
@@ -12,10 +14,13 @@ namespace OperatorPanel.StlGen.Handler;
 /// </summary>
 internal static class ReceivePart
 {
-    private static readonly (int Code, int Label, string Name)[] Commands =
+    private static readonly int ReplyBitNumber = BitOperations.Log2(FreeportFrame.ReplyBit);
+
+    private static readonly (CommandCode Code, int Label, string Name)[] Commands =
     [
-        (1, HandlerLabels.Identify, "IDENTIFY"), (2, HandlerLabels.Read, "READ"), (3, HandlerLabels.Write, "WRITE"),
-        (4, HandlerLabels.WriteBit, "WRITE BIT"), (5, HandlerLabels.DefineList, "DEFINE LIST"), (6, HandlerLabels.ReadList, "READ LIST"),
+        (CommandCode.Identify, HandlerLabels.Identify, "IDENTIFY"), (CommandCode.Read, HandlerLabels.Read, "READ"),
+        (CommandCode.Write, HandlerLabels.Write, "WRITE"), (CommandCode.WriteBit, HandlerLabels.WriteBit, "WRITE BIT"),
+        (CommandCode.DefineList, HandlerLabels.DefineList, "DEFINE LIST"), (CommandCode.ReadList, HandlerLabels.ReadList, "READ LIST"),
     ];
 
     public static IEnumerable<StlNetwork> Interrupt(HandlerContext c)
@@ -67,12 +72,15 @@ internal static class ReceivePart
             "Step 3: station address", $"This PLC is station {c.Options.Station}; a request for another station gets no reply.",
             silence, Op("LDB<>", l.B(N), Dec(c.Options.Station)));
         yield return JumpIf(
-            "Step 4: a reply overheard on the bus", "CMD bit 7 set: another station's reply, silence.", silence, Op("LD", l.Bit(Cmd, 7)));
+            "Step 4: a reply overheard on the bus", $"CMD bit {ReplyBitNumber} set: another station's reply, silence.", silence,
+            Op("LD", l.Bit(Cmd, ReplyBitNumber)));
         foreach (var (code, label, name) in Commands)
         {
-            yield return JumpIf($"Step 5: command {code:D2} {name}", $"CMD = {code}: go to label {label}.", label, Op("LDB=", l.B(Cmd), Dec(code)));
+            yield return JumpIf($"Step 5: command {(byte)code:D2} {name}", $"CMD = {Dec(code)}: go to label {label}.", label, Op("LDB=", l.B(Cmd), Dec(code)));
         }
 
-        yield return JumpIf("Step 5: unknown command", "Any other CMD: error 05.", HandlerLabels.ErrorBase + 5, Op("LD", "SM0.0"));
+        yield return JumpIf(
+            "Step 5: unknown command", $"Any other CMD: error {Digits(ProtocolError.UnknownCommand)}.",
+            HandlerLabels.Error(ProtocolError.UnknownCommand), Op("LD", "SM0.0"));
     }
 }

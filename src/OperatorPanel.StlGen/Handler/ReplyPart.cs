@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.StlGen.Model;
 using static OperatorPanel.StlGen.Handler.HandlerContext;
 using static OperatorPanel.StlGen.Handler.HandlerLayout;
@@ -11,14 +12,21 @@ namespace OperatorPanel.StlGen.Handler;
 /// </summary>
 internal static class ReplyPart
 {
+    /// <summary>
+    /// The codes the handler answers with (every one but None, and BadChecksum, which is never answered), in code order;
+    /// a new ProtocolError gets its label and network here without a change.
+    /// </summary>
+    private static readonly ProtocolError[] ErrorReplies =
+        [.. Enum.GetValues<ProtocolError>().Where(error => error is not (ProtocolError.None or ProtocolError.BadChecksum))];
+
     public static IEnumerable<StlNetwork> Networks(HandlerContext c)
     {
         var l = c.Layout;
-        for (var code = 2; code <= 7; code++)
+        foreach (var error in ErrorReplies)
         {
-            yield return Label(HandlerLabels.ErrorBase + code, $"error {code:D2}");
-            yield return Always($"Error {code:D2}", "STATUS = error code; the reply has no payload.",
-                Op("MOVB", Hex(code), l.B(List)), Op("JMP", Dec(HandlerLabels.ErrorReply)));
+            yield return Label(HandlerLabels.Error(error), $"error {Digits(error)}");
+            yield return Always($"Error {Digits(error)}", "STATUS = error code; the reply has no payload.",
+                Op("MOVB", Hex((byte)error), l.B(List)), Op("JMP", Dec(HandlerLabels.ErrorReply)));
         }
 
         yield return Label(HandlerLabels.ErrorReply, "error reply");
@@ -26,8 +34,8 @@ internal static class ReplyPart
         yield return Label(HandlerLabels.Finish, "finish the reply");
         yield return Always(
             "Reply: header and count",
-            "CMD | 16#80 and STATUS as characters 6-9 (STATION, SEQ stay as received); count = AC1 - buffer start + 2.",
-            Op("ORB", "16#80", l.B(Cmd)), Op("HTA", l.B(Cmd), l.B(6), "4"), Op("MOVD", l.Ptr(0), "AC2"), Op("MOVD", "AC1", "AC0"),
+            $"CMD | {Hex(FreeportFrame.ReplyBit)} and STATUS as characters 6-9 (STATION, SEQ stay as received); count = AC1 - buffer start + 2.",
+            Op("ORB", Hex(FreeportFrame.ReplyBit), l.B(Cmd)), Op("HTA", l.B(Cmd), l.B(6), "4"), Op("MOVD", l.Ptr(0), "AC2"), Op("MOVD", "AC1", "AC0"),
             Op("-D", "AC2", "AC0"), Op("+D", "2", "AC0"), Op("MOVB", "AC0", l.B(0)));
         yield return new NetworkBuilder(
                 "Reply: would it reach the stored lists?",

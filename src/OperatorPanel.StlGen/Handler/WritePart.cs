@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.StlGen.Model;
 using static OperatorPanel.StlGen.Handler.HandlerContext;
 using static OperatorPanel.StlGen.Handler.HandlerLayout;
@@ -14,7 +15,7 @@ internal static class WritePart
     public static IEnumerable<StlNetwork> Entries(HandlerContext c)
     {
         var l = c.Layout;
-        var e04 = HandlerLabels.ErrorBase + 4;
+        var e04 = HandlerLabels.Error(ProtocolError.BadLength);
         yield return Label(HandlerLabels.Write, "03 WRITE");
         yield return JumpIf("WRITE: body at least 8 bytes", "Error 04 when count < 18.", e04, Op("LDB<", l.B(0), "18"));
         yield return JumpIf("WRITE: LENGTH 1-118", "Error 04.", e04, Op("LDB=", l.B(11), "0"), Op("OB>", l.B(11), "118"));
@@ -47,7 +48,7 @@ internal static class WritePart
         }
 
         yield return Always("Write: the target byte", "AC3 = area start + OFFSET.", Op("MOVW", l.W(9), "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"));
-        yield return JumpIf("Write: WRITE BIT", "On to label 52.", HandlerLabels.WriteBitExecute, Op("LDB=", l.B(Cmd), "4"));
+        yield return JumpIf("Write: WRITE BIT", "On to label 52.", HandlerLabels.WriteBitExecute, Op("LDB=", l.B(Cmd), Dec(CommandCode.WriteBit)));
         yield return Always(
             "WRITE: copy the data", "BMB the LENGTH data bytes from buffer byte 12 to the target (AC3).",
             Op("BMB", l.B(12), "*AC3", l.B(11)));
@@ -59,7 +60,7 @@ internal static class WritePart
             Op("ITD", "AC0", "AC0"), Op("MOVD", l.Ptr(10), "AC1"), Op("+D", "AC0", "AC1"), Op("MOVB", "0", l.B(List)),
             Op("JMP", Dec(HandlerLabels.Finish)));
         yield return Label(HandlerLabels.WriteBitExecute, "WRITE BIT on the target byte");
-        yield return JumpIf("WRITE BIT: BIT 0-7, VALUE 0-1", "Error 06.", HandlerLabels.ErrorBase + 6, Op("LDB>", l.B(N), "7"), Op("OB>", l.B(12), "1"));
+        yield return JumpIf("WRITE BIT: BIT 0-7, VALUE 0-1", "Error 06.", HandlerLabels.Error(ProtocolError.BadParameter), Op("LDB>", l.B(N), "7"), Op("OB>", l.B(12), "1"));
         yield return Always("WRITE BIT: bit mask", "D = 1 shifted left by BIT.", Op("MOVB", "1", l.B(D)), Op("SLB", l.B(D), l.B(N)));
         yield return new NetworkBuilder("WRITE BIT: set", "VALUE 1: OR the mask into the byte; the other bits stay.")
             .Op("LDB=", l.B(12), "1").Op("ORB", l.B(D), "*AC3").Build();
@@ -77,7 +78,7 @@ internal static class WritePart
     private static IEnumerable<StlNetwork> Writable(HandlerContext c)
     {
         var l = c.Layout;
-        var e03 = HandlerLabels.ErrorBase + 3;
+        var e03 = HandlerLabels.Error(ProtocolError.NotWritable);
         yield return Label(HandlerLabels.Writable, "may the panel write here?");
         yield return JumpIf("Writable: never I", "Error 03.", e03, Op("LDB=", l.B(8), "1"));
         foreach (var (code, name) in new[] { (2, "Q"), (3, "M"), (4, "V"), (5, "SM") }.Where(a => !c.MayWrite(a.Item1)))

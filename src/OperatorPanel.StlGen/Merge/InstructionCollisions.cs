@@ -93,7 +93,7 @@ internal sealed class InstructionCollisions(AwlProgram user, HandlerFootprint ha
                 return;
             case AwlOperandKind.Address or AwlOperandKind.Pointer:
                 break;
-            default:
+            case AwlOperandKind.Constant or AwlOperandKind.Local or AwlOperandKind.Symbol:
                 return;
         }
 

@@ -47,7 +47,6 @@ internal static class InstructionOperands
         StlExtent.Count => count ?? 1,
         StlExtent.HalfCount => count is { } n ? (n + 1) / 2 : 1,
         StlExtent.AbsoluteCount => count is { } n ? Math.Abs(n) : 1,
-        _ => throw new ArgumentOutOfRangeException(nameof(slot), slot.Extent, null),
     };
 
     /// <summary>Parameter positions (0-based, after the block name) bound to VAR_IN_OUT or VAR_OUTPUT of the called block.</summary>

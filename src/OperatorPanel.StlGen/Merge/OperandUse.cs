@@ -29,7 +29,7 @@ internal sealed record OperandUse(AwlInstruction Instruction, int Index, AwlOper
                 return (Operand.ByteOffset, (int)Math.Min(int.MaxValue, (firstBit + count - 1) / 8));
             }
 
-            var size = Operand.Width switch { AccessWidth.Word => 2L, AccessWidth.DoubleWord => 4L, _ => 1L };
+            var size = Operand.Width switch { AccessWidth.Word => 2L, AccessWidth.DoubleWord => 4L, AccessWidth.Bit or AccessWidth.Byte => 1L };
             return (Operand.ByteOffset, (int)Math.Min(int.MaxValue, Operand.ByteOffset + (size * count) - 1));
         }
     }

@@ -19,7 +19,7 @@ public sealed record StlBlock(
     {
         StlBlockKind.Organization => $"OB{Number}",
         StlBlockKind.Subroutine => $"SBR{Number}",
-        _ => $"INT{Number}",
+        StlBlockKind.Interrupt => $"INT{Number}",
     };
 
     public int InstructionCount => Networks.Sum(n => n.Instructions.Length);

@@ -50,7 +50,8 @@ public sealed partial class LinkStepViewModel
             {
                 PlcErrorKind.PortUnavailable => $"{link.PortName} could not be used: {ex.Message}",
                 PlcErrorKind.FrameCorrupt => $"{where}: garbled replies; check that baud rate and parity match the handler. ({ex.Message})",
-                _ => $"{where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
+                PlcErrorKind.Timeout or PlcErrorKind.NegativeReply or PlcErrorKind.NoAnswer =>
+                    $"{where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
                     + $"mode switch at RUN (not TERM) and that the handler is loaded. ({ex.Message})",
             };
         }

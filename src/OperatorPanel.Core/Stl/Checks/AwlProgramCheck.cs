@@ -99,7 +99,6 @@ public static class AwlProgramCheck
             AwlBlockKind.OrganizationBlock => StlPlacement.Main,
             AwlBlockKind.Subroutine => StlPlacement.Subroutine,
             AwlBlockKind.InterruptRoutine => StlPlacement.InterruptRoutine,
-            _ => throw new ArgumentOutOfRangeException(nameof(block), block.Kind, null),
         };
         if ((spec.Placement & here) != 0)
         {

@@ -20,7 +20,6 @@ internal static class StlConstantMatch
             AwlConstantKind.Ascii => spec.Type == StlDataType.String || (spec.Bytes > 0 && operand.Name.Length <= spec.Bytes && spec.Type != StlDataType.Real) ? null
                 : Refuse(spec, operand, $"an ASCII constant of {operand.Name.Length} character(s) does not fit {spec.Name} ({StlOperandMatch.TypeName(spec)})"),
             AwlConstantKind.String => spec.Type == StlDataType.String ? null : Refuse(spec, operand, $"a string constant cannot be {spec.Name} ({StlOperandMatch.TypeName(spec)})"),
-            _ => throw new ArgumentOutOfRangeException(nameof(operand), operand.ConstantKind, null),
         };
     }
 

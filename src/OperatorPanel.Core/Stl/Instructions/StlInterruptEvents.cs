@@ -16,7 +16,6 @@ public static class StlInterruptEvents
             CpuModel.Cpu221 or CpuModel.Cpu222 => eventNumber is (>= 0 and <= 12) or (>= 19 and <= 23) or (>= 27 and <= 33),
             CpuModel.Cpu224 => eventNumber is (>= 0 and <= 23) or (>= 27 and <= 33),
             CpuModel.Cpu224XP or CpuModel.Cpu226 => eventNumber is >= 0 and <= 33,
-            _ => throw new ArgumentOutOfRangeException(nameof(cpu), cpu.Model, null),
         };
     }
 
@@ -29,7 +28,6 @@ public static class StlInterruptEvents
             CpuModel.Cpu221 or CpuModel.Cpu222 => "0-12, 19-23, 27-33",
             CpuModel.Cpu224 => "0-23, 27-33",
             CpuModel.Cpu224XP or CpuModel.Cpu226 => "0-33",
-            _ => throw new ArgumentOutOfRangeException(nameof(cpu), cpu.Model, null),
         };
     }
 }

@@ -21,7 +21,6 @@ public static class StlOperandMatch
             AwlOperandKind.Indirect => Allowed(spec, IndirectKind(operand.Area), operand, "an indirect access"),
             AwlOperandKind.Local => CheckLocal(spec, operand, local),
             AwlOperandKind.Symbol => null,
-            _ => throw new ArgumentOutOfRangeException(nameof(operand), operand.Kind, null),
         };
     }
 
@@ -41,7 +40,6 @@ public static class StlOperandMatch
         MemoryArea.AC => StlOperandKinds.AC,
         MemoryArea.HC => StlOperandKinds.HC,
         MemoryArea.L => StlOperandKinds.L,
-        _ => throw new ArgumentOutOfRangeException(nameof(area), area, null),
     };
 
     private static StlOperandKinds IndirectKind(MemoryArea holder) => holder switch
@@ -49,7 +47,8 @@ public static class StlOperandMatch
         MemoryArea.V => StlOperandKinds.IndirectV,
         MemoryArea.L => StlOperandKinds.IndirectL,
         MemoryArea.AC => StlOperandKinds.IndirectAc,
-        _ => throw new ArgumentOutOfRangeException(nameof(holder), holder, "a pointer is held in VD, LD or AC1-AC3"),
+        MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.SM or MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AI or MemoryArea.AQ or MemoryArea.HC =>
+            throw new ArgumentOutOfRangeException(nameof(holder), holder, "a pointer is held in VD, LD or AC1-AC3"),
     };
 
     private static StlOperandRefusal? CheckAddress(StlOperandSpec spec, AwlOperand operand)
@@ -107,7 +106,6 @@ public static class StlOperandMatch
         MemoryArea.AI => "an analog input",
         MemoryArea.AQ => "an analog output",
         MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM or MemoryArea.S or MemoryArea.L => $"{area} memory",
-        _ => throw new ArgumentOutOfRangeException(nameof(area), area, null),
     };
 
     private static string SizeName(int bytes) => bytes switch

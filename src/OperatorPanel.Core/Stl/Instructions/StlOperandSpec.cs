@@ -29,7 +29,6 @@ public sealed record StlOperandSpec(string Name, StlDataType Type, StlOperandKin
         StlDataType.DWord or StlDataType.DInt or StlDataType.Real => 4,
         StlDataType.Label or StlDataType.Subroutine or StlDataType.InterruptRoutine or StlDataType.Event
             or StlDataType.Port or StlDataType.Timer or StlDataType.Counter => -1,
-        _ => throw new ArgumentOutOfRangeException(nameof(Type), Type, null),
     };
 
     public StlOperandSpec Range(long min, long max) => this with { Min = min, Max = max };

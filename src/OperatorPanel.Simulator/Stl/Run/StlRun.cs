@@ -40,7 +40,7 @@ public sealed class StlRun
             MemoryArea.T => watch.IsBitOfTimerOrCounter ? Bit(Plc.TimerBitValue(operand.ByteOffset)) : Plc.TimerCurrentValue(operand.ByteOffset),
             MemoryArea.C => watch.IsBitOfTimerOrCounter ? Bit(Plc.CounterBitValue(operand.ByteOffset)) : Plc.CounterCurrentValue(operand.ByteOffset),
             MemoryArea.AC => (int)Plc.Accumulator(operand.ByteOffset),
-            _ => ReadArea(watch),
+            MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM or MemoryArea.S or MemoryArea.AI or MemoryArea.AQ or MemoryArea.HC or MemoryArea.L => ReadArea(watch),
         };
     }
 
@@ -60,7 +60,6 @@ public sealed class StlRun
             AccessWidth.Byte => bytes[offset],
             AccessWidth.Word => (short)((bytes[offset] << 8) | bytes[offset + 1]),
             AccessWidth.DoubleWord => watch.IsReal ? (double)BitConverter.UInt32BitsToSingle(DoubleWord(bytes, offset)) : (int)DoubleWord(bytes, offset),
-            _ => throw new ArgumentOutOfRangeException(nameof(watch), operand.Width, null),
         };
     }
 

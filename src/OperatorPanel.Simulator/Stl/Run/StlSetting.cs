@@ -94,7 +94,6 @@ public sealed record StlSetting(PlcAddress Address, uint Value, TimeSpan At)
             AccessWidth.Byte => (sbyte.MinValue, byte.MaxValue),
             AccessWidth.Word => (short.MinValue, ushort.MaxValue),
             AccessWidth.DoubleWord => (int.MinValue, uint.MaxValue),
-            _ => throw new ArgumentOutOfRangeException(nameof(width), width, null),
         };
         value = (uint)number.Integer;
         return number.ConstantKind == AwlConstantKind.Integer && number.Integer >= min && number.Integer <= max;
