@@ -61,7 +61,9 @@ internal sealed class SerialLineRig : IAsyncDisposable
         var cpus = stations.ToDictionary(s => s.Station, s => s.Cpu);
         // A loaded 2-core CI machine can stall a thread for longer than one PLC scan; the wider allowance keeps the link from
         // retrying there, so the tests see one exchange per request (retries have their own tests with a manual clock).
-        var link = new PlcLink(new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial) with { ScanAllowance = TimeSpan.FromMilliseconds(400) });
+        // The reference model answers within one scan, so no time is allowed for the generated handler's slices.
+        var options = LinkOptions.For(panelSerial) with { ScanAllowance = TimeSpan.FromMilliseconds(400), HandlerScanAllowance = TimeSpan.Zero };
+        var link = new PlcLink(new SerialPortTransport(panelSerial), options);
         var engine = new PollingEngine(link, PollPlanner.Build(items, cpus)) { Mode = RefreshMode.OnDemand };
         var rig = new SerialLineRig(pty, tap, link, engine, new SimulatedPlcHost(tap, line, TimeProvider.System));
         rig._hostRun = Task.Run(() => rig.Host.RunAsync(rig._stop.Token));
