@@ -50,7 +50,7 @@ public sealed class SerialPortTransport : ITransport
         ObjectDisposedException.ThrowIf(_closing.IsCancellationRequested, this);
         if (_failure is not null)
         {
-            await CloseFailedPortAsync().ConfigureAwait(false);
+            DropFailedPort();
         }
 
         if (_port is not null)
@@ -157,36 +157,41 @@ public sealed class SerialPortTransport : ITransport
     }
 
     /// <summary>
-    /// Lets the lanes finish (their calls have failed or return within a read slice) and disposes the dead port, so the
-    /// next open starts on a new descriptor; the returned device often gets the same name but is a new file.
+    /// Drops the dead port so the next open starts on a new descriptor (the returned device often has the same name but
+    /// is a new file). Its lanes and its close are left to finish in the background: closing a dead descriptor can block,
+    /// and reconnecting must not wait for it.
     /// </summary>
-    private async Task CloseFailedPortAsync()
+    private void DropFailedPort()
     {
-        foreach (var lane in new[] { _readLane, _writeLane })
-        {
-            if (lane is not null)
-            {
-                await lane.StopAsync().ConfigureAwait(false);
-            }
-        }
-
-        DisposeDeadPort();
+        var (readLane, writeLane, port, unixRead) = (_readLane, _writeLane, _port, _unixRead);
         (_readLane, _writeLane, _port, _unixRead, _failure) = (null, null, null, null, null);
+        _ = Task.Run(async () =>
+        {
+            foreach (var lane in new[] { readLane, writeLane })
+            {
+                if (lane is not null)
+                {
+                    await lane.StopAsync().ConfigureAwait(false);
+                }
+            }
+
+            CloseDeadPort(port, unixRead);
+        });
     }
 
-    /// <summary>Disposing a port whose device is gone may itself fail on the dead descriptor; the port is dropped either way.</summary>
-    private void DisposeDeadPort()
+    /// <summary>Closing a port whose device is gone may itself fail on the dead descriptor; the port is dropped either way.</summary>
+    private static void CloseDeadPort(SerialPort? port, OutstandingStreamRead? unixRead)
     {
         try
         {
-            _port?.Dispose();
+            port?.Dispose();
         }
         catch (Exception failure) when (SerialPortErrors.IsDeviceFailure(failure))
         {
-            // The descriptor is already gone with the device: nothing is left to release.
+            // The descriptor went with the device: nothing is left to release.
         }
 
-        _unixRead?.Forget();
+        unixRead?.Forget();
     }
 
     /// <summary>The port names the OS publishes now, for <see cref="SerialPortDiscovery"/>; opens none.</summary>
