@@ -24,11 +24,19 @@ public sealed class SocatPtyPair : IDisposable
     public string PathB { get; }
 
     /// <summary>Starts socat and waits (real time, bounded) until both links exist.</summary>
-    public static async Task<SocatPtyPair> StartAsync()
+    public static Task<SocatPtyPair> StartAsync()
+    {
+        var stem = Path.Combine(Path.GetTempPath(), "opanel-pty-" + Guid.NewGuid().ToString("N")[..12]);
+        return StartAsync(stem + "-a", stem + "-b");
+    }
+
+    /// <summary>
+    /// Starts socat with its links at the given paths: after <see cref="Kill"/>, the same paths again are the USB
+    /// adapter plugged back in under its old name (new pseudo-terminals behind the links).
+    /// </summary>
+    public static async Task<SocatPtyPair> StartAsync(string pathA, string pathB)
     {
         var socat = FindSocat() ?? throw new InvalidOperationException("socat not found: install Debian package socat");
-        var stem = Path.Combine(Path.GetTempPath(), "opanel-pty-" + Guid.NewGuid().ToString("N")[..12]);
-        var (pathA, pathB) = (stem + "-a", stem + "-b");
         var start = new ProcessStartInfo(socat)
         {
             ArgumentList = { "-d", "-d", $"pty,raw,echo=0,link={pathA}", $"pty,raw,echo=0,link={pathB}" },
@@ -56,7 +64,10 @@ public sealed class SocatPtyPair : IDisposable
         return pair;
     }
 
-    /// <summary>Kills socat: both pseudo-terminals vanish, like an unplugged USB adapter.</summary>
+    /// <summary>
+    /// Kills socat: both pseudo-terminals vanish, like an unplugged USB adapter, and so do their links, as the device
+    /// node of an unplugged adapter does (a killed socat leaves them dangling, pointing at pty numbers others may reuse).
+    /// </summary>
     public void Kill()
     {
         if (!_socat.HasExited)
@@ -64,14 +75,15 @@ public sealed class SocatPtyPair : IDisposable
             _socat.Kill(entireProcessTree: true);
             _socat.WaitForExit();
         }
+
+        File.Delete(PathA);
+        File.Delete(PathB);
     }
 
     public void Dispose()
     {
         Kill();
         _socat.Dispose();
-        File.Delete(PathA);
-        File.Delete(PathB);
     }
 
     private static string? FindSocat() =>

@@ -12,7 +12,7 @@ namespace OperatorPanel.Core.Link;
 /// next sequence number (whatever the caller put there), so replies for an older request, and the echo of our own
 /// request that some RS-485 adapters return, are skipped rather than taken for the answer.
 /// </summary>
-public sealed class PlcLink : IPlcLink, IAsyncDisposable
+public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
 {
     private readonly ITransport _transport;
     private readonly LinkOptions _options;
@@ -106,11 +106,7 @@ public sealed class PlcLink : IPlcLink, IAsyncDisposable
     {
         try
         {
-            if (!_transport.IsOpen)
-            {
-                await _transport.OpenAsync(cancellationToken).ConfigureAwait(false);
-            }
-
+            await EnsureOpenAsync(cancellationToken).ConfigureAwait(false);
             await WaitForInterFrameGapAsync(cancellationToken).ConfigureAwait(false);
             _transport.DiscardInput();
             _reader.Reset();
@@ -123,7 +119,7 @@ public sealed class PlcLink : IPlcLink, IAsyncDisposable
         catch (PlcCommunicationException ex) when (ex.Station is null)
         {
             _online[request.Station] = false;
-            throw new PlcCommunicationException(ex.Kind, request.Station, $"{request.Station}: {ex.Message}", ex);
+            throw new PlcCommunicationException(ex.Kind, request.Station, $"{request.Station}: {PortFailureMessage(ex)}", ex);
         }
         catch (PlcCommunicationException)
         {

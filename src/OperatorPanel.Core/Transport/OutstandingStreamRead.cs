@@ -50,6 +50,12 @@ internal sealed class OutstandingStreamRead(Stream stream)
 
                 _pending = null;
                 (_offset, _count) = (0, pending.GetAwaiter().GetResult());
+
+                // A serial stream never ends while its device is there: end of stream is a hang-up, and reading on would spin.
+                if (_count == 0)
+                {
+                    throw new IOException("end of stream: the device hung up");
+                }
             }
         }
     }

@@ -10,7 +10,8 @@ namespace OperatorPanel.Core.Transport;
 /// cancellation); on Linux/macOS through <see cref="OutstandingStreamRead"/> (there the timed read can drop bytes).
 /// Writes block on a second thread, so a reply can be sent while a read waits. Once the device has failed (unplugged
 /// adapter, closed pty) every later call fails the same way: the library's Unix I/O loop stops for good after a
-/// hang-up, and later reads would otherwise just time out. Failures are <see cref="PlcCommunicationException"/> of
+/// hang-up, and later reads would otherwise just time out. A failed transport reports itself not open, and opening it
+/// again closes the dead port and opens the device afresh (the link reconnects that way). Failures are <see cref="PlcCommunicationException"/> of
 /// kind <see cref="PlcErrorKind.PortUnavailable"/> naming the port (<see cref="SerialPortErrors"/>).
 /// </summary>
 public sealed class SerialPortTransport : ITransport
@@ -41,11 +42,17 @@ public sealed class SerialPortTransport : ITransport
 
     public string Name => _settings.PortName;
 
-    public bool IsOpen => _port is not null && !_closing.IsCancellationRequested;
+    /// <summary>False after a device failure too: the descriptor is dead even though the port object still exists.</summary>
+    public bool IsOpen => _port is not null && _failure is null && !_closing.IsCancellationRequested;
 
     public async Task OpenAsync(CancellationToken cancellationToken)
     {
         ObjectDisposedException.ThrowIf(_closing.IsCancellationRequested, this);
+        if (_failure is not null)
+        {
+            DropFailedPort();
+        }
+
         if (_port is not null)
         {
             throw new InvalidOperationException($"{Name} is already open");
@@ -147,6 +154,44 @@ public sealed class SerialPortTransport : ITransport
         _port?.Dispose();
         _unixRead?.Forget();
         _closing.Dispose();
+    }
+
+    /// <summary>
+    /// Drops the dead port so the next open starts on a new descriptor (the returned device often has the same name but
+    /// is a new file). Its lanes and its close are left to finish in the background: closing a dead descriptor can block,
+    /// and reconnecting must not wait for it.
+    /// </summary>
+    private void DropFailedPort()
+    {
+        var (readLane, writeLane, port, unixRead) = (_readLane, _writeLane, _port, _unixRead);
+        (_readLane, _writeLane, _port, _unixRead, _failure) = (null, null, null, null, null);
+        _ = Task.Run(async () =>
+        {
+            foreach (var lane in new[] { readLane, writeLane })
+            {
+                if (lane is not null)
+                {
+                    await lane.StopAsync().ConfigureAwait(false);
+                }
+            }
+
+            CloseDeadPort(port, unixRead);
+        });
+    }
+
+    /// <summary>Closing a port whose device is gone may itself fail on the dead descriptor; the port is dropped either way.</summary>
+    private static void CloseDeadPort(SerialPort? port, OutstandingStreamRead? unixRead)
+    {
+        try
+        {
+            port?.Dispose();
+        }
+        catch (Exception failure) when (SerialPortErrors.IsDeviceFailure(failure))
+        {
+            // The descriptor went with the device: nothing is left to release.
+        }
+
+        unixRead?.Forget();
     }
 
     /// <summary>The port names the OS publishes now, for <see cref="SerialPortDiscovery"/>; opens none.</summary>
