@@ -147,7 +147,12 @@ public sealed partial class StlPlc
             (a, b) = ((int)a, (int)b);
         }
 
-        return op.N switch
+        return Holds(op.N, a, b);
+    }
+
+    /// <summary>A compare's relation (StlInstructionSet: 0 =, 1 &lt;&gt;, 2 &lt;, 3 &lt;=, 4 &gt;, 5 &gt;=); IEEE rules for reals.</summary>
+    private static bool Holds<T>(int relation, T a, T b)
+        where T : System.Numerics.INumber<T> => relation switch
         {
             0 => a == b,
             1 => a != b,
@@ -156,7 +161,6 @@ public sealed partial class StlPlc
             4 => a > b,
             _ => a >= b,
         };
-    }
 
     private long BlockMove(StlOp op, int unit)
     {

@@ -85,14 +85,6 @@ public sealed partial class StlPlc
     {
         var a = ReadReal(op.A!);
         var b = ReadReal(op.B!);
-        return op.N switch
-        {
-            0 => a == b,
-            1 => a != b,
-            2 => a < b,
-            3 => a <= b,
-            4 => a > b,
-            _ => a >= b,
-        };
+        return Holds(op.N, a, b);
     }
 }
