@@ -7,7 +7,8 @@ namespace OperatorPanel.Core.Line;
 /// <summary>
 /// The line's values: subscribers by watched item, so an engine's batch of changes reaches exactly the subscribers of the
 /// changed addresses (a dictionary look-up per change, no scan). Connect, disconnect, another project or a new engine
-/// push every subscriber its value now, so nobody ever has to pull.
+/// push every subscriber its value now, so nobody ever has to pull. A value is read and handed on under one lock, so a
+/// value read before an engine batch can never be delivered after it (it would show "not read yet" over a good value).
 /// </summary>
 public sealed partial class ProjectLine : ILineValues
 {
@@ -21,10 +22,10 @@ public sealed partial class ProjectLine : ILineValues
         lock (_gate)
         {
             _subscribers[item] = _subscribers.GetValueOrDefault(item, []).Add(onValue);
+            TryGetValue(station, address, out var now);
+            onValue(now);
         }
 
-        TryGetValue(station, address, out var now);
-        onValue(now);
         return new Subscription(() =>
         {
             lock (_gate)
@@ -66,28 +67,25 @@ public sealed partial class ProjectLine : ILineValues
                     calls.AddRange(subscribers.Select(s => (s, change.Current)));
                 }
             }
-        }
 
-        Deliver(calls);
+            Deliver(calls);
+        }
     }
 
     /// <summary>Every subscriber gets its value now: after connect, disconnect, another project or new engines.</summary>
     private void PushAll()
     {
-        List<(WatchedItem Item, ImmutableArray<Action<PolledValue>> Subscribers)> all;
         lock (_gate)
         {
-            all = [.. _subscribers.Select(p => (p.Key, p.Value))];
-        }
+            var calls = new List<(Action<PolledValue> Subscriber, PolledValue Value)>();
+            foreach (var (item, subscribers) in _subscribers)
+            {
+                TryGetValue(item.Station, item.Address, out var now);
+                calls.AddRange(subscribers.Select(s => (s, now)));
+            }
 
-        var calls = new List<(Action<PolledValue> Subscriber, PolledValue Value)>();
-        foreach (var (item, subscribers) in all)
-        {
-            TryGetValue(item.Station, item.Address, out var now);
-            calls.AddRange(subscribers.Select(s => (s, now)));
+            Deliver(calls);
         }
-
-        Deliver(calls);
     }
 
     private void Deliver(List<(Action<PolledValue> Subscriber, PolledValue Value)> calls) =>
