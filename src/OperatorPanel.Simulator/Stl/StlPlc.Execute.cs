@@ -22,10 +22,10 @@ public sealed partial class StlPlc
         {
             case StlOpCode.Ld: Push(ReadBit(op.A!)); return op.Cost;
             case StlOpCode.Ldn: Push(!ReadBit(op.A!)); return op.Cost;
-            case StlOpCode.A: _stack &= ReadBit(op.A!) ? ~0u : ~1u; return op.Cost;
-            case StlOpCode.An: _stack &= ReadBit(op.A!) ? ~1u : ~0u; return op.Cost;
-            case StlOpCode.O: _stack |= ReadBit(op.A!) ? 1u : 0u; return op.Cost;
-            case StlOpCode.On: _stack |= ReadBit(op.A!) ? 0u : 1u; return op.Cost;
+            case StlOpCode.A: And(ReadBit(op.A!)); return op.Cost;
+            case StlOpCode.An: And(!ReadBit(op.A!)); return op.Cost;
+            case StlOpCode.O: Or(ReadBit(op.A!)); return op.Cost;
+            case StlOpCode.On: Or(!ReadBit(op.A!)); return op.Cost;
             case StlOpCode.Not: _stack ^= 1; return op.Cost;
             case StlOpCode.Eu: Edge(op.N, rising: true); return op.Cost;
             case StlOpCode.Ed: Edge(op.N, rising: false); return op.Cost;
@@ -40,21 +40,21 @@ public sealed partial class StlPlc
             case StlOpCode.Ret or StlOpCode.Reti: Return(); return op.Cost;
             case StlOpCode.Mend: EndMain(); return op.Cost;
             case StlOpCode.CmpLd: Push(Compare(op)); return op.Cost;
-            case StlOpCode.CmpA: _stack &= Compare(op) ? ~0u : ~1u; return op.Cost;
-            case StlOpCode.CmpO: _stack |= Compare(op) ? 1u : 0u; return op.Cost;
+            case StlOpCode.CmpA: And(Compare(op)); return op.Cost;
+            case StlOpCode.CmpO: Or(Compare(op)); return op.Cost;
             case StlOpCode.CmpRLd: Push(CompareReal(op)); return op.Cost;
-            case StlOpCode.CmpRA: _stack &= CompareReal(op) ? ~0u : ~1u; return op.Cost;
-            case StlOpCode.CmpRO: _stack |= CompareReal(op) ? 1u : 0u; return op.Cost;
+            case StlOpCode.CmpRA: And(CompareReal(op)); return op.Cost;
+            case StlOpCode.CmpRO: Or(CompareReal(op)); return op.Cost;
             case StlOpCode.Ton or StlOpCode.Tonr or StlOpCode.Tof: Timer(op); return op.Cost;
             case StlOpCode.Ctu or StlOpCode.Ctd or StlOpCode.Ctud: Counter(op); return op.Cost;
             case StlOpCode.Ldi: Push(ReadPhysicalInput(op.A!)); return op.Cost;
             case StlOpCode.Ldni: Push(!ReadPhysicalInput(op.A!)); return op.Cost;
-            case StlOpCode.Ai: _stack &= ReadPhysicalInput(op.A!) ? ~0u : ~1u; return op.Cost;
-            case StlOpCode.Ani: _stack &= ReadPhysicalInput(op.A!) ? ~1u : ~0u; return op.Cost;
-            case StlOpCode.Oi: _stack |= ReadPhysicalInput(op.A!) ? 1u : 0u; return op.Cost;
-            case StlOpCode.Oni: _stack |= ReadPhysicalInput(op.A!) ? 0u : 1u; return op.Cost;
+            case StlOpCode.Ai: And(ReadPhysicalInput(op.A!)); return op.Cost;
+            case StlOpCode.Ani: And(!ReadPhysicalInput(op.A!)); return op.Cost;
+            case StlOpCode.Oi: Or(ReadPhysicalInput(op.A!)); return op.Cost;
+            case StlOpCode.Oni: Or(!ReadPhysicalInput(op.A!)); return op.Cost;
             case StlOpCode.AssignI: WriteImmediate(op.A!, 1, Top); return op.Cost;
-            case StlOpCode.Aeno: _stack &= _eno ? ~0u : ~1u; return op.Cost;
+            case StlOpCode.Aeno: And(_eno); return op.Cost;
             case StlOpCode.Lds: Push(((_stack >> (int)Read(op.A!, 1)) & 1) != 0); return op.Cost;
             case StlOpCode.Lscr: LoadScr(op); return op.Cost;
             case StlOpCode.Scre: _activeScr = null; return op.Cost;
@@ -123,6 +123,12 @@ public sealed partial class StlPlc
     }
 
     private void Push(bool value) => _stack = ((_stack << 1) | (value ? 1u : 0u)) & StackMask;
+
+    /// <summary>A (and AI, AENO, compares): the top of the logic stack ANDed with <paramref name="value"/>.</summary>
+    private void And(bool value) => _stack &= value ? ~0u : ~1u;
+
+    /// <summary>O (and OI, compares): the top of the logic stack ORed with <paramref name="value"/>.</summary>
+    private void Or(bool value) => _stack |= value ? 1u : 0u;
 
     /// <summary>EU/ED: each instruction remembers the top of stack it saw last scan; the top becomes 1 only on the change.</summary>
     private void Edge(int slot, bool rising)
