@@ -75,7 +75,7 @@ public sealed class PanelSessionTests : IAsyncDisposable
 
         var station = _panel.Session.Stations.Should().ContainSingle().Subject;
         station.Health.Should().Be(StationHealth.Online);
-        station.Identity.Should().Match<StationIdentity>(i => i.Model == CpuModel.Cpu224 && i.ProtocolVersion == 2 && i.ModeSwitchRun);
+        station.Identity.Should().Match<StationIdentity>(i => i.Model == CpuModel.Cpu224 && i.ProtocolVersion == HandlerIdentity.ProtocolVersion && i.ModeSwitchRun);
         station.CpuMismatch.Should().BeFalse();
         station.Statistics.Replies.Should().BeGreaterThanOrEqualTo(2, "IDENTIFY and the refresh were answered");
     }
@@ -169,7 +169,7 @@ public sealed class PanelSessionTests : IAsyncDisposable
             return reply;
         }
 
-        var payload = frame.Payload.SetItem(ProtocolLimits.ReplyHeaderBytes - FreeportFrame.OverheadBytes, version);
+        var payload = frame.Payload.SetItem(3, version); // after STATUS and REQCHECK
         return FrameCodec.Encode(frame with { Payload = payload });
     }
 }
