@@ -213,12 +213,12 @@ public sealed class PlcLinkTests
     }
 
     [Theory]
-    [InlineData(LinkKind.Cable, 532.08)]
-    [InlineData(LinkKind.RadioModule, 859.17)]
+    [InlineData(LinkKind.Cable, 742.08)]
+    [InlineData(LinkKind.RadioModule, 1069.16)]
     public void ReplyTimeout_Identify9600_IsLineTimePlusDelayScansMediumAndMargin(LinkKind kind, double milliseconds)
     {
         // IDENTIFY: 12 request + 62 reply characters, 10 bits each at 9600 baud = 77.08 ms; + 5 ms delay + 100 ms scan
-        // + 11 handler scans (4 + 1 + 6) x 30 ms + 20 ms margin; a radio module adds 250 ms and the line time once more.
+        // + 18 handler scans (5 + 2 + 11) x 30 ms + 20 ms margin; a radio module adds 250 ms and the line time once more.
         var options = LinkOptions.For(Some.SerialSettings(9600, kind));
 
         options.ReplyTimeoutFor(new IdentifyRequest(Station2, 1)).TotalMilliseconds.Should().BeApproximately(milliseconds, 0.01);
