@@ -21,7 +21,7 @@ public static class HandlerGenerator
 
         var program = HandlerBuilder.Build(options);
         var stats = StatsOf(options, program);
-        var layout = new HandlerLayout(options.EffectiveBufferStart);
+        var layout = new HandlerLayout(options.EffectiveBufferStart, options.CopyBytes);
         return new HandlerGenerationResult(
             diagnostics, program, stats, AwlWriter.Write(program), SymbolTableWriter.Write(layout), TechnicianNotes.Write(options, stats));
     }

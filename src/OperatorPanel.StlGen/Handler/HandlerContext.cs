@@ -12,7 +12,7 @@ internal sealed class HandlerContext
     public HandlerContext(HandlerOptions options)
     {
         Options = options;
-        Layout = new HandlerLayout(options.EffectiveBufferStart);
+        Layout = new HandlerLayout(options.EffectiveBufferStart, options.CopyBytes);
         Port = options.Port;
         VBytes = HandlerDefaults.VBytes(options.Cpu);
         SmBytes = options.Cpu.TryGetArea(MemoryArea.SM, out var sm) ? sm.ByteCount : 0;

@@ -9,9 +9,9 @@ namespace OperatorPanel.StlGen.Handler;
 /// order of the work bytes matters: one ATH fills N, I, CMD from the header; one HTA writes CMD|80 and STATUS (kept
 /// in LIST) into the reply; START and LCOUNT are indexed by the list id; SAVE holds AC0-AC3 in that order.
 /// </summary>
-public sealed class HandlerLayout(int bufferStart)
+public sealed partial class HandlerLayout(int bufferStart, int copyBytes)
 {
-    public const int WorkBytes = 36;
+    public const int WorkBytes = ChangesFirst + ChangesBytes - 256;
     public const int Subroutines = 1;
     public const int Interrupts = 3;
 
@@ -23,7 +23,7 @@ public sealed class HandlerLayout(int bufferStart)
 
     public int BufferStart { get; } = bufferStart;
 
-    public int LastByte => BufferStart + 256 + WorkBytes - 1;
+    public int LastByte => BufferStart + CopyArea + CopyBytes - 1;
 
     /// <summary>"VB7900" for buffer byte 0.</summary>
     public string B(int offset) => "VB" + Abs(offset);
@@ -54,6 +54,7 @@ public sealed class HandlerLayout(int bufferStart)
         ("OP_BUDGET", B(Budget), "Panel handler: loop passes left in this scan"),
         ("OP_CHUNK", W(Chunk), "Panel handler: characters of this pass of the block check"),
         .. Enumerable.Range(0, 4).Select(n => ($"OP_AC{n}", Dw(Save + (4 * n)), $"Panel handler: AC{n} kept between scans")),
+        .. ChangesSymbols,
     ];
 
     private string Abs(int offset) => (BufferStart + offset).ToString(CultureInfo.InvariantCulture);

@@ -41,7 +41,7 @@ internal static class SlicePart
     [
         (StepRequestCheck, RequestCheckPass), (StepHeader, Header), (StepCheckItems, HandlerLabels.CheckItems),
         (StepItemsChecked, ItemsChecked), (StepBuildItems, HandlerLabels.BuildItems), (StepReplyCheck, ReplyCheck),
-        (StepReplyCheckPass, ReplyCheckPass), (StepWriteReadBack, WriteReadBack),
+        (StepReplyCheckPass, ReplyCheckPass), (StepWriteReadBack, WriteReadBack), .. ChangesPart.Resumes,
     ];
 
     /// <summary>The start of the work on a request: nothing to do, or accumulators back and on where STEP says.</summary>
