@@ -55,6 +55,11 @@ public static class HandlerGenerator
         var layout = context.Layout;
         return new HandlerStats(
             layout.BufferStart, layout.LastByte, program.InstructionCount, options.Port,
-            [context.ReceiveEvent, HandlerContext.DelayEvent, context.TransmitEvent], [.. blocks]);
+            [context.ReceiveEvent, HandlerContext.DelayEvent, context.TransmitEvent], [.. blocks])
+        {
+            CopyBytes = options.CopyBytes,
+            ChangesWorkBytes = HandlerLayout.ChangesBytes,
+            StopEnabled = options.AllowStop,
+        };
     }
 }
