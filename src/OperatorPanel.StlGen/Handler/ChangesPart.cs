@@ -20,17 +20,17 @@ internal static class ChangesPart
     public const int BytesPerScan = 16;
 
     /// <summary>STEP values of READ CHANGES.</summary>
-    public const int StepCompare = 10, StepCopyItems = 11;
+    public const int StepCompare = 20, StepCopyItems = 21;
 
     /// <summary>Labels: the comparison (its resume, loop, byte, next byte, done), the whole list into the copy.</summary>
-    public const int CompareResume = 79, CompareLoop = 80, CompareByte = 82, NextByte = 84, CompareDone = 85,
-        FullAgain = 86, FullWithCopy = 87, CopyItem = 88;
+    public const int CompareResume = 100, CompareLoop = 101, CompareByte = 102, NextByte = 103, CompareDone = 104,
+        FullAgain = 105, FullWithCopy = 106, CopyItem = 107;
 
     /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes).</summary>
     public static IEnumerable<(int Step, int Label)> Resumes => [(StepCompare, CompareResume), (StepCopyItems, CopyItem)];
 
-    /// <summary>The first payload character of a reply (after '&lt;', STATION, SEQ, CMD, STATUS).</summary>
-    private const int Payload = 10;
+    /// <summary>The first payload character of a reply (after '&lt;', STATION, SEQ, CMD, STATUS, REQCHECK).</summary>
+    private const int Payload = ReplyPart.PayloadStart;
 
     /// <summary>"FF" in the two payload characters of K: the whole list follows.</summary>
     private const string FullMark = "16#4646";
@@ -55,10 +55,10 @@ internal static class ChangesPart
             .Op("LDB=", l.B(MaxD), "0").Op("MOVB", "0", l.B(CFree)).Build();
         yield return Always(
             "DEFINE LIST: the list's copy state",
-            "AC3 points at CSTART of the list: no copy yet (255); CD = D; CVALID = 0 (the first READ CHANGES answers the whole list). AC0 = CFREE + D.",
+            "AC3 points at CSTART of the list: no copy yet (255); CD = D, bit 7 clear: the first READ CHANGES answers the whole list. AC0 = CFREE + D.",
             Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"), Op("MOVD", l.Ptr(CStart1 - 1), "AC3"), Op("+D", "AC0", "AC3"),
-            Op("MOVB", Dec(NoCopy), "*AC3"), Op("+D", "4", "AC3"), Op("MOVB", l.B(D), "*AC3"), Op("+D", "4", "AC3"),
-            Op("MOVB", "0", "*AC3"), Op("-D", "8", "AC3"), Op("BTI", l.B(CFree), "AC0"), Op("BTI", l.B(D), "AC2"), Op("+I", "AC2", "AC0"));
+            Op("MOVB", Dec(NoCopy), "*AC3"), Op("+D", "4", "AC3"), Op("MOVB", l.B(D), "*AC3"), Op("-D", "4", "AC3"),
+            Op("BTI", l.B(CFree), "AC0"), Op("BTI", l.B(D), "AC2"), Op("+I", "AC2", "AC0"));
         yield return new NetworkBuilder(
                 "DEFINE LIST: a copy if D bytes are left",
                 $"CFREE + D <= {c.Options.CopyBytes}: CSTART = CFREE, CFREE = CFREE + D; else the list has no copy (always the whole list).")
@@ -70,9 +70,10 @@ internal static class ChangesPart
         var l = c.Layout;
         var e07 = HandlerLabels.Error(ProtocolError.ListNotDefined);
         yield return Label(HandlerLabels.ReadChanges, "08 READ CHANGES");
-        yield return JumpIf("READ CHANGES: body exactly 5 bytes", $"Error 04 unless count = {V1RequestChars(5)}.",
-            HandlerLabels.Error(ProtocolError.BadLength), Op("LDB<>", l.B(0), Dec(V1RequestChars(5))));
-        yield return JumpIf("READ CHANGES: FLAGS", "Only bit 0 (FULL) may be set: error 06.", HandlerLabels.Error(ProtocolError.BadParameter), Op("LDB>", l.B(9), "1"));
+        yield return JumpIf("READ CHANGES: body exactly 5 bytes", $"Error 04 unless count = {RequestChars(2)}.",
+            HandlerLabels.Error(ProtocolError.BadLength), Op("LDB<>", l.B(0), RequestChars(2)));
+        yield return JumpIf("READ CHANGES: FLAGS", "Only bit 0 (FULL) may be set: error 06.", HandlerLabels.Error(ProtocolError.BadParameter),
+            Op("LDB>", l.B(9), Dec(ReadChangesFlags.Full)));
         yield return JumpIf("READ CHANGES: LIST 1-4", "Any other LIST is never defined: error 07.", e07, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), "4"));
         yield return Always(
             "READ CHANGES: the list's descriptors",
@@ -96,11 +97,11 @@ internal static class ChangesPart
             Op("LDB=", "*AC3", Dec(NoCopy)), Op("MOVB", Dec(SlicePart.StepBuildItems), l.B(Step)));
         yield return Always(
             "READ CHANGES: the copy",
-            "AC0 = first copy byte of the list (copy area + CSTART, through OP_AC0 as scratch); D = CD; AC3 on to CVALID.",
+            "AC0 = first copy byte of the list (copy area + CSTART, through OP_AC0 as scratch); D = CD with its valid bit; AC3 on to CD.",
             Op("MOVD", l.Ptr(CopyArea), "AC0"), Op("MOVD", "0", l.Dw(Save)), Op("MOVB", "*AC3", l.B(Save + 3)), Op("+D", l.Dw(Save), "AC0"),
-            Op("+D", "4", "AC3"), Op("MOVB", "*AC3", l.B(D)), Op("+D", "4", "AC3"));
-        yield return JumpIf("READ CHANGES: FULL asked or no valid copy", "FLAGS bit 0, or CVALID = 0: the whole list into the copy and the reply.",
-            FullWithCopy, Op("LD", l.Bit(9, 0)), Op("OB=", "*AC3", "0"));
+            Op("+D", "4", "AC3"), Op("MOVB", "*AC3", l.B(D)), Op("ANDB", Hex(~CopyValid & 0xFF), l.B(D)));
+        yield return JumpIf("READ CHANGES: FULL asked or no valid copy", "FLAGS bit 0, or CD bit 7 clear: the whole list into the copy and the reply.",
+            FullWithCopy, Op("LD", l.Bit(9, 0)), Op("OB<", "*AC3", Dec(CopyValid)));
         yield return Always(
             "READ CHANGES: compare with the copy",
             "K = 0, INDEX = 0, no item begun (CLEFT = 0); N = (D + 1) / 2: with K >= N pairs (2K >= D) the whole list is not longer. "
@@ -135,7 +136,7 @@ internal static class ChangesPart
         yield return JumpIf("Comparison: byte unchanged", "Same as the copy: nothing to send.", NextByte, Op("LDB=", "*AC3", "*AC2"));
         yield return Always(
             "Comparison: byte changed", "The copy takes the new value; VALUE = the copy's byte, the value the pair reports; one pair more.",
-            Op("MOVB", "*AC3", "*AC2"), Op("MOVB", "*AC2", l.B(Value)), Op("INCB", l.B(K)));
+            Op("MOVB", "*AC3", "*AC2"), Op("MOVB", "*AC2", l.B(PairValue)), Op("INCB", l.B(K)));
         yield return JumpIf("Comparison: pairs not shorter", "K >= N (2K >= D): the whole list instead.", FullAgain, Op("LDB>=", l.B(K), l.B(N)));
         yield return Always("Comparison: the pair", "INDEX and VALUE as 4 characters at AC1.", Op("HTA", l.B(PairIndex), "*AC1", "4"), Op("+D", "4", "AC1"));
         yield return Label(NextByte, "READ CHANGES: next byte");
@@ -159,15 +160,15 @@ internal static class ChangesPart
         yield return Label(FullAgain, "READ CHANGES: the whole list after all");
         yield return Always(
             "READ CHANGES: the list again",
-            "As at the start: AC2 at the first descriptor, I = item count, AC0 at the first copy byte, AC3 at CVALID.",
+            "As at the start: AC2 at the first descriptor, I = item count, AC0 at the first copy byte, AC3 at CD.",
             Op("MOVD", l.Ptr(Start1 - 1), "AC3"), Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"),
             Op("MOVD", l.Ptr(0), "AC2"), Op("BTI", "*AC3", "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC2"), Op("+D", "4", "AC3"),
             Op("MOVB", "*AC3", l.B(I)), Op("+D", Dec(CStart1 - LCount1), "AC3"), Op("MOVD", l.Ptr(CopyArea), "AC0"), Op("MOVD", "0", l.Dw(Save)),
-            Op("MOVB", "*AC3", l.B(Save + 3)), Op("+D", l.Dw(Save), "AC0"), Op("+D", "8", "AC3"));
+            Op("MOVB", "*AC3", l.B(Save + 3)), Op("+D", l.Dw(Save), "AC0"), Op("+D", "4", "AC3"));
         yield return Label(FullWithCopy, "READ CHANGES: the whole list into the copy");
         yield return Always(
-            "READ CHANGES: the copy is renewed", "CVALID = 1: after this reply the copy holds what it reports. AC1 = the copy pointer (AC0 is no pointer).",
-            Op("MOVB", "1", "*AC3"), Op("MOVD", "AC0", "AC1"));
+            "READ CHANGES: the copy is renewed", "CD bit 7 set: after this reply the copy holds what it reports. AC1 = the copy pointer (AC0 is no pointer).",
+            Op("ORB", Hex(CopyValid), "*AC3"), Op("MOVD", "AC0", "AC1"));
         yield return SlicePart.Pause(c, "READ CHANGES: whole list ready", StepCopyItems);
         yield return Label(CopyItem, "READ CHANGES: next item into the copy");
         foreach (var network in AreaStart("*AC2"))
@@ -192,7 +193,4 @@ internal static class ChangesPart
             Op("SLB", l.B(K), "1"), Op("HTA", "*AC2", l.B(Payload + 2), l.B(K)), Op("MOVD", l.Ptr(Payload + 2), "AC1"), Op("+D", l.Dw(Save), "AC1"), Op("+D", l.Dw(Save), "AC1"),
             Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
     }
-
-    /// <summary>Characters of a v1 request of <paramref name="bodyBytes"/> bytes: '&lt;', the body and BCC as hex, '&gt;'.</summary>
-    private static int V1RequestChars(int bodyBytes) => (2 * (bodyBytes + 1)) + 2;
 }

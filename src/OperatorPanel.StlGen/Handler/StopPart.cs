@@ -44,13 +44,13 @@ internal static class StopPart
 
         var l = c.Layout;
         yield return Label(HandlerLabels.Stop, "07 STOP");
-        yield return JumpIf("STOP: body exactly 7 bytes", $"Error 04 unless count = {V1RequestChars(7)}.",
-            HandlerLabels.Error(ProtocolError.BadLength), Op("LDB<>", l.B(0), Dec(V1RequestChars(7))));
+        yield return JumpIf("STOP: body exactly 7 bytes", $"Error 04 unless count = {RequestChars(4)}.",
+            HandlerLabels.Error(ProtocolError.BadLength), Op("LDB<>", l.B(0), RequestChars(4)));
         yield return JumpIf("STOP: payload 'STOP'", "Bytes 53 54 4F 50, else error 06.", HandlerLabels.Error(ProtocolError.BadParameter),
             Op("LDD<>", l.Dw(8), StopWord));
         yield return Always(
             "STOP: reply, then STOP", "OP_STOP = 1: the transmit-complete routine marks the reply sent; STATUS 00, no payload.",
-            Op("MOVB", "1", l.B(StopState)), Op("MOVD", l.Ptr(10), "AC1"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
+            Op("MOVB", "1", l.B(StopState)), Op("MOVD", l.Ptr(ReplyPart.PayloadStart), "AC1"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
     }
 
     /// <summary>In the transmit-complete routine: the reply that left was the STOP reply (bit 0) -> sent (bit 1).</summary>
@@ -66,6 +66,4 @@ internal static class StopPart
     /// <summary>Port set up or given back (RUN, TERM, first scan): no STOP reply is on its way.</summary>
     public static NetworkBuilder Forget(this NetworkBuilder net, HandlerContext c) =>
         c.Options.AllowStop ? net.Op("MOVB", "0", c.Layout.B(StopState)) : net;
-
-    private static int V1RequestChars(int bodyBytes) => (2 * (bodyBytes + 1)) + 2;
 }
