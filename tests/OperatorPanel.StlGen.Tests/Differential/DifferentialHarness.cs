@@ -91,6 +91,9 @@ internal sealed class DifferentialHarness
 
     public long Instructions => _plc.InstructionsExecuted;
 
+    /// <summary>RUN or STOP of the interpreted CPU (a handler's STOP stops it).</summary>
+    public Simulator.Reference.OperatingMode Mode => _plc.Mode;
+
     /// <summary>Sets the same bytes in both PLCs (I through the interpreter's input image).</summary>
     public void Poke(ProtocolArea area, int offset, params byte[] bytes)
     {
