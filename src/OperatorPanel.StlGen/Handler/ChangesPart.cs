@@ -17,18 +17,18 @@ namespace OperatorPanel.StlGen.Handler;
 internal static class ChangesPart
 {
     /// <summary>Chunks the comparison handles per scan, and the most bytes of one item in a chunk.</summary>
-    public const int ChunksPerScan = 2, ChunkBytes = 8;
+    public const int ChunksPerScan = 1, ChunkBytes = 8;
 
     /// <summary>STEP values of READ CHANGES.</summary>
-    public const int StepCompare = 20, StepCopyItems = 21;
+    public const int StepCompare = 20, StepCopyItems = 21, StepCopyToReply = 22;
 
     /// <summary>Labels: the comparison (its resume, loop, byte, next byte, done), the whole list into the copy.</summary>
     public const int CompareResume = 100, CompareLoop = 101, CompareChunk = 102, CompareDone = 104,
-        FullAgain = 105, FullWithCopy = 106, CopyItem = 107;
+        CopyToReply = 105, FullWithCopy = 106, CopyItem = 107;
 
     /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes; none without copies).</summary>
     public static IEnumerable<(int Step, int Label)> Resumes(HandlerContext c) =>
-        c.Options.CopyBytes == 0 ? [] : [(StepCompare, CompareResume), (StepCopyItems, CopyItem)];
+        c.Options.CopyBytes == 0 ? [] : [(StepCompare, CompareResume), (StepCopyItems, CopyItem), (StepCopyToReply, CopyToReply)];
 
     /// <summary>The first payload character of a reply (after '&lt;', STATION, SEQ, CMD, STATUS, REQCHECK).</summary>
     private const int Payload = ReplyPart.PayloadStart;
@@ -116,7 +116,8 @@ internal static class ChangesPart
     /// AC0 = next descriptor, AC1 = next reply character, AC2 = copy byte, AC3 = the list's byte in its area. A scan
     /// compares <see cref="ChunksPerScan"/> chunks of at most <see cref="ChunkBytes"/> bytes of one item (starting the
     /// item when needed), each chunk one FOR loop (OP_AC1's words as its index and count: SAVE is free within a slice).
-    /// A changed byte goes into the copy; its pair is written while K &lt; N; at the end K &gt;= N means the whole list.
+    /// A changed byte goes into the copy; its pair is written while K &lt; N; at the end K &gt;= N means the whole list,
+    /// sent from the copy, which then holds every byte as compared.
     /// </summary>
     private static IEnumerable<StlNetwork> Compare(HandlerContext c)
     {
@@ -161,24 +162,22 @@ internal static class ChangesPart
         yield return new NetworkBuilder("Comparison: end of the chunk").Op("NEXT").Build();
         yield return JumpIf("Comparison: go on", "Next chunk or item.", CompareLoop, Op("LD", "SM0.0"));
         yield return Label(CompareDone, "READ CHANGES: comparison done");
-        yield return JumpIf("Comparison: pairs not shorter", "K >= N (2K >= D): the whole list instead.", FullAgain, Op("LDB>=", l.B(K), l.B(N)));
+        yield return JumpIf(
+            "Comparison: pairs not shorter",
+            "K >= N (2K >= D): the whole list instead. The copy took every changed byte, so it holds the list as compared: the next scan sends it (AC1 = its end).",
+            SlicePart.Yield, Op("LDB>=", l.B(K), l.B(N)), Op("MOVD", "AC2", "AC1"), Op("MOVB", Dec(StepCopyToReply), l.B(Step)));
         yield return Always(
             "READ CHANGES: K pairs", "K as the first 2 payload characters; STATUS 00; finish the reply (AC1 is after the pairs).",
             Op("HTA", l.B(K), l.B(Payload), "2"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
     }
 
-    /// <summary>The whole list into the copy item by item, then the copy as characters: the reply and the copy agree.</summary>
+    /// <summary>
+    /// The whole list into the copy item by item, then the copy as characters: the reply and the copy agree. In: AC0 at
+    /// the first copy byte, AC2 at the first descriptor, AC3 at CD, I = item count.
+    /// </summary>
     private static IEnumerable<StlNetwork> Full(HandlerContext c)
     {
         var l = c.Layout;
-        yield return Label(FullAgain, "READ CHANGES: the whole list after all");
-        yield return Always(
-            "READ CHANGES: the list again",
-            "As at the start: AC2 at the first descriptor, I = item count, AC0 at the first copy byte, AC3 at CD.",
-            Op("MOVD", l.Ptr(Start1 - 1), "AC3"), Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"),
-            Op("MOVD", l.Ptr(0), "AC2"), Op("BTI", "*AC3", "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC2"), Op("+D", "4", "AC3"),
-            Op("MOVB", "*AC3", l.B(I)), Op("+D", Dec(CStart1 - LCount1), "AC3"), Op("MOVD", l.Ptr(CopyArea), "AC0"), Op("MOVD", "0", l.Dw(Save)),
-            Op("MOVB", "*AC3", l.B(Save + 3)), Op("+D", l.Dw(Save), "AC0"), Op("+D", "4", "AC3"));
         yield return Label(FullWithCopy, "READ CHANGES: the whole list into the copy");
         yield return Always(
             "READ CHANGES: the copy is renewed", "CD bit 7 set: after this reply the copy holds what it reports. AC1 = the copy pointer (AC0 is no pointer).",
@@ -200,6 +199,7 @@ internal static class ChangesPart
             "Whole list: scan's passes used", "Items left, no pass left in this scan: the next scan goes on.", SlicePart.Yield,
             Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"), Op("MOVB", Dec(StepCopyItems), l.B(Step)));
         yield return JumpIf("Whole list: more items", "Back while items are left.", CopyItem, Op("LDB<>", l.B(I), "0"));
+        yield return Label(CopyToReply, "READ CHANGES: the copy as the reply");
         yield return Always(
             "Whole list: the copy as characters",
             $"AC2 = AC1 - D, the first copy byte; HTA 2D characters (K as scratch for the count) to buffer byte {Payload + 2}; AC1 after them; STATUS 00.",

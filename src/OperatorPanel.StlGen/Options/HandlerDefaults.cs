@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.StlGen.Handler;
 
 namespace OperatorPanel.StlGen.Options;
@@ -16,7 +17,7 @@ public static class HandlerDefaults
     public const int CopyBytes = 120;
 
     /// <summary>The 256-byte receive/transmit buffer (byte 0 = count), the work bytes and <paramref name="copyBytes"/> copy bytes.</summary>
-    public static int FootprintBytes(int copyBytes) => 256 + HandlerLayout.WorkBytes + copyBytes;
+    public static int FootprintBytes(int copyBytes) => HandlerMemory.BufferBytes + HandlerLayout.WorkBytes + copyBytes;
 
     /// <summary>
     /// The top of V memory: user programs grow from VB0 upwards, so the end of V is the place least likely to be in
