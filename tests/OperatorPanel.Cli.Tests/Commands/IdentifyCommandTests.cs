@@ -12,7 +12,7 @@ public sealed class IdentifyCommandTests
 
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Should().Contain("station       7 on demo")
-            .And.Contain("protocol      version 1, handler revision 1, at most 119 bytes per READ (2 fewer per further item)")
+            .And.Contain("protocol      version 2, handler revision 1, at most 116 bytes per READ (2 fewer per further item)")
             .And.Contain("generated for CPU 224 (Current)")
             .And.Contain("SMB6          16#20: CPU 224 or CPU 224XP")
             .And.Contain("mode switch   RUN")

@@ -29,7 +29,7 @@ public sealed class SimulatedLineFactoryTests
         stl.Stations.Should().HaveCount(2);
         stl.Processes.Should().BeEmpty();
         stl.RunUntil(TimeSpan.FromMilliseconds(50));
-        Decode(Exchange(stl, Identify(3, sequence: 7), TimeSpan.FromMilliseconds(100))).Should().Match<Core.Protocol.FreeportFrame>(f => f.Station == 3 && f.Sequence == 7);
+        Decode(Exchange(stl, Identify(3, sequence: 7), TimeSpan.FromMilliseconds(400))).Should().Match<Core.Protocol.FreeportFrame>(f => f.Station == 3 && f.Sequence == 7);
     }
 
     [Fact]

@@ -34,15 +34,15 @@ public sealed class SimulatedPlcHostTests
         await pair.PanelSide.WriteAsync(request, default);
         await SettleAsync(() => line.FramesReceived == 1 && time.ActiveTimers == 1);
         var early = await AdvanceAsync(time, line, (origin, start), TimeSpan.FromMilliseconds(14), pair.PanelSide);
-        var late = await AdvanceAsync(time, line, (origin, start), TimeSpan.FromMilliseconds(100), pair.PanelSide);
+        var late = await AdvanceAsync(time, line, (origin, start), TimeSpan.FromMilliseconds(400), pair.PanelSide);
         await stop.CancelAsync();
         await FluentActions.Awaiting(() => run).Should().ThrowAsync<OperationCanceledException>();
 
-        early.Should().BeEmpty("the 10-character request ends after 10.4 ms, the reply waits 5 ms more and its first character takes 1 ms");
+        early.Should().BeEmpty("the 12-character request ends after 12.5 ms, the reply waits 5 ms more and its first character takes 1 ms");
         FrameCodec.TryDecode(late, out var reply, out var error).Should().BeTrue(error.ToString());
         (reply.Station, reply.Command).Should().Be((2, (byte)((byte)CommandCode.Identify | FreeportFrame.ReplyBit)));
         host.Replies.Should().Be(1);
-        line.Now.Should().Be(origin + TimeSpan.FromMilliseconds(100));
+        line.Now.Should().Be(origin + TimeSpan.FromMilliseconds(400));
     }
 
     /// <summary>

@@ -50,6 +50,14 @@ internal static class StlStations
         return line.TakeCharacters();
     }
 
+    /// <summary>The data of a good reply: its payload after STATUS 00 and REQCHECK.</summary>
+    public static byte[] Data(IEnumerable<WireCharacter> characters)
+    {
+        var payload = Decode(characters).Payload;
+        payload[0].Should().Be(0x00, "STATUS 00");
+        return [.. payload.Skip(ProtocolLimits.ReplyHeaderBytes - FreeportFrame.OverheadBytes)];
+    }
+
     public static FreeportFrame Decode(IEnumerable<WireCharacter> characters)
     {
         FrameCodec.TryDecode([.. characters.Select(c => c.Value)], out var frame, out var error).Should().BeTrue($"the reply must be one valid frame ({error})");
