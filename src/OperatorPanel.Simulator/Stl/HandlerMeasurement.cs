@@ -61,6 +61,15 @@ public static class HandlerMeasurement
         yield return ("WRITE BIT", RequestCodec.Encode(new WriteBitRequest(station, 5, ProtocolArea.V, v, 3, true)));
         yield return ("DEFINE LIST 20 items", RequestCodec.Encode(new DefineListRequest(station, 6, 1, twenty)));
         yield return ("READ LIST 20 items", RequestCodec.Encode(new ReadListRequest(station, 7, 1)));
+
+        // READ CHANGES of that list: the first fills the copy (whole list), then none changed (the idle station's
+        // cost), one changed, and 40 changed: 2K >= D, compared to the end and then answered whole.
+        yield return ("READ CHANGES 77 bytes whole", RequestCodec.Encode(new ReadChangesRequest(station, 9, 1, false)));
+        yield return ("READ CHANGES none changed", RequestCodec.Encode(new ReadChangesRequest(station, 10, 1, false)));
+        yield return ("WRITE BIT in the list", RequestCodec.Encode(new WriteBitRequest(station, 11, ProtocolArea.V, v + 80, 0, true)));
+        yield return ("READ CHANGES 1 changed", RequestCodec.Encode(new ReadChangesRequest(station, 12, 1, false)));
+        yield return ("WRITE 50 bytes in the list", RequestCodec.Encode(new WriteBlockRequest(station, 13, ProtocolArea.V, v, [.. Enumerable.Range(0, 50).Select(i => (byte)~i)])));
+        yield return ("READ CHANGES 40 changed", RequestCodec.Encode(new ReadChangesRequest(station, 14, 1, false)));
         var bad = RequestCodec.Encode(new IdentifyRequest(station, 8));
         bad[^2] ^= 0x01;
         yield return ("bad frame check", bad);

@@ -12,7 +12,7 @@ internal sealed class HandlerContext
     public HandlerContext(HandlerOptions options)
     {
         Options = options;
-        Layout = new HandlerLayout(options.EffectiveBufferStart);
+        Layout = new HandlerLayout(options.EffectiveBufferStart, options.CopyBytes);
         Port = options.Port;
         VBytes = HandlerDefaults.VBytes(options.Cpu);
         SmBytes = options.Cpu.TryGetArea(MemoryArea.SM, out var sm) ? sm.ByteCount : 0;
@@ -31,13 +31,13 @@ internal sealed class HandlerContext
     public int SmBytes { get; }
 
     /// <summary>V_BYTES of IDENTIFY: the buffer, the work bytes and the READ CHANGES copies.</summary>
-    public const int HandlerVBytes = HandlerDefaults.FootprintBytes + CopyBytes;
+    public int HandlerVBytes => HandlerDefaults.FootprintBytes(CopyBytes);
 
-    /// <summary>COPY_BYTES of IDENTIFY: 0, this handler keeps no READ CHANGES copies.</summary>
-    public const byte CopyBytes = 0;
+    /// <summary>COPY_BYTES of IDENTIFY: the READ CHANGES copy area (0 = none).</summary>
+    public int CopyBytes => Options.CopyBytes;
 
-    /// <summary>FEATURES of IDENTIFY: neither STOP (bit 0) nor READ CHANGES copies (bit 1) in this handler.</summary>
-    public const byte Features = 0;
+    /// <summary>FEATURES of IDENTIFY: bit 0 = 07 STOP included, bit 1 = READ CHANGES copies present.</summary>
+    public int Features => (Options.AllowStop ? 1 : 0) | (CopyBytes > 0 ? 2 : 0);
 
     /// <summary>"0" or "1": the PORT operand of RCV and XMT.</summary>
     public string PortOperand => Port.ToString(CultureInfo.InvariantCulture);

@@ -12,7 +12,7 @@ namespace OperatorPanel.StlGen.Handler;
 /// N, I, CMD and LIST double as <see cref="Scratch"/> while a frame's check is computed (before the request's header
 /// is decoded, after the reply's header is written): the CRC's temporary word and the four check characters.
 /// </summary>
-public sealed class HandlerLayout(int bufferStart)
+public sealed partial class HandlerLayout(int bufferStart, int copyBytes)
 {
     /// <summary>The work bytes after the buffer: Core's count, which the reference model and IDENTIFY's V_BYTES use too.</summary>
     public const int WorkBytes = HandlerMemory.WorkBytes;
@@ -37,7 +37,7 @@ public sealed class HandlerLayout(int bufferStart)
 
     public int BufferStart { get; } = bufferStart;
 
-    public int LastByte => BufferStart + 256 + WorkBytes - 1;
+    public int LastByte => BufferStart + CopyArea + CopyBytes - 1;
 
     /// <summary>"VB7900" for buffer byte 0.</summary>
     public string B(int offset) => "VB" + Abs(offset);
@@ -69,6 +69,7 @@ public sealed class HandlerLayout(int bufferStart)
         .. Enumerable.Range(0, 4).Select(n => ($"OP_AC{n}", Dw(Save + (4 * n)), $"Panel handler: AC{n} kept between scans")),
         ("OP_CRC", W(Crc), "Panel handler: CRC-16 register of the frame check"),
         ("OP_D", B(D), "Panel handler: sum of the item lengths; bit mask of WRITE BIT"),
+        .. ChangesSymbols,
     ];
 
     private string Abs(int offset) => (BufferStart + offset).ToString(CultureInfo.InvariantCulture);

@@ -28,7 +28,7 @@ internal static class IdentifyPart
             HandlerIdentity.CpuRevisionCode(c.Options.Cpu.Revision), (byte)c.Options.WriteMask, HandlerIdentity.MaxReadData,
             (byte)c.Options.ReplyDelayMs,
         };
-        int[] memoryBytes = [c.Port, l.BufferStart >> 8, l.BufferStart & 0xFF, HandlerVBytes >> 8, HandlerVBytes & 0xFF, Features, CopyBytes];
+        int[] memoryBytes = [c.Port, l.BufferStart >> 8, l.BufferStart & 0xFF, c.HandlerVBytes >> 8, c.HandlerVBytes & 0xFF, c.Features, c.CopyBytes];
         var chars = HexChars(fixedBytes.Select(b => (int)b));
         var memory = HexChars(memoryBytes);
         yield return Label(HandlerLabels.Identify, "01 IDENTIFY");
@@ -46,7 +46,7 @@ internal static class IdentifyPart
         yield return new NetworkBuilder(
                 "IDENTIFY: scan times and the handler's memory",
                 "SMW22 last, SMW24 minimum, SMW26 maximum scan time: 12 characters. Then",
-                $"'{memory}': port {c.Port}, V_FIRST {l.BufferStart}, V_BYTES {HandlerVBytes}, FEATURES {Features}, COPY_BYTES {CopyBytes}.",
+                $"'{memory}': port {c.Port}, V_FIRST {l.BufferStart}, V_BYTES {c.HandlerVBytes}, FEATURES {c.Features}, COPY_BYTES {c.CopyBytes}.",
                 $"The reply payload ends before byte {End}.")
             .Op("LD", "SM0.0").Op("HTA", "SMB22", l.B(ScanTimes), "12").Ops(Text(l, Memory, memory))
             .Op("MOVD", l.Ptr(End), "AC1").Op("MOVB", "0", l.B(List)).Op("JMP", Dec(HandlerLabels.Finish)).Build();

@@ -77,6 +77,11 @@ internal static class ListPart
             Op("SLW", "AC2", "2"), Op("-I", "AC2", "AC3"));
         yield return JumpIf("DEFINE LIST: the lists do not fit together", "A reply would reach the new floor: error 04, nothing stored.",
             HandlerLabels.Error(ProtocolError.BadLength), Op("LDW>", "AC0", "AC3"));
+        foreach (var network in c.Options.CopyBytes == 0 ? [] : ChangesPart.Allocate(c))
+        {
+            yield return network;
+        }
+
         yield return Always(
             "DEFINE LIST: store", "START = LAST_FREE + 1 - 4N, LCOUNT = N, LAST_FREE = START - 1. The descriptors are in place already.",
             Op("MOVD", l.Ptr(Start1 - 1), "AC3"), Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"),

@@ -25,6 +25,12 @@ internal static class ReceivePart
         (CommandCode.DefineList, HandlerLabels.DefineList, "DEFINE LIST"), (CommandCode.ReadList, HandlerLabels.ReadList, "READ LIST"),
     ];
 
+    /// <summary>08 READ CHANGES always; 07 STOP only when generated with it (else CMD 07 is unknown: 05).</summary>
+    private static IEnumerable<(CommandCode Code, int Label, string Name)> V2Commands(HandlerContext c) =>
+        c.Options.AllowStop
+            ? [(CommandCode.Stop, HandlerLabels.Stop, "STOP"), (CommandCode.ReadChanges, HandlerLabels.ReadChanges, "READ CHANGES")]
+            : [(CommandCode.ReadChanges, HandlerLabels.ReadChanges, "READ CHANGES")];
+
     public static IEnumerable<StlNetwork> Interrupt(HandlerContext c)
     {
         var l = c.Layout;
@@ -74,7 +80,7 @@ internal static class ReceivePart
         yield return JumpIf(
             "Step 4: a reply overheard on the bus", $"CMD bit {ReplyBitNumber} set: another station's reply, silence.", silence,
             Op("LD", l.Bit(Cmd, ReplyBitNumber)));
-        foreach (var (code, label, name) in Commands)
+        foreach (var (code, label, name) in Commands.Concat(V2Commands(c)))
         {
             yield return JumpIf($"Step 5: command {(byte)code:D2} {name}", $"CMD = {Dec(code)}: go to label {label}.", label, Op("LDB=", l.B(Cmd), Dec(code)));
         }

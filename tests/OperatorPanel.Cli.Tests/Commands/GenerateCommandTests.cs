@@ -21,8 +21,8 @@ public sealed class GenerateCommandTests : IDisposable
         Directory.GetFiles(Out).Select(Path.GetFileName).Should().BeEquivalentTo("PLC_2-handler.awl", "PLC_2-symbols.txt", "PLC_2-README.txt");
         var awl = File.ReadAllBytes(Path.Combine(Out, "PLC_2-handler.awl"));
         awl.Should().NotContain(b => b > 0x7E);
-        File.ReadAllText(Path.Combine(Out, "PLC_2-handler.awl")).Should().Contain("SUBROUTINE_BLOCK OP_PANEL:SBR63\r\n").And.Contain("LDB<>  VB8140, 2\r\n");
-        File.ReadAllText(Path.Combine(Out, "PLC_2-symbols.txt")).Should().StartWith("OP_BUF\tVB7884\t");
+        File.ReadAllText(Path.Combine(Out, "PLC_2-handler.awl")).Should().Contain("SUBROUTINE_BLOCK OP_PANEL:SBR63\r\n").And.Contain("LDB<>  VB8020, 2\r\n");
+        File.ReadAllText(Path.Combine(Out, "PLC_2-symbols.txt")).Should().StartWith("OP_BUF\tVB7764\t");
     }
 
     [Fact]
@@ -33,8 +33,10 @@ public sealed class GenerateCommandTests : IDisposable
         var run = CliRunner.Run("generate", project, "-o", Out, "--stats");
 
         run.ExitCode.Should().Be(0);
-        run.Out.Should().Contain("V bytes reserved:       VB7884-VB8191 (308 bytes)")
-            .And.Contain("instructions generated: 727")
+        run.Out.Should().Contain("V bytes reserved:       VB7764-VB8191 (428 bytes)")
+            .And.Contain("READ CHANGES copies:    VB8072-VB8191 (120 bytes; READ CHANGES and STOP work bytes: 13)")
+            .And.Contain("STOP command:           not included (07 gets error 05)")
+            .And.Contain("instructions generated: 925")
             .And.Contain("interrupt events used:  23, 10, 9")
             .And.Contain("blocks used:            OP_PANEL (SBR63), OP_RX (INT125), OP_DELAY (INT126), OP_TX (INT127)");
     }
@@ -48,19 +50,15 @@ public sealed class GenerateCommandTests : IDisposable
 
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Should().Contain("  no request (a scan)        0 ->   0          38     0.000               0.000          0.256      0")
-            .And.Contain("  IDENTIFY                  12 ->  62        1777    58.193               0.388          7.836     10")
-            .And.Contain("  READ 1 item 116 bytes     22 -> 250        6476   224.025               0.387          8.962     32")
-            .And.Contain("  READ 20 items 77 bytes   174 -> 172       10806   359.325               0.387          9.349     57")
-            .And.Contain("  WRITE 117 bytes          254 -> 252       12039   411.688               0.388          9.349     55")
-            .And.Contain("  WRITE BIT                 22 ->  20        1270    39.080               0.387          8.962      8")
-            .And.Contain("  DEFINE LIST 20 items     176 ->  18        6239   202.539               0.388          9.349     32")
-            .And.Contain("  READ LIST 20 items        14 -> 172        5488   183.950               0.388          7.836     31")
-            .And.Contain("  bad frame check           12 ->   0         357     9.689               0.388          6.990      3")
-            .And.Contain("  cut-off frame, then READ 20 items 234 -> 172       13859   459.548               0.499          8.962     71")
-            .And.Contain("  READ 20 items for another station 174 ->   0          92     0.967               0.431          0.710      2")
-            .And.Contain("worst interrupt routine: 0.499 ms (cut-off frame, then READ 20 items)")
-            .And.Contain("worst added to one scan: 9.349 ms (READ 20 items 77 bytes)")
-            .And.Contain("most scans per reply:    71");
+            .And.Contain("  IDENTIFY                  12 ->  62        1783    58.469               0.388          7.836     10")
+            .And.Contain("  READ LIST 20 items        14 -> 172        5456   183.969               0.388          8.499     30")
+            .And.Contain("  READ CHANGES 77 bytes whole  16 -> 174        5651   194.168               0.387          9.344     30")
+            .And.Contain("  READ CHANGES none changed  16 ->  20        4420   123.537               0.387          9.344     26")
+            .And.Contain("  READ CHANGES 1 changed    16 ->  24        4487   126.564               0.387          9.344     26")
+            .And.Contain("  READ CHANGES 40 changed   16 -> 174        7903   260.144               0.388          9.731     42")
+            .And.Contain("worst interrupt routine: 0.498 ms (cut-off frame, then READ 20 items)")
+            .And.Contain("worst added to one scan: 9.731 ms (READ CHANGES 40 changed)")
+            .And.Contain("most scans per reply:    70");
     }
 
     [Fact]
@@ -74,18 +72,19 @@ public sealed class GenerateCommandTests : IDisposable
         using var json = JsonDocument.Parse(run.Out);
         var stats = json.RootElement.GetProperty("stats");
         var measured = stats.GetProperty("measured").EnumerateArray().ToList();
-        measured.Should().HaveCount(11);
+        measured.Should().HaveCount(17);
         measured[1].GetProperty("request").GetString().Should().Be("IDENTIFY");
         measured[1].GetProperty("replyChars").GetInt32().Should().Be(62);
-        measured[1].GetProperty("instructions").GetInt64().Should().Be(1777);
-        measured[1].GetProperty("microseconds").GetInt64().Should().Be(58193);
+        measured[1].GetProperty("instructions").GetInt64().Should().Be(1783);
+        measured[1].GetProperty("microseconds").GetInt64().Should().Be(58469);
         measured[1].GetProperty("worstInterruptMicroseconds").GetInt64().Should().Be(388);
         measured[1].GetProperty("scans").GetInt32().Should().Be(10);
-        stats.GetProperty("worstInstructions").GetInt64().Should().Be(13859);
-        stats.GetProperty("worstMicroseconds").GetInt64().Should().Be(459548);
+        stats.GetProperty("worstInstructions").GetInt64().Should().Be(13827);
+        stats.GetProperty("worstMicroseconds").GetInt64().Should().Be(459567);
         stats.GetProperty("worstInterruptMicroseconds").GetInt64().Should().Be(498);
-        stats.GetProperty("worstScanMicroseconds").GetInt64().Should().Be(9349);
-        stats.GetProperty("mostScansPerReply").GetInt32().Should().Be(71);
+        stats.GetProperty("worstScanMicroseconds").GetInt64().Should().Be(9731);
+        stats.GetProperty("mostScansPerReply").GetInt32().Should().Be(70);
+        (stats.GetProperty("copyBytes").GetInt32(), stats.GetProperty("stopEnabled").GetBoolean()).Should().Be((120, false));
     }
 
     [Fact]
@@ -101,7 +100,7 @@ public sealed class GenerateCommandTests : IDisposable
         json.RootElement.GetProperty("files").GetArrayLength().Should().Be(3);
         var stats = json.RootElement.GetProperty("stats");
         stats.GetProperty("firstVByte").GetInt32().Should().Be(1000);
-        stats.GetProperty("lastVByte").GetInt32().Should().Be(1307);
+        stats.GetProperty("lastVByte").GetInt32().Should().Be(1427);
         stats.GetProperty("interruptEvents").EnumerateArray().Select(e => e.GetInt32()).Should().Equal(24, 10, 26);
     }
 

@@ -27,6 +27,9 @@ internal sealed class DifferentialHarness
 {
     private static readonly TimeSpan Margin = TimeSpan.FromMilliseconds(30);
 
+    /// <summary>The interpreter's fault code for an executed STOP instruction.</summary>
+    private const string ProgramStop = "Stop";
+
     private readonly StlPlc _plc;
     private readonly FreeportPort _port;
     private readonly ReferencePlc _reference;
@@ -61,10 +64,7 @@ internal sealed class DifferentialHarness
         Line = new LineSettings(options.BaudRate, options.Parity, options.DataBits);
         _port = new FreeportPort(options.Port, _plc.Memory, options.Cpu, Line);
         _plc.AttachPort(_port);
-        // The generated handler has neither STOP nor READ CHANGES copies (IDENTIFY: FEATURES 0, COPY_BYTES 0).
-        _reference = new ReferencePlc(new HandlerConfig(
-            new Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs, options.EffectiveBufferStart,
-            allowStop: false, copyBytes: 0));
+        _reference = new ReferencePlc(new HandlerConfig(new Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs, options.EffectiveBufferStart, options.AllowStop, options.CopyBytes));
         Fill(random);
         if (inputsOff)
         {
@@ -93,6 +93,9 @@ internal sealed class DifferentialHarness
     public ReferencePlc Reference => _reference;
 
     public long Instructions => _plc.InstructionsExecuted;
+
+    /// <summary>RUN or STOP of the interpreted CPU (a handler's STOP stops it).</summary>
+    public Simulator.Reference.OperatingMode Mode => _plc.Mode;
 
     /// <summary>Sets the same bytes in both PLCs (I through the interpreter's input image).</summary>
     public void Poke(ProtocolArea area, int offset, params byte[] bytes)
@@ -132,7 +135,7 @@ internal sealed class DifferentialHarness
         var step = TimeSpan.FromTicks(Math.Max(TimeSpan.TicksPerMillisecond, Line.CharacterTime.Ticks * 4));
         _plc.RunUntil(at);
         var t = at;
-        while (_plc.Fault is null)
+        while (_plc.Fault is null && _plc.Mode == Simulator.Reference.OperatingMode.Run)
         {
             foreach (var c in _port.TakeTransmitted())
             {
@@ -157,7 +160,17 @@ internal sealed class DifferentialHarness
 
         if (_plc.Fault is { } fault)
         {
-            got.Append(" [FAULT ").Append(fault).Append(']');
+            // What left the port before the CPU stopped (a STOP after its reply) still counts as sent.
+            foreach (var c in _port.TakeTransmitted())
+            {
+                got.Append((char)c.Value);
+            }
+
+            // The handler's own STOP instruction (07 STOP) is no fault: the CPU is in STOP as told, and silent.
+            if (fault.Code != ProgramStop)
+            {
+                got.Append(" [FAULT ").Append(fault).Append(']');
+            }
         }
 
         _now = t + TimeSpan.FromMilliseconds(1);

@@ -3,6 +3,7 @@ using System.Globalization;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Freeport;
 using OperatorPanel.StlGen.Handler;
@@ -28,7 +29,7 @@ public sealed class HandlerCostTests
 
         var idle = measured.Single(m => m.Name == HandlerMeasurement.IdleName);
         var requests = measured.Where(m => m != idle).ToList();
-        requests.Should().HaveCount(10).And.OnlyContain(m => m.WorstInterrupt <= Ms(SlicePart.InterruptBoundMs) && m.WorstScan <= Ms(SlicePart.ScanBoundMs));
+        requests.Should().HaveCount(16).And.OnlyContain(m => m.WorstInterrupt <= Ms(SlicePart.InterruptBoundMs) && m.WorstScan <= Ms(SlicePart.ScanBoundMs));
         requests.Where(m => m.ReplyChars > 0).Should().OnlyContain(m => m.Scans >= SlicePart.FewestScans && m.Scans <= SlicePart.MostScans);
         idle.WorstScan.Should().BeLessThan(Ms(SlicePart.IdleScanBoundMs));
         requests.Single(m => m.Name.StartsWith("READ 20 items 77", StringComparison.Ordinal)).Scans.Should().BeGreaterThan(SlicePart.MostScans / 2, "the bound is near what a 20-item READ takes");
@@ -40,10 +41,27 @@ public sealed class HandlerCostTests
     {
         var measured = Measure(name);
 
-        measured.Where(m => m.ReplyChars > 0).Should().OnlyContain(
+        measured.Where(m => m.ReplyChars > 0 && !m.Name.StartsWith(ReadChanges, StringComparison.Ordinal)).Should().OnlyContain(
             m => HandlerTurnaround.ScansFor(m.RequestChars, m.ReplyChars) >= m.Scans,
             "the link's reply timeout counts HandlerTurnaround's scans, so a slow but working handler never times out");
     }
+
+    /// <summary>
+    /// READ CHANGES takes scans by the list, not by its short request and reply: at most the scans of the list's
+    /// longest reply (whole, ListReplyChars(D)) plus one per compared chunk (an item, or ChunkBytes of a long one).
+    /// The measured list: 20 items, 77 bytes, one chunk each. HandlerTurnaround (Core) does not count the chunks yet.
+    /// </summary>
+    [Theory]
+    [MemberData(nameof(Configurations))]
+    public void ReadChanges_ScansStayWithinTheListsWholeReplyPlusOnePerChunk(string name)
+    {
+        var measured = Measure(name);
+        var bound = HandlerTurnaround.ScansFor(ProtocolLimits.RequestChars(2), ProtocolLimits.ListReplyChars(77)) + (ChangesPart.ChunksPerScan * 20);
+
+        measured.Where(m => m.Name.StartsWith(ReadChanges, StringComparison.Ordinal)).Should().HaveCount(4).And.OnlyContain(m => m.Scans <= bound);
+    }
+
+    private const string ReadChanges = "READ CHANGES";
 
     private static ImmutableArray<MeasuredRequest> Measure(string name)
     {

@@ -49,10 +49,10 @@ public sealed class HandlerFootprintTests
     [InlineData("MOVB   5, SMB34", "MOVB   5, SMB35", "SMB35, not a byte the handler reserves")]
     [InlineData("MOVB   5, SMB34", "MOVB   5, SMB550", "SMB550 is past the last SM byte SMB549")]
     [InlineData("MOVB   16#E0, SMB87", "MOVB   16#E0, SMB29", "read-only system status bytes")]
-    [InlineData("XMT    VB7884, 0", "XMT    VB7884, 1", "not on port 0")]
+    [InlineData("XMT    VB7764, 0", "XMT    VB7764, 1", "not on port 0")]
     [InlineData("DTCH   9\r\n", "DTCH   26\r\n", "events")]
-    [InlineData("MOVD   &VB8147, AC3", "MOVD   &VB7883, AC3", "VB7883-VB7883 outside VB7884-VB8191")]
-    [InlineData("MOVD   &VB8147, AC3", "MOVD   &IB4, AC3", "a pointer outside V")]
+    [InlineData("MOVD   &VB8027, AC3", "MOVD   &VB7763, AC3", "VB7763-VB7763 outside VB7764-VB8191")]
+    [InlineData("MOVD   &VB8027, AC3", "MOVD   &IB4, AC3", "a pointer outside V")]
     [InlineData("CALL   OP_PANEL", "CALL   SBR_0", "not the handler's subroutine")]
     [InlineData("ATCH   OP_TX, 9", "ATCH   OP_TX, 8", "not the routine's event 9")]
     [InlineData("SLW    AC0, 3", "SHLW   AC0, 3", "AWL001 SHLW is not an S7-200 STL instruction")]
@@ -83,7 +83,7 @@ public sealed class HandlerFootprintTests
     private static IEnumerable<HandlerOptions> Combinations(CpuProfile cpu, int port)
     {
         cpu.TryGetArea(MemoryArea.V, out var v).Should().BeTrue();
-        int?[] buffers = [null, 0, 1001, v.ByteCount - HandlerDefaults.FootprintBytes];
+        int?[] buffers = [null, 0, 1001, v.ByteCount - HandlerDefaults.FootprintBytes(HandlerDefaults.CopyBytes)];
         (int? Sbr, int? Int, HandlerBlockNames Names)[] blocks =
             [(null, null, new HandlerBlockNames()), (0, 0, new HandlerBlockNames()), (cpu.Subroutines / 2, 40, Renamed)];
         var rates = cpu.FreeportBaudRates;

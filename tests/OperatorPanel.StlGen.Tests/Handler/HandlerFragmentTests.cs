@@ -53,7 +53,7 @@ public sealed class HandlerFragmentTests
     {
         var program = HandlerGenerator.Generate(HandlerGoldenTests.Cpu224Port0Station2).Program!;
 
-        program.Blocks[3].Networks.Single().Instructions.Select(AwlText).Should().Equal("LD SM0.0", "DTCH 10", "XMT VB7884, 0");
+        program.Blocks[3].Networks.Single().Instructions.Select(AwlText).Should().Equal("LD SM0.0", "DTCH 10", "XMT VB7764, 0");
     }
 
     [Fact]
@@ -62,7 +62,7 @@ public sealed class HandlerFragmentTests
         var program = HandlerGenerator.Generate(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), WriteMask = 0x1C }).Program!;
         var all = program.Blocks[1].Networks.SelectMany(n => n.Instructions).Select(AwlText).ToList();
 
-        all.Should().Contain("LDB= VB7892, 5").And.NotContain(i => i.StartsWith("AW< ", StringComparison.Ordinal));
+        all.Should().Contain("LDB= VB7772, 5").And.NotContain(i => i.StartsWith("AW< ", StringComparison.Ordinal));
     }
 
     [Fact]

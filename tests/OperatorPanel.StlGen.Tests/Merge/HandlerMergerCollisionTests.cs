@@ -4,24 +4,24 @@ using OperatorPanel.StlGen.Tests.Merge.UserPrograms;
 
 namespace OperatorPanel.StlGen.Tests.Merge;
 
-/// <summary>CPU 224 handler on port 0 by default: VB7884-VB8191, SBR63, INT125-INT127, events 23, 10, 9.</summary>
+/// <summary>CPU 224 handler on port 0 by default: VB7764-VB8191, SBR63, INT125-INT127, events 23, 10, 9.</summary>
 public sealed class HandlerMergerCollisionTests
 {
     private const int Line = UserProgram.FirstInstructionLine;
 
     [Theory]
-    [InlineData("MOVB   1, VB7884", "VB7884")]
-    [InlineData("MOVW   VW7883, VW0", "VW7883 (VB7883-VB7884)")]
+    [InlineData("MOVB   1, VB7764", "VB7764")]
+    [InlineData("MOVW   VW7763, VW0", "VW7763 (VB7763-VB7764)")]
     [InlineData("LDD=   VD8188, 0", "VD8188 (VB8188-VB8191)")]
     [InlineData("LD     V8000.3", "V8000.3 (VB8000)")]
     [InlineData("MOVD   &VB8191, AC1", "&VB8191 (VB8191)")]
-    [InlineData("BMB    VB0, VB7864, 21", "VB7864 (VB7864-VB7884)")]
-    [InlineData("BMW    VW7764, VW0, 61", "VW7764 (VB7764-VB7885)")]
-    [InlineData("FILL   0, VW7874, 6", "VW7874 (VB7874-VB7885)")]
-    [InlineData("ATH    VB0, VB7883, 4", "VB7883 (VB7883-VB7884)")]
-    [InlineData("HTA    VB0, VB7881, 8", "VB7881 (VB7881-VB7888)")]
-    [InlineData("S      V7883.7, 2", "V7883.7 (VB7883-VB7884)")]
-    [InlineData("SHRB   I0.0, V7883.0, 9", "V7883.0 (VB7883-VB7884)")]
+    [InlineData("BMB    VB0, VB7744, 21", "VB7744 (VB7744-VB7764)")]
+    [InlineData("BMW    VW7644, VW0, 61", "VW7644 (VB7644-VB7765)")]
+    [InlineData("FILL   0, VW7754, 6", "VW7754 (VB7754-VB7765)")]
+    [InlineData("ATH    VB0, VB7763, 4", "VB7763 (VB7763-VB7764)")]
+    [InlineData("HTA    VB0, VB7761, 8", "VB7761 (VB7761-VB7768)")]
+    [InlineData("S      V7763.7, 2", "V7763.7 (VB7763-VB7764)")]
+    [InlineData("SHRB   I0.0, V7763.0, 9", "V7763.0 (VB7763-VB7764)")]
     [InlineData("INCW   VW8190", "VW8190 (VB8190-VB8191)")]
     public void Merge_UserTouchesHandlerVBytes_ReportsOverlapAtItsLine(string instruction, string described)
     {
@@ -32,14 +32,14 @@ public sealed class HandlerMergerCollisionTests
         var overlap = result.Errors.Should().ContainSingle().Which;
         overlap.Id.Should().Be(StlDiagnostics.VMemoryOverlap);
         overlap.Line.Should().Be(Line + 1);
-        overlap.Message.Should().StartWith($"{described} overlaps the handler's VB7884-VB8191; move the handler with --buffer VBn");
+        overlap.Message.Should().StartWith($"{described} overlaps the handler's VB7764-VB8191; move the handler with --buffer VBn");
     }
 
     [Theory]
-    [InlineData("MOVB   1, VB7883")]
-    [InlineData("BMB    VB0, VB7864, 20")]
-    [InlineData("S      V7883.0, 8")]
-    [InlineData("ATH    VB0, VB7883, 2")]
+    [InlineData("MOVB   1, VB7763")]
+    [InlineData("BMB    VB0, VB7744, 20")]
+    [InlineData("S      V7763.0, 8")]
+    [InlineData("ATH    VB0, VB7763, 2")]
     public void Merge_UserStopsJustBelowHandler_NoCollision(string instruction)
     {
         var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.0", instruction), UserProgram.Cpu224);
@@ -53,7 +53,7 @@ public sealed class HandlerMergerCollisionTests
     {
         var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.0", "MOVB   1, VB8000"), UserProgram.Cpu224);
 
-        result.Errors.Single().Message.Should().EndWith("(VB7692-VB7999 is not used by the user's program)");
+        result.Errors.Single().Message.Should().EndWith("(VB7572-VB7999 is not used by the user's program)");
     }
 
     [Fact]
