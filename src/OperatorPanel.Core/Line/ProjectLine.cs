@@ -162,10 +162,13 @@ public sealed partial class ProjectLine : IAsyncDisposable
             : Task.FromResult<WriteOutcome>(new WriteOutcome.Failed($"{request.Address}: not connected, nothing written", WriteFailureKind.InvalidRequest));
     }
 
-    /// <summary>IDENTIFY to one station, beside the polling (one request on the wire at a time).</summary>
+    /// <summary>
+    /// IDENTIFY to one station, beside the polling (one request on the wire at a time). The engine hears the reply: a
+    /// handler without READ CHANGES copies gets its lists read with READ LIST.
+    /// </summary>
     public Task<PlcResponse> IdentifyAsync(Station station, CancellationToken cancellationToken = default) =>
         BusOf(station) is { } bus
-            ? bus.Line.Link.ExchangeAsync(new IdentifyRequest(station), cancellationToken)
+            ? IdentifyOnAsync(bus, station, cancellationToken)
             : throw new InvalidOperationException($"{station} is not on a connected bus");
 
     /// <summary>The station's polling status; null when not connected.</summary>
@@ -183,6 +186,17 @@ public sealed partial class ProjectLine : IAsyncDisposable
         var line = BusLine.Start(link, bus.Plan(), Mode, Project.Refresh.MinimumPeriod, _options.UseReadLists, _time, _logger);
         line.Engine.Subscribe(OnEngineChanges);
         return line;
+    }
+
+    private static async Task<PlcResponse> IdentifyOnAsync(Bus bus, Station station, CancellationToken cancellationToken)
+    {
+        var reply = await bus.Line.Link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
+        if (reply is IdentifyResponse identity)
+        {
+            bus.Line.Engine.NoteIdentity(identity);
+        }
+
+        return reply;
     }
 
     private Bus? BusOf(Station station) => _buses.FirstOrDefault(b => b.Project.StationAt(station) is not null);

@@ -6,7 +6,7 @@ using static OperatorPanel.Core.Tests.Polling.PollingSome;
 
 namespace OperatorPanel.Core.Tests.Polling;
 
-/// <summary>READ lists: defined once per frame, polled with READ LIST, redefined on 07, plain READ when refused.</summary>
+/// <summary>Stored lists: defined once per frame, polled with READ CHANGES, redefined on 07, plain READ when refused.</summary>
 public sealed class PollingEngineListTests
 {
     private readonly PollingTestClock _clock = new();
@@ -16,7 +16,7 @@ public sealed class PollingEngineListTests
     public PollingEngineListTests() => _link = new FakePlcLink(_clock);
 
     [Fact]
-    public async Task RunCycle_TwoStations_DefinesEachListOnceThenPollsWithReadList()
+    public async Task RunCycle_TwoStations_DefinesEachListOnceThenPollsWithReadChanges()
     {
         _link.Set(One, ProtocolArea.V, 10, 0x12, 0x34);
         _link.Set(Two, ProtocolArea.M, 3, 0x08);
@@ -26,8 +26,8 @@ public sealed class PollingEngineListTests
         await engine.RunCycleAsync(CancellationToken.None);
 
         _link.Requests.Select(r => (r.Station.Address, r.Command)).Should().Equal(
-            (1, CommandCode.DefineList), (1, CommandCode.ReadList), (2, CommandCode.DefineList), (2, CommandCode.ReadList),
-            (1, CommandCode.ReadList), (2, CommandCode.ReadList));
+            (1, CommandCode.DefineList), (1, CommandCode.ReadChanges), (2, CommandCode.DefineList), (2, CommandCode.ReadChanges),
+            (1, CommandCode.ReadChanges), (2, CommandCode.ReadChanges));
         _link.Requests.OfType<DefineListRequest>().Select(d => (d.List, d.Items.Single()))
             .Should().Equal((1, new ReadItem(ProtocolArea.V, 10, 2)), (1, new ReadItem(ProtocolArea.M, 3, 1)));
         Value(engine, One, "VW10").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x12 && v.Raw[1] == 0x34);
@@ -44,7 +44,8 @@ public sealed class PollingEngineListTests
 
         var result = await engine.RunCycleAsync(CancellationToken.None);
 
-        _link.Requests.Skip(2).Select(r => r.Command).Should().Equal(CommandCode.ReadList, CommandCode.DefineList, CommandCode.ReadList);
+        _link.Requests.Skip(2).Select(r => r.Command).Should().Equal(CommandCode.ReadChanges, CommandCode.DefineList, CommandCode.ReadChanges);
+        _link.Requests.OfType<ReadChangesRequest>().Last().Full.Should().BeTrue("a list defined again has no valid copy");
         result.Should().Match<PollResult>(r => r.FramesSent == 1 && r.FramesFailed == 0);
         Value(engine, One, "VB0").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x5A);
     }
@@ -76,18 +77,19 @@ public sealed class PollingEngineListTests
     }
 
     [Fact]
-    public void ReadListAssignment_FramesThatDoNotFitTogether_ListsOnlyTheFrameThatKeepsItsList()
+    public void ReadListAssignment_ListIdsOfThePlansFrames()
     {
-        // Frame 1: 20 single bytes (tail 80, reply 52); frame 2: VB600-VB718 (tail 4, reply 250). Together 84 + 250 > 255.
-        // Frame 1 as the list would be wiped every cycle by frame 2's plain READ (12 + 238 > 175 - 4); frame 2 as the
-        // list (floor 252) survives frame 1's plain READ (172 <= 251, 169 < 172, 52 <= 171).
-        ReadItem[] singles = [.. Enumerable.Range(0, 20).Select(i => new ReadItem(ProtocolArea.V, i * 30, 1))];
         var plan = PollPlan.Empty with
         {
-            Frames = [new PollFrame(One, [.. singles]), new PollFrame(One, [new ReadItem(ProtocolArea.V, 600, 119)])],
+            Frames =
+            [
+                new PollFrame(One, [new ReadItem(ProtocolArea.V, 0, 4)]) { List = 1 },
+                new PollFrame(One, [new ReadItem(ProtocolArea.V, 600, 100)]),
+                new PollFrame(Two, [new ReadItem(ProtocolArea.M, 0, 2)]) { List = 1 },
+            ],
         };
 
-        ReadListAssignment.For(plan).Should().Equal(new Dictionary<int, int> { [1] = 1 });
+        ReadListAssignment.For(plan).Should().Equal(new Dictionary<int, int> { [0] = 1, [2] = 1 });
     }
 
     private static PolledValue Value(PollingEngine engine, Core.Addressing.Station station, string address)

@@ -3,13 +3,13 @@ using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.IntegrationTests.Polling;
 
-/// <summary>READ lists end to end over a socat pty: commands counted from the characters the PLC end received.</summary>
+/// <summary>Stored lists end to end over a socat pty: commands counted from the characters the PLC end received.</summary>
 public sealed partial class PollingEngineSerialListTests
 {
     private static readonly string[] Watched = ["IB0", "MW10", "VD100", "VW2000", "V3000.5"];
 
     [Fact]
-    public async Task Refresh_SteadyState_PollsWithReadListOnly()
+    public async Task Refresh_SteadyState_PollsWithReadChangesOnly()
     {
         var plc = SerialLineRig.Plc(2);
         plc.Memory.WriteDoubleWord(ProtocolArea.V, 100, 123_456);
@@ -22,7 +22,7 @@ public sealed partial class PollingEngineSerialListTests
 
         var commands = Commands(rig.Tap.Received);
         commands.Count(c => c == CommandCode.DefineList).Should().Be(rig.Engine.Plan.FrameCount);
-        commands.Skip(rig.Engine.Plan.FrameCount * 2).Should().NotBeEmpty().And.OnlyContain(c => c == CommandCode.ReadList);
+        commands.Skip(rig.Engine.Plan.FrameCount * 2).Should().NotBeEmpty().And.OnlyContain(c => c == CommandCode.ReadChanges);
         rig.Value(plc, "VD100").Raw.Should().Equal(0x00, 0x01, 0xE2, 0x40);
     }
 
@@ -46,10 +46,37 @@ public sealed partial class PollingEngineSerialListTests
         write.Should().BeOfType<WriteBlockResponse>();
         plc.Lists.Floor.Should().BeLessThan(256, "the lists were defined again");
         result.FramesFailed.Should().Be(0);
-        Commands(rig.Tap.Received).Skip(before).Take(3).Should().Equal(CommandCode.ReadList, CommandCode.DefineList, CommandCode.ReadList);
+        Commands(rig.Tap.Received).Skip(before).Take(3).Should().Equal(CommandCode.ReadChanges, CommandCode.DefineList, CommandCode.ReadChanges);
         rig.Value(plc, "VD100").Raw.Should().Equal(0x00, 0x74, 0xCB, 0xB1);
         rig.Value(plc, "VW2000").Raw.Should().Equal(0x12, 0x34);
     }
+
+    [Fact]
+    public async Task Refresh_ValuesChangedAfterTheFirstFull_ReadChangesWithoutFullBringsThemRight()
+    {
+        var plc = SerialLineRig.Plc(2);
+        plc.Memory.WriteDoubleWord(ProtocolArea.V, 100, 1);
+        await using var rig = await SerialLineRig.StartAsync([plc], Watched);
+        await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
+        await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
+
+        plc.Memory.WriteDoubleWord(ProtocolArea.V, 100, 0x01020304);
+        plc.Memory.WriteWord(ProtocolArea.M, 10, 0xBEEF);
+        await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
+
+        ChangesFlags(rig.Tap.Received).Should().Contain("00", "steady READ CHANGES ask for the changed bytes only");
+        rig.Value(plc, "VD100").Should().Match<Core.Polling.PolledValue>(v => v.Quality == Core.Polling.ValueQuality.Good);
+        rig.Value(plc, "VD100").Raw.Should().Equal(0x01, 0x02, 0x03, 0x04);
+        rig.Value(plc, "MW10").Raw.Should().Equal(0xBE, 0xEF);
+        rig.Value(plc, "IB0").Quality.Should().Be(Core.Polling.ValueQuality.Good, "an unchanged value stays Good");
+    }
+
+    /// <summary>The FLAGS byte of every READ CHANGES the PLC end heard.</summary>
+    private static List<string> ChangesFlags(string received) =>
+        [.. ReadChanges().Matches(received).Select(m => m.Groups[1].Value)];
+
+    [GeneratedRegex("<[0-9A-F]{4}08[0-9A-F]{2}([0-9A-F]{2})")]
+    private static partial Regex ReadChanges();
 
     /// <summary>The commands the PLC end heard, one per request: a link retry resends the same SEQ and counts once.</summary>
     private static List<CommandCode> Commands(string received)
