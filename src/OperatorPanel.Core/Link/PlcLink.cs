@@ -64,14 +64,21 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     }
 
     /// <summary>
-    /// True for the commands that act on the process: WRITE, WRITE BIT. They are sent once: after a lost reply the PLC
-    /// may have acted, and a repeat could act twice (a bit the PLC program resets at once, a value it changed meanwhile).
+    /// True for the commands that act on the process: WRITE, WRITE BIT, STOP. They are sent once: after a lost reply the
+    /// PLC may have acted, and a repeat could act twice (a bit the PLC program resets at once, a value it changed meanwhile).
     /// </summary>
     public static bool ActsOnProcess(CommandCode command) => command switch
     {
-        CommandCode.Write or CommandCode.WriteBit => true,
-        CommandCode.Identify or CommandCode.Read or CommandCode.DefineList or CommandCode.ReadList => false,
+        CommandCode.Write or CommandCode.WriteBit or CommandCode.Stop => true,
+        CommandCode.Identify or CommandCode.Read or CommandCode.DefineList or CommandCode.ReadList or CommandCode.ReadChanges => false,
     };
+
+    /// <summary>
+    /// Identical-frame retries a request gets: none for one that acts on the process, and none for READ CHANGES without
+    /// FULL, whose handler copy moved on with the lost reply (docs/protocol.md, PC rule: the next one must be FULL).
+    /// </summary>
+    private int RetriesFor(PlcRequest request) =>
+        ActsOnProcess(request.Command) || request is ReadChangesRequest { Full: false } ? 0 : _options.Retries;
 
     public async ValueTask DisposeAsync()
     {
@@ -89,9 +96,11 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         var statistics = _statistics.GetOrAdd(request.Station, _ => new StationStatistics());
         var frame = RequestCodec.Encode(request);
         var timeout = _options.ReplyTimeoutFor(request, frame.Length);
-        var retries = ActsOnProcess(request.Command) ? 0 : _options.Retries;
+        var retries = RetriesFor(request);
         _frameSent = false;
         PlcCommunicationException? lastFailure = null;
+        var refusalRetried = false;
+        var corruptedCopy = false;
 
         for (var attempt = 0; attempt <= retries; attempt++)
         {
@@ -112,6 +121,22 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
                 return new ExchangeResult(null, portFailure, _frameSent, CorruptedCopy: false);
             }
 
+            if (outcome.CorruptedRefusal is { } refusal)
+            {
+                // The PLC refused a corrupted copy, so it did nothing: one more attempt is safe, even for a write.
+                statistics.CorruptedRefusal();
+                if (!refusalRetried)
+                {
+                    refusalRetried = true;
+                    retries = Math.Max(retries, attempt + 1);
+                    lastFailure = outcome.Failure;
+                    continue;
+                }
+
+                _log.Warning("{Station}: {Command} refused again after a corrupted refusal: taken as real", request.Station, request.Command);
+                outcome = AttemptOutcome.Answered(refusal, outcome.Elapsed);
+            }
+
             if (outcome.Response is { } response)
             {
                 statistics.Reply(outcome.Elapsed);
@@ -126,6 +151,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             }
 
             lastFailure = outcome.Failure!;
+            corruptedCopy |= outcome.CorruptedCopy;
             if (lastFailure.Kind == PlcErrorKind.Timeout)
             {
                 statistics.Timeout();
@@ -140,8 +166,13 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         var kind = lastFailure!.Kind == PlcErrorKind.Timeout ? PlcErrorKind.NoAnswer : PlcErrorKind.FrameCorrupt;
         var attempts = ActsOnProcess(request.Command) ? "sent once, never repeated" : $"after {retries + 1} attempts";
         var message = $"{request.Station} on {_transport.Name}: no valid reply to {request.Command} {attempts} ({lastFailure.Message})";
+        if (kind == PlcErrorKind.NoAnswer && request is IdentifyRequest identify && await AnswersV1ProbeAsync(identify, statistics, cancellationToken).ConfigureAwait(false))
+        {
+            return new ExchangeResult(null, new PlcCommunicationException(kind, request.Station, HandlerV1.Message(request.Station)), Sent: true, CorruptedCopy: false);
+        }
+
         _log.Warning("{Message}", message);
-        return new ExchangeResult(null, new PlcCommunicationException(kind, request.Station, message), Sent: true, CorruptedCopy: false);
+        return new ExchangeResult(null, new PlcCommunicationException(kind, request.Station, message), Sent: true, corruptedCopy);
     }
 
     private async Task<AttemptOutcome> AttemptAsync(PlcRequest request, byte[] frame, TimeSpan timeout, CancellationToken cancellationToken)
@@ -171,45 +202,6 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         }
     }
 
-    private async Task<AttemptOutcome> ReceiveAsync(PlcRequest request, long started, TimeSpan timeout, CancellationToken cancellationToken)
-    {
-        while (true)
-        {
-            var remaining = timeout - _time.GetElapsedTime(started);
-            if (remaining <= TimeSpan.Zero)
-            {
-                return AttemptOutcome.Failed(PlcErrorKind.Timeout, request, $"no reply within {timeout.TotalMilliseconds:0} ms");
-            }
-
-            var count = await _transport.ReadAsync(_buffer, remaining, cancellationToken).ConfigureAwait(false);
-            if (count == 0)
-            {
-                continue;
-            }
-
-            _reader.Append(_buffer.AsSpan(0, count));
-            while (_reader.TryTake(out var result))
-            {
-                if (!result.IsFrame)
-                {
-                    return AttemptOutcome.Failed(PlcErrorKind.FrameCorrupt, request, $"reply unusable: {result.Error}");
-                }
-
-                if (ResponseCodec.TryDecode(result.Frame.AsSpan(), request, out var response, out var error))
-                {
-                    return AttemptOutcome.Answered(response, _time.GetElapsedTime(started));
-                }
-
-                if (error is not (FrameError.NotAReply or FrameError.StationMismatch or FrameError.SequenceMismatch))
-                {
-                    return AttemptOutcome.Failed(PlcErrorKind.FrameCorrupt, request, $"reply unusable: {error}");
-                }
-
-                _log.Debug("{Station}: skipped a frame that is not the reply ({Error})", request.Station, error);
-            }
-        }
-    }
-
     private async Task WaitForInterFrameGapAsync(CancellationToken cancellationToken)
     {
         if (_lastExchangeEnd is not { } end || _options.InterFrameGap <= TimeSpan.Zero)
@@ -217,21 +209,14 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             return;
         }
 
+        // Task.Delay counts whole milliseconds and truncates: round up, or 24.99 ms would wait 24.
         var wait = _options.InterFrameGap - _time.GetElapsedTime(end);
         if (wait > TimeSpan.Zero)
         {
-            await Task.Delay(wait, _time, cancellationToken).ConfigureAwait(false);
+            await Task.Delay(TimeSpan.FromMilliseconds(Math.Ceiling(wait.TotalMilliseconds)), _time, cancellationToken).ConfigureAwait(false);
         }
     }
 
     /// <summary>An exchange's end: the reply, or the failure and whether the frame went out.</summary>
     private sealed record ExchangeResult(PlcResponse? Response, PlcCommunicationException? Failure, bool Sent, bool CorruptedCopy);
-
-    private sealed record AttemptOutcome(PlcResponse? Response, PlcCommunicationException? Failure, TimeSpan Elapsed)
-    {
-        public static AttemptOutcome Answered(PlcResponse response, TimeSpan elapsed) => new(response, null, elapsed);
-
-        public static AttemptOutcome Failed(PlcErrorKind kind, PlcRequest request, string message) =>
-            new(null, new PlcCommunicationException(kind, request.Station, message), TimeSpan.Zero);
-    }
 }

@@ -39,7 +39,7 @@ public sealed class PlcLinkActingTests
     public async Task ExchangeOnce_WriteReplyGarbled_ReplyLost()
     {
         var clock = new ManualTimeProvider();
-        var good = Ascii(ResponseCodec.Encode(new WriteBlockResponse(Station2, 0x01, [0x00, 0x08])));
+        var good = Ascii(ResponseCodec.Encode(new WriteBlockResponse(Station2, 0x01, [0x00, 0x08]), WriteVw10 with { Sequence = 0x01 }));
         var transport = new ScriptedTransport($"""
             > "{Request}"
             < "{good[..^4]}Z{good[^3..]}"   // noise made a character non-hex
@@ -75,7 +75,7 @@ public sealed class PlcLinkActingTests
         var clock = new ManualTimeProvider();
         var transport = new ScriptedTransport($"""
             > "{Request}"
-            < "{Ascii(ResponseCodec.Encode(new WriteBlockResponse(Station2, 0x01, [0x00, 0x08])))}"
+            < "{Ascii(ResponseCodec.Encode(new WriteBlockResponse(Station2, 0x01, [0x00, 0x08]), WriteVw10 with { Sequence = 0x01 }))}"
             """, clock);
         var link = NewLink(transport, clock);
 

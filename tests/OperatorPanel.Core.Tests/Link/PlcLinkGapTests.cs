@@ -38,7 +38,7 @@ public sealed class PlcLinkGapTests
             < "{Reply(2)}"
             """, clock);
         var link = new PlcLink(transport, LinkOptions.For(Some.SerialSettings()), clock);
-        await link.ExchangeAsync(ReadMb0, default);
+        await link.ExchangeAsync(ReadMb0, default).WaitAsync(TimeSpan.FromSeconds(10));
 
         var second = link.ExchangeAsync(ReadMb0, default);
         clock.Advance(TimeSpan.FromMilliseconds(4.9));
@@ -76,7 +76,8 @@ public sealed class PlcLinkGapTests
 
     private static string Frame(byte sequence) => Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = sequence }));
 
-    private static string Reply(byte sequence) => Ascii(ResponseCodec.Encode(new ReadResponse(Station2, sequence, [0x42])));
+    private static string Reply(byte sequence) =>
+        Ascii(ResponseCodec.Encode(new ReadResponse(Station2, sequence, [0x42]), ReadMb0 with { Sequence = sequence }));
 
     private static string Ascii(byte[] frame) => System.Text.Encoding.ASCII.GetString(frame);
 }

@@ -2,6 +2,7 @@ using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Protocol.V1;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.TestKit;
 
@@ -19,7 +20,7 @@ public sealed class PlcLinkTests
     private static string Request => Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x01 }));
 
     private static string Reply(byte data, byte sequence = 0x01) =>
-        Ascii(ResponseCodec.Encode(new ReadResponse(Station2, sequence, [data])));
+        Ascii(ResponseCodec.Encode(new ReadResponse(Station2, sequence, [data]), ReadMb0 with { Sequence = sequence }));
 
     [Fact]
     public async Task Exchange_StationAnswers_ReturnsDecodedReplyAndCountsIt()
@@ -125,7 +126,7 @@ public sealed class PlcLinkTests
     public async Task Exchange_StationRefuses_ReturnsErrorResponseAndCountsIt()
     {
         var clock = new ManualTimeProvider();
-        var refusal = Ascii(ResponseCodec.Encode(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange)));
+        var refusal = Ascii(ResponseCodec.Encode(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange), ReadMb0 with { Sequence = 0x01 }));
         var transport = new ScriptedTransport($"""
             > "{Request}"
             < "{refusal}"
@@ -134,7 +135,10 @@ public sealed class PlcLinkTests
 
         var response = await link.ExchangeAsync(ReadMb0, default);
 
-        response.Should().BeEquivalentTo(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange));
+        response.Should().BeEquivalentTo(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange)
+        {
+            RequestCheck = RequestCodec.Check(ReadMb0 with { Sequence = 0x01 }),
+        });
         link.IsOnline(Station2).Should().BeTrue();
         link.StatisticsFor(Station2).NegativeReplies.Should().Be(1);
     }
@@ -176,7 +180,7 @@ public sealed class PlcLinkTests
         await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x01)), default);
         (await first).Should().BeOfType<ReadResponse>();
         (await ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(other with { Sequence = 0x02 })));
-        await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x02, 0x02)), default);
+        await pair.BusSide.WriteAsync(Hex.Ascii(Ascii(ResponseCodec.Encode(new ReadResponse(Station2, 0x02, [0x02]), other with { Sequence = 0x02 }))), default);
         ((ReadResponse)await second).Data.Should().Equal(0x02);
     }
 
@@ -194,9 +198,11 @@ public sealed class PlcLinkTests
             < no response
             > "{Ascii(RequestCodec.Encode(identify with { Sequence = 0x02 }))}"
             < no response
-            > "{Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x03 }))}"    // SEQ 03
+            > "{Ascii(V1IdentifyProbe.Encode(Station2, 0x03))}"                   // v1 probe under SEQ 03: silent too
+            < no response
+            > "{Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x04 }))}"    // SEQ 04
             < "{Reply(0x99, 0x02)}"                                             // late answer to SEQ 02: skipped
-            < "{Reply(0x30, 0x03)}"
+            < "{Reply(0x30, 0x04)}"
             """, clock);
         var link = NewLink(transport, clock);
 
@@ -207,17 +213,17 @@ public sealed class PlcLinkTests
 
         first.Sequence.Should().Be(0x01);
         ((ReadResponse)third).Data.Should().Equal(0x30);
-        third.Sequence.Should().Be(0x03);
+        third.Sequence.Should().Be(0x04);
         transport.AssertComplete();
     }
 
     [Theory]
-    [InlineData(LinkKind.Cable, 449.17)]
-    [InlineData(LinkKind.RadioModule, 753.33)]
+    [InlineData(LinkKind.Cable, 532.08)]
+    [InlineData(LinkKind.RadioModule, 859.16)]
     public void ReplyTimeout_Identify9600_IsLineTimePlusDelayScansMediumAndMargin(LinkKind kind, double milliseconds)
     {
-        // IDENTIFY: 10 request + 42 reply characters, 10 bits each at 9600 baud = 54.17 ms; + 5 ms delay + 100 ms scan
-        // + 9 handler scans (4 + 1 + 4) x 30 ms + 20 ms margin; a radio module adds 250 ms and the line time once more.
+        // v2 IDENTIFY: 12 request + 62 reply characters, 10 bits each at 9600 baud = 77.08 ms; + 5 ms delay + 100 ms scan
+        // + 11 handler scans (4 + 1 + 6) x 30 ms + 20 ms margin; a radio module adds 250 ms and the line time once more.
         var options = LinkOptions.For(Some.SerialSettings(9600, kind));
 
         options.ReplyTimeoutFor(new IdentifyRequest(Station2, 1)).TotalMilliseconds.Should().BeApproximately(milliseconds, 0.01);
