@@ -13,4 +13,10 @@ public sealed record LinkStatistics(
     TimeSpan? RoundTripMax)
 {
     public static LinkStatistics Empty { get; } = new(0, 0, 0, 0, 0, 0, null, null, null);
+
+    /// <summary>
+    /// Error replies whose REQCHECK was not the request's: the PLC refused a corrupted copy, so the link retried once
+    /// (docs/protocol.md, REQCHECK). Counted apart from <see cref="NegativeReplies"/>, which are real refusals.
+    /// </summary>
+    public long CorruptedRefusals { get; init; }
 }

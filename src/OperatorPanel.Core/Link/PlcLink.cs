@@ -26,6 +26,9 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     private long? _lastExchangeEnd;
     private byte _sequence;
 
+    /// <summary>Whether the exchange under way handed its frame to the port (so the PLC may have got it).</summary>
+    private bool _frameSent;
+
     public PlcLink(ITransport transport, LinkOptions options, TimeProvider? time = null, ILogger? log = null)
     {
         ArgumentNullException.ThrowIfNull(transport);
@@ -45,6 +48,46 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
 
     public async Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
     {
+        var result = await RunAsync(request, cancellationToken).ConfigureAwait(false);
+        return result.Response ?? throw result.Failure!;
+    }
+
+    public async Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken)
+    {
+        var result = await RunAsync(request, cancellationToken).ConfigureAwait(false);
+        return result switch
+        {
+            { Response: { } response } => new OnceReply.Answered(response),
+            { Sent: false } => new OnceReply.NotSent(result.Failure!),
+            _ => new OnceReply.ReplyLost(result.Failure!.Message, result.CorruptedCopy),
+        };
+    }
+
+    /// <summary>
+    /// True for the commands that act on the process: WRITE, WRITE BIT, STOP. They are sent once: after a lost reply the
+    /// PLC may have acted, and a repeat could act twice (a bit the PLC program resets at once, a value it changed meanwhile).
+    /// </summary>
+    public static bool ActsOnProcess(CommandCode command) => command switch
+    {
+        CommandCode.Write or CommandCode.WriteBit or CommandCode.Stop => true,
+        CommandCode.Identify or CommandCode.Read or CommandCode.DefineList or CommandCode.ReadList or CommandCode.ReadChanges => false,
+    };
+
+    /// <summary>
+    /// Identical-frame retries a request gets: none for one that acts on the process, and none for READ CHANGES without
+    /// FULL, whose handler copy moved on with the lost reply (docs/protocol.md, PC rule: the next one must be FULL).
+    /// </summary>
+    private int RetriesFor(PlcRequest request) =>
+        ActsOnProcess(request.Command) || request is ReadChangesRequest { Full: false } ? 0 : _options.Retries;
+
+    public async ValueTask DisposeAsync()
+    {
+        _arbiter.Dispose();
+        await _transport.DisposeAsync().ConfigureAwait(false);
+    }
+
+    private async Task<ExchangeResult> RunAsync(PlcRequest request, CancellationToken cancellationToken)
+    {
         ArgumentNullException.ThrowIfNull(request);
         using var turn = await _arbiter.AcquireAsync(cancellationToken).ConfigureAwait(false);
 
@@ -53,11 +96,12 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         var statistics = _statistics.GetOrAdd(request.Station, _ => new StationStatistics());
         var frame = RequestCodec.Encode(request);
         var timeout = _options.ReplyTimeoutFor(request, frame.Length);
+        var retries = RetriesFor(request);
+        _frameSent = false;
         PlcCommunicationException? lastFailure = null;
+        var refusalRetried = false;
+        var corruptedCopy = false;
 
-        // A READ CHANGES without FULL is never repeated: the PLC's copy moved on with the reply we lost, so a repeat
-        // would miss those changes (docs/protocol.md, READ CHANGES, PC rule 2). The polling engine asks FULL instead.
-        var retries = request is ReadChangesRequest { Full: false } ? 0 : _options.Retries;
         for (var attempt = 0; attempt <= retries; attempt++)
         {
             if (attempt > 0)
@@ -67,7 +111,32 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             }
 
             statistics.Request();
-            var outcome = await AttemptAsync(request, frame, timeout, cancellationToken).ConfigureAwait(false);
+            AttemptOutcome outcome;
+            try
+            {
+                outcome = await AttemptAsync(request, frame, timeout, cancellationToken).ConfigureAwait(false);
+            }
+            catch (PlcCommunicationException portFailure)
+            {
+                return new ExchangeResult(null, portFailure, _frameSent, CorruptedCopy: false);
+            }
+
+            if (outcome.CorruptedRefusal is { } refusal)
+            {
+                // The PLC refused a corrupted copy, so it did nothing: one more attempt is safe, even for a write.
+                statistics.CorruptedRefusal();
+                if (!refusalRetried)
+                {
+                    refusalRetried = true;
+                    retries = Math.Max(retries, attempt + 1);
+                    lastFailure = outcome.Failure;
+                    continue;
+                }
+
+                _log.Warning("{Station}: {Command} refused again after a corrupted refusal: taken as real", request.Station, request.Command);
+                outcome = AttemptOutcome.Answered(refusal, outcome.Elapsed);
+            }
+
             if (outcome.Response is { } response)
             {
                 statistics.Reply(outcome.Elapsed);
@@ -78,10 +147,11 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
                 }
 
                 _online[request.Station] = true;
-                return response;
+                return new ExchangeResult(response, null, Sent: true, CorruptedCopy: false);
             }
 
             lastFailure = outcome.Failure!;
+            corruptedCopy |= outcome.CorruptedCopy;
             if (lastFailure.Kind == PlcErrorKind.Timeout)
             {
                 statistics.Timeout();
@@ -94,15 +164,15 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
 
         _online[request.Station] = false;
         var kind = lastFailure!.Kind == PlcErrorKind.Timeout ? PlcErrorKind.NoAnswer : PlcErrorKind.FrameCorrupt;
-        var message = $"{request.Station} on {_transport.Name}: no valid reply to {request.Command} after {retries + 1} attempts ({lastFailure.Message})";
-        _log.Warning("{Message}", message);
-        throw new PlcCommunicationException(kind, request.Station, message);
-    }
+        var attempts = ActsOnProcess(request.Command) ? "sent once, never repeated" : $"after {retries + 1} attempts";
+        var message = $"{request.Station} on {_transport.Name}: no valid reply to {request.Command} {attempts} ({lastFailure.Message})";
+        if (kind == PlcErrorKind.NoAnswer && request is IdentifyRequest identify && await AnswersV1ProbeAsync(identify, statistics, cancellationToken).ConfigureAwait(false))
+        {
+            return new ExchangeResult(null, new PlcCommunicationException(kind, request.Station, HandlerV1.Message(request.Station)), Sent: true, CorruptedCopy: false);
+        }
 
-    public async ValueTask DisposeAsync()
-    {
-        _arbiter.Dispose();
-        await _transport.DisposeAsync().ConfigureAwait(false);
+        _log.Warning("{Message}", message);
+        return new ExchangeResult(null, new PlcCommunicationException(kind, request.Station, message), Sent: true, corruptedCopy);
     }
 
     private async Task<AttemptOutcome> AttemptAsync(PlcRequest request, byte[] frame, TimeSpan timeout, CancellationToken cancellationToken)
@@ -114,6 +184,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             _transport.DiscardInput();
             _reader.Reset();
             var started = _time.GetTimestamp();
+            _frameSent = true;
             await _transport.WriteAsync(frame, cancellationToken).ConfigureAwait(false);
             var outcome = await ReceiveAsync(request, started, timeout, cancellationToken).ConfigureAwait(false);
             _lastExchangeEnd = _time.GetTimestamp();
@@ -131,45 +202,6 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         }
     }
 
-    private async Task<AttemptOutcome> ReceiveAsync(PlcRequest request, long started, TimeSpan timeout, CancellationToken cancellationToken)
-    {
-        while (true)
-        {
-            var remaining = timeout - _time.GetElapsedTime(started);
-            if (remaining <= TimeSpan.Zero)
-            {
-                return AttemptOutcome.Failed(PlcErrorKind.Timeout, request, $"no reply within {timeout.TotalMilliseconds:0} ms");
-            }
-
-            var count = await _transport.ReadAsync(_buffer, remaining, cancellationToken).ConfigureAwait(false);
-            if (count == 0)
-            {
-                continue;
-            }
-
-            _reader.Append(_buffer.AsSpan(0, count));
-            while (_reader.TryTake(out var result))
-            {
-                if (!result.IsFrame)
-                {
-                    return AttemptOutcome.Failed(PlcErrorKind.FrameCorrupt, request, $"reply unusable: {result.Error}");
-                }
-
-                if (ResponseCodec.TryDecode(result.Frame.AsSpan(), request, out var response, out var error))
-                {
-                    return AttemptOutcome.Answered(response, _time.GetElapsedTime(started));
-                }
-
-                if (error is not (FrameError.NotAReply or FrameError.StationMismatch or FrameError.SequenceMismatch))
-                {
-                    return AttemptOutcome.Failed(PlcErrorKind.FrameCorrupt, request, $"reply unusable: {error}");
-                }
-
-                _log.Debug("{Station}: skipped a frame that is not the reply ({Error})", request.Station, error);
-            }
-        }
-    }
-
     private async Task WaitForInterFrameGapAsync(CancellationToken cancellationToken)
     {
         if (_lastExchangeEnd is not { } end || _options.InterFrameGap <= TimeSpan.Zero)
@@ -177,18 +209,14 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             return;
         }
 
+        // Task.Delay counts whole milliseconds and truncates: round up, or 24.99 ms would wait 24.
         var wait = _options.InterFrameGap - _time.GetElapsedTime(end);
         if (wait > TimeSpan.Zero)
         {
-            await Task.Delay(wait, _time, cancellationToken).ConfigureAwait(false);
+            await Task.Delay(TimeSpan.FromMilliseconds(Math.Ceiling(wait.TotalMilliseconds)), _time, cancellationToken).ConfigureAwait(false);
         }
     }
 
-    private sealed record AttemptOutcome(PlcResponse? Response, PlcCommunicationException? Failure, TimeSpan Elapsed)
-    {
-        public static AttemptOutcome Answered(PlcResponse response, TimeSpan elapsed) => new(response, null, elapsed);
-
-        public static AttemptOutcome Failed(PlcErrorKind kind, PlcRequest request, string message) =>
-            new(null, new PlcCommunicationException(kind, request.Station, message), TimeSpan.Zero);
-    }
+    /// <summary>An exchange's end: the reply, or the failure and whether the frame went out.</summary>
+    private sealed record ExchangeResult(PlcResponse? Response, PlcCommunicationException? Failure, bool Sent, bool CorruptedCopy);
 }

@@ -10,6 +10,7 @@ internal sealed class StationStatistics
     private long _timeouts;
     private long _corrupt;
     private long _negative;
+    private long _corruptedRefusals;
     private TimeSpan _sum;
     private TimeSpan? _min;
     private TimeSpan? _max;
@@ -23,6 +24,8 @@ internal sealed class StationStatistics
     public void Corrupt() => Add(ref _corrupt);
 
     public void NegativeReply() => Add(ref _negative);
+
+    public void CorruptedRefusal() => Add(ref _corruptedRefusals);
 
     public void Reply(TimeSpan roundTrip)
     {
@@ -40,7 +43,10 @@ internal sealed class StationStatistics
         lock (_gate)
         {
             TimeSpan? average = _replies == 0 ? null : _sum / _replies;
-            return new LinkStatistics(_requests, _replies, _retries, _timeouts, _corrupt, _negative, _min, average, _max);
+            return new LinkStatistics(_requests, _replies, _retries, _timeouts, _corrupt, _negative, _min, average, _max)
+            {
+                CorruptedRefusals = _corruptedRefusals,
+            };
         }
     }
 

@@ -2,6 +2,7 @@ using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Protocol.V1;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.TestKit;
 
@@ -134,8 +135,10 @@ public sealed class PlcLinkTests
 
         var response = await link.ExchangeAsync(ReadMb0, default);
 
-        response.Should().BeEquivalentTo(
-            new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange) { RequestCheck = RequestCodec.Check(ReadMb0 with { Sequence = 0x01 }) });
+        response.Should().BeEquivalentTo(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange)
+        {
+            RequestCheck = RequestCodec.Check(ReadMb0 with { Sequence = 0x01 }),
+        });
         link.IsOnline(Station2).Should().BeTrue();
         link.StatisticsFor(Station2).NegativeReplies.Should().Be(1);
     }
@@ -177,7 +180,7 @@ public sealed class PlcLinkTests
         await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x01)), default);
         (await first).Should().BeOfType<ReadResponse>();
         (await ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(other with { Sequence = 0x02 })));
-        await pair.BusSide.WriteAsync(ResponseCodec.Encode(new ReadResponse(Station2, 0x02, [0x02]), other with { Sequence = 0x02 }), default);
+        await pair.BusSide.WriteAsync(Hex.Ascii(Ascii(ResponseCodec.Encode(new ReadResponse(Station2, 0x02, [0x02]), other with { Sequence = 0x02 }))), default);
         ((ReadResponse)await second).Data.Should().Equal(0x02);
     }
 
@@ -195,9 +198,11 @@ public sealed class PlcLinkTests
             < no response
             > "{Ascii(RequestCodec.Encode(identify with { Sequence = 0x02 }))}"
             < no response
-            > "{Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x03 }))}"    // SEQ 03
+            > "{Ascii(V1IdentifyProbe.Encode(Station2, 0x03))}"                   // v1 probe under SEQ 03: silent too
+            < no response
+            > "{Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x04 }))}"    // SEQ 04
             < "{Reply(0x99, 0x02)}"                                             // late answer to SEQ 02: skipped
-            < "{Reply(0x30, 0x03)}"
+            < "{Reply(0x30, 0x04)}"
             """, clock);
         var link = NewLink(transport, clock);
 
@@ -208,7 +213,7 @@ public sealed class PlcLinkTests
 
         first.Sequence.Should().Be(0x01);
         ((ReadResponse)third).Data.Should().Equal(0x30);
-        third.Sequence.Should().Be(0x03);
+        third.Sequence.Should().Be(0x04);
         transport.AssertComplete();
     }
 
