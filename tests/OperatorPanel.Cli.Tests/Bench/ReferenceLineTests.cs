@@ -75,13 +75,4 @@ public sealed class ReferenceLineTests
         TrafficModels.FromPlan(plan).Should().Be(new TrafficFigures(TrafficModels.Planned, 2, 12 + 28, 190));
         TrafficModels.DefineListsOnce(plan).Should().Be(new TrafficFigures(TrafficModels.DefineLists, 1, 14 + 160, 12));
     }
-
-    [Fact]
-    public void Report_ReferenceLine_SteadyStatePassesTheTimeTargetAt9600()
-    {
-        var report = LinkBenchReport.Create(Line, ExchangeTiming.Default);
-
-        report.Targets.Should().OnlyContain(t => t.Pass);
-        report.Targets.Single(t => t.Name == "refresh time 9600 8N1").Ratio.Should().BeApproximately(269.583 / 154.167, 0.001);
-    }
 }

@@ -94,21 +94,14 @@ public sealed class TrafficModelsTests
     }
 
     [Theory]
-    [InlineData(9600, "8N1", 10, 73.333)]   // 56 characters × 1.0417 ms + 15 ms
-    [InlineData(9600, "8E1", 11, 79.167)]   // 56 × 1.1458 ms + 15 ms
-    [InlineData(38400, "8N1", 10, 29.583)]  // 56 × 0.2604 ms + 15 ms
-    public void RefreshMs_TinyPlan_CharactersTimesCharacterTimePlusDeadTime(int baud, string format, int bits, double expected)
+    [InlineData(9600, "8N1", 10, 58.333)]   // 56 characters x 1.0417 ms
+    [InlineData(9600, "8E1", 11, 64.167)]   // 56 x 1.1458 ms
+    [InlineData(38400, "8N1", 10, 14.583)]  // 56 x 0.2604 ms
+    public void LineMs_TinyPlan_CharactersTimesCharacterTimeOnly(int baud, string format, int bits, double expected)
     {
         var figures = TrafficModels.PlainReads(Tiny.Plan());
 
-        figures.RefreshMs(new LineSetting(baud, format, bits), ExchangeTiming.Default).Should().BeApproximately(expected, 0.001);
-    }
-
-    [Fact]
-    public void RefreshMs_LowerBound_HasNoDeadTime()
-    {
-        TrafficModels.LowerBoundAsHex(Tiny).RefreshMs(new LineSetting(9600, "8N1", 10), ExchangeTiming.Default)
-            .Should().BeApproximately(8 * 1.0416667, 0.0001);
+        figures.LineMs(new LineSetting(baud, format, bits)).Should().BeApproximately(expected, 0.001);
     }
 
     [Fact]

@@ -1,0 +1,52 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Polling;
+
+namespace OperatorPanel.Cli.Bench;
+
+/// <summary>
+/// Watched items for the planner benchmark, one station, deterministic (fixed seed): scattered the way programs scatter
+/// them, in clusters (a recipe block, an alarm word, a block of counters) over the CPU's whole I, Q, M and V areas:
+/// 5% input bits, 5% output bits, 10% M bits and bytes, 80% V (40% bits, 20% bytes, 30% words, 10% double words).
+/// Past a few thousand tags the areas fill up: then tags overlap, as several windows watching the same data do.
+/// </summary>
+internal static class PlanBenchTags
+{
+    private const int Seed = 2026;
+    private const int ClusterBytes = 48;
+    private const int TagsPerCluster = 12;
+
+    public static List<WatchedItem> Create(int count, Station station, CpuProfile cpu)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(count);
+        ArgumentNullException.ThrowIfNull(cpu);
+        var random = new Random(Seed);
+        var items = new List<WatchedItem>(count);
+        var cluster = (Area: MemoryArea.V, Base: 0);
+        for (var i = 0; i < count; i++)
+        {
+            var roll = random.Next(100);
+            var area = roll < 5 ? MemoryArea.I : roll < 10 ? MemoryArea.Q : roll < 20 ? MemoryArea.M : MemoryArea.V;
+            cpu.TryGetArea(area, out var range);
+            if (i % TagsPerCluster == 0 || cluster.Area != area)
+            {
+                cluster = (area, random.Next(Math.Max(1, range.ByteCount - ClusterBytes)));
+            }
+
+            var width = Width(area, random.Next(100));
+            var last = range.ByteCount - width.ByteCount();
+            var offset = Math.Min(last, cluster.Base + random.Next(Math.Min(ClusterBytes, range.ByteCount)));
+            var address = width == AccessWidth.Bit ? PlcAddress.ForBit(area, offset, random.Next(8)) : PlcAddress.ForBytes(area, offset, width);
+            items.Add(new WatchedItem(station, address));
+        }
+
+        return items;
+    }
+
+    private static AccessWidth Width(MemoryArea area, int roll) => area switch
+    {
+        MemoryArea.I or MemoryArea.Q => AccessWidth.Bit,
+        MemoryArea.M => roll < 70 ? AccessWidth.Bit : AccessWidth.Byte,
+        _ => roll < 40 ? AccessWidth.Bit : roll < 60 ? AccessWidth.Byte : roll < 90 ? AccessWidth.Word : AccessWidth.DoubleWord,
+    };
+}
