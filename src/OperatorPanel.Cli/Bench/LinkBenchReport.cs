@@ -26,12 +26,18 @@ internal sealed record LinkBenchReport(
         var handler = HandlerCosts.Measure(cycles, probe, probeError);
         var medium = model.Radio is null ? "PC/PPI cable" : "radio modules";
         var time = LinkTimeReport.Create(medium, model, cycles, handler, line);
-        var planned = TrafficModels.FromPlan(plan);
-        var perItem = TrafficModels.OneItemPerRequest(line, plan.CostModel);
+        var planned = TrafficModels.FromCycle(TrafficModels.Planned, cycles.Steady);
+        var perItem = TrafficModels.OneItemPerRequest(line);
         var seed = TrafficModels.SeedOneItemPerRequest(line);
         var rows = ImmutableArray.Create(
-            planned, TrafficModels.PlainReads(plan), perItem, seed, TrafficModels.LowerBoundAsHex(line), TrafficModels.LowerBoundAsBinary(line));
+            planned,
+            TrafficModels.FromCycle(TrafficModels.Idle, cycles.Idle),
+            TrafficModels.PlainReads(plan),
+            perItem,
+            seed,
+            TrafficModels.LowerBoundAsHex(line),
+            TrafficModels.LowerBoundAsBinary(line));
         return new LinkBenchReport(
-            line, plan, rows, TrafficModels.DefineListsOnce(plan), time, handler.Problems, BenchTargets.Evaluate(planned, perItem, seed, time));
+            line, plan, rows, TrafficModels.FromCycle(TrafficModels.DefineLists, cycles.Setup), time, handler.Problems, BenchTargets.Evaluate(planned, perItem, seed, time));
     }
 }

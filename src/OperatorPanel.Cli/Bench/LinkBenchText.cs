@@ -74,7 +74,7 @@ internal static class LinkBenchText
         }
 
         var define = report.DefineLists;
-        o.WriteLine($"  one-time cost, once per connection and after an invalidation: {define.Frames} list definition exchange{(define.Frames == 1 ? string.Empty : "s")},");
+        o.WriteLine($"  one-time cost, once per connection and after an invalidation: {define.Frames} exchange{(define.Frames == 1 ? string.Empty : "s")} (DEFINE LIST, first READ CHANGES),");
         o.WriteLine($"    {define.RequestChars} characters PC->PLC + {define.ReplyChars} PLC->PC = {define.TotalChars}");
     }
 

@@ -5,9 +5,12 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.Cli.Bench;
 
 /// <summary>
-/// The exchanges the panel sends for a plan, encoded by Core: <see cref="Setup"/> once per connection (the lists
-/// defined), <see cref="Steady"/> a refresh where every value is read in full, <see cref="Idle"/> a refresh where
-/// nothing changed since the last one. Served in this order, each finds the PLC in the state the earlier ones left.
+/// The exchanges the panel sends for a plan (protocol v2), requests encoded by Core's RequestCodec and replies sized by
+/// ProtocolLimits: <see cref="Setup"/> once per connection (DEFINE LIST, then the first READ CHANGES, FULL, which fills
+/// the handler's copy); <see cref="Steady"/> a refresh where every value is read in full (READ CHANGES FULL: the whole
+/// list, as when every byte changed); <see cref="Idle"/> a refresh where nothing changed (READ CHANGES answering K = 0).
+/// Frames without a list are plain READs in every cycle. Served in this order, each request finds the PLC in the state
+/// the earlier ones left.
 /// </summary>
 internal sealed record RefreshCycles(ImmutableArray<PlannedExchange> Setup, ImmutableArray<PlannedExchange> Steady, ImmutableArray<PlannedExchange> Idle)
 {
@@ -17,23 +20,30 @@ internal sealed record RefreshCycles(ImmutableArray<PlannedExchange> Setup, Immu
         var lists = ReadListAssignment.For(plan);
         var setup = ImmutableArray.CreateBuilder<PlannedExchange>();
         var steady = ImmutableArray.CreateBuilder<PlannedExchange>();
+        var idle = ImmutableArray.CreateBuilder<PlannedExchange>();
         byte sequence = 1;
         for (var i = 0; i < plan.Frames.Length; i++)
         {
             var frame = plan.Frames[i];
-            var reply = plan.CostModel.ReplyChars(frame.DataBytes);
             if (lists.TryGetValue(i, out var list))
             {
-                setup.Add(new($"DEFINE LIST {list}", RequestCodec.Encode(new DefineListRequest(frame.Station, sequence++, list, frame.Items)), plan.CostModel.ReplyChars(0)));
-                steady.Add(new($"READ LIST {list}", RequestCodec.Encode(new ReadListRequest(frame.Station, sequence++, list)), reply));
+                var full = ProtocolLimits.ListReplyChars(frame.DataBytes);
+                setup.Add(new($"DEFINE LIST {list}", RequestCodec.Encode(new DefineListRequest(frame.Station, sequence++, list, frame.Items)), ProtocolLimits.ReplyChars(0)));
+                setup.Add(new($"READ CHANGES {list} FULL", RequestCodec.Encode(new ReadChangesRequest(frame.Station, sequence++, list, true)), full));
+                steady.Add(new($"READ CHANGES {list} FULL", RequestCodec.Encode(new ReadChangesRequest(frame.Station, sequence++, list, true)), full));
+
+                // Nothing changed: the reply's payload is K = 0 alone.
+                idle.Add(new($"READ CHANGES {list}", RequestCodec.Encode(new ReadChangesRequest(frame.Station, sequence++, list, false)), ProtocolLimits.ReplyChars(1)));
             }
             else
             {
-                steady.Add(new($"READ {frame.Items.Length} items", RequestCodec.Encode(new ReadRequest(frame.Station, sequence++, frame.Items)), reply));
+                var read = new PlannedExchange(
+                    $"READ {frame.Items.Length} items", RequestCodec.Encode(new ReadRequest(frame.Station, sequence++, frame.Items)), ProtocolLimits.ReplyChars(frame.DataBytes));
+                steady.Add(read);
+                idle.Add(read with { Request = RequestCodec.Encode(new ReadRequest(frame.Station, sequence++, frame.Items)) });
             }
         }
 
-        // Protocol v1 has no change-only read: an idle refresh costs a full one.
-        return new(setup.ToImmutable(), steady.ToImmutable(), steady.ToImmutable());
+        return new(setup.ToImmutable(), steady.ToImmutable(), idle.ToImmutable());
     }
 }

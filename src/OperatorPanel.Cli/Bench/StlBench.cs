@@ -34,8 +34,8 @@ internal static class StlBench
         var workloads = new (string Name, byte[] Frame)[]
         {
             ("IDENTIFY", RequestCodec.Encode(new IdentifyRequest(Station, 1))),
-            ("WRITE 118 bytes", RequestCodec.Encode(new WriteBlockRequest(Station, 1, ProtocolArea.V, 0, [.. new byte[ProtocolLimits.MaxWriteData]]))),
-            ("READ 119 bytes", RequestCodec.Encode(new ReadRequest(Station, 1, [new ReadItem(ProtocolArea.V, 0, 119)]))),
+            ($"WRITE {ProtocolLimits.MaxWriteData} bytes", RequestCodec.Encode(new WriteBlockRequest(Station, 1, ProtocolArea.V, 0, [.. new byte[ProtocolLimits.MaxWriteData]]))),
+            ($"READ {ProtocolLimits.MaxReadData} bytes", RequestCodec.Encode(new ReadRequest(Station, 1, [new ReadItem(ProtocolArea.V, 0, ProtocolLimits.MaxReadData)]))),
         };
         var list = new List<StlBenchResult>();
         foreach (var (name, frame) in workloads)
