@@ -7,28 +7,47 @@ namespace OperatorPanel.Core.Polling;
 internal static class FramePacker
 {
     /// <summary>
-    /// Frames that each fit <see cref="PollCostModel.Fits"/>: at most <see cref="PollCostModel.MaxItemsPerFrame"/>
-    /// items, and a data capacity that shrinks by 2 bytes with every further item (2D + 4N &lt;= 243). Items inside a
-    /// frame, and frames, in area and offset order.
+    /// Frames whose item count and data bytes each fit <paramref name="capacity"/> (for a plain READ: at most 20 items and
+    /// a data capacity that shrinks with every further item). Items inside a frame, and frames, in area and offset
+    /// order. Each frame keeps its running totals, so one block costs one pass over the open frames.
     /// </summary>
-    public static List<ImmutableArray<ReadItem>> Pack(IReadOnlyCollection<ReadItem> blocks, PollCostModel model)
+    public static List<ImmutableArray<ReadItem>> Pack(IReadOnlyCollection<ReadItem> blocks, FrameCapacity capacity)
     {
-        var frames = new List<List<ReadItem>>();
-        foreach (var block in blocks.OrderByDescending(b => b.Length).ThenBy(b => b.Area).ThenBy(b => b.Offset))
+        var frames = new List<OpenFrame>();
+        var sorted = blocks.ToArray();
+        Array.Sort(sorted, (a, b) => b.Length != a.Length ? b.Length.CompareTo(a.Length) : a.Area != b.Area ? a.Area.CompareTo(b.Area) : a.Offset.CompareTo(b.Offset));
+        foreach (var block in sorted)
         {
-            var frame = frames.Find(f => model.Fits(f.Count + 1, f.Sum(i => i.Length) + block.Length));
+            OpenFrame? frame = null;
+            foreach (var open in frames)
+            {
+                if (capacity.Fits(open.Items.Count + 1, open.DataBytes + block.Length))
+                {
+                    frame = open;
+                    break;
+                }
+            }
+
             if (frame is null)
             {
-                frame = [];
+                frame = new OpenFrame();
                 frames.Add(frame);
             }
 
-            frame.Add(block);
+            frame.Items.Add(block);
+            frame.DataBytes += block.Length;
         }
 
         return frames
-            .Select(f => f.OrderBy(i => i.Area).ThenBy(i => i.Offset).ToImmutableArray())
+            .Select(f => f.Items.OrderBy(i => i.Area).ThenBy(i => i.Offset).ToImmutableArray())
             .OrderBy(f => f[0].Area).ThenBy(f => f[0].Offset)
             .ToList();
+    }
+
+    private sealed class OpenFrame
+    {
+        public List<ReadItem> Items { get; } = [];
+
+        public int DataBytes { get; set; }
     }
 }

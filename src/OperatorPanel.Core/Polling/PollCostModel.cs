@@ -61,6 +61,14 @@ public sealed record PollCostModel
     /// <summary>DEFINE LIST: '&lt;' STATION SEQ CMD LIST COUNT (AREA OFFSET LENGTH)×n BCC '&gt;' = 14 + 8n characters.</summary>
     public int DefineListRequestChars(int items) => RequestFixedChars + 2 + (ItemChars * items);
 
+    /// <summary>
+    /// What a plain READ may carry while stored lists hold <paramref name="tailBytes"/> bytes of the buffer's tail:
+    /// <see cref="Fits"/>, and with a tail also <see cref="ProtocolLimits.ReadKeepsLists"/> so the READ never wipes them.
+    /// </summary>
+    internal FrameCapacity PlainCapacity(int tailBytes) => new(
+        tailBytes,
+        (items, dataBytes) => Fits(items, dataBytes) && (tailBytes == 0 || ProtocolLimits.ReadKeepsLists(tailBytes, items, dataBytes)));
+
     /// <summary>Request, reply and turnaround of one READ exchange.</summary>
     public int FrameCost(int items, int dataBytes) => RequestChars(items) + ReplyChars(dataBytes) + TurnaroundChars;
 }

@@ -38,17 +38,18 @@ public static class PollPlanner
         }
 
         var frames = ImmutableArray.CreateBuilder<PollFrame>();
-        foreach (var station in accepted.Select(i => i.Station).Distinct().OrderBy(s => s.Address))
+        var capacity = model.PlainCapacity(0);
+        foreach (var station in accepted.GroupBy(i => i.Station).OrderBy(g => g.Key.Address))
         {
-            var spans = accepted.Where(i => i.Station == station).Select(Span);
-            var blocks = RangeMerger.Cheapest(spans, model);
-            frames.AddRange(FramePacker.Pack(blocks, model).Select(f => new PollFrame(station, f)));
+            var blocks = RangeMerger.Cheapest(station.Select(Span), model, capacity);
+            frames.AddRange(FramePacker.Pack(blocks, capacity).Select(f => new PollFrame(station.Key, f)));
         }
 
         var frameArray = frames.ToImmutable();
+        var locator = new SliceLocator(frameArray);
         var values = accepted
             .OrderBy(i => i.Station.Address).ThenBy(i => i.Address.Area).ThenBy(i => i.Address.ByteOffset).ThenBy(i => i.Address.Bit)
-            .Select(i => new PlannedValue(i, SliceLocator.Locate(frameArray, i.Station, Span(i))))
+            .Select(i => new PlannedValue(i, locator.Locate(i.Station, Span(i))))
             .ToImmutableArray();
         return new PollPlan(frameArray, values, rejected.ToImmutable(), cpuMap, model);
     }
