@@ -8,7 +8,8 @@ namespace OperatorPanel.Cli.Bench;
 /// Watched items for the planner benchmark, one station, deterministic (fixed seed): scattered the way programs scatter
 /// them, in clusters (a recipe block, an alarm word, a block of counters) over the CPU's whole I, Q, M and V areas:
 /// 5% input bits, 5% output bits, 10% M bits and bytes, 80% V (40% bits, 20% bytes, 30% words, 10% double words).
-/// Past a few thousand tags the areas fill up: then tags overlap, as several windows watching the same data do.
+/// Every tag is a different address (the planner would merge repeats): when the small areas are full (I and Q have
+/// 128 bits each on a CPU 226), the repeats drawn there are drawn again, so large counts lean further towards V.
 /// </summary>
 internal static class PlanBenchTags
 {
@@ -22,8 +23,9 @@ internal static class PlanBenchTags
         ArgumentNullException.ThrowIfNull(cpu);
         var random = new Random(Seed);
         var items = new List<WatchedItem>(count);
+        var seen = new HashSet<PlcAddress>();
         var cluster = (Area: MemoryArea.V, Base: 0);
-        for (var i = 0; i < count; i++)
+        for (var i = 0; items.Count < count; i++)
         {
             var roll = random.Next(100);
             var area = roll < 5 ? MemoryArea.I : roll < 10 ? MemoryArea.Q : roll < 20 ? MemoryArea.M : MemoryArea.V;
@@ -37,7 +39,10 @@ internal static class PlanBenchTags
             var last = range.ByteCount - width.ByteCount();
             var offset = Math.Min(last, cluster.Base + random.Next(Math.Min(ClusterBytes, range.ByteCount)));
             var address = width == AccessWidth.Bit ? PlcAddress.ForBit(area, offset, random.Next(8)) : PlcAddress.ForBytes(area, offset, width);
-            items.Add(new WatchedItem(station, address));
+            if (seen.Add(address))
+            {
+                items.Add(new WatchedItem(station, address));
+            }
         }
 
         return items;

@@ -32,9 +32,9 @@ internal static class PlanBenchCommand
                 return cli.Fail(ExitCodes.BadInput, $"--runs {count}: give at least 1");
             }
 
-            if (sizes.Length == 0 || sizes.Any(s => s is < 1 or > 100_000))
+            if (sizes.Length == 0 || sizes.Any(s => s is < 1 or > 50_000))
             {
-                return cli.Fail(ExitCodes.BadInput, $"--tags {string.Join(' ', sizes)}: give tag counts of 1-100000");
+                return cli.Fail(ExitCodes.BadInput, $"--tags {string.Join(' ', sizes)}: give tag counts of 1-50000");
             }
 
             var results = new List<PlanTiming>();
