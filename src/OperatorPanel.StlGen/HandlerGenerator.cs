@@ -21,7 +21,7 @@ public static class HandlerGenerator
 
         var program = HandlerBuilder.Build(options);
         var stats = StatsOf(options, program);
-        var layout = new HandlerLayout(options.EffectiveBufferStart);
+        var layout = new HandlerLayout(options.EffectiveBufferStart, options.CopyBytes);
         return new HandlerGenerationResult(
             diagnostics, program, stats, AwlWriter.Write(program), SymbolTableWriter.Write(layout), TechnicianNotes.Write(options, stats));
     }
@@ -55,6 +55,11 @@ public static class HandlerGenerator
         var layout = context.Layout;
         return new HandlerStats(
             layout.BufferStart, layout.LastByte, program.InstructionCount, options.Port,
-            [context.ReceiveEvent, HandlerContext.DelayEvent, context.TransmitEvent], [.. blocks]);
+            [context.ReceiveEvent, HandlerContext.DelayEvent, context.TransmitEvent], [.. blocks])
+        {
+            CopyBytes = options.CopyBytes,
+            ChangesWorkBytes = HandlerLayout.ChangesBytes,
+            StopEnabled = options.AllowStop,
+        };
     }
 }

@@ -16,6 +16,18 @@ public sealed record HandlerStats(
 {
     public int VBytes => LastVByte - FirstVByte + 1;
 
+    /// <summary>The READ CHANGES copy area, the last <see cref="CopyBytes"/> of the V bytes (0 = none).</summary>
+    public int CopyBytes { get; init; }
+
+    /// <summary>The work bytes READ CHANGES and STOP added (per-list copy state, comparison, STOP state).</summary>
+    public int ChangesWorkBytes { get; init; }
+
+    /// <summary>Whether the handler carries 07 STOP.</summary>
+    public bool StopEnabled { get; init; }
+
+    /// <summary>"VB8072-VB8191", or "none".</summary>
+    public string CopyRange => CopyBytes == 0 ? "none" : $"VB{LastVByte - CopyBytes + 1}-VB{LastVByte}";
+
     /// <summary>"VB7900-VB8191".</summary>
     public string VRange => $"VB{FirstVByte}-VB{LastVByte}";
 }

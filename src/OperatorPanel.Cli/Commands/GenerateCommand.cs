@@ -10,7 +10,7 @@ using OperatorPanel.StlGen.Options;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel generate PROJECT -o DIR [--station NAME|ADDRESS] [--merge USER.awl] [--stats]</c>: writes the PLC handler
+/// <c>opanel generate PROJECT -o DIR [--station NAME|ADDRESS] [--copy-bytes N] [--allow-stop] [--merge USER.awl] [--stats]</c>: writes the PLC handler
 /// for one station (STATION-handler.awl, STATION-symbols.txt, STATION-README.txt, with --merge also STATION-merged.awl;
 /// a collision with the user's program writes nothing, prints USER.awl:LINE: STLnnn ... and exits 2). CPU, station address and line settings come from
 /// the project. Exit codes: 0 written, 1 bad input (project, options, files), 2 impossible handler settings (STLnnn).
@@ -24,16 +24,18 @@ internal static class GenerateCommand
         var station = new Option<string?>("--station") { Description = "Station name or address (needed when the project has several)" };
         var stats = new Option<bool>("--stats") { Description = "Print V bytes reserved, instructions generated, interrupt events, SBR/INT used, and per worst-case request (measured in the interpreter at the manual's execution times): instructions, time, longest interrupt routine, most added to one scan, scans until the reply" };
         var plcPort = new Option<int>("--plc-port") { Description = "The PLC's port 0 or 1 (port 1 on CPU 224XP and 226)" };
-        var buffer = new Option<string?>("--buffer") { Description = "First V byte of the handler's 292 bytes, e.g. VB1000 (default: the top of V memory)" };
+        var buffer = new Option<string?>("--buffer") { Description = "First V byte of the handler's bytes (buffer, work bytes, copies), e.g. VB1000 (default: the top of V memory)" };
         var replyDelay = new Option<int>("--reply-delay") { Description = "Reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
         var writable = new Option<string>("--writable") { Description = "Areas the panel may write, e.g. Q,M,V,SM (default)", DefaultValueFactory = _ => "Q,M,V,SM" };
         var charTimeout = new Option<int>("--char-timeout") { Description = "Receive inter-character timeout in ms (0 = off, default)" };
         var sbr = new Option<int?>("--sbr") { Description = "Subroutine number of the handler (default: the CPU's last)" };
         var interrupt = new Option<int?>("--int") { Description = "First of the handler's 3 interrupt routines (default 125)" };
+        var copyBytes = new Option<int>("--copy-bytes") { Description = "V bytes for READ CHANGES copies after the work bytes, 0-255 (0 = none: every READ CHANGES answers the whole list; default 120)", DefaultValueFactory = _ => HandlerDefaults.CopyBytes };
+        var allowStop = new Option<bool>("--allow-stop") { Description = "Include 07 STOP: the panel may put the CPU in STOP (default off: no STOP code, the command is refused with error 05)" };
         var merge = new Option<string?>("--merge") { Description = "A program exported from Micro/WIN (File > Export): check for collisions and write STATION-merged.awl" };
         var command = new Command("generate", "Generate the S7-200 handler program (.awl), symbol table and technician notes. Exit codes: 0 written, 1 bad input, 2 impossible settings")
         {
-            project, output, station, stats, plcPort, buffer, replyDelay, writable, charTimeout, sbr, interrupt, merge,
+            project, output, station, stats, plcPort, buffer, replyDelay, writable, charTimeout, sbr, interrupt, copyBytes, allowStop, merge,
         };
         command.SetAction(parse =>
         {
@@ -71,6 +73,8 @@ internal static class GenerateCommand
                 CharTimeoutMs = parse.GetValue(charTimeout),
                 FirstSubroutine = parse.GetValue(sbr),
                 FirstInterrupt = parse.GetValue(interrupt),
+                CopyBytes = parse.GetValue(copyBytes),
+                AllowStop = parse.GetValue(allowStop),
             };
             string? userProgram = null;
             var userPath = parse.GetValue(merge);

@@ -42,6 +42,8 @@ internal static class GenerateView
         }
 
         cli.Out.WriteLine($"V bytes reserved:       {stats.VRange} ({stats.VBytes} bytes)");
+        cli.Out.WriteLine($"READ CHANGES copies:    {stats.CopyRange} ({stats.CopyBytes} bytes; READ CHANGES and STOP work bytes: {stats.ChangesWorkBytes})");
+        cli.Out.WriteLine($"STOP command:           {(stats.StopEnabled ? "enabled (07 STOP puts the CPU in STOP after its reply)" : "not included (07 gets error 05)")}");
         cli.Out.WriteLine($"instructions generated: {stats.Instructions}");
         cli.Out.WriteLine($"interrupt events used:  {string.Join(", ", stats.InterruptEvents)}");
         cli.Out.WriteLine($"blocks used:            {string.Join(", ", stats.Blocks.Select(b => $"{b.Name} ({b.NumberText})"))}");
@@ -72,6 +74,9 @@ internal static class GenerateView
         lastVByte = stats.LastVByte,
         vBytes = stats.VBytes,
         instructions = stats.Instructions,
+        copyBytes = stats.CopyBytes,
+        changesWorkBytes = stats.ChangesWorkBytes,
+        stopEnabled = stats.StopEnabled,
         port = stats.Port,
         interruptEvents = stats.InterruptEvents,
         blocks = stats.Blocks.Select(b => new { name = b.Name, block = b.NumberText, purpose = b.Purpose }),

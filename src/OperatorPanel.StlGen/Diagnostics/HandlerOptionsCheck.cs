@@ -70,10 +70,17 @@ public static partial class HandlerOptionsCheck
     {
         var vBytes = HandlerDefaults.VBytes(options.Cpu);
         var start = options.EffectiveBufferStart;
-        var end = start + HandlerDefaults.FootprintBytes - 1;
+        if (options.CopyBytes is < 0 or > 255)
+        {
+            add(StlDiagnostics.CopyBytesOutOfRange, $"{options.CopyBytes} copy bytes for READ CHANGES is outside 0 (none) to 255");
+            return;
+        }
+
+        var bytes = HandlerDefaults.FootprintBytes(options.CopyBytes);
+        var end = start + bytes - 1;
         if (start < 0 || end >= vBytes)
         {
-            add(StlDiagnostics.BufferOutsideV, $"the handler needs VB{start}-VB{end} ({HandlerDefaults.FootprintBytes} bytes) but the {options.Cpu.DisplayName} has VB0-VB{vBytes - 1}; allowed buffer start: VB0-VB{vBytes - HandlerDefaults.FootprintBytes}");
+            add(StlDiagnostics.BufferOutsideV, $"the handler needs VB{start}-VB{end} ({bytes} bytes) but the {options.Cpu.DisplayName} has VB0-VB{vBytes - 1}; allowed buffer start: VB0-VB{vBytes - bytes}");
         }
     }
 

@@ -89,4 +89,7 @@ public static class StlDiagnostics
 
     /// <summary>Merge: the user's program holds what Micro/WIN refuses for this CPU (Core AwlProgramCheck: AWL001-AWL011, named in the message); nothing is written.</summary>
     public const string UserProgramRefused = "STL029";
+
+    /// <summary>READ CHANGES copy bytes outside 0-255 (COPY_BYTES is one byte in IDENTIFY, and the copies are indexed by a byte).</summary>
+    public const string CopyBytesOutOfRange = "STL030";
 }

@@ -30,7 +30,7 @@ public static class TechnicianNotes
         w.Line("  4. Compile, download, and put the CPU in RUN with the mode switch at RUN.");
         w.Line(string.Empty);
         w.Line("What it reserves (do not use these in your program)");
-        w.Line($"  V memory     {stats.VRange} ({stats.VBytes} bytes: a 256-byte buffer and {HandlerLayout.WorkBytes} work bytes); the panel cannot");
+        w.Line($"  V memory     {stats.VRange} ({stats.VBytes} bytes: a 256-byte buffer, {HandlerLayout.WorkBytes} work bytes and {stats.CopyBytes} bytes of READ CHANGES copies); the panel cannot");
         w.Line("               write there either (error 03)");
         foreach (var block in stats.Blocks)
         {
@@ -46,6 +46,9 @@ public static class TechnicianNotes
         w.Line("  In STOP the CPU gives the port back to PPI by itself. With the mode switch at TERM the handler");
         w.Line("  gives it back to PPI too, so Micro/WIN can connect while the program keeps running; turning the");
         w.Line("  switch back to RUN takes the port again for the panel. No panel request is answered meanwhile.");
+        w.Line(stats.StopEnabled
+            ? "  STOP from the panel is included: after answering it the handler executes STOP; RUN again by the switch or Micro/WIN."
+            : "  STOP from the panel is not included (regenerate with --allow-stop to include it).");
         w.Line(string.Empty);
         w.Line("Timing (at the manual's execution times; conservative where the manual gives none)");
         w.Line($"  The receive interrupt only notes that a request has arrived (under {SlicePart.InterruptBoundMs} ms). {options.Names.Panel} then");

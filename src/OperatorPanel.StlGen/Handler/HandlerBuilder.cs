@@ -19,6 +19,7 @@ internal static class HandlerBuilder
         var first = options.EffectiveFirstInterrupt;
         var panel = ImmutableArray.CreateBuilder<StlNetwork>();
         panel.AddRange(InitPart.Subroutine(c));
+        panel.AddRange(StopPart.Execute(c));
         panel.AddRange(SlicePart.Entry(c));
         panel.AddRange(ReceivePart.Networks(c));
         panel.AddRange(IdentifyPart.Networks(c));
@@ -26,6 +27,8 @@ internal static class HandlerBuilder
         panel.AddRange(WritePart.Entries(c));
         panel.AddRange(ListPart.Define(c));
         panel.AddRange(ListPart.Read(c));
+        panel.AddRange(ChangesPart.Networks(c));
+        panel.AddRange(StopPart.Networks(c));
         panel.AddRange(ItemCheckPart.Networks(c));
         panel.AddRange(ReadPart.Reply(c));
         panel.AddRange(ReadPart.BuildLoop(c));

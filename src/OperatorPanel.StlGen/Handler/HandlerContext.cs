@@ -12,7 +12,7 @@ internal sealed class HandlerContext
     public HandlerContext(HandlerOptions options)
     {
         Options = options;
-        Layout = new HandlerLayout(options.EffectiveBufferStart);
+        Layout = new HandlerLayout(options.EffectiveBufferStart, options.CopyBytes);
         Port = options.Port;
         VBytes = HandlerDefaults.VBytes(options.Cpu);
         SmBytes = options.Cpu.TryGetArea(MemoryArea.SM, out var sm) ? sm.ByteCount : 0;
@@ -29,6 +29,15 @@ internal sealed class HandlerContext
     public int VBytes { get; }
 
     public int SmBytes { get; }
+
+    /// <summary>V_BYTES of IDENTIFY: the buffer, the work bytes and the READ CHANGES copies.</summary>
+    public int HandlerVBytes => HandlerDefaults.FootprintBytes(CopyBytes);
+
+    /// <summary>COPY_BYTES of IDENTIFY: the READ CHANGES copy area (0 = none).</summary>
+    public int CopyBytes => Options.CopyBytes;
+
+    /// <summary>FEATURES of IDENTIFY: bit 0 = 07 STOP included, bit 1 = READ CHANGES copies present.</summary>
+    public int Features => (Options.AllowStop ? 1 : 0) | (CopyBytes > 0 ? 2 : 0);
 
     /// <summary>"0" or "1": the PORT operand of RCV and XMT.</summary>
     public string PortOperand => Port.ToString(CultureInfo.InvariantCulture);
@@ -69,6 +78,18 @@ internal sealed class HandlerContext
     public static string Hex(int value) => "16#" + value.ToString("X2", CultureInfo.InvariantCulture);
 
     public static string Dec(int value) => value.ToString(CultureInfo.InvariantCulture);
+
+    /// <summary>Characters of a request with <paramref name="payloadBytes"/> after STATION SEQ CMD, as the constant the count is compared with.</summary>
+    public static string RequestChars(int payloadBytes) => Dec(ProtocolLimits.RequestChars(payloadBytes));
+
+    /// <summary>Characters of a reply with <paramref name="payloadBytes"/> after STATUS and REQCHECK.</summary>
+    public static string ReplyChars(int payloadBytes) => Dec(ProtocolLimits.ReplyChars(payloadBytes));
+
+    /// <summary>The longest reply of a list without its 2D data characters (docs/protocol.md, "Lists", capacity rule).</summary>
+    public static string ListReplyChars => Dec(ProtocolLimits.ListReplyChars(0));
+
+    /// <summary>2D + 4N may be at most this: a READ reply of ReplyChars(D) ends before its descriptors at 256 - 4N.</summary>
+    public static int ReadReplyRoom => ProtocolLimits.MaxFrameChars - ProtocolLimits.ReplyChars(0);
 
     /// <summary>A command code as the constant the handler compares CMD with, taken from Core's protocol by name.</summary>
     public static string Dec(CommandCode code) => Dec((byte)code);

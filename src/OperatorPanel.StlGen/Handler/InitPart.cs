@@ -36,7 +36,7 @@ internal static class InitPart
             freeport.Op("MOVW", Dec(c.Options.CharTimeoutMs), c.SmW(92));
         }
 
-        freeport.Op("MOVB", "255", c.SmB(94)).ClearLists(l).Op("DTCH", Dec(DelayEvent))
+        freeport.Op("MOVB", "255", c.SmB(94)).ClearLists(l).Forget(c).Op("DTCH", Dec(DelayEvent))
             .Op("ATCH", c.Names.Receive, Dec(c.ReceiveEvent)).Op("ATCH", c.Names.Transmit, Dec(c.TransmitEvent))
             .Op("ENI").Op("MOVB", "0", l.B(HandlerLayout.Step)).Op("RCV", l.B(0), c.PortOperand);
         yield return freeport.Build();
@@ -47,6 +47,6 @@ internal static class InitPart
                 $"Detach the handler's events {c.ReceiveEvent}, {c.TransmitEvent} and {DelayEvent}; a request being served and the READ lists are forgotten.")
             .Op("LD", "SM0.7").Op("ED").Op("LD", "SM0.1").Op("AN", "SM0.7").Op("OLD")
             .Op("MOVB", "0", c.SmB(30)).Op("DTCH", Dec(c.ReceiveEvent)).Op("DTCH", Dec(c.TransmitEvent))
-            .Op("DTCH", Dec(DelayEvent)).Op("MOVB", "0", l.B(HandlerLayout.Step)).ClearLists(l).Build();
+            .Op("DTCH", Dec(DelayEvent)).Op("MOVB", "0", l.B(HandlerLayout.Step)).ClearLists(l).Forget(c).Build();
     }
 }

@@ -16,7 +16,11 @@ internal static class InterruptParts
                 "Detach event 10 first (timed interrupts repeat), then transmit the buffer (byte 0 = count).")
             .Op("LD", "SM0.0").Op("DTCH", Dec(DelayEvent)).Op("XMT", c.Layout.B(0), c.PortOperand).Build();
 
-    public static StlNetwork Transmit(HandlerContext c) =>
-        new NetworkBuilder("Reply sent: receive again", "The last character is out; listen for the next request.")
-            .Op("LD", "SM0.0").Op("RCV", c.Layout.B(0), c.PortOperand).Build();
+    public static StlNetwork Transmit(HandlerContext c)
+    {
+        var net = new NetworkBuilder("Reply sent: receive again", "The last character is out; listen for the next request.")
+            .Op("LD", "SM0.0").Op("RCV", c.Layout.B(0), c.PortOperand);
+        StopPart.MarkSent(c, net);
+        return net.Build();
+    }
 }

@@ -9,17 +9,23 @@ public static class HandlerDefaults
     /// <summary>Q, M, V and SM writable (protocol area codes 2-5), as the reference model's default.</summary>
     public const int WriteMask = 0x3C;
 
-    /// <summary>The 256-byte receive/transmit buffer (byte 0 = count) plus 36 work bytes.</summary>
-    public const int FootprintBytes = 256 + HandlerLayout.WorkBytes;
+    /// <summary>
+    /// READ CHANGES copies: 120 bytes hold the copy of one list of the largest READ reply or of several smaller lists,
+    /// about a third of what the buffer and work bytes take already.
+    /// </summary>
+    public const int CopyBytes = 120;
+
+    /// <summary>The 256-byte receive/transmit buffer (byte 0 = count), the work bytes and <paramref name="copyBytes"/> copy bytes.</summary>
+    public static int FootprintBytes(int copyBytes) => 256 + HandlerLayout.WorkBytes + copyBytes;
 
     /// <summary>
     /// The top of V memory: user programs grow from VB0 upwards, so the end of V is the place least likely to be in
     /// use. The footprint ends at the last V byte, starting on an even byte (words and double words stay aligned).
     /// </summary>
-    public static int BufferStart(CpuProfile cpu)
+    public static int BufferStart(CpuProfile cpu, int copyBytes = CopyBytes)
     {
         ArgumentNullException.ThrowIfNull(cpu);
-        return (VBytes(cpu) - FootprintBytes) & ~1;
+        return (VBytes(cpu) - FootprintBytes(copyBytes)) & ~1;
     }
 
     /// <summary>

@@ -30,7 +30,7 @@ public sealed record HandlerOptions
     /// <summary>RS-485 station address 1-126.</summary>
     public int Station { get; init; } = 1;
 
-    /// <summary>First V byte of the handler's 292 bytes; null = <see cref="HandlerDefaults.BufferStart"/>.</summary>
+    /// <summary>First V byte of the handler's bytes (buffer, work bytes, change copies); null = <see cref="HandlerDefaults.BufferStart"/>.</summary>
     public int? BufferStart { get; init; }
 
     /// <summary>Bit n set = protocol area code n may be written (2 Q, 3 M, 4 V, 5 SM); bit 1 (I) never.</summary>
@@ -49,6 +49,15 @@ public sealed record HandlerOptions
     public int? FirstInterrupt { get; init; }
 
     public HandlerBlockNames Names { get; init; } = new();
+
+    /// <summary>
+    /// 0-255 V bytes after the work bytes for READ CHANGES copies (docs/protocol.md, "READ CHANGES"); 0 = none, every
+    /// READ CHANGES then answers the whole list.
+    /// </summary>
+    public int CopyBytes { get; init; } = HandlerDefaults.CopyBytes;
+
+    /// <summary>Whether the handler carries 07 STOP; off = no STOP code at all, CMD 07 gets error 05 like any unknown command.</summary>
+    public bool AllowStop { get; init; }
 
     /// <summary>The settings a project fixes for one station: CPU, station address, baud, parity, data and stop bits.</summary>
     public static HandlerOptions For(ProjectStation station)
@@ -82,7 +91,7 @@ public sealed record HandlerOptions
         };
     }
 
-    public int EffectiveBufferStart => BufferStart ?? HandlerDefaults.BufferStart(Cpu);
+    public int EffectiveBufferStart => BufferStart ?? HandlerDefaults.BufferStart(Cpu, CopyBytes);
 
     public int EffectiveFirstSubroutine => FirstSubroutine ?? HandlerDefaults.FirstSubroutine(Cpu);
 

@@ -83,7 +83,7 @@ public sealed class HandlerFootprintTests
     private static IEnumerable<HandlerOptions> Combinations(CpuProfile cpu, int port)
     {
         cpu.TryGetArea(MemoryArea.V, out var v).Should().BeTrue();
-        int?[] buffers = [null, 0, 1001, v.ByteCount - HandlerDefaults.FootprintBytes];
+        int?[] buffers = [null, 0, 1001, v.ByteCount - HandlerDefaults.FootprintBytes(HandlerDefaults.CopyBytes)];
         (int? Sbr, int? Int, HandlerBlockNames Names)[] blocks =
             [(null, null, new HandlerBlockNames()), (0, 0, new HandlerBlockNames()), (cpu.Subroutines / 2, 40, Renamed)];
         var rates = cpu.FreeportBaudRates;

@@ -1,0 +1,196 @@
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.StlGen.Model;
+using static OperatorPanel.StlGen.Handler.HandlerContext;
+using static OperatorPanel.StlGen.Handler.HandlerLayout;
+using static OperatorPanel.StlGen.Handler.HandlerSnippets;
+
+namespace OperatorPanel.StlGen.Handler;
+
+/// <summary>
+/// 08 READ CHANGES (docs/protocol.md, "READ CHANGES"): binary payload LIST (buffer byte 8) and FLAGS (9). Reply K,
+/// then K pairs INDEX VALUE, or K = 16#FF and the whole list. Every part runs in OP_PANEL's slices: the comparison
+/// at most <see cref="BytesPerScan"/> bytes per scan, the whole list at most <see cref="SlicePart.PassesPerScan"/>
+/// items per scan; nothing runs in an interrupt routine. Whatever a reply reports is what the copy holds afterwards:
+/// a changed byte is moved into the copy and sent from there, and a whole list is moved into the copy item by item
+/// and sent from there, so a program changing the bytes between two slices never makes the copy and the reply differ.
+/// </summary>
+internal static class ChangesPart
+{
+    /// <summary>Bytes the comparison handles per scan.</summary>
+    public const int BytesPerScan = 16;
+
+    /// <summary>STEP values of READ CHANGES.</summary>
+    public const int StepCompare = 20, StepCopyItems = 21;
+
+    /// <summary>Labels: the comparison (its resume, loop, byte, next byte, done), the whole list into the copy.</summary>
+    public const int CompareResume = 100, CompareLoop = 101, CompareByte = 102, NextByte = 103, CompareDone = 104,
+        FullAgain = 105, FullWithCopy = 106, CopyItem = 107;
+
+    /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes).</summary>
+    public static IEnumerable<(int Step, int Label)> Resumes => [(StepCompare, CompareResume), (StepCopyItems, CopyItem)];
+
+    /// <summary>The first payload character of a reply (after '&lt;', STATION, SEQ, CMD, STATUS, REQCHECK).</summary>
+    private const int Payload = ReplyPart.PayloadStart;
+
+    /// <summary>"FF" in the two payload characters of K: the whole list follows.</summary>
+    private const string FullMark = "16#4646";
+
+    public static IEnumerable<StlNetwork> Networks(HandlerContext c)
+    {
+        foreach (var network in Entry(c).Concat(c.Options.CopyBytes == 0 ? [] : Compare(c).Concat(Full(c))))
+        {
+            yield return network;
+        }
+    }
+
+    /// <summary>
+    /// DEFINE LIST, once it is sure to be stored (LIST, N and D known): the list's copy from CFREE if D bytes fit,
+    /// else none. No list stored (MAXD = 0: every stored list has D &gt;= 1 and clearing the lists resets MAXD) means
+    /// the copy area is empty; so clearing the lists drops the copies without a byte more in the receive interrupt.
+    /// </summary>
+    public static IEnumerable<StlNetwork> Allocate(HandlerContext c)
+    {
+        var l = c.Layout;
+        yield return new NetworkBuilder("DEFINE LIST: copies of cleared lists are gone", "No list stored (MAXD = 0): the copy area is free again.")
+            .Op("LDB=", l.B(MaxD), "0").Op("MOVB", "0", l.B(CFree)).Build();
+        yield return Always(
+            "DEFINE LIST: the list's copy state",
+            "AC3 points at CSTART of the list: no copy yet (255); CD = D, bit 7 clear: the first READ CHANGES answers the whole list. AC0 = CFREE + D.",
+            Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"), Op("MOVD", l.Ptr(CStart1 - 1), "AC3"), Op("+D", "AC0", "AC3"),
+            Op("MOVB", Dec(NoCopy), "*AC3"), Op("+D", "4", "AC3"), Op("MOVB", l.B(D), "*AC3"), Op("-D", "4", "AC3"),
+            Op("BTI", l.B(CFree), "AC0"), Op("BTI", l.B(D), "AC2"), Op("+I", "AC2", "AC0"));
+        yield return new NetworkBuilder(
+                "DEFINE LIST: a copy if D bytes are left",
+                $"CFREE + D <= {c.Options.CopyBytes}: CSTART = CFREE, CFREE = CFREE + D; else the list has no copy (always the whole list).")
+            .Op("LDW<=", "AC0", Dec(c.Options.CopyBytes)).Op("MOVB", l.B(CFree), "*AC3").Op("MOVB", "AC0", l.B(CFree)).Build();
+    }
+
+    private static IEnumerable<StlNetwork> Entry(HandlerContext c)
+    {
+        var l = c.Layout;
+        var e07 = HandlerLabels.Error(ProtocolError.ListNotDefined);
+        yield return Label(HandlerLabels.ReadChanges, "08 READ CHANGES");
+        yield return JumpIf("READ CHANGES: body exactly 5 bytes", $"Error 04 unless count = {RequestChars(2)}.",
+            HandlerLabels.Error(ProtocolError.BadLength), Op("LDB<>", l.B(0), RequestChars(2)));
+        yield return JumpIf("READ CHANGES: FLAGS", "Only bit 0 (FULL) may be set: error 06.", HandlerLabels.Error(ProtocolError.BadParameter),
+            Op("LDB>", l.B(9), Dec(ReadChangesFlags.Full)));
+        yield return JumpIf("READ CHANGES: LIST 1-4", "Any other LIST is never defined: error 07.", e07, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), "4"));
+        yield return Always(
+            "READ CHANGES: the list's descriptors",
+            "LIST kept; AC3 points at START of the list, AC2 at its first descriptor; then AC3 at LCOUNT.",
+            Op("MOVB", l.B(8), l.B(List)), Op("MOVD", l.Ptr(Start1 - 1), "AC3"), Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"),
+            Op("+D", "AC0", "AC3"), Op("MOVD", l.Ptr(0), "AC2"), Op("BTI", "*AC3", "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC2"), Op("+D", "4", "AC3"));
+        yield return JumpIf("READ CHANGES: list not defined", "LCOUNT = 0: error 07.", e07, Op("LDB=", "*AC3", "0"));
+        var whole = new NetworkBuilder(
+                "READ CHANGES: K = 16#FF for now",
+                $"I = item count; K as 'FF' in the first payload characters, data or pairs from buffer byte {Payload + 2} (AC1).")
+            .Op("LD", "SM0.0").Op("MOVB", "*AC3", l.B(I)).Op("MOVW", FullMark, l.W(Payload)).Op("MOVD", l.Ptr(Payload + 2), "AC1");
+        if (c.Options.CopyBytes == 0)
+        {
+            yield return whole.Op("MOVB", Dec(SlicePart.StepBuildItems), l.B(Step)).Op("JMP", Dec(SlicePart.Yield)).Build();
+            yield break;
+        }
+
+        yield return whole.Op("+D", Dec(CStart1 - LCount1), "AC3").Build();
+        yield return JumpIf(
+            "READ CHANGES: no copy", "CSTART = 255: the whole list, built like READ LIST's from the next scan on.", SlicePart.Yield,
+            Op("LDB=", "*AC3", Dec(NoCopy)), Op("MOVB", Dec(SlicePart.StepBuildItems), l.B(Step)));
+        yield return Always(
+            "READ CHANGES: the copy",
+            "AC0 = first copy byte of the list (copy area + CSTART, through OP_AC0 as scratch); D = CD with its valid bit; AC3 on to CD.",
+            Op("MOVD", l.Ptr(CopyArea), "AC0"), Op("MOVD", "0", l.Dw(Save)), Op("MOVB", "*AC3", l.B(Save + 3)), Op("+D", l.Dw(Save), "AC0"),
+            Op("+D", "4", "AC3"), Op("MOVB", "*AC3", l.B(D)), Op("ANDB", Hex(~CopyValid & 0xFF), l.B(D)));
+        yield return JumpIf("READ CHANGES: FULL asked or no valid copy", "FLAGS bit 0, or CD bit 7 clear: the whole list into the copy and the reply.",
+            FullWithCopy, Op("LD", l.Bit(9, 0)), Op("OB<", "*AC3", Dec(CopyValid)));
+        yield return Always(
+            "READ CHANGES: compare with the copy",
+            "K = 0, INDEX = 0, no item begun (CLEFT = 0); N = (D + 1) / 2: with K >= N pairs (2K >= D) the whole list is not longer. "
+            + "Only AC1-AC3 can be pointers: the copy pointer goes to AC2, the descriptor pointer waits in AC0 (OP_AC2 as scratch).",
+            Op("MOVB", "0", l.B(K)), Op("MOVB", "0", l.B(PairIndex)), Op("MOVB", "0", l.B(CLeft)), Op("MOVB", l.B(D), l.B(N)),
+            Op("INCB", l.B(N)), Op("SRB", l.B(N), "1"), Op("MOVD", "AC0", l.Dw(Save + 8)), Op("MOVD", "AC2", "AC0"), Op("MOVD", l.Dw(Save + 8), "AC2"));
+        yield return SlicePart.Pause(c, "READ CHANGES: comparison ready", StepCompare);
+    }
+
+    /// <summary>AC0 = next descriptor, AC1 = next reply character, AC2 = copy byte, AC3 = the list's byte in its area.</summary>
+    private static IEnumerable<StlNetwork> Compare(HandlerContext c)
+    {
+        var l = c.Layout;
+        yield return Label(CompareResume, "READ CHANGES: comparison, this scan's bytes");
+        yield return Always("Comparison: bytes for this scan", $"{BytesPerScan} bytes at most.", Op("MOVB", Dec(BytesPerScan), l.B(Budget)));
+        yield return Label(CompareLoop, "READ CHANGES: next byte or item");
+        yield return JumpIf("Comparison: bytes left in the item", "On to the byte.", CompareByte, Op("LDB<>", l.B(CLeft), "0"));
+        yield return JumpIf("Comparison: all items compared", "No item left: the pairs are the reply.", CompareDone, Op("LDB=", l.B(I), "0"));
+        yield return Always("Comparison: the descriptor pointer", "AC2 = next descriptor for a moment, the copy pointer in OP_AC2 meanwhile.",
+            Op("MOVD", "AC2", l.Dw(Save + 8)), Op("MOVD", "AC0", "AC2"));
+        foreach (var network in AreaStart("*AC2"))
+        {
+            yield return network;
+        }
+
+        yield return Always(
+            "Comparison: the next item",
+            "AC3 = area start + OFFSET (through OP_AC0 as scratch); CLEFT = LENGTH; AC0 to the next descriptor, AC2 back to the copy; one item fewer.",
+            Op("INCD", "AC2"), Op("ITD", "*AC2", l.Dw(Save)), Op("+D", l.Dw(Save), "AC3"), Op("INCD", "AC2"), Op("INCD", "AC2"),
+            Op("MOVB", "*AC2", l.B(CLeft)), Op("INCD", "AC2"), Op("MOVD", "AC2", "AC0"), Op("MOVD", l.Dw(Save + 8), "AC2"), Op("DECB", l.B(I)));
+        yield return Label(CompareByte, "READ CHANGES: one byte");
+        yield return JumpIf("Comparison: byte unchanged", "Same as the copy: nothing to send.", NextByte, Op("LDB=", "*AC3", "*AC2"));
+        yield return Always(
+            "Comparison: byte changed", "The copy takes the new value; VALUE = the copy's byte, the value the pair reports; one pair more.",
+            Op("MOVB", "*AC3", "*AC2"), Op("MOVB", "*AC2", l.B(PairValue)), Op("INCB", l.B(K)));
+        yield return JumpIf("Comparison: pairs not shorter", "K >= N (2K >= D): the whole list instead.", FullAgain, Op("LDB>=", l.B(K), l.B(N)));
+        yield return Always("Comparison: the pair", "INDEX and VALUE as 4 characters at AC1.", Op("HTA", l.B(PairIndex), "*AC1", "4"), Op("+D", "4", "AC1"));
+        yield return Label(NextByte, "READ CHANGES: next byte");
+        yield return Always(
+            "Comparison: next byte", "Byte and copy pointers on, INDEX + 1, one byte fewer in the item and in this scan.",
+            Op("INCD", "AC3"), Op("INCD", "AC2"), Op("INCB", l.B(PairIndex)), Op("DECB", l.B(CLeft)), Op("DECB", l.B(Budget)));
+        yield return JumpIf(
+            "Comparison: scan's bytes used", "The next scan goes on with the comparison.", SlicePart.Yield,
+            Op("LDB=", l.B(Budget), "0"), Op("MOVB", Dec(StepCompare), l.B(Step)));
+        yield return JumpIf("Comparison: go on", "Next byte or item.", CompareLoop, Op("LD", "SM0.0"));
+        yield return Label(CompareDone, "READ CHANGES: pairs done");
+        yield return Always(
+            "READ CHANGES: K pairs", "K as the first 2 payload characters; STATUS 00; finish the reply (AC1 is after the pairs).",
+            Op("HTA", l.B(K), l.B(Payload), "2"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
+    }
+
+    /// <summary>The whole list into the copy item by item, then the copy as characters: the reply and the copy agree.</summary>
+    private static IEnumerable<StlNetwork> Full(HandlerContext c)
+    {
+        var l = c.Layout;
+        yield return Label(FullAgain, "READ CHANGES: the whole list after all");
+        yield return Always(
+            "READ CHANGES: the list again",
+            "As at the start: AC2 at the first descriptor, I = item count, AC0 at the first copy byte, AC3 at CD.",
+            Op("MOVD", l.Ptr(Start1 - 1), "AC3"), Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"),
+            Op("MOVD", l.Ptr(0), "AC2"), Op("BTI", "*AC3", "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC2"), Op("+D", "4", "AC3"),
+            Op("MOVB", "*AC3", l.B(I)), Op("+D", Dec(CStart1 - LCount1), "AC3"), Op("MOVD", l.Ptr(CopyArea), "AC0"), Op("MOVD", "0", l.Dw(Save)),
+            Op("MOVB", "*AC3", l.B(Save + 3)), Op("+D", l.Dw(Save), "AC0"), Op("+D", "4", "AC3"));
+        yield return Label(FullWithCopy, "READ CHANGES: the whole list into the copy");
+        yield return Always(
+            "READ CHANGES: the copy is renewed", "CD bit 7 set: after this reply the copy holds what it reports. AC1 = the copy pointer (AC0 is no pointer).",
+            Op("ORB", Hex(CopyValid), "*AC3"), Op("MOVD", "AC0", "AC1"));
+        yield return SlicePart.Pause(c, "READ CHANGES: whole list ready", StepCopyItems);
+        yield return Label(CopyItem, "READ CHANGES: next item into the copy");
+        foreach (var network in AreaStart("*AC2"))
+        {
+            yield return network;
+        }
+
+        yield return Always(
+            "Whole list: the item into the copy",
+            "AC3 = area start + OFFSET; BMB LENGTH bytes to the copy (AC1); AC1 and AC2 on; one item fewer (OP_AC0, OP_AC1 as scratch).",
+            Op("INCD", "AC2"), Op("ITD", "*AC2", l.Dw(Save)), Op("+D", l.Dw(Save), "AC3"), Op("INCD", "AC2"), Op("INCD", "AC2"),
+            Op("BMB", "*AC3", "*AC1", "*AC2"), Op("BTI", "*AC2", l.W(Save + 4)), Op("ITD", l.W(Save + 4), l.Dw(Save)), Op("+D", l.Dw(Save), "AC1"),
+            Op("INCD", "AC2"), Op("DECB", l.B(I)), Op("DECB", l.B(Budget)));
+        yield return JumpIf(
+            "Whole list: scan's passes used", "Items left, no pass left in this scan: the next scan goes on.", SlicePart.Yield,
+            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"), Op("MOVB", Dec(StepCopyItems), l.B(Step)));
+        yield return JumpIf("Whole list: more items", "Back while items are left.", CopyItem, Op("LDB<>", l.B(I), "0"));
+        yield return Always(
+            "Whole list: the copy as characters",
+            $"AC2 = AC1 - D, the first copy byte; HTA 2D characters (K as scratch for the count) to buffer byte {Payload + 2}; AC1 after them; STATUS 00.",
+            Op("MOVD", "0", l.Dw(Save)), Op("MOVB", l.B(D), l.B(Save + 3)), Op("MOVD", "AC1", "AC2"), Op("-D", l.Dw(Save), "AC2"), Op("MOVB", l.B(D), l.B(K)),
+            Op("SLB", l.B(K), "1"), Op("HTA", "*AC2", l.B(Payload + 2), l.B(K)), Op("MOVD", l.Ptr(Payload + 2), "AC1"), Op("+D", l.Dw(Save), "AC1"), Op("+D", l.Dw(Save), "AC1"),
+            Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
+    }
+}
