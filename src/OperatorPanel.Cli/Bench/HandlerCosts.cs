@@ -29,8 +29,13 @@ internal sealed record HandlerCosts(ImmutableArray<HandlerCost> Steady, Immutabl
                 return Bound(exchange);
             }
 
-            if (probe.TryServe(exchange.Request, out var cost, out var error))
+            if (probe.TryServe(exchange.Request, out var cost, out var replyChars, out var error))
             {
+                if (replyChars != exchange.ReplyChars)
+                {
+                    problems.Add($"{exchange.Name}: the handler answered {replyChars} characters, Core sizes the reply at {exchange.ReplyChars}");
+                }
+
                 return cost!;
             }
 

@@ -70,8 +70,9 @@ internal sealed class HandlerProbe
     /// <summary>
     /// Sends <paramref name="frame"/> and runs the PLC until the reply has left and the port receives again. False
     /// when the handler did not answer (it keeps silent on a request it does not understand) or faulted.
+    /// <paramref name="replyChars"/>: the characters the handler sent.
     /// </summary>
-    public bool TryServe(byte[] frame, out HandlerCost? cost, out string error)
+    public bool TryServe(byte[] frame, out HandlerCost? cost, out int replyChars, out string error)
     {
         ArgumentNullException.ThrowIfNull(frame);
         _scans.Clear();
@@ -81,6 +82,7 @@ internal sealed class HandlerProbe
         var t = _now;
         TimeSpan? replyStart = null;
         var ended = false;
+        replyChars = 0;
         while (_plc.Fault is null && t < giveUp && !(ended && !_port.IsTransmitting && _port.IsReceiving))
         {
             t += Step;
@@ -88,6 +90,7 @@ internal sealed class HandlerProbe
             foreach (var c in _port.TakeTransmitted())
             {
                 replyStart ??= c.At - _line.CharacterTime;
+                replyChars++;
                 ended |= c.Value == (byte)'>';
             }
         }

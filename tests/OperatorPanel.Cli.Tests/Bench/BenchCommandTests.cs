@@ -46,7 +46,7 @@ public sealed class BenchCommandTests
         exit.Should().Be(0, $"stdout: {output} stderr: {error}");
         using var json = JsonDocument.Parse(output);
         var root = json.RootElement;
-        root.GetProperty("rows").GetArrayLength().Should().Be(6);
+        root.GetProperty("rows").GetArrayLength().Should().Be(7);
         root.GetProperty("targets").EnumerateArray().Select(t => t.GetProperty("verdict").GetString())
             .Should().HaveCount(3).And.OnlyContain(v => v == "PASS" || v == "FAIL");
         root.GetProperty("modelled").GetProperty("steady").GetProperty("exchanges").GetArrayLength().Should().BePositive();

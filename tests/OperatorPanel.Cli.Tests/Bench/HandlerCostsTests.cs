@@ -1,4 +1,6 @@
 using OperatorPanel.Cli.Bench;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Polling;
 
 namespace OperatorPanel.Cli.Tests.Bench;
@@ -38,5 +40,22 @@ public sealed class HandlerCostsTests
 
         costs.Problems.Should().BeEmpty();
         costs.Steady.Concat(costs.Idle).Should().OnlyContain(c => c.Source.StartsWith("measured", StringComparison.Ordinal) && c.Scans > 0);
+    }
+
+    [Fact]
+    public void Measure_OneListLine_TheHandlerServesReadChangesWithTheRepliesCoreSizes()
+    {
+        var line = new BenchLine(
+            new Station(1),
+            CpuProfiles.For(CpuModel.Cpu224),
+            [new("inputs", PlcAddress.Parse("IB0")), new("memory", PlcAddress.Parse("VW100")), new("alarms", PlcAddress.Parse("M2.3"))]);
+        var cycles = RefreshCycles.For(line.Plan());
+        HandlerProbe.TryCreate(line.Cpu, line.Station, new LineSetting(9600, "8N1", 10).Settings, 5, out var probe, out var error).Should().BeTrue(error);
+
+        var costs = HandlerCosts.Measure(cycles, probe, error);
+
+        cycles.Idle.Select(e => e.Name).Should().Equal("READ CHANGES 1");
+        costs.Problems.Should().BeEmpty("the handler answers every exchange with the reply length Core computes");
+        costs.Idle.Single().Source.Should().StartWith("measured");
     }
 }
