@@ -36,7 +36,14 @@ internal sealed record HandlerCosts(ImmutableArray<HandlerCost> Steady, Immutabl
                     problems.Add($"{exchange.Name}: the handler answered {replyChars} characters, Core sizes the reply at {exchange.ReplyChars}");
                 }
 
-                return cost!;
+                // The link's reply timeout allows Core's bound of scans; a handler that takes more risks timeouts.
+                var bound = HandlerTurnaround.ScansFor(exchange.RequestChars, exchange.ReplyChars);
+                if (cost!.Scans > bound)
+                {
+                    problems.Add($"{exchange.Name}: the handler took {cost.Scans} scans, more than Core's HandlerTurnaround bound of {bound}");
+                }
+
+                return cost;
             }
 
             problems.Add($"{exchange.Name}: {error}; Core's bound used");
