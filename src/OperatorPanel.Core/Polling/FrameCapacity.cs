@@ -1,3 +1,5 @@
+using OperatorPanel.Core.Protocol;
+
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
@@ -18,7 +20,13 @@ internal sealed class FrameCapacity
     public FrameCapacity(int tailBytes, Func<int, int, bool> fits)
     {
         TailBytes = tailBytes;
-        _maxData = [0, .. Enumerable.Range(1, ProtocolLimitsScan).Select(n => Enumerable.Range(n, ProtocolLimitsScan).TakeWhile(d => fits(n, d)).LastOrDefault()).TakeWhile(d => d > 0)];
+        var maxData = new List<int> { 0 };
+        for (var items = 1; fits(items, items); items++)
+        {
+            maxData.Add(MostData(items, fits));
+        }
+
+        _maxData = [.. maxData];
         MaxItems = _maxData.Length - 1;
         MaxBlockLength = MaxItems > 0 ? _maxData[1] : 0;
     }
@@ -31,11 +39,31 @@ internal sealed class FrameCapacity
     /// <summary>Longest block one frame may carry: ranges longer than this are split.</summary>
     public int MaxBlockLength { get; }
 
+    /// <summary>False when not even a one-byte READ fits: a tail that large is never planned.</summary>
+    public bool Usable => MaxItems > 0;
+
     public int Units => (UnitsPerByte * MaxBlockLength) + UnitsPerItem;
 
     /// <summary>Whether one frame may carry <paramref name="items"/> blocks of <paramref name="dataBytes"/> bytes in all.</summary>
     public bool Fits(int items, int dataBytes) => items >= 1 && items <= MaxItems && dataBytes <= _maxData[items];
 
-    /// <summary>Item counts and data lengths tried when tabulating: more than any frame of 255 characters can hold.</summary>
-    private const int ProtocolLimitsScan = 255;
+    /// <summary>The largest D with fits(items, D), by bisection (the rules are monotone in D); at least <paramref name="items"/>.</summary>
+    private static int MostData(int items, Func<int, int, bool> fits)
+    {
+        int low = items, high = ProtocolLimits.MaxFrameChars;
+        while (low < high)
+        {
+            var mid = (low + high + 1) / 2;
+            if (fits(items, mid))
+            {
+                low = mid;
+            }
+            else
+            {
+                high = mid - 1;
+            }
+        }
+
+        return low;
+    }
 }

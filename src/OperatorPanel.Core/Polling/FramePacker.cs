@@ -9,33 +9,33 @@ internal static class FramePacker
     /// <summary>
     /// Frames whose item count and data bytes each fit <paramref name="capacity"/> (for a plain READ: at most 20 items and
     /// a data capacity that shrinks with every further item). Items inside a frame, and frames, in area and offset
-    /// order. Each frame keeps its running totals, so one block costs one pass over the open frames.
+    /// order. Each frame keeps its running totals, and a full frame leaves the scan.
     /// </summary>
     public static List<ImmutableArray<ReadItem>> Pack(IReadOnlyCollection<ReadItem> blocks, FrameCapacity capacity)
     {
         var frames = new List<OpenFrame>();
+        var open = new List<OpenFrame>();
         var sorted = blocks.ToArray();
         Array.Sort(sorted, (a, b) => b.Length != a.Length ? b.Length.CompareTo(a.Length) : a.Area != b.Area ? a.Area.CompareTo(b.Area) : a.Offset.CompareTo(b.Offset));
         foreach (var block in sorted)
         {
-            OpenFrame? frame = null;
-            foreach (var open in frames)
+            var index = open.FindIndex(f => capacity.Fits(f.Items.Count + 1, f.DataBytes + block.Length));
+            var frame = index >= 0 ? open[index] : new OpenFrame();
+            if (index < 0)
             {
-                if (capacity.Fits(open.Items.Count + 1, open.DataBytes + block.Length))
-                {
-                    frame = open;
-                    break;
-                }
-            }
-
-            if (frame is null)
-            {
-                frame = new OpenFrame();
                 frames.Add(frame);
+                open.Add(frame);
+                index = open.Count - 1;
             }
 
             frame.Items.Add(block);
             frame.DataBytes += block.Length;
+
+            // A frame that cannot take even one more byte is never looked at again: the scan stays short.
+            if (!capacity.Fits(frame.Items.Count + 1, frame.DataBytes + 1))
+            {
+                open.RemoveAt(index);
+            }
         }
 
         return frames

@@ -13,9 +13,10 @@ internal static class RangeMerger
     /// Coalesces overlapping and touching spans, then bridges the k smallest gaps for the k that gives the cheapest
     /// packed plan (on a tie, the one reading fewer bytes). Every k is first priced by an estimate in one sweep (frames
     /// from the item and capacity bounds, items counted after the 119-byte split); only the best few are packed and
-    /// priced exactly, so planning stays O(n log n) instead of packing once per gap. Returned blocks fit one reply.
+    /// priced exactly, so planning stays O(n log n) instead of packing once per gap. Returned ranges are not split yet:
+    /// how long a block may be depends on the tail the lists take.
     /// </summary>
-    public static ImmutableArray<ReadItem> Cheapest(IEnumerable<ReadItem> spans, PollCostModel model, FrameCapacity capacity)
+    public static List<ReadItem> Cheapest(IEnumerable<ReadItem> spans, PollCostModel model, FrameCapacity capacity)
     {
         var ranges = Coalesce(spans);
         var gaps = Enumerable.Range(0, Math.Max(0, ranges.Count - 1))
@@ -24,15 +25,15 @@ internal static class RangeMerger
             .ToArray();
         var estimates = Estimate(ranges, gaps, model, capacity);
         var candidates = Enumerable.Range(0, estimates.Length).OrderBy(k => estimates[k]).ThenBy(k => k).Take(ExactCandidates).Order();
-        ImmutableArray<ReadItem> best = [];
+        List<ReadItem> best = [];
         var bestCost = int.MaxValue;
         foreach (var k in candidates)
         {
-            var blocks = Split(Bridge(ranges, gaps.AsSpan(0, k)), capacity.MaxBlockLength);
-            var cost = FramePacker.Pack(blocks, capacity).Sum(f => model.FrameCost(f.Length, f.Sum(i => i.Length)));
+            var bridged = Bridge(ranges, gaps.AsSpan(0, k));
+            var cost = FramePacker.Pack(Split(bridged, capacity.MaxBlockLength), capacity).Sum(f => model.FrameCost(f.Length, f.Sum(i => i.Length)));
             if (cost < bestCost)
             {
-                best = blocks;
+                best = bridged;
                 bestCost = cost;
             }
         }

@@ -25,7 +25,7 @@ public sealed class PollPlannerTests
     [InlineData("VB20", "1: V0+1 V20+1")]
     public void Build_GapBetweenTwoBytes_MergedOnlyWhenCheaperThanAnItem(string second, string expected)
     {
-        var plan = PollPlanner.Build(Items(One, "VB0", second));
+        var plan = PollPlanner.Build(Items(One, "VB0", second), costModel: Plain);
 
         Frames(plan).Should().Equal(expected);
     }
@@ -47,51 +47,51 @@ public sealed class PollPlannerTests
     }
 
     [Fact]
-    public void Build_RangeLongerThanOneReply_IsSplitAt119Bytes()
+    public void Build_RangeLongerThanOneReply_IsSplitAt116Bytes()
     {
-        var dwords = Enumerable.Range(0, 50).Select(i => $"VD{i * 4}").ToArray();
+        var bytes = Enumerable.Range(0, 200).Select(i => $"VB{i}").Append("VD114").ToArray();
 
-        var plan = PollPlanner.Build(Items(One, dwords));
+        var plan = PollPlanner.Build(Items(One, bytes), costModel: Plain);
 
-        Frames(plan).Should().Equal("1: V0+119", "1: V119+81");
-        plan.Values.Single(v => v.Item == Item(One, "VD116")).Slices.Should().Equal(new ReplySlice(0, 116, 3), new ReplySlice(1, 0, 1));
+        Frames(plan).Should().Equal("1: V0+116", "1: V116+84");
+        plan.Values.Single(v => v.Item == Item(One, "VD114")).Slices.Should().Equal(new ReplySlice(0, 114, 2), new ReplySlice(1, 0, 2));
     }
 
     [Fact]
     public void Build_TwelveFarApartBytes_ReadAsTwelveItemsOfOneFrameWithoutBridging()
     {
         // 19-byte gaps cost 38 reply chars each, an item 8: with up to 20 items per READ nothing is worth bridging.
-        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 12).Select(i => $"VB{i * 20}")]));
+        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 12).Select(i => $"VB{i * 20}")]), costModel: Plain);
 
         Frames(plan).Should().Equal("1: " + Singles("V", 0, 20, 12));
-        plan.CostChars.Should().Be(12 + (12 * 8) + 12 + (12 * 2) + 20);
+        plan.CostChars.Should().Be(14 + (12 * 8) + 18 + (12 * 2) + 20);
     }
 
     [Fact]
     public void Build_TwentyOneFarApartBytes_BridgesOneGapToSaveAFrame()
     {
-        // 21 items need two frames (298 chars); bridging one 10-byte gap (20 reply chars) saves an item (8) and a frame
-        // (12 + 12 + 20 turnaround): 266 characters. A second bridge would only add cost (278).
-        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 21).Select(i => $"VB{i * 11}")]));
+        // 21 items need two frames (314 chars); bridging one 10-byte gap (20 reply chars) saves an item (8) and a frame
+        // (14 + 18 + 20 turnaround): 274 characters. A second bridge would only add cost (286).
+        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 21).Select(i => $"VB{i * 11}")]), costModel: Plain);
 
         Frames(plan).Should().Equal("1: V0+12 " + Singles("V", 22, 11, 19));
-        plan.CostChars.Should().Be(266);
+        plan.CostChars.Should().Be(274);
     }
 
     [Fact]
     public void Build_FortyOneFarApartBytes_PacksTwentyItemsPerFrame()
     {
-        // 29-byte gaps cost 58 reply chars, more than the 52 an item and a frame cost: nothing is bridged.
-        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 41).Select(i => $"VB{i * 30}")]));
+        // 31-byte gaps cost 62 reply chars, more than the 60 an item and a frame cost: nothing is bridged.
+        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 41).Select(i => $"VB{i * 32}")]), costModel: Plain);
 
-        Frames(plan).Should().Equal("1: " + Singles("V", 0, 30, 20), "1: " + Singles("V", 600, 30, 20), "1: V1200+1");
+        Frames(plan).Should().Equal("1: " + Singles("V", 0, 32, 20), "1: " + Singles("V", 640, 32, 20), "1: V1280+1");
     }
 
     [Fact]
     public void Build_FortyOneBytesWithSmallerGaps_BridgesOneGapToDropAFrame()
     {
-        // 14-byte gaps cost 28 chars: one bridge leaves 40 items in two frames, saving 52.
-        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 41).Select(i => $"MB{i * 15}")]));
+        // 14-byte gaps cost 28 chars: one bridge leaves 40 items in two frames, saving 60.
+        var plan = PollPlanner.Build(Items(One, [.. Enumerable.Range(0, 41).Select(i => $"MB{i * 15}")]), costModel: Plain);
 
         Frames(plan).Should().Equal("1: M0+16 " + Singles("M", 30, 15, 19), "1: " + Singles("M", 315, 15, 20));
     }
@@ -99,37 +99,40 @@ public sealed class PollPlannerTests
     [Fact]
     public void Build_ElevenTenByteBlocks_SplitByTheDataRuleBeforeTheItemLimit()
     {
-        // Ten 10-byte blocks fill a reply (2 x 100 + 4 x 10 = 240 <= 243); an eleventh would need 264, though 11 items
+        // Nine 10-byte blocks fill a reply (2 x 90 + 4 x 9 = 216 <= 237); a tenth would need 240, though 10 items
         // are far below 20. 90-byte gaps are never worth bridging.
         var plan = PollPlanner.Build(
-            [.. Enumerable.Range(0, 11).SelectMany(i => new[] { Item(One, $"VD{i * 100}"), Item(One, $"VD{(i * 100) + 4}"), Item(One, $"VW{(i * 100) + 8}") })]);
+            [.. Enumerable.Range(0, 11).SelectMany(i => new[] { Item(One, $"VD{i * 100}"), Item(One, $"VD{(i * 100) + 4}"), Item(One, $"VW{(i * 100) + 8}") })],
+            costModel: Plain);
 
-        Frames(plan).Should().Equal("1: " + string.Join(' ', Enumerable.Range(0, 10).Select(i => $"V{i * 100}+10")), "1: V1000+10");
+        Frames(plan).Should().Equal("1: " + string.Join(' ', Enumerable.Range(0, 9).Select(i => $"V{i * 100}+10")), "1: V900+10 V1000+10");
         plan.Frames.Should().OnlyContain(f => plan.CostModel.Fits(f.Items.Length, f.DataBytes));
     }
 
     [Fact]
     public void Build_BlocksOverflowingOneReply_PackedLongestFirst()
     {
-        // 96 + 30 + 20 bytes: the 96-byte block and the 20-byte block fill a two-item reply (116 of at most 117), the
+        // 92 + 30 + 20 bytes: the 92-byte block and the 20-byte block fill a two-item reply (112 of at most 114), the
         // 30-byte block gets its own.
         var plan = PollPlanner.Build(
-            [.. Enumerable.Range(0, 24).Select(i => Item(One, $"VD{i * 4}")),
+            [.. Enumerable.Range(0, 23).Select(i => Item(One, $"VD{i * 4}")),
             .. Enumerable.Range(0, 15).Select(i => Item(One, $"MW{i * 2}")),
-            .. Enumerable.Range(0, 20).Select(i => Item(One, $"QB{i}"))]);
+            .. Enumerable.Range(0, 20).Select(i => Item(One, $"QB{i}"))],
+            costModel: Plain);
 
-        Frames(plan).Should().Equal("1: Q0+20 V0+96", "1: M0+30");
+        Frames(plan).Should().Equal("1: Q0+20 V0+92", "1: M0+30");
     }
 
     [Fact]
     public void Build_TwoBlocksJustOverTheTwoItemLimit_TakeTwoFrames()
     {
-        // 100 + 18 = 118 bytes would fit one item's 119 but not two items' 117.
+        // 100 + 15 = 115 bytes would fit one item's 116 but not two items' 114.
         var plan = PollPlanner.Build(
             [.. Enumerable.Range(0, 25).Select(i => Item(One, $"VD{i * 4}")),
-            .. Enumerable.Range(0, 9).Select(i => Item(One, $"MW{i * 2}"))]);
+            .. Enumerable.Range(0, 15).Select(i => Item(One, $"MB{i}"))],
+            costModel: Plain);
 
-        Frames(plan).Should().Equal("1: M0+18", "1: V0+100");
+        Frames(plan).Should().Equal("1: M0+15", "1: V0+100");
     }
 
     [Fact]
@@ -164,15 +167,29 @@ public sealed class PollPlannerTests
     }
 
     [Fact]
-    public void Build_Figures_CountFramesCharactersAndBytes()
+    public void Build_FiguresOfAPlainRead_CountDescriptorsEveryCycle()
+    {
+        var plan = PollPlanner.Build(Items(One, "IB0", "QB0", "VW100"), costModel: Plain);
+
+        plan.FrameCount.Should().Be(1);
+        plan.RequestChars.Should().Be(14 + (3 * 8));
+        plan.ReplyChars.Should().Be(18 + (4 * 2));
+        plan.IdleChars.Should().Be(plan.FullRefreshChars);
+        plan.DataBytes.Should().Be(4);
+        plan.CostChars.Should().Be(38 + 26 + 20);
+    }
+
+    [Fact]
+    public void Build_FiguresOfAList_CountReadChangesNotDescriptors()
     {
         var plan = PollPlanner.Build(Items(One, "IB0", "QB0", "VW100"));
 
-        plan.FrameCount.Should().Be(1);
-        plan.RequestChars.Should().Be(12 + (3 * 8));
-        plan.ReplyChars.Should().Be(12 + (4 * 2));
-        plan.DataBytes.Should().Be(4);
-        plan.CostChars.Should().Be(36 + 20 + 20);
+        plan.Frames.Should().ContainSingle().Which.List.Should().Be(1);
+        plan.RequestChars.Should().Be(16, "READ CHANGES: LIST and FLAGS");
+        plan.ReplyChars.Should().Be(20 + (4 * 2), "a FULL answer: K = FF and the data");
+        plan.IdleChars.Should().Be(16 + 20, "nothing changed: K = 0");
+        plan.DefineChars.Should().Be(16 + (3 * 8) + 18);
+        plan.CostChars.Should().Be(16 + 20 + 4 + 20, "the planner prices a list byte at 1 character, the midpoint of idle and FULL");
     }
 
     [Fact]
@@ -189,10 +206,13 @@ public sealed class PollPlannerTests
         var slowBus = PollCostModel.Default with { TurnaroundChars = 200 };
         var items = Items(One, [.. Enumerable.Range(0, 21).Select(i => $"VB{i * 41}")]);
 
-        // Default: 298 chars in two frames beats 326 in one (40 gap bytes = 80 chars). At 200 chars of turnaround: 658 vs 506.
-        Frames(PollPlanner.Build(items)).Should().HaveCount(2);
-        Frames(PollPlanner.Build(items, costModel: slowBus)).Should().Equal("1: V0+42 " + Singles("V", 82, 41, 19));
+        // Default: 314 chars in two frames beats 334 in one (40 gap bytes = 80 chars). At 200 chars of turnaround: 674 vs 514.
+        Frames(PollPlanner.Build(items, costModel: Plain)).Should().HaveCount(2);
+        Frames(PollPlanner.Build(items, costModel: slowBus with { MaxListsPerStation = 0 })).Should().Equal("1: V0+42 " + Singles("V", 82, 41, 19));
     }
+
+    /// <summary>Plain READs only: the tests of gap bridging and packing.</summary>
+    private static readonly PollCostModel Plain = PollCostModel.Default with { MaxListsPerStation = 0 };
 
     private static List<string> Frames(PollPlan plan) =>
         [.. plan.Frames.Select(f => $"{f.Station.Address}: {string.Join(' ', f.Items.Select(Describe))}")];

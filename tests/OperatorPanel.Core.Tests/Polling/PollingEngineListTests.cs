@@ -76,18 +76,19 @@ public sealed class PollingEngineListTests
     }
 
     [Fact]
-    public void ReadListAssignment_FramesThatDoNotFitTogether_ListsOnlyTheFrameThatKeepsItsList()
+    public void ReadListAssignment_ListIdsOfThePlansFrames()
     {
-        // Frame 1: 20 single bytes (tail 80, reply 52); frame 2: VB600-VB718 (tail 4, reply 250). Together 84 + 250 > 255.
-        // Frame 1 as the list would be wiped every cycle by frame 2's plain READ (12 + 238 > 175 - 4); frame 2 as the
-        // list (floor 252) survives frame 1's plain READ (172 <= 251, 169 < 172, 52 <= 171).
-        ReadItem[] singles = [.. Enumerable.Range(0, 20).Select(i => new ReadItem(ProtocolArea.V, i * 30, 1))];
         var plan = PollPlan.Empty with
         {
-            Frames = [new PollFrame(One, [.. singles]), new PollFrame(One, [new ReadItem(ProtocolArea.V, 600, 119)])],
+            Frames =
+            [
+                new PollFrame(One, [new ReadItem(ProtocolArea.V, 0, 4)]) { List = 1 },
+                new PollFrame(One, [new ReadItem(ProtocolArea.V, 600, 100)]),
+                new PollFrame(Two, [new ReadItem(ProtocolArea.M, 0, 2)]) { List = 1 },
+            ],
         };
 
-        ReadListAssignment.For(plan).Should().Equal(new Dictionary<int, int> { [1] = 1 });
+        ReadListAssignment.For(plan).Should().Equal(new Dictionary<int, int> { [0] = 1, [2] = 1 });
     }
 
     private static PolledValue Value(PollingEngine engine, Core.Addressing.Station station, string address)
