@@ -51,17 +51,33 @@ public static class HandlerMeasurement
 
     private static IEnumerable<(string Name, byte[] Frame)> WorstCases(Station station, int v)
     {
-        // 19 items of 4 bytes and one of 5: 81 bytes, 2 x 81 + 4 x 20 = 242 <= 243 (the reply capacity rule).
-        ImmutableArray<ReadItem> twenty = [.. Enumerable.Range(0, 20).Select(i => new ReadItem(ProtocolArea.V, v + (i * 5), i == 19 ? 5 : 4))];
+        // 20 items, one every 5 bytes: as much data as a READ of 20 items may reply, and as a list of 20 items may hold
+        // (its longest reply, READ CHANGES whole, must end before its descriptors).
+        var items = ProtocolLimits.MaxReadItems;
+        var twenty = Items(v, items, ProtocolLimits.MaxReadDataFor(items));
+        var list = Items(v, items, (ProtocolLimits.MaxFrameChars - (4 * items) - ProtocolLimits.ListReplyChars(0)) / 2);
         yield return ("IDENTIFY", RequestCodec.Encode(new IdentifyRequest(station, 1)));
-        yield return ("READ 1 item 119 bytes", RequestCodec.Encode(new ReadRequest(station, 2, [new ReadItem(ProtocolArea.V, v, DataBytes)])));
-        yield return ("READ 20 items 81 bytes", RequestCodec.Encode(new ReadRequest(station, 3, twenty)));
-        yield return ("WRITE 118 bytes", RequestCodec.Encode(new WriteBlockRequest(station, 4, ProtocolArea.V, v, [.. Enumerable.Range(0, 118).Select(i => (byte)i)])));
+        yield return ($"READ 1 item {ProtocolLimits.MaxReadData} bytes", RequestCodec.Encode(new ReadRequest(station, 2, [new ReadItem(ProtocolArea.V, v, ProtocolLimits.MaxReadData)])));
+        yield return ($"READ 20 items {twenty.Sum(i => i.Length)} bytes", RequestCodec.Encode(new ReadRequest(station, 3, twenty)));
+        yield return ($"WRITE {ProtocolLimits.MaxWriteData} bytes", RequestCodec.Encode(new WriteBlockRequest(station, 4, ProtocolArea.V, v, [.. Enumerable.Range(0, ProtocolLimits.MaxWriteData).Select(i => (byte)i)])));
         yield return ("WRITE BIT", RequestCodec.Encode(new WriteBitRequest(station, 5, ProtocolArea.V, v, 3, true)));
-        yield return ("DEFINE LIST 20 items", RequestCodec.Encode(new DefineListRequest(station, 6, 1, twenty)));
+        yield return ("DEFINE LIST 20 items", RequestCodec.Encode(new DefineListRequest(station, 6, 1, list)));
         yield return ("READ LIST 20 items", RequestCodec.Encode(new ReadListRequest(station, 7, 1)));
+
+        // READ CHANGES of that list: the first fills the copy (whole list), then none changed (the idle station's
+        // cost), one changed, and 40 changed: 2K >= D, compared to the end and then answered whole.
+        yield return ($"READ CHANGES {list.Sum(i => i.Length)} bytes whole", RequestCodec.Encode(new ReadChangesRequest(station, 9, 1, false)));
+        yield return ("READ CHANGES none changed", RequestCodec.Encode(new ReadChangesRequest(station, 10, 1, false)));
+        yield return ("WRITE BIT in the list", RequestCodec.Encode(new WriteBitRequest(station, 11, ProtocolArea.V, v + 80, 0, true)));
+        yield return ("READ CHANGES 1 changed", RequestCodec.Encode(new ReadChangesRequest(station, 12, 1, false)));
+        yield return ("WRITE 50 bytes in the list", RequestCodec.Encode(new WriteBlockRequest(station, 13, ProtocolArea.V, v, [.. Enumerable.Range(0, 50).Select(i => (byte)~i)])));
+        yield return ("READ CHANGES 40 changed", RequestCodec.Encode(new ReadChangesRequest(station, 14, 1, false)));
         var bad = RequestCodec.Encode(new IdentifyRequest(station, 8));
         bad[^2] = (byte)(bad[^2] == '0' ? '1' : '0');
         yield return ("bad block check", bad);
     }
+
+    /// <summary><paramref name="count"/> V items one every 5 bytes from <paramref name="v"/>: 4 bytes each, the last the rest of <paramref name="total"/>.</summary>
+    private static ImmutableArray<ReadItem> Items(int v, int count, int total) =>
+        [.. Enumerable.Range(0, count).Select(i => new ReadItem(ProtocolArea.V, v + (i * 5), i == count - 1 ? total - (4 * (count - 1)) : 4))];
 }

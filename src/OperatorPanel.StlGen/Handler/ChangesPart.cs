@@ -9,21 +9,21 @@ namespace OperatorPanel.StlGen.Handler;
 /// <summary>
 /// 08 READ CHANGES (docs/protocol.md, "READ CHANGES"): binary payload LIST (buffer byte 8) and FLAGS (9). Reply K,
 /// then K pairs INDEX VALUE, or K = 16#FF and the whole list. Every part runs in OP_PANEL's slices: the comparison
-/// at most <see cref="BytesPerScan"/> bytes per scan, the whole list at most <see cref="SlicePart.PassesPerScan"/>
+/// at most <see cref="ChunksPerScan"/> chunks of <see cref="ChunkBytes"/> bytes per scan, the whole list at most <see cref="SlicePart.PassesPerScan"/>
 /// items per scan; nothing runs in an interrupt routine. Whatever a reply reports is what the copy holds afterwards:
 /// a changed byte is moved into the copy and sent from there, and a whole list is moved into the copy item by item
 /// and sent from there, so a program changing the bytes between two slices never makes the copy and the reply differ.
 /// </summary>
 internal static class ChangesPart
 {
-    /// <summary>Bytes the comparison handles per scan.</summary>
-    public const int BytesPerScan = 16;
+    /// <summary>Chunks the comparison handles per scan, and the most bytes of one item in a chunk.</summary>
+    public const int ChunksPerScan = 2, ChunkBytes = 8;
 
     /// <summary>STEP values of READ CHANGES.</summary>
     public const int StepCompare = 20, StepCopyItems = 21;
 
     /// <summary>Labels: the comparison (its resume, loop, byte, next byte, done), the whole list into the copy.</summary>
-    public const int CompareResume = 100, CompareLoop = 101, CompareByte = 102, NextByte = 103, CompareDone = 104,
+    public const int CompareResume = 100, CompareLoop = 101, CompareChunk = 102, CompareDone = 104,
         FullAgain = 105, FullWithCopy = 106, CopyItem = 107;
 
     /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes).</summary>
@@ -111,14 +111,23 @@ internal static class ChangesPart
         yield return SlicePart.Pause(c, "READ CHANGES: comparison ready", StepCompare);
     }
 
-    /// <summary>AC0 = next descriptor, AC1 = next reply character, AC2 = copy byte, AC3 = the list's byte in its area.</summary>
+    /// <summary>
+    /// AC0 = next descriptor, AC1 = next reply character, AC2 = copy byte, AC3 = the list's byte in its area. A scan
+    /// compares <see cref="ChunksPerScan"/> chunks of at most <see cref="ChunkBytes"/> bytes of one item (starting the
+    /// item when needed), each chunk one FOR loop (OP_AC1's words as its index and count: SAVE is free within a slice).
+    /// A changed byte goes into the copy; its pair is written while K &lt; N; at the end K &gt;= N means the whole list.
+    /// </summary>
     private static IEnumerable<StlNetwork> Compare(HandlerContext c)
     {
         var l = c.Layout;
-        yield return Label(CompareResume, "READ CHANGES: comparison, this scan's bytes");
-        yield return Always("Comparison: bytes for this scan", $"{BytesPerScan} bytes at most.", Op("MOVB", Dec(BytesPerScan), l.B(Budget)));
-        yield return Label(CompareLoop, "READ CHANGES: next byte or item");
-        yield return JumpIf("Comparison: bytes left in the item", "On to the byte.", CompareByte, Op("LDB<>", l.B(CLeft), "0"));
+        string index = l.W(Save + 4), run = l.W(Save + 6), left = l.W(Save + 8);
+        yield return Label(CompareResume, "READ CHANGES: comparison, this scan's chunks");
+        yield return Always("Comparison: chunks for this scan", $"{ChunksPerScan} chunks of at most {ChunkBytes} bytes.", Op("MOVB", Dec(ChunksPerScan), l.B(Budget)));
+        yield return Label(CompareLoop, "READ CHANGES: next chunk");
+        yield return JumpIf(
+            "Comparison: scan's chunks used", "The next scan goes on with the comparison.", SlicePart.Yield,
+            Op("LDB=", l.B(Budget), "0"), Op("MOVB", Dec(StepCompare), l.B(Step)));
+        yield return JumpIf("Comparison: bytes left in the item", "On to the chunk.", CompareChunk, Op("LDB<>", l.B(CLeft), "0"));
         yield return JumpIf("Comparison: all items compared", "No item left: the pairs are the reply.", CompareDone, Op("LDB=", l.B(I), "0"));
         yield return Always("Comparison: the descriptor pointer", "AC2 = next descriptor for a moment, the copy pointer in OP_AC2 meanwhile.",
             Op("MOVD", "AC2", l.Dw(Save + 8)), Op("MOVD", "AC0", "AC2"));
@@ -132,22 +141,26 @@ internal static class ChangesPart
             "AC3 = area start + OFFSET (through OP_AC0 as scratch); CLEFT = LENGTH; AC0 to the next descriptor, AC2 back to the copy; one item fewer.",
             Op("INCD", "AC2"), Op("ITD", "*AC2", l.Dw(Save)), Op("+D", l.Dw(Save), "AC3"), Op("INCD", "AC2"), Op("INCD", "AC2"),
             Op("MOVB", "*AC2", l.B(CLeft)), Op("INCD", "AC2"), Op("MOVD", "AC2", "AC0"), Op("MOVD", l.Dw(Save + 8), "AC2"), Op("DECB", l.B(I)));
-        yield return Label(CompareByte, "READ CHANGES: one byte");
-        yield return JumpIf("Comparison: byte unchanged", "Same as the copy: nothing to send.", NextByte, Op("LDB=", "*AC3", "*AC2"));
+        yield return Label(CompareChunk, "READ CHANGES: one chunk");
+        yield return Always("Comparison: chunk length", "Run = CLEFT, at most the chunk size; one chunk of this scan used.",
+            Op("BTI", l.B(CLeft), run), Op("DECB", l.B(Budget)));
+        yield return new NetworkBuilder("Comparison: at most one chunk", $"Run = {ChunkBytes} when more bytes are left in the item.")
+            .Op("LDW>", run, Dec(ChunkBytes)).Op("MOVW", Dec(ChunkBytes), run).Build();
         yield return Always(
-            "Comparison: byte changed", "The copy takes the new value; VALUE = the copy's byte, the value the pair reports; one pair more.",
-            Op("MOVB", "*AC3", "*AC2"), Op("MOVB", "*AC2", l.B(PairValue)), Op("INCB", l.B(K)));
+            "Comparison: the chunk's bytes", "CLEFT = CLEFT - run; a FOR loop over run bytes.",
+            Op("BTI", l.B(CLeft), left), Op("-I", run, left), Op("MOVB", l.B(Save + 9), l.B(CLeft)), Op("FOR", index, "1", run));
+        yield return new NetworkBuilder(
+                "Comparison: one byte",
+                "Changed: the copy takes the new value, VALUE = the copy's byte (what the pair reports), one change more;",
+                "while K < N (the pairs shorter than the whole list) INDEX and VALUE as 4 characters at AC1.")
+            .Op("LDB<>", "*AC3", "*AC2").Op("MOVB", "*AC3", "*AC2").Op("MOVB", "*AC2", l.B(PairValue)).Op("INCB", l.B(K))
+            .Op("AB<", l.B(K), l.B(N)).Op("HTA", l.B(PairIndex), "*AC1", "4").Op("+D", "4", "AC1").Build();
+        yield return Always("Comparison: next byte", "Byte and copy pointers on, INDEX + 1.",
+            Op("INCD", "AC3"), Op("INCD", "AC2"), Op("INCB", l.B(PairIndex)));
+        yield return new NetworkBuilder("Comparison: end of the chunk").Op("NEXT").Build();
+        yield return JumpIf("Comparison: go on", "Next chunk or item.", CompareLoop, Op("LD", "SM0.0"));
+        yield return Label(CompareDone, "READ CHANGES: comparison done");
         yield return JumpIf("Comparison: pairs not shorter", "K >= N (2K >= D): the whole list instead.", FullAgain, Op("LDB>=", l.B(K), l.B(N)));
-        yield return Always("Comparison: the pair", "INDEX and VALUE as 4 characters at AC1.", Op("HTA", l.B(PairIndex), "*AC1", "4"), Op("+D", "4", "AC1"));
-        yield return Label(NextByte, "READ CHANGES: next byte");
-        yield return Always(
-            "Comparison: next byte", "Byte and copy pointers on, INDEX + 1, one byte fewer in the item and in this scan.",
-            Op("INCD", "AC3"), Op("INCD", "AC2"), Op("INCB", l.B(PairIndex)), Op("DECB", l.B(CLeft)), Op("DECB", l.B(Budget)));
-        yield return JumpIf(
-            "Comparison: scan's bytes used", "The next scan goes on with the comparison.", SlicePart.Yield,
-            Op("LDB=", l.B(Budget), "0"), Op("MOVB", Dec(StepCompare), l.B(Step)));
-        yield return JumpIf("Comparison: go on", "Next byte or item.", CompareLoop, Op("LD", "SM0.0"));
-        yield return Label(CompareDone, "READ CHANGES: pairs done");
         yield return Always(
             "READ CHANGES: K pairs", "K as the first 2 payload characters; STATUS 00; finish the reply (AC1 is after the pairs).",
             Op("HTA", l.B(K), l.B(Payload), "2"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));

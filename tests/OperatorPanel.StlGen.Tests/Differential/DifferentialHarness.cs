@@ -61,7 +61,7 @@ internal sealed class DifferentialHarness
         Line = new LineSettings(options.BaudRate, options.Parity, options.DataBits);
         _port = new FreeportPort(options.Port, _plc.Memory, options.Cpu, Line);
         _plc.AttachPort(_port);
-        _reference = new ReferencePlc(new HandlerConfig(new Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs, options.EffectiveBufferStart));
+        _reference = new ReferencePlc(new HandlerConfig(new Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs, options.EffectiveBufferStart, options.AllowStop, options.CopyBytes));
         Fill(random);
         if (inputsOff)
         {
@@ -154,6 +154,12 @@ internal sealed class DifferentialHarness
 
         if (_plc.Fault is { } fault)
         {
+            // What left the port before the CPU stopped (a STOP after its reply) still counts as sent.
+            foreach (var c in _port.TakeTransmitted())
+            {
+                got.Append((char)c.Value);
+            }
+
             got.Append(" [FAULT ").Append(fault).Append(']');
         }
 
