@@ -27,15 +27,13 @@ internal static class PlanBenchTags
         var cluster = (Area: MemoryArea.V, Base: 0);
         for (var i = 0; items.Count < count; i++)
         {
-            var roll = random.Next(100);
-            var area = roll < 5 ? MemoryArea.I : roll < 10 ? MemoryArea.Q : roll < 20 ? MemoryArea.M : MemoryArea.V;
+            var (area, width) = Draw(random.Next(100), random.Next(100));
             cpu.TryGetArea(area, out var range);
             if (i % TagsPerCluster == 0 || cluster.Area != area)
             {
                 cluster = (area, random.Next(Math.Max(1, range.ByteCount - ClusterBytes)));
             }
 
-            var width = Width(area, random.Next(100));
             var last = range.ByteCount - width.ByteCount();
             var offset = Math.Min(last, cluster.Base + random.Next(Math.Min(ClusterBytes, range.ByteCount)));
             var address = width == AccessWidth.Bit ? PlcAddress.ForBit(area, offset, random.Next(8)) : PlcAddress.ForBytes(area, offset, width);
@@ -48,10 +46,12 @@ internal static class PlanBenchTags
         return items;
     }
 
-    private static AccessWidth Width(MemoryArea area, int roll) => area switch
+    /// <summary>The area by <paramref name="areaRoll"/> (percent), the width within it by <paramref name="widthRoll"/>.</summary>
+    private static (MemoryArea Area, AccessWidth Width) Draw(int areaRoll, int widthRoll) => areaRoll switch
     {
-        MemoryArea.I or MemoryArea.Q => AccessWidth.Bit,
-        MemoryArea.M => roll < 70 ? AccessWidth.Bit : AccessWidth.Byte,
-        _ => roll < 40 ? AccessWidth.Bit : roll < 60 ? AccessWidth.Byte : roll < 90 ? AccessWidth.Word : AccessWidth.DoubleWord,
+        < 5 => (MemoryArea.I, AccessWidth.Bit),
+        < 10 => (MemoryArea.Q, AccessWidth.Bit),
+        < 20 => (MemoryArea.M, widthRoll < 70 ? AccessWidth.Bit : AccessWidth.Byte),
+        _ => (MemoryArea.V, widthRoll < 40 ? AccessWidth.Bit : widthRoll < 60 ? AccessWidth.Byte : widthRoll < 90 ? AccessWidth.Word : AccessWidth.DoubleWord),
     };
 }
