@@ -130,7 +130,7 @@ public sealed class OutputsViewModelTests : IAsyncDisposable
     {
         FrameCodec.TryDecode(reply, out var frame, out _).Should().BeTrue();
         return frame.Command == (byte)CommandCode.WriteBit + FreeportFrame.ReplyBit
-            ? FrameCodec.Encode(frame with { Payload = [0x00, 0x00] })
+            ? FrameCodec.Encode(frame with { Payload = [.. frame.Payload[..3], 0x00] }) // STATUS and REQCHECK kept
             : reply;
     }
 }

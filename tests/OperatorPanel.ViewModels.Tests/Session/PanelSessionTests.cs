@@ -75,7 +75,7 @@ public sealed class PanelSessionTests : IAsyncDisposable
 
         var station = _panel.Session.Stations.Should().ContainSingle().Subject;
         station.Health.Should().Be(StationHealth.Online);
-        station.Identity.Should().Match<StationIdentity>(i => i.Model == CpuModel.Cpu224 && i.ProtocolVersion == 1 && i.ModeSwitchRun);
+        station.Identity.Should().Match<StationIdentity>(i => i.Model == CpuModel.Cpu224 && i.ProtocolVersion == HandlerIdentity.ProtocolVersion && i.ModeSwitchRun);
         station.CpuMismatch.Should().BeFalse();
         station.Statistics.Replies.Should().BeGreaterThanOrEqualTo(2, "IDENTIFY and the refresh were answered");
     }
@@ -135,7 +135,7 @@ public sealed class PanelSessionTests : IAsyncDisposable
     public async Task Identify_OtherProtocolVersion_HandlerMismatch()
     {
         await _panel.ConnectAsync();
-        _panel.Transport.RewriteReply = reply => RewriteIdentifyVersion(reply, 0x02);
+        _panel.Transport.RewriteReply = reply => RewriteIdentifyVersion(reply, 0x03);
 
         await _panel.Session.IdentifyAsync().Guarded();
         _panel.Transport.RewriteReply = null;
@@ -143,7 +143,7 @@ public sealed class PanelSessionTests : IAsyncDisposable
 
         var station = _panel.Session.Stations.Single();
         station.Health.Should().Be(StationHealth.HandlerMismatch);
-        station.HealthText.Should().Contain("protocol version 2");
+        station.HealthText.Should().Contain("protocol version 3");
     }
 
     [Fact]
@@ -169,7 +169,7 @@ public sealed class PanelSessionTests : IAsyncDisposable
             return reply;
         }
 
-        var payload = frame.Payload.SetItem(1, version);
+        var payload = frame.Payload.SetItem(3, version); // after STATUS and REQCHECK
         return FrameCodec.Encode(frame with { Payload = payload });
     }
 }

@@ -50,7 +50,7 @@ public sealed class LinkStepViewModelTests
         await link.TestConnectionCommand.ExecuteAsync(null);
 
         link.TestSucceeded.Should().BeTrue();
-        link.TestResult.Should().Be($"{Where} answered: handler for CPU 224, protocol 1, handler revision 1, mode switch RUN, last scan 3 ms. Matches CPU 224.");
+        link.TestResult.Should().Be($"{Where} answered: handler for CPU 224, protocol 2, handler revision 1, mode switch RUN, last scan 3 ms. Matches CPU 224.");
         _tester.Asked.Should().ContainSingle().Which.Should().Be((new SerialSettings { PortName = "COM3" }, new Station(2)));
     }
 
@@ -89,7 +89,7 @@ public sealed class LinkStepViewModelTests
 
         await link.TestConnectionCommand.ExecuteAsync(null);
 
-        link.TestResult.Should().StartWith($"{Where} answered: handler for CPU 224, protocol 1").And.EndWith("Matches CPU 224.");
+        link.TestResult.Should().StartWith($"{Where} answered: handler for CPU 224, protocol 2").And.EndWith("Matches CPU 224.");
         link.TestSucceeded.Should().BeTrue();
     }
 
