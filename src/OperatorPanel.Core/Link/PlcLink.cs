@@ -55,7 +55,10 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         var timeout = _options.ReplyTimeoutFor(request, frame.Length);
         PlcCommunicationException? lastFailure = null;
 
-        for (var attempt = 0; attempt <= _options.Retries; attempt++)
+        // A READ CHANGES without FULL is never repeated: the PLC's copy moved on with the reply we lost, so a repeat
+        // would miss those changes (docs/protocol.md, READ CHANGES, PC rule 2). The polling engine asks FULL instead.
+        var retries = request is ReadChangesRequest { Full: false } ? 0 : _options.Retries;
+        for (var attempt = 0; attempt <= retries; attempt++)
         {
             if (attempt > 0)
             {
@@ -91,7 +94,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
 
         _online[request.Station] = false;
         var kind = lastFailure!.Kind == PlcErrorKind.Timeout ? PlcErrorKind.NoAnswer : PlcErrorKind.FrameCorrupt;
-        var message = $"{request.Station} on {_transport.Name}: no valid reply to {request.Command} after {_options.Retries + 1} attempts ({lastFailure.Message})";
+        var message = $"{request.Station} on {_transport.Name}: no valid reply to {request.Command} after {retries + 1} attempts ({lastFailure.Message})";
         _log.Warning("{Message}", message);
         throw new PlcCommunicationException(kind, request.Station, message);
     }

@@ -99,6 +99,9 @@ public sealed partial class PollingEngine
             case ReadListResponse list when list.Data.Length == frame.DataBytes:
                 _stations.RecordReply(frame.Station);
                 return FrameRead.Success(list.Data);
+            case ReadChangesResponse changes when ApplyChanges(index, changes) is { IsDefault: false } data:
+                _stations.RecordReply(frame.Station);
+                return FrameRead.Success(data);
             case ErrorResponse refused:
                 var refusal = $"{frame.Station} refused READ {Describe(frame)}: {refused.Error}";
                 _stations.RecordReply(frame.Station, refusal);
@@ -154,6 +157,8 @@ public sealed partial class PollingEngine
         null => "no reply object",
         ReadResponse read => $"{read.Data.Length} data bytes",
         ReadListResponse list => $"{list.Data.Length} data bytes",
+        ReadChangesResponse { Full: true } changes => $"FULL with {changes.Data.Length} data bytes",
+        ReadChangesResponse changes => $"{changes.Changes.Length} changed bytes that do not fit the list",
         ErrorResponse error => $"error {(byte)error.Error:X2} {error.Error}",
         _ => $"{response.GetType().Name}",
     };

@@ -1,27 +1,59 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
-/// READ lists (docs/protocol.md, "Lists"): the plan's frames are the same every cycle, so each frame that fits is
-/// stored in its station once with DEFINE LIST and then polled with a 12-character READ LIST. A station that lost its
-/// lists (a long frame reached the buffer tail, STOP, power-up) answers 07: the frame is defined again and read once
-/// more in the same cycle. A frame whose DEFINE is refused is read with plain READs from then on.
+/// Stored lists (docs/protocol.md, "Lists" and READ CHANGES): the plan's list frames are the same every cycle, so each is
+/// stored in its station once with DEFINE LIST, all of a station's lists in id order (the order the planner fitted them
+/// in), and then polled with READ CHANGES, which answers only the bytes that changed. FULL is asked the first time, after
+/// any READ CHANGES that brought no good reply (the PLC's copy moved on with the reply we lost), and every
+/// <see cref="PollingOptions.FullReadInterval"/>. A station whose handler keeps no copies, or a list answered FULL unasked,
+/// is read with READ LIST instead (until the next periodic FULL tries READ CHANGES again). A station that lost its lists
+/// answers 07: its lists are defined again and the frame is read once more in the same cycle. A frame whose DEFINE is
+/// refused is read with plain READs from then on.
 /// </summary>
 public sealed partial class PollingEngine
 {
     private readonly ImmutableDictionary<int, int> _listIds;
     private readonly HashSet<int> _definedFrames = [];
     private readonly HashSet<int> _plainFrames = [];
+    private readonly Dictionary<int, ListCopy> _copies = [];
+    private readonly HashSet<Station> _stationsWithoutCopies = [];
 
     /// <summary>
-    /// Poll with DEFINE LIST / READ LIST (default) or with plain READs only, one exchange per frame and cycle. Set
+    /// Poll the plan's lists as stored lists (default) or with plain READs only, one exchange per frame and cycle. Set
     /// before <see cref="RunAsync"/>.
     /// </summary>
     public bool UseReadLists { get; init; } = true;
 
-    /// <summary>READ LIST when the frame has a list (defining it first when needed), else a plain READ.</summary>
+    /// <summary>READ CHANGES or READ LIST, and how often FULL. Set before <see cref="RunAsync"/>.</summary>
+    public PollingOptions Options { get; init; } = new();
+
+    /// <summary>
+    /// What an IDENTIFY reply says about the station's handler: without READ CHANGES copies (FEATURES bit 1 clear or
+    /// COPY_BYTES 0) every READ CHANGES would answer FULL, 4 characters longer than READ LIST, so its lists are read with
+    /// READ LIST. Call from the thread that talks to the engine; takes effect from the next exchange.
+    /// </summary>
+    public void NoteIdentity(IdentifyResponse identity)
+    {
+        ArgumentNullException.ThrowIfNull(identity);
+        lock (_gate)
+        {
+            if (identity.HasCopies && identity.CopyBytes > 0)
+            {
+                _stationsWithoutCopies.Remove(identity.Station);
+            }
+            else
+            {
+                _stationsWithoutCopies.Add(identity.Station);
+            }
+        }
+    }
+
+    /// <summary>READ CHANGES or READ LIST when the frame has a list (defining the station's lists first when needed), else a plain READ.</summary>
     private async Task<PlcResponse> ExchangeFrameAsync(int index, CancellationToken cancellationToken)
     {
         var frame = _plan.Frames[index];
@@ -32,37 +64,139 @@ public sealed partial class PollingEngine
 
         for (var attempt = 0; ; attempt++)
         {
-            if (!_definedFrames.Contains(index) && !await DefineAsync(index, list, cancellationToken).ConfigureAwait(false))
+            if (!_definedFrames.Contains(index) && !await DefineListsAsync(frame.Station, index, cancellationToken).ConfigureAwait(false))
             {
                 return await ReadPlainAsync(frame, cancellationToken).ConfigureAwait(false);
             }
 
-            var response = await _link.ExchangeAsync(new ReadListRequest(frame.Station, list), cancellationToken).ConfigureAwait(false);
-            if (response is not ErrorResponse { Error: ProtocolError.ListNotDefined } || attempt > 0)
+            var request = ListRequest(index, list);
+            PlcResponse response;
+            try
             {
-                return response;
+                response = await _link.ExchangeAsync(request, cancellationToken).ConfigureAwait(false);
+            }
+            catch (PlcCommunicationException) when (request is ReadChangesRequest { Full: false } && attempt == 0)
+            {
+                // The lost reply may have moved the PLC's copy on: never repeat it without FULL (protocol rule 2).
+                CopyOf(index).Forget();
+                _logger.Debug("{Station}: READ CHANGES of list {List} brought no reply; asking FULL", frame.Station.Address, list);
+                continue;
+            }
+            catch (PlcCommunicationException)
+            {
+                CopyOf(index).Forget();
+                throw;
             }
 
-            // The station lost its lists; define this one again and read once more, in this cycle.
-            _definedFrames.Remove(index);
-            _logger.Debug("{Station}: list {List} not defined (invalidated); defining it again", frame.Station.Address, list);
+            if (response is ErrorResponse { Error: ProtocolError.ListNotDefined } && attempt == 0)
+            {
+                // The station lost its lists (and their copies); define them again and read once more, in this cycle.
+                ForgetLists(frame.Station);
+                _logger.Debug("{Station}: list {List} not defined (invalidated); defining the station's lists again", frame.Station.Address, list);
+                continue;
+            }
+
+            if (response is not ReadChangesResponse)
+            {
+                CopyOf(index).Forget();
+            }
+
+            return response;
         }
     }
 
-    /// <summary>True when the station stored the list; false (logged once) when it refused, and the frame goes back to plain READ.</summary>
-    private async Task<bool> DefineAsync(int index, int list, CancellationToken cancellationToken)
+    /// <summary>READ LIST when the station keeps no copies or the list is in its READ LIST spell, else READ CHANGES, FULL when due.</summary>
+    private PlcRequest ListRequest(int index, int list)
     {
         var frame = _plan.Frames[index];
-        var response = await _link.ExchangeAsync(new DefineListRequest(frame.Station, list, frame.Items), cancellationToken).ConfigureAwait(false);
-        if (response is DefineListResponse)
+        var copy = CopyOf(index);
+        var now = _time.GetUtcNow();
+        bool withoutCopies;
+        lock (_gate) { withoutCopies = _stationsWithoutCopies.Contains(frame.Station); }
+        if (!Options.UseReadChanges || withoutCopies || now < copy.ReadListUntil)
         {
-            _definedFrames.Add(index);
-            return true;
+            return new ReadListRequest(frame.Station, list);
         }
 
-        _plainFrames.Add(index);
-        _logger.Warning("{Station}: DEFINE LIST {List} ({Items}) not accepted ({Reply}); reading that frame with plain READ", frame.Station.Address, list, Describe(frame), Describe(response));
-        return false;
+        copy.AskedFull = copy.Data.IsDefault || now - copy.LastFull >= Options.FullReadInterval;
+        return new ReadChangesRequest(frame.Station, list, copy.AskedFull);
+    }
+
+    /// <summary>
+    /// The list's whole data after a READ CHANGES reply: the FULL data, or the PC's copy with the pairs applied; default
+    /// (and the copy forgotten, so FULL comes next) when the pairs do not fit the list (protocol rule 4).
+    /// </summary>
+    private ImmutableArray<byte> ApplyChanges(int index, ReadChangesResponse changes)
+    {
+        var copy = CopyOf(index);
+        if (!changes.TryApply(copy.Data.IsDefault ? [] : copy.Data.AsSpan(), out var data)
+            || data.Length != _plan.Frames[index].DataBytes
+            || (!changes.Full && copy.Data.IsDefault))
+        {
+            copy.Forget();
+            return default;
+        }
+
+        if (changes.Full)
+        {
+            copy.LastFull = _time.GetUtcNow();
+            if (!copy.AskedFull)
+            {
+                copy.ReadListUntil = copy.LastFull + Options.FullReadInterval;
+                _logger.Debug("{Station}: list {List} answered FULL unasked (no copy for it); READ LIST until the next periodic FULL", changes.Station.Address, _listIds[index]);
+            }
+        }
+
+        copy.Data = data;
+        return data;
+    }
+
+    /// <summary>
+    /// Defines every not yet defined list of the station, in id order, then says whether the frame at
+    /// <paramref name="index"/> is defined. A refused DEFINE (logged once) sends that frame back to plain READ.
+    /// </summary>
+    private async Task<bool> DefineListsAsync(Station station, int index, CancellationToken cancellationToken)
+    {
+        var frames = _listIds.Where(l => _plan.Frames[l.Key].Station == station && !_definedFrames.Contains(l.Key) && !_plainFrames.Contains(l.Key))
+            .OrderBy(l => l.Value);
+        foreach (var (frameIndex, list) in frames)
+        {
+            var frame = _plan.Frames[frameIndex];
+            var response = await _link.ExchangeAsync(new DefineListRequest(station, list, frame.Items), cancellationToken).ConfigureAwait(false);
+            CopyOf(frameIndex).Forget();
+            if (response is DefineListResponse)
+            {
+                _definedFrames.Add(frameIndex);
+            }
+            else
+            {
+                _plainFrames.Add(frameIndex);
+                _logger.Warning("{Station}: DEFINE LIST {List} ({Items}) not accepted ({Reply}); reading that frame with plain READ", station.Address, list, Describe(frame), Describe(response));
+            }
+        }
+
+        return _definedFrames.Contains(index);
+    }
+
+    /// <summary>The handler cleared all of the station's lists and dropped their copies.</summary>
+    private void ForgetLists(Station station)
+    {
+        foreach (var index in _listIds.Keys.Where(i => _plan.Frames[i].Station == station))
+        {
+            _definedFrames.Remove(index);
+            CopyOf(index).Forget();
+        }
+    }
+
+    private ListCopy CopyOf(int index)
+    {
+        if (!_copies.TryGetValue(index, out var copy))
+        {
+            copy = new ListCopy();
+            _copies[index] = copy;
+        }
+
+        return copy;
     }
 
     private Task<PlcResponse> ReadPlainAsync(PollFrame frame, CancellationToken cancellationToken) =>

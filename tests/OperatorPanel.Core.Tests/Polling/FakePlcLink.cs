@@ -2,6 +2,7 @@ using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Tests.Polling;
 
@@ -20,6 +21,7 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
     private readonly Dictionary<Station, ProtocolError> _refusals = [];
     private readonly List<(PlcRequest Request, DateTimeOffset At)> _log = [];
     private readonly Dictionary<(Station, int), ImmutableArray<ReadItem>> _lists = [];
+    private readonly Dictionary<(Station, int), byte[]> _copies = [];
 
     /// <summary>Clock time each exchange takes (the clock is advanced before the reply).</summary>
     public TimeSpan ExchangeDuration { get; set; }
@@ -46,7 +48,13 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
     /// <summary>Stations that refuse DEFINE LIST with 04 (the lists do not fit), like a handler whose tail is full.</summary>
     public HashSet<Station> RefusesLists { get; } = [];
 
-    /// <summary>Forgets every list of the station, as a handler does when a long frame reaches its buffer tail.</summary>
+    /// <summary>Stations whose handler keeps no READ CHANGES copies: every READ CHANGES answers FULL.</summary>
+    public HashSet<Station> KeepsNoCopies { get; } = [];
+
+    /// <summary>Requests the station serves (its copy moves on) but whose reply is lost on the way: the link throws NoAnswer.</summary>
+    public Func<PlcRequest, bool>? LosesReplyTo { get; set; }
+
+    /// <summary>Forgets every list of the station and its copies, as a handler does when a long frame reaches its buffer tail.</summary>
     public void ClearLists(Station station)
     {
         lock (_lock)
@@ -54,6 +62,7 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
             foreach (var key in _lists.Keys.Where(k => k.Item1 == station).ToList())
             {
                 _lists.Remove(key);
+                _copies.Remove(key);
             }
         }
     }
@@ -122,12 +131,42 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
             return Task.FromResult<PlcResponse>(null!);
         }
 
-        return Task.FromResult(refusal != ProtocolError.None ? Error(request, refusal) : Serve(request));
+        var response = refusal != ProtocolError.None ? Error(request, refusal) : Serve(request);
+        if (LosesReplyTo?.Invoke(request) == true)
+        {
+            throw new PlcCommunicationException(PlcErrorKind.NoAnswer, request.Station, "reply lost");
+        }
+
+        return Task.FromResult(response);
     }
 
     public LinkStatistics StatisticsFor(Station station) => LinkStatistics.Empty;
 
     public bool IsOnline(Station station) => true;
+
+    /// <summary>As the handler: FULL when asked, without a valid copy, or when the pairs would not be shorter; the copy moves on.</summary>
+    private PlcResponse ServeChanges(ReadChangesRequest request)
+    {
+        lock (_lock)
+        {
+            if (!_lists.TryGetValue((request.Station, request.List), out var items))
+            {
+                return Error(request, ProtocolError.ListNotDefined);
+            }
+
+            byte[] data = [.. items.SelectMany(i => Memory(request.Station, i.Area).Skip(i.Offset).Take(i.Length))];
+            var hadCopy = _copies.TryGetValue((request.Station, request.List), out var copy);
+            if (!KeepsNoCopies.Contains(request.Station))
+            {
+                _copies[(request.Station, request.List)] = data;
+            }
+
+            var changed = hadCopy ? Enumerable.Range(0, data.Length).Where(i => data[i] != copy![i]).ToList() : [];
+            return request.Full || !hadCopy || KeepsNoCopies.Contains(request.Station) || 2 * changed.Count >= data.Length
+                ? ReadChangesResponse.Whole(request.Station, request.Sequence, [.. data])
+                : ReadChangesResponse.Pairs(request.Station, request.Sequence, [.. changed.Select(i => new ChangedByte((byte)i, data[i]))]);
+        }
+    }
 
     private static ErrorResponse Error(PlcRequest request, ProtocolError error) => new(request.Station, request.Sequence, request.Command, error);
 
@@ -148,7 +187,12 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
                     return Error(request, ProtocolError.BadLength);
                 }
 
-                lock (_lock) { _lists[(define.Station, define.List)] = define.Items; }
+                lock (_lock)
+                {
+                    _lists[(define.Station, define.List)] = define.Items;
+                    _copies.Remove((define.Station, define.List));
+                }
+
                 return new DefineListResponse(define.Station, define.Sequence);
             case ReadListRequest list:
                 ImmutableArray<ReadItem> items;
@@ -161,6 +205,8 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
                 }
 
                 return new ReadListResponse(list.Station, list.Sequence, [.. items.SelectMany(i => Memory(list.Station, i.Area).Skip(i.Offset).Take(i.Length))]);
+            case ReadChangesRequest changes:
+                return ServeChanges(changes);
             case WriteBlockRequest write:
                 if (write.Area == ProtocolArea.I)
                 {

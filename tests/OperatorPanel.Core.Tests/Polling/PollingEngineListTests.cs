@@ -6,7 +6,7 @@ using static OperatorPanel.Core.Tests.Polling.PollingSome;
 
 namespace OperatorPanel.Core.Tests.Polling;
 
-/// <summary>READ lists: defined once per frame, polled with READ LIST, redefined on 07, plain READ when refused.</summary>
+/// <summary>Stored lists: defined once per frame, polled with READ CHANGES, redefined on 07, plain READ when refused.</summary>
 public sealed class PollingEngineListTests
 {
     private readonly PollingTestClock _clock = new();
@@ -16,7 +16,7 @@ public sealed class PollingEngineListTests
     public PollingEngineListTests() => _link = new FakePlcLink(_clock);
 
     [Fact]
-    public async Task RunCycle_TwoStations_DefinesEachListOnceThenPollsWithReadList()
+    public async Task RunCycle_TwoStations_DefinesEachListOnceThenPollsWithReadChanges()
     {
         _link.Set(One, ProtocolArea.V, 10, 0x12, 0x34);
         _link.Set(Two, ProtocolArea.M, 3, 0x08);
@@ -26,8 +26,8 @@ public sealed class PollingEngineListTests
         await engine.RunCycleAsync(CancellationToken.None);
 
         _link.Requests.Select(r => (r.Station.Address, r.Command)).Should().Equal(
-            (1, CommandCode.DefineList), (1, CommandCode.ReadList), (2, CommandCode.DefineList), (2, CommandCode.ReadList),
-            (1, CommandCode.ReadList), (2, CommandCode.ReadList));
+            (1, CommandCode.DefineList), (1, CommandCode.ReadChanges), (2, CommandCode.DefineList), (2, CommandCode.ReadChanges),
+            (1, CommandCode.ReadChanges), (2, CommandCode.ReadChanges));
         _link.Requests.OfType<DefineListRequest>().Select(d => (d.List, d.Items.Single()))
             .Should().Equal((1, new ReadItem(ProtocolArea.V, 10, 2)), (1, new ReadItem(ProtocolArea.M, 3, 1)));
         Value(engine, One, "VW10").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x12 && v.Raw[1] == 0x34);
@@ -44,7 +44,8 @@ public sealed class PollingEngineListTests
 
         var result = await engine.RunCycleAsync(CancellationToken.None);
 
-        _link.Requests.Skip(2).Select(r => r.Command).Should().Equal(CommandCode.ReadList, CommandCode.DefineList, CommandCode.ReadList);
+        _link.Requests.Skip(2).Select(r => r.Command).Should().Equal(CommandCode.ReadChanges, CommandCode.DefineList, CommandCode.ReadChanges);
+        _link.Requests.OfType<ReadChangesRequest>().Last().Full.Should().BeTrue("a list defined again has no valid copy");
         result.Should().Match<PollResult>(r => r.FramesSent == 1 && r.FramesFailed == 0);
         Value(engine, One, "VB0").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x5A);
     }

@@ -163,7 +163,7 @@ public sealed class PollingEngineWritesTests
         Task<WriteOutcome>? write = null;
         _link.OnExchange = request =>
         {
-            if (request.Station == One && request is ReadListRequest)
+            if (request.Station == One && request is ReadChangesRequest)
             {
                 write = engine.WriteAsync(WriteRequest.Bytes(Two, PlcAddress.Parse("VB0"), [0x42]));
             }
@@ -172,7 +172,7 @@ public sealed class PollingEngineWritesTests
         await engine.RunCycleAsync(CancellationToken.None);
 
         _link.Requests.Select(r => (r.Station.Address, r.Command)).Should().Equal(
-            (1, CommandCode.DefineList), (1, CommandCode.ReadList), (2, CommandCode.Write), (2, CommandCode.DefineList), (2, CommandCode.ReadList));
+            (1, CommandCode.DefineList), (1, CommandCode.ReadChanges), (2, CommandCode.Write), (2, CommandCode.DefineList), (2, CommandCode.ReadChanges));
         (await write!.Guarded()).Should().BeOfType<WriteOutcome.Confirmed>();
         engine.TryGetValue(Two, PlcAddress.Parse("VB0"), out var value).Should().BeTrue();
         value.Raw.Should().Equal(0x42);
