@@ -26,8 +26,9 @@ internal static class ChangesPart
     public const int CompareResume = 100, CompareLoop = 101, CompareChunk = 102, CompareDone = 104,
         FullAgain = 105, FullWithCopy = 106, CopyItem = 107;
 
-    /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes).</summary>
-    public static IEnumerable<(int Step, int Label)> Resumes => [(StepCompare, CompareResume), (StepCopyItems, CopyItem)];
+    /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes; none without copies).</summary>
+    public static IEnumerable<(int Step, int Label)> Resumes(HandlerContext c) =>
+        c.Options.CopyBytes == 0 ? [] : [(StepCompare, CompareResume), (StepCopyItems, CopyItem)];
 
     /// <summary>The first payload character of a reply (after '&lt;', STATION, SEQ, CMD, STATUS, REQCHECK).</summary>
     private const int Payload = ReplyPart.PayloadStart;

@@ -39,7 +39,7 @@ internal static class SlicePart
         (StepRequestCheck, RequestCheckPass), (StepHeader, Header), (StepCheckItems, HandlerLabels.CheckItems),
         (StepItemsChecked, ItemsChecked), (StepBuildItems, HandlerLabels.BuildItems), (StepReplyCheck, ReplyCheck),
         (StepReplyCheckPass, ReplyCheckPass), (StepWriteReadBack, WriteReadBack), (StepFrameChecked, FrameChecked),
-        (StepMovePass, MovePass), .. ChangesPart.Resumes,
+        (StepMovePass, MovePass),
     ];
 
     /// <summary>The start of the work on a request: nothing to do, or accumulators back and on where STEP says.</summary>
@@ -53,7 +53,7 @@ internal static class SlicePart
             $"AC0-AC3 as the last slice left them (the program may have used them since); {PassesPerScan} loop passes in this scan.",
             Op("MOVD", l.Dw(Save), "AC0"), Op("MOVD", l.Dw(Save + 4), "AC1"), Op("MOVD", l.Dw(Save + 8), "AC2"),
             Op("MOVD", l.Dw(Save + 12), "AC3"), Op("MOVB", Dec(PassesPerScan), l.B(Budget)));
-        foreach (var (step, label) in Resumes)
+        foreach (var (step, label) in Resumes.Concat(ChangesPart.Resumes(c)))
         {
             yield return JumpIf($"STEP {step}", $"Go on at label {label}.", label, Op("LDB=", l.B(Step), Dec(step)));
         }

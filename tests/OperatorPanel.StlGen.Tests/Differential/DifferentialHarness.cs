@@ -27,6 +27,9 @@ internal sealed class DifferentialHarness
 {
     private static readonly TimeSpan Margin = TimeSpan.FromMilliseconds(30);
 
+    /// <summary>The interpreter's fault code for an executed STOP instruction.</summary>
+    private const string ProgramStop = "Stop";
+
     private readonly StlPlc _plc;
     private readonly FreeportPort _port;
     private readonly ReferencePlc _reference;
@@ -91,6 +94,9 @@ internal sealed class DifferentialHarness
 
     public long Instructions => _plc.InstructionsExecuted;
 
+    /// <summary>RUN or STOP of the interpreted CPU (a handler's STOP stops it).</summary>
+    public Simulator.Reference.OperatingMode Mode => _plc.Mode;
+
     /// <summary>Sets the same bytes in both PLCs (I through the interpreter's input image).</summary>
     public void Poke(ProtocolArea area, int offset, params byte[] bytes)
     {
@@ -129,7 +135,7 @@ internal sealed class DifferentialHarness
         var step = TimeSpan.FromTicks(Math.Max(TimeSpan.TicksPerMillisecond, Line.CharacterTime.Ticks * 4));
         _plc.RunUntil(at);
         var t = at;
-        while (_plc.Fault is null)
+        while (_plc.Fault is null && _plc.Mode == Simulator.Reference.OperatingMode.Run)
         {
             foreach (var c in _port.TakeTransmitted())
             {
@@ -160,7 +166,11 @@ internal sealed class DifferentialHarness
                 got.Append((char)c.Value);
             }
 
-            got.Append(" [FAULT ").Append(fault).Append(']');
+            // The handler's own STOP instruction (07 STOP) is no fault: the CPU is in STOP as told, and silent.
+            if (fault.Code != ProgramStop)
+            {
+                got.Append(" [FAULT ").Append(fault).Append(']');
+            }
         }
 
         _now = t + TimeSpan.FromMilliseconds(1);
