@@ -1,4 +1,6 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Stl.Freeport;
 
 namespace OperatorPanel.Cli.Bench;
 
@@ -12,6 +14,9 @@ internal sealed record LineSetting(int Baud, string Format, int BitsPerCharacter
         [new(9600, "8N1", 10), new(9600, "8E1", 11), new(38400, "8N1", 10), new(38400, "8E1", 11)];
 
     public double CharacterMs => BitsPerCharacter * 1000.0 / Baud;
+
+    /// <summary>The same setting for the simulated PLC's port: 8 data bits, even parity when a character has 11 bits.</summary>
+    public LineSettings Settings => new(Baud, BitsPerCharacter == 11 ? Parity.Even : Parity.None, 8);
 
     public override string ToString() => $"{Baud} {Format}";
 }

@@ -7,6 +7,7 @@ internal static class LinkBenchJson
     {
         ArgumentNullException.ThrowIfNull(report);
         var line = report.Line;
+        var time = report.Time;
         return new
         {
             line = new
@@ -17,12 +18,6 @@ internal static class LinkBenchJson
                 items = line.Tags.Length,
                 distinctDataBytes = line.DistinctDataBytes,
             },
-            assumptions = new
-            {
-                bitsPerCharacter = LineSetting.Modeled.Select(s => new { baud = s.Baud, format = s.Format, bits = s.BitsPerCharacter, characterMs = s.CharacterMs }),
-                replyDelayMs = report.Timing.ReplyDelayMs,
-                scanMs = report.Timing.ScanMs,
-            },
             plan = report.Plan.Frames.Select(f => f.Items.Select(i => new { area = i.Area.ToString(), offset = i.Offset, length = i.Length })),
             rows = report.Rows.Select(r => new
             {
@@ -31,15 +26,30 @@ internal static class LinkBenchJson
                 pcToPlcChars = r.RequestChars,
                 plcToPcChars = r.ReplyChars,
                 totalChars = r.TotalChars,
-                refreshMs = LineSetting.Modeled.Select(s => new { setting = s.ToString(), ms = r.RefreshMs(s, report.Timing) }),
+                lineMs = LineSetting.Modeled.Select(s => new { setting = s.ToString(), ms = r.LineMs(s) }),
             }),
             defineListsOnce = new
             {
-                note = "once per connection and after an invalidation; the targets use the steady-state refresh",
                 exchanges = report.DefineLists.Frames,
                 pcToPlcChars = report.DefineLists.RequestChars,
                 plcToPcChars = report.DefineLists.ReplyChars,
-                ms = LineSetting.Modeled.Select(s => new { setting = s.ToString(), ms = report.DefineLists.RefreshMs(s, report.Timing) }),
+            },
+            modelled = new
+            {
+                medium = time.Medium,
+                setting = time.Model.Line.ToString(),
+                replyDelayMs = time.Model.ReplyDelayMs,
+                programScanMs = time.Model.ProgramScanMs,
+                turnaroundMs = time.Model.TurnaroundMs,
+                gapMs = time.Model.GapMs,
+                radio = time.Model.Radio?.ToString(),
+                handlerProblems = report.HandlerProblems,
+                steady = Cycle(time.Steady),
+                idle = Cycle(time.Idle),
+                hexBoundChars = time.HexBoundChars,
+                hexBoundMs = time.HexBoundMs,
+                steadyRatio = time.SteadyRatio,
+                summary = time.SummaryLine,
             },
             targets = report.Targets.Select(t => new { name = t.Name, verdict = t.Verdict, pass = t.Pass, ratio = t.Ratio, limit = t.Limit, detail = t.Detail }),
             measured = measured is null ? null : new
@@ -61,4 +71,21 @@ internal static class LinkBenchJson
             measuredSkipped,
         };
     }
+
+    private static object Cycle(CycleTime cycle) => new
+    {
+        chars = cycle.Chars,
+        ms = cycle.TotalMs,
+        exchanges = cycle.Exchanges.Select(e => new
+        {
+            name = e.Name,
+            requestChars = e.RequestChars,
+            replyChars = e.ReplyChars,
+            ms = e.TotalMs,
+            handlerScans = e.Handler.Scans,
+            handlerAloneMs = e.Handler.HandlerAlone.TotalMilliseconds,
+            handlerSource = e.Handler.Source,
+            parts = e.Parts.Select(p => new { what = p.What, ms = p.Ms }),
+        }),
+    };
 }

@@ -4,29 +4,40 @@ using OperatorPanel.Core.Polling;
 namespace OperatorPanel.Cli.Bench;
 
 /// <summary>
-/// The modeled part of `opanel bench link`: the line, its poll plan, the figures of every strategy, the one-time cost of
-/// defining the READ lists, and the targets (evaluated on the steady-state refresh).
+/// The modelled part of `opanel bench link`: the line, its poll plan, the characters of every strategy, the one-time
+/// cost of defining the lists, the time model of the steady and idle refresh on the chosen medium, and the targets.
 /// </summary>
 internal sealed record LinkBenchReport(
     BenchLine Line,
     PollPlan Plan,
-    ExchangeTiming Timing,
     ImmutableArray<TrafficFigures> Rows,
     TrafficFigures DefineLists,
+    LinkTimeReport Time,
+    ImmutableArray<string> HandlerProblems,
     ImmutableArray<TargetResult> Targets)
 {
-    public static LinkBenchReport Create(BenchLine line, ExchangeTiming timing)
+    public static LinkBenchReport Create(BenchLine line, LinkTimeModel model)
     {
         ArgumentNullException.ThrowIfNull(line);
-        ArgumentNullException.ThrowIfNull(timing);
+        ArgumentNullException.ThrowIfNull(model);
         var plan = line.Plan();
-        var planned = TrafficModels.FromPlan(plan);
-        var plain = TrafficModels.PlainReads(plan);
-        var perItem = TrafficModels.OneItemPerRequest(line, plan.CostModel);
+        var cycles = RefreshCycles.For(plan);
+        HandlerProbe.TryCreate(line.Cpu, line.Station, model.Line.Settings, (int)model.ReplyDelayMs, out var probe, out var probeError);
+        var handler = HandlerCosts.Measure(cycles, probe, probeError);
+        var medium = model.Radio is null ? "PC/PPI cable" : "radio modules";
+        var time = LinkTimeReport.Create(medium, model, cycles, handler, line);
+        var planned = TrafficModels.FromCycle(TrafficModels.Planned, cycles.Steady);
+        var perItem = TrafficModels.OneItemPerRequest(line);
         var seed = TrafficModels.SeedOneItemPerRequest(line);
-        var hex = TrafficModels.LowerBoundAsHex(line);
-        var binary = TrafficModels.LowerBoundAsBinary(line);
-        var targets = BenchTargets.Evaluate(planned, perItem, seed, hex, binary, timing);
-        return new LinkBenchReport(line, plan, timing, [planned, plain, perItem, seed, hex, binary], TrafficModels.DefineListsOnce(plan), targets);
+        var rows = ImmutableArray.Create(
+            planned,
+            TrafficModels.FromCycle(TrafficModels.Idle, cycles.Idle),
+            TrafficModels.PlainReads(plan),
+            perItem,
+            seed,
+            TrafficModels.LowerBoundAsHex(line),
+            TrafficModels.LowerBoundAsBinary(line));
+        return new LinkBenchReport(
+            line, plan, rows, TrafficModels.FromCycle(TrafficModels.DefineLists, cycles.Setup), time, handler.Problems, BenchTargets.Evaluate(planned, perItem, seed, time));
     }
 }

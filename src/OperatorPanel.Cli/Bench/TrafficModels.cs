@@ -1,60 +1,44 @@
+using System.Collections.Immutable;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Cli.Bench;
 
-/// <summary>The polling strategies the bench compares, each as the characters one full refresh of a line costs.</summary>
+/// <summary>
+/// The polling strategies the bench compares, each as the characters one refresh costs; frame sizes from Core
+/// (ProtocolLimits: a request with P payload bytes is 12 + 2P characters, a reply 18 + 2P).
+/// </summary>
 internal static class TrafficModels
 {
-    public const string Planned = "this panel, READ LIST (steady state)";
-    public const string PlainRead = "this panel, plain READ";
-    public const string DefineLists = "DEFINE LISTs (once)";
+    public const string Planned = "this panel, steady (READ CHANGES FULL)";
+    public const string Idle = "this panel, idle (nothing changed)";
+    public const string PlainRead = "this panel's frames as plain READs";
+    public const string DefineLists = "list set-up (once)";
     public const string PerItem = "one item per request, this protocol";
     public const string SeedPerItem = "one item per request, seed frames";
     public const string LowerBoundHex = "lower bound, hex (2 chars/byte)";
     public const string LowerBoundBinary = "lower bound, binary (1 char/byte)";
 
-    /// <summary>
-    /// The planner's frames as the polling engine sends them once its lists are defined: READ LIST (12 characters) for
-    /// every frame with a list id (<see cref="ReadListAssignment"/>), plain READ for the others; the same replies.
-    /// </summary>
-    public static TrafficFigures FromPlan(PollPlan plan)
-    {
-        ArgumentNullException.ThrowIfNull(plan);
-        var lists = ReadListAssignment.For(plan);
-        var requests = Enumerable.Range(0, plan.FrameCount)
-            .Sum(i => lists.ContainsKey(i) ? plan.CostModel.ReadListRequestChars : plan.CostModel.RequestChars(plan.Frames[i].Items.Length));
-        return new(Planned, plan.FrameCount, requests, plan.ReplyChars);
-    }
+    /// <summary>The exchanges of one cycle as encoded (<see cref="RefreshCycles"/>).</summary>
+    public static TrafficFigures FromCycle(string name, ImmutableArray<PlannedExchange> exchanges) =>
+        new(name, exchanges.Length, exchanges.Sum(e => e.RequestChars), exchanges.Sum(e => e.ReplyChars));
 
-    /// <summary>The planner's frames as plain READs; sizes from the frame layouts (docs/protocol.md) via the cost model.</summary>
+    /// <summary>The planner's frames as plain READs, their item descriptors sent every refresh.</summary>
     public static TrafficFigures PlainReads(PollPlan plan)
     {
         ArgumentNullException.ThrowIfNull(plan);
-        return new(PlainRead, plan.FrameCount, plan.RequestChars, plan.ReplyChars);
-    }
-
-    /// <summary>The DEFINE LIST exchanges that precede the steady state: 14 + 8N characters out, a 12-character reply back.</summary>
-    public static TrafficFigures DefineListsOnce(PollPlan plan)
-    {
-        ArgumentNullException.ThrowIfNull(plan);
-        var frames = ReadListAssignment.For(plan).Keys.Select(i => plan.Frames[i]).ToList();
-        return new(
-            DefineLists,
-            frames.Count,
-            frames.Sum(f => plan.CostModel.DefineListRequestChars(f.Items.Length)),
-            frames.Count * plan.CostModel.ReplyChars(0));
+        return new(PlainRead, plan.FrameCount, plan.Frames.Sum(f => ReadRequestChars(f.Items.Length)), plan.Frames.Sum(f => ProtocolLimits.ReplyChars(f.DataBytes)));
     }
 
     /// <summary>A READ with a single item per tag, per alarm bit and per I/Q byte: the same framing, no planning.</summary>
-    public static TrafficFigures OneItemPerRequest(BenchLine line, PollCostModel model)
+    public static TrafficFigures OneItemPerRequest(BenchLine line)
     {
         ArgumentNullException.ThrowIfNull(line);
-        ArgumentNullException.ThrowIfNull(model);
         return new(
             PerItem,
             line.Tags.Length,
-            line.Tags.Length * model.RequestChars(1),
-            line.Tags.Sum(t => model.ReplyChars(t.Address.LastByte - t.Address.ByteOffset + 1)));
+            line.Tags.Length * ReadRequestChars(1),
+            line.Tags.Sum(t => ProtocolLimits.ReplyChars(t.Address.LastByte - t.Address.ByteOffset + 1)));
     }
 
     /// <summary>The seed paper's commands of Table 1, one per item, with its binary frames.</summary>
@@ -73,4 +57,7 @@ internal static class TrafficModels
 
     /// <summary>Only the data bytes as raw binary, one character each.</summary>
     public static TrafficFigures LowerBoundAsBinary(BenchLine line) => new(LowerBoundBinary, 0, 0, line.DistinctDataBytes);
+
+    /// <summary>READ: payload COUNT and 4 bytes (AREA OFFSET LENGTH) per item.</summary>
+    private static int ReadRequestChars(int items) => ProtocolLimits.RequestChars(1 + (4 * items));
 }

@@ -1,37 +1,51 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Bench;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel bench link [--cycles N]</c> (and <c>bench stl</c>, <see cref="StlBenchCommand"/>): the modeled cost of a full refresh of the reference line against one item per
-/// request and the data-only lower bound, the targets judged PASS/FAIL, then the round trip measured over a socat pty.
-/// Exit 0 when both parts ran (a FAIL target is a finding, printed, not an error); 1 when socat is missing or
-/// --cycles is bad; 2 when the measured run failed or no frame got a reply (lost frames are counted in the output).
+/// <c>opanel bench link [--radio] [--scan-ms M] [--air-baud B] [--cycles N]</c> (and <c>bench stl</c>, <c>bench plan</c>):
+/// the characters of a full refresh of the reference line against one item per request and the hex bound, the
+/// MODELLED time of a steady and an idle refresh on the PC/PPI cable or (--radio) the radio modules, the targets
+/// judged PASS/FAIL, then the round trip MEASURED over a socat pty; the text ends with one summary line.
+/// Exit 0 when both parts ran (a FAIL target is a finding, printed, not an error); 1 when socat is missing or an
+/// option is bad; 2 when the measured run failed or no frame got a reply (lost frames are counted in the output).
 /// </summary>
 internal static class BenchCommand
 {
     public const string SocatMissing = "socat not found: measured round trip skipped";
 
+    /// <summary>The reference line's setting: the handler's usual 9600 8N1 (docs/protocol.md section 6).</summary>
+    private static readonly LineSetting Setting = LineSetting.Modeled[0];
+
     public static Command Create(Func<ParseResult, CliContext> context)
     {
-        var command = new Command("bench", "Print figures about the panel's link (modeled and measured)");
+        var command = new Command("bench", "Print figures about the panel's link and planner (modelled and measured)");
         command.Subcommands.Add(CreateLink(context));
         command.Subcommands.Add(StlBenchCommand.Create(context));
+        command.Subcommands.Add(PlanBenchCommand.Create(context));
         return command;
     }
 
     private static Command CreateLink(Func<ParseResult, CliContext> context)
     {
-        var cycles = new Option<int>("--cycles")
+        var cycles = new Option<int>("--cycles") { Description = "Full refreshes for the measured round trip (default 50)", DefaultValueFactory = _ => 50 };
+        var radio = new Option<bool>("--radio") { Description = "Model the 433 MHz radio module pair instead of the PC/PPI cable" };
+        var scan = new Option<double>("--scan-ms")
         {
-            Description = "Full refreshes for the measured round trip (default 50)",
-            DefaultValueFactory = _ => 50,
+            Description = "The user program's own time per scan in ms (default 5)",
+            DefaultValueFactory = _ => 5,
         };
-        var command = new Command("link", "Bytes, frames and refresh time of the reference line per strategy; targets; measured round trip")
+        var air = new Option<int>("--air-baud")
         {
-            cycles,
+            Description = "The radio modules' air data rate in baud (default 38400, an assumption)",
+            DefaultValueFactory = _ => (int)RadioModuleTiming.Default.AirBaud,
+        };
+        var command = new Command("link", "Characters, modelled refresh time (cable or --radio) and targets of the reference line; measured round trip")
+        {
+            cycles, radio, scan, air,
         };
         command.SetAction(async (parse, cancellationToken) =>
         {
@@ -42,8 +56,20 @@ internal static class BenchCommand
                 return cli.Fail(ExitCodes.BadInput, $"--cycles {count}: give at least 1 refresh");
             }
 
+            var scanMs = parse.GetValue(scan);
+            if (!(scanMs >= 0 && scanMs <= 500))
+            {
+                return cli.Fail(ExitCodes.BadInput, $"--scan-ms {scanMs}: give 0-500 ms (the S7-200 watchdog ends a scan at 500 ms)");
+            }
+
+            var airBaud = parse.GetValue(air);
+            if (airBaud is < 600 or > 500_000)
+            {
+                return cli.Fail(ExitCodes.BadInput, $"--air-baud {airBaud}: the CC1100 runs at 600-500000 baud");
+            }
+
             var line = ReferenceLine.Create();
-            var report = LinkBenchReport.Create(line, ExchangeTiming.Default);
+            var report = LinkBenchReport.Create(line, Model(parse.GetValue(radio), scanMs, airBaud));
             var socat = SocatPty.Find();
             MeasuredRoundTrip? measured = null;
             try
@@ -55,18 +81,32 @@ internal static class BenchCommand
                 if (!cli.Json)
                 {
                     LinkBenchText.WriteModeled(cli.Out, report);
+                    cli.Out.WriteLine(report.Time.SummaryLine);
                 }
 
                 return cli.Fail(ExitCodes.LinkFailure, $"measured round trip failed: {exception.Message}");
             }
 
             Print(cli, report, measured);
-            cli.Log.Information("bench link: {Targets}", string.Join(", ", report.Targets.Select(t => $"{t.Name} {t.Verdict}")));
+            cli.Log.Information("{Summary}", report.Time.SummaryLine);
             return measured is null ? ExitCodes.BadInput
                 : measured.FramesFailed == measured.Cycles * measured.FramesPerRefresh ? ExitCodes.LinkFailure
                 : ExitCodes.Ok;
         });
         return command;
+    }
+
+    /// <summary>The time model for the chosen medium, with the gap the panel's link keeps on it (LinkOptions).</summary>
+    private static LinkTimeModel Model(bool radio, double scanMs, int airBaud)
+    {
+        var serial = new SerialSettings { PortName = "bench", BaudRate = Setting.Baud, Kind = radio ? LinkKind.RadioModule : LinkKind.Cable };
+        var options = LinkOptions.For(serial);
+        return new LinkTimeModel(
+            Setting,
+            options.ReplyDelay.TotalMilliseconds,
+            scanMs,
+            options.InterFrameGap.TotalMilliseconds,
+            radio ? RadioModuleTiming.Default with { AirBaud = airBaud } : null);
     }
 
     private static void Print(CliContext cli, LinkBenchReport report, MeasuredRoundTrip? measured)
@@ -88,5 +128,8 @@ internal static class BenchCommand
         {
             LinkBenchText.WriteMeasured(cli.Out, measured);
         }
+
+        cli.Out.WriteLine();
+        cli.Out.WriteLine(report.Time.SummaryLine);
     }
 }

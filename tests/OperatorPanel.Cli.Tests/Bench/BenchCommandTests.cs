@@ -6,46 +6,72 @@ namespace OperatorPanel.Cli.Tests.Bench;
 public sealed class BenchCommandTests
 {
     [Fact]
-    public void BenchLink_Text_PrintsEverySectionAndAVerdictPerTarget()
+    public void BenchLink_Text_LabelsModelAndMeasurementAndEndsWithTheSummaryLine()
     {
-        var (exit, output, error) = CliRunner.Run("bench", "link", "--cycles", "3");
+        var (exit, output, error) = CliRunner.Run("bench", "link", "--cycles", "2");
 
         exit.Should().Be(0, $"stderr: {error}");
         output.Should().Contain("Reference line: CPU 226 (Current), station 2")
             .And.Contain("alarms      64  M10.0-M17.7")
-            .And.Contain("Assumptions")
-            .And.Contain("per exchange: PLC reply delay 5 ms + one PLC scan 10 ms = 15 ms")
-            .And.Contain("Poll plan (PollPlanner, CPU known)")
-            .And.Contain("this panel, READ LIST (steady state)")
-            .And.Contain("this panel, plain READ")
-            .And.Contain("the targets are evaluated on the steady-state refresh")
-            .And.Contain("one-time cost, once per connection and after an invalidation: 1 DEFINE LIST exchange,")
-            .And.Contain("one item per request, this protocol")
-            .And.Contain("one item per request, seed frames")
-            .And.Contain("lower bound, hex (2 chars/byte)")
-            .And.Contain("lower bound, binary (1 char/byte)")
-            .And.Contain("Measured round trip over a socat pty")
-            .And.Contain("per full refresh:")
-            .And.Contain("not line time");
-        output.Should().MatchRegex(@"(PASS|FAIL) bytes on the wire")
-            .And.MatchRegex(@"(PASS|FAIL) refresh time 9600 8N1")
-            .And.MatchRegex(@"(PASS|FAIL) refresh time 9600 8E1");
+            .And.Contain("Time model (MODELLED, not measured): PC/PPI cable, 9600 8N1")
+            .And.Contain("steady (every value read in full)")
+            .And.Contain("idle (nothing changed)")
+            .And.Contain("MEASURED round trip over a socat pty")
+            .And.MatchRegex(@"(PASS|FAIL) steady refresh 9600 8N1");
+        var lines = output.TrimEnd().Split('\n');
+        lines[^1].Should().MatchRegex(@"^bench link: steady \d+ chars, \d+\.\d ms, \d+\.\d\d x hex bound; idle \d+ chars, \d+\.\d ms$");
+        lines.Count(l => l.StartsWith("bench link:", StringComparison.Ordinal)).Should().Be(1);
     }
 
     [Fact]
-    public void BenchLink_Json_GivesRowsTargetsAndTheMeasurement()
+    public void BenchLink_Radio_ModelsTheRadioModulesAndTakesLongerThanTheCable()
+    {
+        var (_, cable, _) = CliRunner.Run("bench", "link", "--cycles", "1", "--json");
+        var (exit, radio, error) = CliRunner.Run("bench", "link", "--cycles", "1", "--json", "--radio");
+
+        exit.Should().Be(0, $"stderr: {error}");
+        var cableModel = JsonDocument.Parse(cable).RootElement.GetProperty("modelled");
+        var radioModel = JsonDocument.Parse(radio).RootElement.GetProperty("modelled");
+        radioModel.GetProperty("medium").GetString().Should().Be("radio modules");
+        radioModel.GetProperty("steady").GetProperty("chars").GetInt32().Should().Be(cableModel.GetProperty("steady").GetProperty("chars").GetInt32());
+        radioModel.GetProperty("steady").GetProperty("ms").GetDouble().Should().BeGreaterThan(cableModel.GetProperty("steady").GetProperty("ms").GetDouble());
+        radioModel.GetProperty("summary").GetString().Should().StartWith("bench link: steady ");
+    }
+
+    [Fact]
+    public void BenchLink_Json_GivesRowsTargetsTheModelAndTheMeasurement()
     {
         var (exit, output, error) = CliRunner.Run("bench", "link", "--cycles", "2", "--json");
 
         exit.Should().Be(0, $"stdout: {output} stderr: {error}");
         using var json = JsonDocument.Parse(output);
         var root = json.RootElement;
-        root.GetProperty("rows").GetArrayLength().Should().Be(6);
-        root.GetProperty("defineListsOnce").GetProperty("exchanges").GetInt32().Should().Be(1);
+        root.GetProperty("rows").GetArrayLength().Should().Be(7);
         root.GetProperty("targets").EnumerateArray().Select(t => t.GetProperty("verdict").GetString())
             .Should().HaveCount(3).And.OnlyContain(v => v == "PASS" || v == "FAIL");
+        root.GetProperty("modelled").GetProperty("steady").GetProperty("exchanges").GetArrayLength().Should().BePositive();
         root.GetProperty("measured").GetProperty("cycles").GetInt32().Should().Be(2);
         root.GetProperty("measured").GetProperty("exchangeAverageMs").GetDouble().Should().BePositive();
+    }
+
+    [Theory]
+    [InlineData("--scan-ms", "-1")]
+    [InlineData("--air-baud", "100")]
+    public void BenchLink_BadModelOption_FailsAsBadInputNamingIt(string option, string value)
+    {
+        var (exit, _, error) = CliRunner.Run("bench", "link", "--cycles", "1", option, value);
+
+        exit.Should().Be(1);
+        error.Should().Contain($"{option} {value}");
+    }
+
+    [Fact]
+    public void BenchPlan_SmallCounts_PrintsOneRowPerCount()
+    {
+        var (exit, output, error) = CliRunner.Run("bench", "plan", "--tags", "20", "50", "--runs", "1");
+
+        exit.Should().Be(0, $"stderr: {error}");
+        output.Should().Contain("PollPlanner.Build on one CPU 226 station").And.MatchRegex(@"\n\s+20\s+1\s").And.MatchRegex(@"\n\s+50\s+1\s");
     }
 
     [Fact]

@@ -5,17 +5,16 @@ namespace OperatorPanel.Cli.Tests.Bench;
 
 public sealed class BenchTargetsTests
 {
-    private static readonly ExchangeTiming NoDeadTime = new(0, 0);
+    private static readonly LineSetting Line = new(9600, "8N1", 10);
     private static readonly TrafficFigures Planned = new(TrafficModels.Planned, 1, 40, 60);
     private static readonly TrafficFigures Seed = new(TrafficModels.SeedPerItem, 10, 200, 200);
-    private static readonly TrafficFigures Binary = new(TrafficModels.LowerBoundBinary, 0, 0, 20);
 
     [Theory]
     [InlineData(800, true)]  // exactly 8 times fewer
     [InlineData(799, false)]
     public void Evaluate_BytesRatio_PassesFromEightTimesFewer(int perItemChars, bool pass)
     {
-        var targets = Evaluate(perItemChars, lowerHexChars: 40);
+        var targets = Evaluate(perItemChars, steadyMs: 100, hexChars: 100, idleChars: 36);
 
         var bytes = targets.Single(t => t.Name == "bytes on the wire");
         bytes.Pass.Should().Be(pass);
@@ -24,33 +23,35 @@ public sealed class BenchTargetsTests
     }
 
     [Theory]
-    [InlineData(40, true)]  // 100 / 40 = 2.5: on the limit
-    [InlineData(39, false)] // 100 / 39 = 2.56
-    public void Evaluate_TimeRatio_PassesUpToTwoAndAHalfTheHexBoundAtBothFormats(int lowerHexChars, bool pass)
+    [InlineData(160, true)]  // 160 ms against 100 characters x 1.0417 ms = 104.17 ms: 1.536x
+    [InlineData(170, false)] // 1.632x
+    public void Evaluate_SteadyTime_PassesUpToOnePointSixTheHexBound(double steadyMs, bool pass)
     {
-        var targets = Evaluate(1000, lowerHexChars);
+        var targets = Evaluate(1000, steadyMs, hexChars: 100, idleChars: 36);
 
-        var times = targets.Where(t => t.Name.StartsWith("refresh time", StringComparison.Ordinal)).ToList();
-        times.Select(t => t.Name).Should().Equal("refresh time 9600 8N1", "refresh time 9600 8E1");
-        times.Should().OnlyContain(t => t.Pass == pass && Math.Abs(t.Ratio - (100.0 / lowerHexChars)) < 1e-9);
-        times[0].Detail.Should().Contain("5.00x the binary lower bound");
+        var steady = targets.Single(t => t.Name.StartsWith("steady refresh", StringComparison.Ordinal));
+        steady.Name.Should().Be("steady refresh 9600 8N1 (PC/PPI cable, modelled)");
+        steady.Pass.Should().Be(pass);
+        steady.Ratio.Should().BeApproximately(steadyMs / 104.16667, 1e-4);
     }
 
-    [Fact]
-    public void Evaluate_DeadTimePerExchange_CountsAgainstThePlanOnly()
+    [Theory]
+    [InlineData(40, true)]
+    [InlineData(41, false)]
+    public void Evaluate_IdleStation_PassesUpToFortyCharacters(int idleChars, bool pass)
     {
-        // 100 characters at 9600 8N1 = 104.17 ms + 1 exchange × 15 ms = 119.17 ms; the bound has no exchange: 41.67 ms.
-        var targets = BenchTargets.Evaluate(Planned, new(TrafficModels.PerItem, 10, 500, 500), Seed, new(TrafficModels.LowerBoundHex, 0, 0, 40), Binary, ExchangeTiming.Default);
+        var targets = Evaluate(1000, steadyMs: 100, hexChars: 100, idleChars);
 
-        targets.Single(t => t.Name == "refresh time 9600 8N1").Ratio.Should().BeApproximately(119.1667 / 41.6667, 1e-3);
+        targets.Single(t => t.Name == "idle station").Pass.Should().Be(pass);
     }
 
-    private static ImmutableArray<TargetResult> Evaluate(int perItemChars, int lowerHexChars) =>
-        BenchTargets.Evaluate(
-            Planned,
-            new TrafficFigures(TrafficModels.PerItem, 10, perItemChars / 2, perItemChars - (perItemChars / 2)),
-            Seed,
-            new TrafficFigures(TrafficModels.LowerBoundHex, 0, 0, lowerHexChars),
-            Binary,
-            NoDeadTime);
+    private static ImmutableArray<TargetResult> Evaluate(int perItemChars, double steadyMs, int hexChars, int idleChars)
+    {
+        var model = new LinkTimeModel(Line, 5, 5, 5, null);
+        var time = new LinkTimeReport("PC/PPI cable", model, Cycle(100, steadyMs), Cycle(idleChars, 40), hexChars);
+        return BenchTargets.Evaluate(Planned, new TrafficFigures(TrafficModels.PerItem, 10, perItemChars / 2, perItemChars - (perItemChars / 2)), Seed, time);
+    }
+
+    private static CycleTime Cycle(int chars, double ms) =>
+        new("cycle", [new ExchangeTime("x", chars / 2, chars - (chars / 2), new HandlerCost(0, TimeSpan.Zero, "fixed"), [new TimePart("all", ms)])]);
 }

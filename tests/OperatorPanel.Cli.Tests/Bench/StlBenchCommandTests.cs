@@ -13,6 +13,7 @@ public sealed class StlBenchCommandTests
         run.ExitCode.Should().Be(0, run.Error);
         using var json = JsonDocument.Parse(run.Out);
         var rows = json.RootElement.EnumerateArray().ToList();
+        // v2 frames: IDENTIFY 12; WRITE payload AREA OFFSET(2) LENGTH + 117 bytes -> 12 + 2 x 121 = 254; one-item READ 22.
         rows.Select(r => r.GetProperty("requestChars").GetInt32()).Should().Equal(12, 254, 22);
         rows.Should().OnlyContain(r => r.GetProperty("answered").GetInt32() == 2 && r.GetProperty("replyChars").GetInt32() > 0
             && r.GetProperty("requestsPerRealSecond").GetDouble() > 0 && r.GetProperty("instructionsPerRequest").GetDouble() > 0);

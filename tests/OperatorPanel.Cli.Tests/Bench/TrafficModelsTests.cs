@@ -2,13 +2,15 @@ using System.Collections.Immutable;
 using OperatorPanel.Cli.Bench;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Cli.Tests.Bench;
 
-/// <summary>A tiny line counted by hand: IB0, VW100 and M2.3 on a CPU 224 at station 1.</summary>
+/// <summary>
+/// A tiny line counted by hand: IB0, VW100 and M2.3 on a CPU 224 at station 1. Protocol v2 sizes: a request with P
+/// payload bytes is '&lt;' + 2 x (3 + P) + 4 check + '&gt;' = 12 + 2P; a reply 6 + 2 x (6 + P) = 18 + 2P.
+/// </summary>
 public sealed class TrafficModelsTests
 {
     private static readonly BenchLine Tiny = new(
@@ -19,27 +21,37 @@ public sealed class TrafficModelsTests
     private static readonly string[] Overlapping = ["M2.0", "M2.7", "MB2", "VW100", "VD100"];
 
     [Fact]
-    public void FromPlan_TinyLine_OneReadListOfTwelveCharacters()
+    public void RefreshCycles_TinyLine_ListSetUpThenFullAndIdleReadChanges()
     {
         var plan = Tiny.Plan();
-        var figures = TrafficModels.FromPlan(plan);
+        var cycles = RefreshCycles.For(plan);
 
-        // Request: '<' STATION SEQ CMD LIST BCC '>' = 1 + 8 + 2 + 1 = 12; the reply is that of the READ (20).
-        figures.Should().Be(new TrafficFigures(TrafficModels.Planned, 1, 12, 20));
-        RequestCodec.Encode(new ReadListRequest(Tiny.Station, 1, 1)).Should().HaveCount(12);
-        ResponseCodec.Encode(new ReadListResponse(Tiny.Station, 1, [1, 2, 3, 4])).Should().HaveCount(20);
+        // One list of 3 items and 4 bytes. DEFINE LIST: payload LIST COUNT + 3 x 4 = 14 -> 40, reply 18.
+        // READ CHANGES: payload LIST FLAGS -> 16; FULL reply K + 4 bytes -> 28; idle reply K = 0 -> 20.
+        ReadListAssignment.For(plan).Should().HaveCount(1);
+        cycles.Setup.Select(e => (e.Name, e.RequestChars, e.ReplyChars)).Should().Equal(("DEFINE LIST 1", 40, 18), ("READ CHANGES 1 FULL", 16, 28));
+        cycles.Steady.Select(e => (e.Name, e.RequestChars, e.ReplyChars)).Should().Equal(("READ CHANGES 1 FULL", 16, 28));
+        cycles.Idle.Select(e => (e.Name, e.RequestChars, e.ReplyChars)).Should().Equal(("READ CHANGES 1", 16, 20));
     }
 
     [Fact]
-    public void DefineListsOnce_TinyLine_OneDefineOfThreeItems()
+    public void RefreshCycles_TinyLine_ReplySizesAreThoseCoreEncodes()
     {
-        var plan = Tiny.Plan();
-        var figures = TrafficModels.DefineListsOnce(plan);
+        var cycles = RefreshCycles.For(Tiny.Plan());
+        var full = new ReadChangesRequest(Tiny.Station, 1, 1, true);
+        var idle = full with { Full = false };
 
-        // Request: '<' STATION SEQ CMD LIST COUNT + 3 × 8 + BCC '>' = 1 + 10 + 24 + 2 + 1 = 38; reply 12 (STATUS 00 only).
-        figures.Should().Be(new TrafficFigures(TrafficModels.DefineLists, 1, 38, 12));
-        RequestCodec.Encode(new DefineListRequest(Tiny.Station, 1, 1, plan.Frames[0].Items)).Should().HaveCount(38);
-        ResponseCodec.Encode(new DefineListResponse(Tiny.Station, 1)).Should().HaveCount(12);
+        cycles.Steady[0].ReplyChars.Should().Be(ResponseCodec.Encode(ReadChangesResponse.Whole(Tiny.Station, 1, [1, 2, 3, 4]), full).Length);
+        cycles.Idle[0].ReplyChars.Should().Be(ResponseCodec.Encode(ReadChangesResponse.Pairs(Tiny.Station, 1, []), idle).Length);
+        cycles.Setup[0].ReplyChars.Should().Be(ResponseCodec.Encode(new DefineListResponse(Tiny.Station, 1), new DefineListRequest(Tiny.Station, 1, 1, Tiny.Plan().Frames[0].Items)).Length);
+    }
+
+    [Fact]
+    public void FromCycle_Idle_ThirtySixCharactersPerIdleList()
+    {
+        var figures = TrafficModels.FromCycle(TrafficModels.Idle, RefreshCycles.For(Tiny.Plan()).Idle);
+
+        figures.Should().Be(new TrafficFigures(TrafficModels.Idle, 1, 16, 20));
     }
 
     [Fact]
@@ -48,20 +60,18 @@ public sealed class TrafficModelsTests
         var plan = Tiny.Plan();
         var figures = TrafficModels.PlainReads(plan);
 
-        // Request: '<' STATION SEQ CMD COUNT + 3 × (AREA OFFSET LENGTH) + BCC '>' = 1 + 8 + 24 + 2 + 1 = 36.
-        // Reply: '<' STATION SEQ CMD STATUS + 4 data bytes + BCC '>' = 1 + 8 + 8 + 2 + 1 = 20.
-        figures.Should().Be(new TrafficFigures(TrafficModels.PlainRead, 1, 36, 20));
-        RequestCodec.Encode(new ReadRequest(Tiny.Station, 1, plan.Frames[0].Items)).Should().HaveCount(36);
-        ResponseCodec.Encode(new ReadResponse(Tiny.Station, 1, [1, 2, 3, 4])).Should().HaveCount(20);
+        // Request payload COUNT + 3 x (AREA OFFSET LENGTH) = 13 -> 38; reply 4 data bytes -> 26.
+        figures.Should().Be(new TrafficFigures(TrafficModels.PlainRead, 1, 38, 26));
+        RequestCodec.Encode(new ReadRequest(Tiny.Station, 1, plan.Frames[0].Items)).Should().HaveCount(38);
     }
 
     [Fact]
     public void OneItemPerRequest_TinyLine_ThreeReadsOfOneItem()
     {
-        var figures = TrafficModels.OneItemPerRequest(Tiny, PollCostModel.Default);
+        var figures = TrafficModels.OneItemPerRequest(Tiny);
 
-        // 3 requests of 12 + 8 characters; replies 12 + 2 (IB0), 12 + 4 (VW100), 12 + 2 (MB2 for M2.3).
-        figures.Should().Be(new TrafficFigures(TrafficModels.PerItem, 3, 60, 44));
+        // 3 requests of 12 + 2 x 5 = 22; replies 18 + 2 (IB0), 18 + 4 (VW100), 18 + 2 (MB2 for M2.3).
+        figures.Should().Be(new TrafficFigures(TrafficModels.PerItem, 3, 66, 62));
     }
 
     [Fact]
@@ -94,34 +104,24 @@ public sealed class TrafficModelsTests
     }
 
     [Theory]
-    [InlineData(9600, "8N1", 10, 73.333)]   // 56 characters × 1.0417 ms + 15 ms
-    [InlineData(9600, "8E1", 11, 79.167)]   // 56 × 1.1458 ms + 15 ms
-    [InlineData(38400, "8N1", 10, 29.583)]  // 56 × 0.2604 ms + 15 ms
-    public void RefreshMs_TinyPlan_CharactersTimesCharacterTimePlusDeadTime(int baud, string format, int bits, double expected)
+    [InlineData(9600, "8N1", 10, 66.667)]   // 64 characters x 1.0417 ms
+    [InlineData(9600, "8E1", 11, 73.333)]   // 64 x 1.1458 ms
+    [InlineData(38400, "8N1", 10, 16.667)]  // 64 x 0.2604 ms
+    public void LineMs_TinyPlan_CharactersTimesCharacterTimeOnly(int baud, string format, int bits, double expected)
     {
         var figures = TrafficModels.PlainReads(Tiny.Plan());
 
-        figures.RefreshMs(new LineSetting(baud, format, bits), ExchangeTiming.Default).Should().BeApproximately(expected, 0.001);
+        figures.LineMs(new LineSetting(baud, format, bits)).Should().BeApproximately(expected, 0.001);
     }
 
     [Fact]
-    public void RefreshMs_LowerBound_HasNoDeadTime()
-    {
-        TrafficModels.LowerBoundAsHex(Tiny).RefreshMs(new LineSetting(9600, "8N1", 10), ExchangeTiming.Default)
-            .Should().BeApproximately(8 * 1.0416667, 0.0001);
-    }
-
-    [Fact]
-    public void FromPlan_ReferenceLine_MatchesTheEncodedReadListAndReadFrames()
+    public void PlainReads_ReferenceLine_MatchesTheEncodedReadFrames()
     {
         var line = ReferenceLine.Create();
         var plan = line.Plan();
-        var figures = TrafficModels.FromPlan(plan);
-        var lists = ReadListAssignment.For(plan);
+        var figures = TrafficModels.PlainReads(plan);
 
-        var requests = Enumerable.Range(0, plan.FrameCount).Sum(i => RequestCodec.Encode(lists.TryGetValue(i, out var list)
-            ? new ReadListRequest(line.Station, 0, list)
-            : new ReadRequest(line.Station, 0, plan.Frames[i].Items)).Length);
+        var requests = plan.Frames.Sum(f => RequestCodec.Encode(new ReadRequest(line.Station, 0, f.Items)).Length);
         var replies = plan.Frames.Sum(f => ResponseCodec.Encode(new ReadResponse(line.Station, 0, ImmutableArray.Create(new byte[f.DataBytes]))).Length);
         figures.RequestChars.Should().Be(requests);
         figures.ReplyChars.Should().Be(replies);

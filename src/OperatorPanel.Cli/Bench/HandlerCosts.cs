@@ -1,0 +1,69 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Link;
+
+namespace OperatorPanel.Cli.Bench;
+
+/// <summary>
+/// The handler's cost for every exchange of <see cref="RefreshCycles"/>: measured by serving them in order to the
+/// generated handler (<see cref="HandlerProbe"/>), or, for an exchange the handler did not answer, Core's bound
+/// (<see cref="HandlerTurnaround"/> scans, each with the handler's largest slice), labelled as such.
+/// </summary>
+internal sealed record HandlerCosts(ImmutableArray<HandlerCost> Steady, ImmutableArray<HandlerCost> Idle, ImmutableArray<string> Problems)
+{
+    /// <summary>The most one handler slice adds to a scan (docs/protocol.md section 7: "up to 10 ms of the handler").</summary>
+    public const double SliceBoundMs = 10;
+
+    public static HandlerCosts Measure(RefreshCycles cycles, HandlerProbe? probe, string? probeError)
+    {
+        ArgumentNullException.ThrowIfNull(cycles);
+        var problems = ImmutableArray.CreateBuilder<string>();
+        if (probe is null)
+        {
+            problems.Add($"handler not run: {probeError}");
+        }
+
+        HandlerCost Serve(PlannedExchange exchange)
+        {
+            if (probe is null)
+            {
+                return Bound(exchange);
+            }
+
+            if (probe.TryServe(exchange.Request, out var cost, out var replyChars, out var error))
+            {
+                if (replyChars != exchange.ReplyChars)
+                {
+                    problems.Add($"{exchange.Name}: the handler answered {replyChars} characters, Core sizes the reply at {exchange.ReplyChars}");
+                }
+
+                // The link's reply timeout allows Core's bound of scans; a handler that takes more risks timeouts.
+                var bound = HandlerTurnaround.ScansFor(exchange.RequestChars, exchange.ReplyChars);
+                if (cost!.Scans > bound)
+                {
+                    problems.Add($"{exchange.Name}: the handler took {cost.Scans} scans, more than Core's HandlerTurnaround bound of {bound}");
+                }
+
+                return cost;
+            }
+
+            problems.Add($"{exchange.Name}: {error}; Core's bound used");
+            return Bound(exchange);
+        }
+
+        foreach (var exchange in cycles.Setup)
+        {
+            Serve(exchange);
+        }
+
+        var steady = cycles.Steady.Select(Serve).ToImmutableArray();
+        var idle = cycles.Idle.Select(Serve).ToImmutableArray();
+        return new(steady, idle, problems.ToImmutable());
+    }
+
+    public static HandlerCost Bound(PlannedExchange exchange)
+    {
+        ArgumentNullException.ThrowIfNull(exchange);
+        var scans = HandlerTurnaround.ScansFor(exchange.RequestChars, exchange.ReplyChars);
+        return new HandlerCost(scans, TimeSpan.FromMilliseconds(scans * SliceBoundMs), "bound: Core HandlerTurnaround scans x 10 ms slice (handler not run)");
+    }
+}

@@ -1,0 +1,62 @@
+using OperatorPanel.Cli.Bench;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Polling;
+
+namespace OperatorPanel.Cli.Tests.Bench;
+
+public sealed class HandlerCostsTests
+{
+    [Fact]
+    public void Bound_SixteenAndTwentyCharacters_CoreScansTimesTheLargestSlice()
+    {
+        // HandlerTurnaround: 4 + ceil(16 / 12) + ceil(20 / 12) = 8 scans, each with a 10 ms slice.
+        var cost = HandlerCosts.Bound(new PlannedExchange("x", new byte[16], 20));
+
+        cost.Scans.Should().Be(8);
+        cost.HandlerAlone.Should().Be(TimeSpan.FromMilliseconds(80));
+        cost.Source.Should().StartWith("bound");
+    }
+
+    [Fact]
+    public void Measure_NoProbe_EveryExchangeBoundAndTheReasonNamed()
+    {
+        var cycles = RefreshCycles.For(ReferenceLine.Create().Plan());
+
+        var costs = HandlerCosts.Measure(cycles, probe: null, probeError: "no handler");
+
+        costs.Steady.Should().HaveCount(cycles.Steady.Length).And.OnlyContain(c => c.Source.StartsWith("bound", StringComparison.Ordinal));
+        costs.Problems.Should().Equal("handler not run: no handler");
+    }
+
+    [Fact]
+    public void Measure_ReferenceLine_TheGeneratedHandlerAnswersEveryExchange()
+    {
+        var line = ReferenceLine.Create();
+        var cycles = RefreshCycles.For(line.Plan());
+        HandlerProbe.TryCreate(line.Cpu, line.Station, new LineSetting(9600, "8N1", 10).Settings, 5, out var probe, out var error).Should().BeTrue(error);
+
+        var costs = HandlerCosts.Measure(cycles, probe, error);
+
+        // Scans beyond Core's bound are a finding the bench prints (StlGen's HandlerCostTests own that bound).
+        costs.Problems.Where(p => !p.Contains("HandlerTurnaround", StringComparison.Ordinal)).Should().BeEmpty();
+        costs.Steady.Concat(costs.Idle).Should().OnlyContain(c => c.Source.StartsWith("measured", StringComparison.Ordinal) && c.Scans > 0);
+    }
+
+    [Fact]
+    public void Measure_OneListLine_TheHandlerServesReadChangesWithTheRepliesCoreSizes()
+    {
+        var line = new BenchLine(
+            new Station(1),
+            CpuProfiles.For(CpuModel.Cpu224),
+            [new("inputs", PlcAddress.Parse("IB0")), new("memory", PlcAddress.Parse("VW100")), new("alarms", PlcAddress.Parse("M2.3"))]);
+        var cycles = RefreshCycles.For(line.Plan());
+        HandlerProbe.TryCreate(line.Cpu, line.Station, new LineSetting(9600, "8N1", 10).Settings, 5, out var probe, out var error).Should().BeTrue(error);
+
+        var costs = HandlerCosts.Measure(cycles, probe, error);
+
+        cycles.Idle.Select(e => e.Name).Should().Equal("READ CHANGES 1");
+        costs.Problems.Where(p => !p.Contains("HandlerTurnaround", StringComparison.Ordinal)).Should().BeEmpty("the handler answers every exchange with the reply length Core computes");
+        costs.Idle.Single().Source.Should().StartWith("measured");
+    }
+}
