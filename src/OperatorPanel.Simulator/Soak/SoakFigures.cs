@@ -1,0 +1,76 @@
+using System.Collections.Immutable;
+using System.Globalization;
+
+namespace OperatorPanel.Simulator.Soak;
+
+/// <summary>
+/// What a soak run measured. <see cref="WrongValuesShownGood"/>, <see cref="FalseConfirmations"/> and
+/// <see cref="WritesOutOfOrder"/> must be 0; the rest describe the line and how the panel coped with it.
+/// </summary>
+public sealed record SoakFigures
+{
+    public required string Faults { get; init; }
+
+    public required int Seed { get; init; }
+
+    public required TimeSpan Elapsed { get; init; }
+
+    /// <summary>Requests the link sent, retries included.</summary>
+    public required long Exchanges { get; init; }
+
+    public required long Retries { get; init; }
+
+    public required long Timeouts { get; init; }
+
+    public required long CorruptReplies { get; init; }
+
+    public required long NegativeReplies { get; init; }
+
+    public required int ValuesShownGood { get; init; }
+
+    /// <summary>Good values the PLC did not hold at that address at any moment of the step that showed them.</summary>
+    public required int WrongValuesShownGood { get; init; }
+
+    public required int WritesSent { get; init; }
+
+    public required int WritesConfirmed { get; init; }
+
+    /// <summary>Confirmed writes the PLC did not execute exactly (that address, those bytes, nothing more).</summary>
+    public required int FalseConfirmations { get; init; }
+
+    /// <summary>Executed panel writes that came after a later one of the panel's writes had been executed.</summary>
+    public required int WritesOutOfOrder { get; init; }
+
+    /// <summary>Writes not confirmed, by what the panel reported.</summary>
+    public required ImmutableSortedDictionary<string, int> WritesNotConfirmed { get; init; }
+
+    /// <summary>Writes not reported confirmed that the PLC did execute exactly.</summary>
+    public required int NotConfirmedButExecuted { get; init; }
+
+    /// <summary>Memory changes no panel write explains: the PLC acted on a corrupted request.</summary>
+    public required int ExecutedNeverSent { get; init; }
+
+    public required long CharactersOnLine { get; init; }
+
+    public required long BitsFlipped { get; init; }
+
+    public required long CharactersDropped { get; init; }
+
+    public required long FramesDropped { get; init; }
+
+    public bool ZerosHold => WrongValuesShownGood == 0 && FalseConfirmations == 0 && WritesOutOfOrder == 0;
+
+    public IEnumerable<string> Lines()
+    {
+        var c = CultureInfo.InvariantCulture;
+        yield return string.Create(c, $"soak {Faults}, seed {Seed}, {Elapsed.TotalSeconds:F0} s");
+        yield return string.Create(c, $"  line: {CharactersOnLine} characters, {BitsFlipped} bits flipped, {CharactersDropped} characters dropped, {FramesDropped} frames dropped");
+        yield return string.Create(c, $"  exchanges {Exchanges}, retries {Retries}, timeouts {Timeouts}, corrupt replies {CorruptReplies}, error replies {NegativeReplies}");
+        yield return string.Create(c, $"  values shown as good {ValuesShownGood}, wrong values shown as good {WrongValuesShownGood} (must be 0)");
+        yield return string.Create(c, $"  writes {WritesSent}, confirmed {WritesConfirmed}, false confirmations {FalseConfirmations} (must be 0), executed out of order {WritesOutOfOrder} (must be 0)");
+        var notConfirmed = WritesNotConfirmed.Count == 0 ? "none" : string.Join(", ", WritesNotConfirmed.Select(p => $"{p.Key} {p.Value}"));
+        yield return string.Create(c, $"  writes not confirmed: {notConfirmed}; of them executed by the PLC {NotConfirmedButExecuted}");
+        yield return string.Create(c, $"  PLC memory changes no panel write explains (acted on a corrupted request): {ExecutedNeverSent}");
+        yield return ZerosHold ? "  result: the zeros hold" : "  result: FAILED, a must-be-0 figure is not 0";
+    }
+}

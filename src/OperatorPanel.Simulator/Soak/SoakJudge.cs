@@ -1,0 +1,89 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Writes;
+
+namespace OperatorPanel.Simulator.Soak;
+
+/// <summary>
+/// Holds the panel's claims (values shown as good, writes confirmed) against the PLC's executed writes as the
+/// <see cref="ExecutedWriteObserver"/> saw them. The soak writes double words into a region of V, each value once
+/// in the whole run, so a change of the region names the write it executed: its value is in exactly one write.
+/// </summary>
+public sealed class SoakJudge(SoakRegion region, ReadOnlyMemory<byte> initial)
+{
+    public SoakJudgement Judge(IReadOnlyList<SoakWrite> writes, IReadOnlyList<ShownValue> shown, IReadOnlyList<MemoryChange> changes)
+    {
+        ArgumentNullException.ThrowIfNull(writes);
+        ArgumentNullException.ThrowIfNull(shown);
+        ArgumentNullException.ThrowIfNull(changes);
+        var byValue = writes.ToDictionary(w => w.Value);
+        var timelines = region.Slots.ToDictionary(s => s, s => new List<(long At, uint Value)> { (long.MinValue, region.Read(initial.Span, s)) });
+        var bytes = initial.ToArray();
+        var executed = new HashSet<int>();
+        var (outOfOrder, neverSent, latest) = (0, 0, 0);
+        foreach (var change in changes)
+        {
+            var inside = region.Apply(change, bytes);
+            var touched = region.Slots.Where(s => s <= change.Last && s + 3 >= change.First).ToList();
+            foreach (var slot in touched)
+            {
+                timelines[slot].Add((change.Timestamp, region.Read(bytes, slot)));
+            }
+
+            if (inside && touched is [var only] && byValue.TryGetValue(region.Read(bytes, only), out var write) && write.Offset == only
+                && change.First >= only && change.Last <= only + 3)
+            {
+                executed.Add(write.Number);
+                outOfOrder += write.Number < latest ? 1 : 0;
+                latest = Math.Max(latest, write.Number);
+            }
+            else
+            {
+                neverSent++;
+            }
+        }
+
+        var confirmed = writes.Where(w => w.Outcome is WriteOutcome.Confirmed).ToList();
+        var notConfirmed = writes.Where(w => w.Outcome is not WriteOutcome.Confirmed).ToList();
+        return new SoakJudgement(
+            ValuesShownGood: shown.Count,
+            WrongValuesShownGood: shown.Count(v => !WasHeld(timelines[v.Offset], v)),
+            WritesSent: writes.Count,
+            WritesConfirmed: confirmed.Count,
+            FalseConfirmations: confirmed.Count(w => !executed.Contains(w.Number)),
+            WritesOutOfOrder: outOfOrder,
+            WritesNotConfirmed: notConfirmed.GroupBy(w => Describe(w.Outcome)).ToImmutableSortedDictionary(g => g.Key, g => g.Count()),
+            NotConfirmedButExecuted: notConfirmed.Count(w => executed.Contains(w.Number)),
+            ExecutedNeverSent: neverSent);
+    }
+
+    /// <summary>What the panel reported, in the words of the figures.</summary>
+    public static string Describe(WriteOutcome outcome) => outcome switch
+    {
+        WriteOutcome.Confirmed => "confirmed",
+        WriteOutcome.ReadBackMismatch => "read back differently",
+        WriteOutcome.Failed failed => failed.Kind switch
+        {
+            WriteFailureKind.InvalidRequest => "invalid request",
+            WriteFailureKind.RefusedByPlc => "refused by the PLC",
+            WriteFailureKind.LinkFailure => "link failure (unknown)",
+            WriteFailureKind.UnexpectedReply => "unexpected reply",
+            WriteFailureKind.EngineStopped => "engine stopped",
+        },
+        _ => throw new ArgumentOutOfRangeException(nameof(outcome), outcome, "a write outcome the soak does not know"),
+    };
+
+    /// <summary>True when the slot held the value for some moment between the shown value's bounds.</summary>
+    private static bool WasHeld(List<(long At, uint Value)> timeline, ShownValue shown)
+    {
+        for (var i = 0; i < timeline.Count; i++)
+        {
+            var ends = i + 1 < timeline.Count ? timeline[i + 1].At : long.MaxValue;
+            if (timeline[i].Value == shown.Value && timeline[i].At <= shown.Until && ends > shown.From)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+}

@@ -1,0 +1,15 @@
+using System.Collections.Immutable;
+
+namespace OperatorPanel.Simulator.Soak;
+
+/// <summary>The judge's part of <see cref="SoakFigures"/>: the panel's claims held against what the PLC executed.</summary>
+public sealed record SoakJudgement(
+    int ValuesShownGood,
+    int WrongValuesShownGood,
+    int WritesSent,
+    int WritesConfirmed,
+    int FalseConfirmations,
+    int WritesOutOfOrder,
+    ImmutableSortedDictionary<string, int> WritesNotConfirmed,
+    int NotConfirmedButExecuted,
+    int ExecutedNeverSent);
