@@ -1,0 +1,126 @@
+using System.CommandLine;
+using OperatorPanel.Cli.Bench;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Simulator.Hosting;
+using OperatorPanel.Simulator.Soak;
+using OperatorPanel.Simulator.Stl.Freeport;
+using OperatorPanel.StlGen;
+using OperatorPanel.StlGen.Options;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary>
+/// <c>opanel soak [--minutes N] [--profile flips|mixed|clean] [--seed N] [--baud B]</c>: the long soak of docs/soak.md.
+/// The panel stack works against the generated CPU 226 handler in the STL interpreter through a noisy-line proxy
+/// between two socat pty pairs, and the judge prints the figures per profile (both noisy profiles unless one is
+/// named). Exit 0 when the must-be-0 figures are 0, 2 when one is not, 1 for a bad option or a missing socat.
+/// </summary>
+internal static class SoakCommand
+{
+    private static readonly CpuProfile Cpu = CpuProfiles.For(CpuModel.Cpu226);
+
+    public static Command Create(Func<ParseResult, CliContext> context)
+    {
+        var minutes = new Option<double>("--minutes") { Description = "Minutes per profile (default 1)", DefaultValueFactory = _ => 1 };
+        var profile = new Option<string?>("--profile") { Description = "flips (1% bits), mixed (0.5% bits, 0.5% characters, 5% frames) or clean; default flips and mixed" };
+        var seed = new Option<int>("--seed") { Description = "Seed of the faults and of the panel's choices (default 11)", DefaultValueFactory = _ => 11 };
+        var baud = new Option<int>("--baud") { Description = "Baud rate of the line (default 19200)", DefaultValueFactory = _ => 19200 };
+        var command = new Command("soak", "Soak the link on a noisy simulated line and judge it against what the PLC executed") { minutes, profile, seed, baud };
+        command.SetAction(async (parse, cancellationToken) =>
+        {
+            var cli = context(parse);
+            var length = parse.GetValue(minutes);
+            if (!(length > 0 && length <= 24 * 60))
+            {
+                return cli.Fail(ExitCodes.BadInput, $"--minutes {length}: give more than 0 and at most 1440");
+            }
+
+            IReadOnlyList<LineFaults> profiles = [LineFaults.Flips, LineFaults.Mixed];
+            if (parse.GetValue(profile) is { } name)
+            {
+                if (!LineFaults.TryFind(name, out var one, out var error))
+                {
+                    return cli.Fail(ExitCodes.BadInput, $"--profile: {error}");
+                }
+
+                profiles = [one];
+            }
+
+            if (SocatPty.Find() is not { } socat)
+            {
+                return cli.Fail(ExitCodes.BadInput, "socat not found on PATH: the soak runs over socat pty pairs (Debian package socat)");
+            }
+
+            var allHold = true;
+            foreach (var faults in profiles)
+            {
+                var figures = await RunAsync(socat, faults, parse.GetValue(seed), parse.GetValue(baud), TimeSpan.FromMinutes(length), cli, cancellationToken);
+                if (figures is null)
+                {
+                    return ExitCodes.BadInput;
+                }
+
+                allHold &= figures.ZerosHold;
+                if (cli.Json)
+                {
+                    cli.WriteJsonLine(figures);
+                }
+                else
+                {
+                    foreach (var text in figures.Lines())
+                    {
+                        cli.Out.WriteLine(text);
+                    }
+                }
+            }
+
+            return allHold ? ExitCodes.Ok : ExitCodes.LinkFailure;
+        });
+        return command;
+    }
+
+    private static async Task<SoakFigures?> RunAsync(
+        string socat, LineFaults faults, int seed, int baud, TimeSpan duration, CliContext cli, CancellationToken cancellationToken)
+    {
+        var options = new HandlerOptions { Cpu = Cpu, Station = 2, BaudRate = baud };
+        var generated = HandlerGenerator.Generate(options);
+        var settings = new LineSettings(baud, Core.Transport.Parity.None, 8);
+        if (!generated.Ok)
+        {
+            cli.Fail(ExitCodes.BadInput, $"the handler for {baud} baud cannot be generated: {string.Join("; ", generated.Diagnostics)}");
+            return null;
+        }
+
+        if (!StlStation.TryCreate(generated.AwlText, Cpu, 0, settings, out var station, out var loadError))
+        {
+            cli.Fail(ExitCodes.BadInput, $"the handler does not load in the interpreter: {loadError}");
+            return null;
+        }
+
+        var line = new StlLine(settings);
+        line.Attach(station, runProcess: false);
+        using var panelPair = await SocatPty.StartAsync(socat, TimeProvider.System, cancellationToken);
+        using var plcPair = await SocatPty.StartAsync(socat, TimeProvider.System, cancellationToken);
+        return await SoakSession.RunAsync(
+            new SoakSetup
+            {
+                PanelPort = panelPair.PanelEnd,
+                ProxyPanelSide = panelPair.PlcEnd,
+                ProxyPlcSide = plcPair.PanelEnd,
+                PlcPort = plcPair.PlcEnd,
+                Baud = baud,
+                Faults = faults,
+                Seed = seed,
+                Duration = duration,
+                Station = new Station(2),
+                Cpu = Cpu,
+                Line = line,
+                Memory = station.Memory,
+                HandlerFirstByte = options.EffectiveBufferStart,
+            },
+            TimeProvider.System,
+            cli.Log,
+            cancellationToken);
+    }
+}
