@@ -57,7 +57,7 @@ public sealed record LinkOptions
     public TimeSpan ReplyTimeoutFor(PlcRequest request, int requestChars)
     {
         ArgumentNullException.ThrowIfNull(request);
-        var replyChars = 2 + (2 * (FreeportFrame.OverheadBytes + 1 + ResponseCodec.ExpectedDataBytes(request)));
+        var replyChars = ProtocolLimits.ReplyChars(ResponseCodec.ExpectedDataBytes(request));
         return (Serial.CharacterTime * (requestChars + replyChars))
             + ReplyDelay + ScanAllowance + (HandlerScanAllowance * HandlerTurnaround.ScansFor(requestChars, replyChars))
             + Medium.ExtraFor(Serial, requestChars, replyChars) + Margin;

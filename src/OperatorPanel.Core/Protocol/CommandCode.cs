@@ -13,4 +13,10 @@ public enum CommandCode : byte
 
     /// <summary>Read a stored list: a 12-character request instead of 12 + 8N.</summary>
     ReadList = 0x06,
+
+    /// <summary>Put the CPU into STOP (only in a handler generated with STOP enabled; otherwise error 05).</summary>
+    Stop = 0x07,
+
+    /// <summary>Read a stored list as the bytes changed since the handler's copy, or whole (FULL).</summary>
+    ReadChanges = 0x08,
 }

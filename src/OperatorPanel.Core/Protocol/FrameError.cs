@@ -14,7 +14,7 @@ public enum FrameError
     /// <summary>More than 255 characters (one RCV buffer) without an end character.</summary>
     TooLong,
 
-    /// <summary>Body under 8 characters: not even station, sequence, command and block check.</summary>
+    /// <summary>Under 12 characters: not even '&lt;', station, sequence, command, four check characters and '&gt;'.</summary>
     TooShort,
 
     /// <summary>Odd number of body characters: not whole hex pairs.</summary>
@@ -23,7 +23,10 @@ public enum FrameError
     /// <summary>A body character outside 0-9 and uppercase A-F.</summary>
     NotHex,
 
-    /// <summary>The block check in the last two characters differs from the XOR of the others.</summary>
+    /// <summary>One of the four characters before '&gt;' lies outside 16#60-16#6F: not a check character.</summary>
+    BadCheckCharacter,
+
+    /// <summary>The check in the four check characters differs from the CRC of the body characters.</summary>
     ChecksumMismatch,
 
     /// <summary>The command byte lacks bit 7: a request (or our own echo), not a reply.</summary>
@@ -43,4 +46,11 @@ public enum FrameError
 
     /// <summary>The reply's status byte is not one the protocol sends.</summary>
     UnknownStatus,
+
+    /// <summary>
+    /// STATION, SEQ and CMD match, but the reply's REQCHECK is not the check of the request sent: the PLC acted on a
+    /// corrupted copy of it. After a WRITE or WRITE BIT the PLC executed something else (resolve by reading back);
+    /// after any other command, retry once. Never a refusal, even when the reply carries an error status.
+    /// </summary>
+    RequestCheckMismatch,
 }

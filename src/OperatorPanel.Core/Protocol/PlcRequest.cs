@@ -89,3 +89,32 @@ public sealed record ReadListRequest(Station Station, byte Sequence, int List) :
 
     public override CommandCode Command => CommandCode.ReadList;
 }
+
+/// <summary>
+/// Put the CPU into STOP: the payload is the four characters "STOP" so that no corrupted frame of another command can
+/// stop a line. A handler generated without STOP answers error 05; after the reply the port speaks PPI.
+/// </summary>
+public sealed record StopRequest(Station Station, byte Sequence) : PlcRequest(Station, Sequence)
+{
+    public StopRequest(Station station)
+        : this(station, 0)
+    {
+    }
+
+    public override CommandCode Command => CommandCode.Stop;
+}
+
+/// <summary>
+/// Read list <see cref="List"/> as the bytes changed since the handler's copy, or whole when <see cref="Full"/>.
+/// PC rule (docs/protocol.md): after any READ CHANGES that did not bring a good reply, the next one of that list must
+/// be <see cref="Full"/>, because the copy moved on with the reply that was lost.
+/// </summary>
+public sealed record ReadChangesRequest(Station Station, byte Sequence, int List, bool Full) : PlcRequest(Station, Sequence)
+{
+    public ReadChangesRequest(Station station, int list, bool full)
+        : this(station, 0, list, full)
+    {
+    }
+
+    public override CommandCode Command => CommandCode.ReadChanges;
+}

@@ -7,6 +7,12 @@ namespace OperatorPanel.Core.Protocol;
 public abstract record PlcResponse(Station Station, byte Sequence)
 {
     public abstract CommandCode Command { get; }
+
+    /// <summary>
+    /// REQCHECK: the frame check of the request this reply answers, as the PLC computed and matched it. A decoded
+    /// reply always carries the check of the request it was decoded against.
+    /// </summary>
+    public ushort RequestCheck { get; init; }
 }
 
 /// <summary>What the handler says about itself and the CPU (docs/protocol.md, "IDENTIFY").</summary>
@@ -24,12 +30,23 @@ public sealed record IdentifyResponse(
     byte StatusFlags,
     ushort LastScanMs,
     ushort MinScanMs,
-    ushort MaxScanMs) : PlcResponse(Station, Sequence)
+    ushort MaxScanMs,
+    byte Port,
+    ushort VFirst,
+    ushort VBytes,
+    byte Features,
+    byte CopyBytes) : PlcResponse(Station, Sequence)
 {
     public override CommandCode Command => CommandCode.Identify;
 
     /// <summary>SM0.7: the mode switch is at RUN (off means TERM).</summary>
     public bool ModeSwitchRun => (StatusFlags & 0x01) != 0;
+
+    /// <summary>FEATURES bit 0: the handler answers STOP (07).</summary>
+    public bool StopEnabled => (Features & HandlerIdentity.StopFeature) != 0;
+
+    /// <summary>FEATURES bit 1: READ CHANGES can answer with pairs (the handler keeps copies).</summary>
+    public bool HasCopies => (Features & HandlerIdentity.CopiesFeature) != 0;
 }
 
 /// <summary>The data of every item of the READ request, concatenated in request order.</summary>
@@ -66,4 +83,61 @@ public sealed record DefineListResponse(Station Station, byte Sequence) : PlcRes
 public sealed record ReadListResponse(Station Station, byte Sequence, ImmutableArray<byte> Data) : PlcResponse(Station, Sequence)
 {
     public override CommandCode Command => CommandCode.ReadList;
+}
+
+/// <summary>The station accepted STOP; it goes to STOP once this reply is sent, and speaks PPI afterwards.</summary>
+public sealed record StopResponse(Station Station, byte Sequence) : PlcResponse(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.Stop;
+}
+
+/// <summary>
+/// A READ CHANGES reply: with <see cref="Full"/> the list's whole data in <see cref="Data"/> (K = 16#FF); otherwise the
+/// bytes that differ from the handler's copy in <see cref="Changes"/>, ascending by index (K pairs, 0-127). Either
+/// way the handler's copy now holds the values this reply reports.
+/// </summary>
+public sealed record ReadChangesResponse(Station Station, byte Sequence, bool Full, ImmutableArray<byte> Data, ImmutableArray<ChangedByte> Changes)
+    : PlcResponse(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.ReadChanges;
+
+    /// <summary>A FULL reply: the whole list's data.</summary>
+    public static ReadChangesResponse Whole(Station station, byte sequence, ImmutableArray<byte> data) => new(station, sequence, true, data, []);
+
+    /// <summary>A pairs reply: the changed bytes (none for an idle list).</summary>
+    public static ReadChangesResponse Pairs(Station station, byte sequence, ImmutableArray<ChangedByte> changes) => new(station, sequence, false, [], changes);
+
+    /// <summary>
+    /// The list's data now: <see cref="Data"/> for a FULL reply, else <paramref name="previous"/> (what the PC holds
+    /// from its last good reply of this list) with the changes applied. False when a change's index lies outside it.
+    /// </summary>
+    public bool TryApply(ReadOnlySpan<byte> previous, out ImmutableArray<byte> current)
+    {
+        if (Full)
+        {
+            current = Data;
+            return true;
+        }
+
+        var bytes = previous.ToArray();
+        current = default;
+        foreach (var change in Changes)
+        {
+            if (change.Index >= bytes.Length)
+            {
+                return false;
+            }
+
+            bytes[change.Index] = change.Value;
+        }
+
+        current = [.. bytes];
+        return true;
+    }
+
+    public bool Equals(ReadChangesResponse? other) =>
+        other is not null && Station == other.Station && Sequence == other.Sequence && RequestCheck == other.RequestCheck
+        && Full == other.Full && Data.AsSpan().SequenceEqual(other.Data.AsSpan()) && Changes.AsSpan().SequenceEqual(other.Changes.AsSpan());
+
+    public override int GetHashCode() => HashCode.Combine(Station, Sequence, Full, Data.Length, Changes.Length);
 }

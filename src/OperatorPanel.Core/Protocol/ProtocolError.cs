@@ -5,7 +5,7 @@ public enum ProtocolError : byte
 {
     None = 0x00,
 
-    /// <summary>Named for logs only: a frame that fails its block check is never answered.</summary>
+    /// <summary>Named for logs only: a frame that fails its frame check is never answered.</summary>
     BadChecksum = 0x01,
     AddressOutOfRange = 0x02,
     NotWritable = 0x03,
@@ -13,6 +13,6 @@ public enum ProtocolError : byte
     UnknownCommand = 0x05,
     BadParameter = 0x06,
 
-    /// <summary>READ LIST of a list that was never defined, or was cleared (invalidation, STOP, power-up).</summary>
+    /// <summary>READ LIST or READ CHANGES of a list that was never defined, or was cleared (invalidation, STOP, power-up).</summary>
     ListNotDefined = 0x07,
 }

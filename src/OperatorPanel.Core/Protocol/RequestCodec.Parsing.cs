@@ -37,6 +37,8 @@ public static partial class RequestCodec
             CommandCode.WriteBit => ParseWriteBit(station, frame, p, target, out request),
             CommandCode.DefineList => ParseDefineList(station, frame, p, target, out request),
             CommandCode.ReadList => ParseReadList(station, frame, p, out request),
+            CommandCode.Stop => ParseStop(station, frame, p, out request),
+            CommandCode.ReadChanges => ParseReadChanges(station, frame, p, out request),
         };
         if (error != ProtocolError.None)
         {
@@ -50,13 +52,13 @@ public static partial class RequestCodec
     private static ProtocolError ParseIdentify(Station station, FreeportFrame frame, out PlcRequest request)
     {
         request = new IdentifyRequest(station, frame.Sequence);
-        return frame.BodyBytes == 4 ? ProtocolError.None : ProtocolError.BadLength;
+        return frame.BodyBytes == 3 ? ProtocolError.None : ProtocolError.BadLength;
     }
 
     private static ProtocolError ParseRead(Station station, FreeportFrame frame, ReadOnlySpan<byte> p, IRequestTarget? target, out PlcRequest request)
     {
         request = null!;
-        if (frame.BodyBytes < 5 || p[0] is < 1 or > ProtocolLimits.MaxReadItems || frame.BodyBytes != 5 + (4 * p[0]))
+        if (frame.BodyBytes < 4 || p[0] is < 1 or > ProtocolLimits.MaxReadItems || frame.BodyBytes != 4 + (4 * p[0]))
         {
             return ProtocolError.BadLength;
         }
@@ -72,7 +74,7 @@ public static partial class RequestCodec
 
     /// <summary>
     /// COUNT items in order: LENGTH 0 -> 04, unknown area or past its end -> 02 (first failing item decides); then the
-    /// last check of step 6, 2D + 4N &lt;= 243 (the reply must end before the descriptors at the buffer's end) -> 04.
+    /// last check of step 6, 2D + 4N &lt;= 237 (the reply must end before the descriptors at the buffer's end) -> 04.
     /// </summary>
     private static ProtocolError ParseItems(ReadOnlySpan<byte> p, int count, IRequestTarget? target, out ImmutableArray<ReadItem> items)
     {
@@ -102,7 +104,7 @@ public static partial class RequestCodec
     private static ProtocolError ParseWrite(Station station, FreeportFrame frame, ReadOnlySpan<byte> p, IRequestTarget? target, out PlcRequest request)
     {
         request = null!;
-        if (frame.BodyBytes < 8 || p[3] is < 1 or > ProtocolLimits.MaxWriteData || frame.BodyBytes != 8 + p[3])
+        if (frame.BodyBytes < 7 || p[3] is < 1 or > ProtocolLimits.MaxWriteData || frame.BodyBytes != 7 + p[3])
         {
             return ProtocolError.BadLength;
         }
@@ -117,7 +119,7 @@ public static partial class RequestCodec
     private static ProtocolError ParseWriteBit(Station station, FreeportFrame frame, ReadOnlySpan<byte> p, IRequestTarget? target, out PlcRequest request)
     {
         request = null!;
-        if (frame.BodyBytes != 9)
+        if (frame.BodyBytes != 8)
         {
             return ProtocolError.BadLength;
         }

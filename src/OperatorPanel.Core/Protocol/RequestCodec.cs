@@ -5,12 +5,18 @@ namespace OperatorPanel.Core.Protocol;
 /// <summary>
 /// Requests on the wire (docs/protocol.md, "Commands"): the panel encodes them; a station parses them with
 /// <see cref="TryParse"/>. Encoding a request the protocol forbids (21 items, more READ data than
-/// <see cref="ProtocolLimits.MaxReadDataFor"/> allows for the item count, 119 write bytes, bit 8) is a programming
+/// <see cref="ProtocolLimits.MaxReadDataFor"/> allows for the item count, 119 write bytes, bit 8, list 5) is a programming
 /// error and throws.
 /// </summary>
 public static partial class RequestCodec
 {
     public static byte[] Encode(PlcRequest request) => FrameCodec.Encode(ToFrame(request));
+
+    /// <summary>The frame check of the request as encoded: the REQCHECK every reply to it must carry.</summary>
+    public static ushort Check(PlcRequest request) => FrameCodec.CheckOf(ToFrame(request));
+
+    /// <summary>STOP's payload, the characters "STOP": no other command's corrupted frame can carry them by chance.</summary>
+    public static ReadOnlySpan<byte> StopPayload => "STOP"u8;
 
     public static FreeportFrame ToFrame(PlcRequest request)
     {
@@ -23,6 +29,8 @@ public static partial class RequestCodec
             WriteBitRequest bit => BitPayload(bit),
             DefineListRequest define => [ListId(define.List), .. ReadPayload(new ReadRequest(define.Station, define.Sequence, define.Items))],
             ReadListRequest list => [ListId(list.List)],
+            StopRequest => [.. StopPayload],
+            ReadChangesRequest changes => [ListId(changes.List), changes.Full ? ReadChangesFlags.Full : (byte)0],
             _ => throw new ArgumentException($"unknown request type {request.GetType().Name}", nameof(request)),
         };
         return new FreeportFrame((byte)request.Station.Address, request.Sequence, (byte)request.Command, payload);

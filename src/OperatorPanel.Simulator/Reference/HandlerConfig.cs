@@ -6,23 +6,28 @@ namespace OperatorPanel.Simulator.Reference;
 
 /// <summary>
 /// What the handler is generated with: station, port, write mask (bit n = area code n writable; bit 1, I, never),
-/// reply delay (1-255 ms, SMB34), the CPU and where its own V bytes start (by default where the generator puts them:
-/// the end of V). Invalid settings are programming errors and throw.
+/// reply delay (1-255 ms, SMB34), the CPU, where its own V bytes start (by default where the generator puts them:
+/// the end of V), whether STOP (07) is in it and how many V bytes READ CHANGES may use for copies (COPY_BYTES).
+/// Invalid settings are programming errors and throw.
 /// </summary>
 public sealed record HandlerConfig
 {
     /// <summary>Q, M, V and SM writable (bits 2-5).</summary>
     public const byte DefaultWriteMask = 0x3C;
 
-    /// <summary>
-    /// The handler's own V bytes: the 256-byte buffer and 36 work bytes (docs/protocol.md "Work bytes"; the same
-    /// figure as StlGen's HandlerLayout, which a StlGen test compares).
-    /// </summary>
-    public const int HandlerVBytes = 256 + 36;
-
-    public HandlerConfig(Station station, CpuProfile cpu, int port = 0, byte writeMask = DefaultWriteMask, byte replyDelayMs = 5, int? bufferStart = null)
+    public HandlerConfig(
+        Station station,
+        CpuProfile cpu,
+        int port = 0,
+        byte writeMask = DefaultWriteMask,
+        byte replyDelayMs = 5,
+        int? bufferStart = null,
+        bool allowStop = false,
+        int copyBytes = HandlerMemory.DefaultCopyBytes)
     {
         ArgumentNullException.ThrowIfNull(cpu);
+        ArgumentOutOfRangeException.ThrowIfNegative(copyBytes);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(copyBytes, HandlerMemory.MaxCopyBytes);
         ArgumentOutOfRangeException.ThrowIfNegative(port);
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(port, cpu.CommunicationPorts);
         ArgumentOutOfRangeException.ThrowIfZero(replyDelayMs);
@@ -31,15 +36,27 @@ public sealed record HandlerConfig
             throw new ArgumentOutOfRangeException(nameof(writeMask), writeMask, "only bits 2-5 (Q, M, V, SM) may be set; I is never writable");
         }
 
-        (Station, Cpu, Port, WriteMask, ReplyDelayMs) = (station, cpu, port, writeMask, replyDelayMs);
+        (Station, Cpu, Port, WriteMask, ReplyDelayMs, AllowStop, CopyBytes) = (station, cpu, port, writeMask, replyDelayMs, allowStop, copyBytes);
         var vBytes = cpu.TryGetArea(MemoryArea.V, out var v) ? v.ByteCount : 0;
         BufferStart = bufferStart ?? ((vBytes - HandlerVBytes) & ~1);
         ArgumentOutOfRangeException.ThrowIfNegative(BufferStart, nameof(bufferStart));
         ArgumentOutOfRangeException.ThrowIfGreaterThan(BufferStart + HandlerVBytes, vBytes, nameof(bufferStart));
     }
 
-    /// <summary>V byte offset of the handler's buffer; its own bytes are BufferStart .. BufferStart + 291.</summary>
+    /// <summary>V byte offset of the handler's buffer: V_FIRST in IDENTIFY.</summary>
     public int BufferStart { get; }
+
+    /// <summary>
+    /// The handler's own V bytes, V_BYTES in IDENTIFY: the 256-byte buffer, the work bytes and the copies
+    /// (<see cref="HandlerMemory"/>, the figures StlGen's HandlerLayout uses too).
+    /// </summary>
+    public int HandlerVBytes => HandlerMemory.VBytes(CopyBytes);
+
+    /// <summary>STOP (07) is in the handler (HandlerOptions.AllowStop); without it 07 is an unknown command (05).</summary>
+    public bool AllowStop { get; }
+
+    /// <summary>COPY_BYTES: V bytes for the READ CHANGES copies of the lists, 0-255; 0 = every READ CHANGES answers FULL.</summary>
+    public int CopyBytes { get; }
 
     public Station Station { get; }
 

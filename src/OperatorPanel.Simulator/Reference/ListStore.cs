@@ -7,26 +7,36 @@ namespace OperatorPanel.Simulator.Reference;
 /// The READ lists in the tail of the handler's one 256-byte buffer, kept as the STL handler keeps them
 /// (docs/protocol.md, "Lists"): binary descriptors (AREA, OFFSET high, OFFSET low, LENGTH) packed downward from byte
 /// 255 in definition order, and in the work bytes a start and count per list id plus the tail floor, the lowest start
-/// (256 when no list is stored). Whatever reaches the floor has overwritten descriptors, so every list is cleared.
+/// (256 when no list is stored). Whatever reaches the floor has overwritten descriptors, so every list is cleared,
+/// and with the lists their READ CHANGES copies.
 /// </summary>
 public sealed class ListStore
 {
-    private const int BufferBytes = 256;
+    private const int BufferBytes = HandlerMemory.BufferBytes;
     private readonly byte[] _buffer = new byte[BufferBytes];
     private readonly int[] _start = new int[ProtocolLimits.MaxLists + 1];
     private readonly int[] _count = new int[ProtocolLimits.MaxLists + 1];
+
+    public ListStore(int copyBytes = HandlerMemory.DefaultCopyBytes)
+    {
+        Copies = new ListCopies(copyBytes);
+    }
+
+    /// <summary>The READ CHANGES copies of the stored lists.</summary>
+    public ListCopies Copies { get; }
 
     /// <summary>The lowest buffer byte holding a descriptor; 256 when no list is stored.</summary>
     public int Floor { get; private set; } = BufferBytes;
 
     public bool IsDefined(int list) => list is >= 1 and <= ProtocolLimits.MaxLists && _count[list] > 0;
 
-    /// <summary>Clears every list (invalidation, STOP, power-up, redefinition).</summary>
+    /// <summary>Clears every list and drops every copy (invalidation, STOP, power-up, redefinition).</summary>
     public void Clear()
     {
         Array.Clear(_start);
         Array.Clear(_count);
         Floor = BufferBytes;
+        Copies.Clear();
     }
 
     /// <summary>
@@ -57,8 +67,9 @@ public sealed class ListStore
     }
 
     /// <summary>
-    /// Stores a checked DEFINE LIST (after <see cref="PrepareDefine"/>) under the capacity rule: every list's reply,
-    /// the new one included (12 + 2D characters), must end before the new floor F - 4N, else 04 and nothing is stored.
+    /// Stores a checked DEFINE LIST (after <see cref="PrepareDefine"/>) under the capacity rule: every list's longest
+    /// reply, the new one included (READ CHANGES FULL, 20 + 2D characters), must end before the new floor F - 4N, else
+    /// 04 and nothing is stored. A stored list gets its copy if its D bytes fit in the copy bytes left.
     /// </summary>
     public ProtocolError Define(DefineListRequest define)
     {
@@ -66,7 +77,7 @@ public sealed class ListStore
         var n = define.Items.Length;
         var floor = Floor - (4 * n);
         var replies = Enumerable.Range(1, ProtocolLimits.MaxLists).Where(IsDefined).Select(DataBytes).Append(define.TotalLength);
-        if (replies.Any(d => 12 + (2 * d) > floor - 1))
+        if (replies.Any(d => ProtocolLimits.ListReplyChars(d) > floor - 1))
         {
             return ProtocolError.BadLength;
         }
@@ -80,6 +91,7 @@ public sealed class ListStore
         }
 
         (_start[define.List], _count[define.List], Floor) = (floor, n, floor);
+        Copies.Allocate(define.List, define.TotalLength);
         return ProtocolError.None;
     }
 
@@ -88,5 +100,6 @@ public sealed class ListStore
         [.. Enumerable.Range(0, _count[list]).Select(i => _start[list] + (4 * i))
             .Select(at => new ReadItem((ProtocolArea)_buffer[at], (_buffer[at + 1] << 8) | _buffer[at + 2], _buffer[at + 3]))];
 
-    private int DataBytes(int list) => Items(list).Sum(i => i.Length);
+    /// <summary>D: the data bytes of a defined list.</summary>
+    public int DataBytes(int list) => Items(list).Sum(i => i.Length);
 }

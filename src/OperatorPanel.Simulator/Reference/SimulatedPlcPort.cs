@@ -4,8 +4,9 @@ namespace OperatorPanel.Simulator.Reference;
 
 /// <summary>
 /// The PLC's port as RCV sees it (SMB87 en+sc+ec, SMB88 '&lt;', SMB89 '&gt;', SMB94 255): idle until '&lt;';
-/// then every character is stored, a second '&lt;' included, until '&gt;' ends the message; 255 characters without
-/// '&gt;' end the receive by count and the message is dropped. Transport-agnostic: bytes in, reply frames out.
+/// then every character is stored, a second '&lt;' included (the handler, not RCV, restarts at the last '&lt;'),
+/// until '&gt;' ends the message; 255 characters without '&gt;' end the receive by count and the message is dropped
+/// (its characters still reached the buffer). Transport-agnostic: bytes in, reply frames out.
 /// </summary>
 public sealed class SimulatedPlcPort
 {
@@ -52,6 +53,7 @@ public sealed class SimulatedPlcPort
             else if (_buffer.Count == ProtocolLimits.MaxFrameChars)
             {
                 DroppedReceives++;
+                Plc.ReceiveDropped(_buffer.Count);
                 _buffer.Clear();
             }
         }

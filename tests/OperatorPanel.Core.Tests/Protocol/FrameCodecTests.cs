@@ -7,12 +7,11 @@ namespace OperatorPanel.Core.Tests.Protocol;
 public sealed class FrameCodecTests
 {
     [Theory]
-    //           ST SQ CM payload                      frame as sent
-    [InlineData("01 07 01", "", "<01070107>")] //                              IDENTIFY; BCC = '0'^'1'^'0'^'7'^'0'^'1' = 16#07
-    [InlineData("01 08 02", "02 04006404 01000002", "<01080202040064040100000208>")] // READ VB100 x4 and IB0 x2
-    [InlineData("01 08 82", "00 00000457A503", "<0108820000000457A50372>")] //  its reply: STATUS 00, 6 data bytes
-    [InlineData("02 09 03", "04006E012A", "<02090304006E012A0D>")] //          WRITE VB110 := 16#2A at station 2
-    [InlineData("01 0A 84", "00 21", "<010A8400217F>")] //                     WRITE BIT reply: byte read back 16#21
+    //           ST SQ CM payload                          frame as sent: body, then CRC-16/MCRF4XX low nibble first as 16#60 + nibble
+    [InlineData("01 07 01", "", "<010701dl`l>")] //                                  IDENTIFY; CRC 16#C0C4: 4 'd', C 'l', 0 '`', C 'l'
+    [InlineData("01 08 02", "02 04006404 01000002", "<010802020400640401000002mmdj>")] // READ VD100 and IB0 x2; CRC 16#A4DD
+    [InlineData("01 08 82", "00 A4DD 00000457A503", "<01088200A4DD00000457A503jnic>")] // its reply: STATUS 00, REQCHECK A4DD, 6 data bytes
+    [InlineData("02 09 03", "04006E012A", "<02090304006E012Aaenb>")] //              WRITE VB110 := 16#2A at station 2; CRC 16#2E51
     public void Encode_KnownFrame_GivesTheAnnotatedCharacters(string head, string payload, string expected)
     {
         var h = Convert.FromHexString(head.Replace(" ", string.Empty, StringComparison.Ordinal));
@@ -26,18 +25,21 @@ public sealed class FrameCodecTests
 
     [Theory]
     [InlineData("", FrameError.BadStart)]
-    [InlineData("01070107>", FrameError.BadStart)]
-    [InlineData("<01070107", FrameError.BadEnd)]
+    [InlineData("010701dl`l>", FrameError.BadStart)]
+    [InlineData("<010701dl`l", FrameError.BadEnd)]
     [InlineData("<", FrameError.BadEnd)]
-    [InlineData("<010701>", FrameError.TooShort)] //          6 body characters, 8 needed
+    [InlineData("<0107dl`l>", FrameError.TooShort)] //          4 body characters, 6 needed
     [InlineData("<><", FrameError.BadEnd)]
-    [InlineData("<0107010>", FrameError.TooShort)] //         7 body characters: shortness is checked before oddness
-    [InlineData("<010701070>", FrameError.OddLength)] //      9 body characters
-    [InlineData("<01070a07>", FrameError.NotHex)] //          lowercase is not what ATH accepts
-    [InlineData("<0107G107>", FrameError.NotHex)]
-    [InlineData("<01<70107>", FrameError.NotHex)]
-    [InlineData("<01070108>", FrameError.ChecksumMismatch)] // 16#07 expected
-    [InlineData("<01070207>", FrameError.ChecksumMismatch)] // one body bit flipped
+    [InlineData("<01070dl`l>", FrameError.TooShort)] //         5 body characters: shortness is checked before oddness
+    [InlineData("<0107010dl`l>", FrameError.OddLength)] //      7 body characters (a lost body character)
+    [InlineData("<01070adl`l>", FrameError.NotHex)] //          lowercase is not what ATH accepts
+    [InlineData("<0107G1dl`l>", FrameError.NotHex)]
+    [InlineData("<01<701dl`l>", FrameError.NotHex)]
+    [InlineData("<010701dl`l`l>", FrameError.NotHex)] //       check characters where body digits belong: the body ends 4 before the end
+    [InlineData("<010701DL`L>", FrameError.BadCheckCharacter)] // hex digits where the check belongs (a v1 BCC looks like this)
+    [InlineData("<0107010107>", FrameError.BadCheckCharacter)] // the v1 IDENTIFY probe
+    [InlineData("<010701dl`m>", FrameError.ChecksumMismatch)] // one check bit flipped
+    [InlineData("<010700dl`l>", FrameError.ChecksumMismatch)] // one body bit flipped
     public void TryDecode_MalformedFrame_ReportsTheError(string text, FrameError expected)
     {
         FrameCodec.TryDecode(Encoding.ASCII.GetBytes(text), out _, out var error).Should().BeFalse();
@@ -74,10 +76,9 @@ public sealed class FrameCodecTests
     }
 
     [Fact]
-    public void BlockCheck_Characters_IsTheirXor()
+    public void FrameCheck_CatalogueInput_GivesTheCatalogueCheckValue()
     {
-        BlockCheck.Compute("010701"u8).Should().Be(0x07);
-        BlockCheck.Compute(ReadOnlySpan<byte>.Empty).Should().Be(0x00);
-        ImmutableArray.Create<byte>(0x30, 0x41).Aggregate(0, (a, b) => a ^ b).Should().Be(BlockCheck.Compute("0A"u8));
+        FrameCheck.Compute("123456789"u8).Should().Be(0x6F91);
+        FrameCheck.Compute(ReadOnlySpan<byte>.Empty).Should().Be(FrameCheck.Initial);
     }
 }

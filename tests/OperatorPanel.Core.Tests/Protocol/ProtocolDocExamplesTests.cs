@@ -24,7 +24,7 @@ public sealed partial class ProtocolDocExamplesTests
     {
         ["identify"] = (
             RequestCodec.Encode(new IdentifyRequest(One, 0x07)),
-            ResponseCodec.Encode(new IdentifyResponse(One, 0x07, 1, 1, 3, 1, 0x3C, 119, 5, 0x20, 1, 3, 2, 9))),
+            ResponseCodec.Encode(new IdentifyResponse(One, 0x07, 2, 1, 3, 1, 0x3C, 116, 5, 0x20, 1, 3, 2, 9, 0, 7764, 428, 2, 120))),
         ["read-multi"] = (
             RequestCodec.Encode(new ReadRequest(One, 0x08, [new(ProtocolArea.V, 100, 4), new(ProtocolArea.I, 0, 2), new(ProtocolArea.M, 2, 1)])),
             ResponseCodec.Encode(new ReadResponse(One, 0x08, [0x00, 0x00, 0x04, 0x57, 0xA5, 0x03, 0x05]))),

@@ -14,8 +14,10 @@ internal static class RandomMessages
     {
         var station = new Station(rng.Next(Station.Min, Station.Max + 1));
         var sequence = (byte)rng.Next(256);
-        return rng.Next(6) switch
+        return rng.Next(8) switch
         {
+            6 => new StopRequest(station, sequence),
+            7 => new ReadChangesRequest(station, sequence, rng.Next(1, ProtocolLimits.MaxLists + 1), rng.Next(2) == 1),
             4 => new DefineListRequest(station, sequence, rng.Next(1, ProtocolLimits.MaxLists + 1), Items(rng)),
             5 => new ReadListRequest(station, sequence, rng.Next(1, ProtocolLimits.MaxLists + 1)),
             0 => new IdentifyRequest(station, sequence),
@@ -25,8 +27,12 @@ internal static class RandomMessages
         };
     }
 
-    /// <summary>A reply to <paramref name="request"/>: mostly OK with random data, sometimes an error code 02-07.</summary>
-    public static PlcResponse ResponseTo(Random rng, PlcRequest request)
+    /// <summary>
+    /// A reply to <paramref name="request"/> carrying its REQCHECK: mostly OK with random data, sometimes an error code 02-07.
+    /// </summary>
+    public static PlcResponse ResponseTo(Random rng, PlcRequest request) => Reply(rng, request) with { RequestCheck = RequestCodec.Check(request) };
+
+    private static PlcResponse Reply(Random rng, PlcRequest request)
     {
         var (station, sequence) = (request.Station, request.Sequence);
         if (rng.Next(5) == 0)
@@ -37,12 +43,16 @@ internal static class RandomMessages
         return request switch
         {
             IdentifyRequest => new IdentifyResponse(
-                station, sequence, 1, 1, (byte)rng.Next(1, 6), (byte)rng.Next(2), (byte)rng.Next(256), HandlerIdentity.MaxReadData, (byte)rng.Next(1, 256),
-                (byte)rng.Next(256), (byte)rng.Next(2), (ushort)rng.Next(65536), (ushort)rng.Next(65536), (ushort)rng.Next(65536)),
+                station, sequence, HandlerIdentity.ProtocolVersion, 1, (byte)rng.Next(1, 6), (byte)rng.Next(2), (byte)rng.Next(256), HandlerIdentity.MaxReadData, (byte)rng.Next(1, 256),
+                (byte)rng.Next(256), (byte)rng.Next(2), (ushort)rng.Next(65536), (ushort)rng.Next(65536), (ushort)rng.Next(65536),
+                (byte)rng.Next(2), (ushort)rng.Next(65536), (ushort)rng.Next(65536), (byte)rng.Next(4), (byte)rng.Next(256)),
             ReadRequest read => new ReadResponse(station, sequence, Bytes(rng, read.TotalLength)),
             WriteBlockRequest write => new WriteBlockResponse(station, sequence, Bytes(rng, write.Data.Length)),
             DefineListRequest => new DefineListResponse(station, sequence),
             ReadListRequest => new ReadListResponse(station, sequence, Bytes(rng, rng.Next(1, ProtocolLimits.MaxReadData + 1))),
+            StopRequest => new StopResponse(station, sequence),
+            ReadChangesRequest when rng.Next(2) == 0 => ReadChangesResponse.Whole(station, sequence, Bytes(rng, rng.Next(1, ProtocolLimits.MaxReadData + 1))),
+            ReadChangesRequest => ReadChangesResponse.Pairs(station, sequence, Changes(rng)),
             _ => new WriteBitResponse(station, sequence, (byte)rng.Next(256)),
         };
     }
@@ -53,6 +63,10 @@ internal static class RandomMessages
         rng.NextBytes(bytes);
         return [.. bytes];
     }
+
+    /// <summary>0-57 pairs (fewer than half of the largest list's 116 bytes), ascending distinct indexes.</summary>
+    private static ImmutableArray<ChangedByte> Changes(Random rng) =>
+        [.. Enumerable.Range(0, ProtocolLimits.MaxReadData).Where(_ => rng.Next(4) == 0).Take(57).Select(i => new ChangedByte((byte)i, (byte)rng.Next(256)))];
 
     private static ProtocolArea Area(Random rng) => Areas[rng.Next(Areas.Length)];
 

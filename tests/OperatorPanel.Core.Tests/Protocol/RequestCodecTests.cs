@@ -13,27 +13,27 @@ public sealed class RequestCodecTests
     [Fact]
     public void Encode_ReadTwoItems_GivesTheAnnotatedFrame()
     {
-        // 01 station, 08 seq, 02 READ, 02 items: V(04) 0064 len 04, I(01) 0000 len 02; BCC 08
+        // 01 station, 08 seq, 02 READ, 02 items: V(04) 0064 len 04, I(01) 0000 len 02; CRC 16#A4DD as D, D, 4, A
         var request = new ReadRequest(One, 0x08, [new(ProtocolArea.V, 100, 4), new(ProtocolArea.I, 0, 2)]);
 
-        Encoding.ASCII.GetString(RequestCodec.Encode(request)).Should().Be("<01080202040064040100000208>");
+        Encoding.ASCII.GetString(RequestCodec.Encode(request)).Should().Be("<010802020400640401000002mmdj>");
     }
 
     [Fact]
     public void Encode_WriteBitSet_GivesTheAnnotatedFrame()
     {
-        // 01 station, 0A seq, 04 WRITE BIT, Q(02) offset 0000, bit 05, value 01; BCC 72
+        // 01 station, 0A seq, 04 WRITE BIT, Q(02) offset 0000, bit 05, value 01; then the check characters
         var request = new WriteBitRequest(One, 0x0A, ProtocolArea.Q, 0, 5, true);
 
-        Encoding.ASCII.GetString(RequestCodec.Encode(request)).Should().Be("<010A04020000050172>");
+        Encoding.ASCII.GetString(RequestCodec.Encode(request)).Should().Be("<010A040200000501dike>");
     }
 
     [Theory]
     [InlineData(21, 21)] // one item more than 20
     [InlineData(0, 0)]
-    [InlineData(1, 120)] // 2 x 120 + 4 = 244 > 243
-    [InlineData(8, 106)] // 212 + 32 = 244
-    [InlineData(20, 82)] // 164 + 80 = 244
+    [InlineData(1, 117)] // 2 x 117 + 4 = 238 > 237
+    [InlineData(8, 103)] // 206 + 32 = 238
+    [InlineData(20, 79)] // 158 + 80 = 238
     public void Encode_ReadOutsideLimits_Throws(int items, int totalLength)
     {
         var request = new ReadRequest(One, 0, ReadItems(items, totalLength));
@@ -44,9 +44,9 @@ public sealed class RequestCodecTests
     }
 
     [Theory]
-    [InlineData(1, 119)]
-    [InlineData(8, 105)]
-    [InlineData(20, 81)] // 2 x 81 + 4 x 20 = 242 <= 243
+    [InlineData(1, 116)]
+    [InlineData(8, 102)]
+    [InlineData(20, 78)] // 2 x 78 + 4 x 20 = 236 <= 237
     public void Encode_ReadAtTheDataLimitForItsItemCount_ParsesBackUnchanged(int items, int totalLength)
     {
         var request = new ReadRequest(One, 0x21, ReadItems(items, totalLength));
@@ -59,12 +59,12 @@ public sealed class RequestCodecTests
     }
 
     [Theory]
-    [InlineData(1, 119, ProtocolError.None)]
-    [InlineData(1, 120, ProtocolError.BadLength)]
-    [InlineData(2, 117, ProtocolError.None)]
-    [InlineData(2, 118, ProtocolError.BadLength)]
-    [InlineData(20, 81, ProtocolError.None)]
-    [InlineData(20, 82, ProtocolError.BadLength)]
+    [InlineData(1, 116, ProtocolError.None)]
+    [InlineData(1, 117, ProtocolError.BadLength)]
+    [InlineData(2, 114, ProtocolError.None)]
+    [InlineData(2, 115, ProtocolError.BadLength)]
+    [InlineData(20, 78, ProtocolError.None)]
+    [InlineData(20, 79, ProtocolError.BadLength)]
     [InlineData(21, 21, ProtocolError.BadLength)] // COUNT > 20, whatever the lengths
     public void TryParse_ReadAgainstTheTwoDPlusFourNRule_RefusesWithBadLengthPastTheLimit(int items, int totalLength, ProtocolError expected)
     {
@@ -85,7 +85,7 @@ public sealed class RequestCodecTests
     }
 
     [Theory]
-    [InlineData("01 00 08", "", ProtocolError.UnknownCommand)]
+    [InlineData("01 00 09", "", ProtocolError.UnknownCommand)]
     [InlineData("01 00 00", "", ProtocolError.UnknownCommand)]
     [InlineData("01 00 01", "00", ProtocolError.BadLength)] //                  IDENTIFY with a payload
     [InlineData("01 00 02", "", ProtocolError.BadLength)] //                    READ without COUNT
@@ -97,8 +97,8 @@ public sealed class RequestCodecTests
     [InlineData("01 00 02", "01 01000F02", ProtocolError.AddressOutOfRange)] // IB15 + 2 bytes > 16
     [InlineData("01 00 02", "02 01000F02 04000000", ProtocolError.AddressOutOfRange)] // first failing item decides
     [InlineData("01 00 02", "02 04000000 01000F02", ProtocolError.BadLength)]
-    [InlineData("01 00 02", "02 04000075 04000001", ProtocolError.BadLength)] // 117 + 1 > 117 for two items
-    [InlineData("01 00 03", "040000", ProtocolError.BadLength)] //             WRITE shorter than 8 bytes
+    [InlineData("01 00 02", "02 04000072 04000001", ProtocolError.BadLength)] // 114 + 1 > 114 for two items
+    [InlineData("01 00 03", "040000", ProtocolError.BadLength)] //             WRITE shorter than 7 bytes
     [InlineData("01 00 03", "04000002 AA", ProtocolError.BadLength)] //        LENGTH 2, one data byte
     [InlineData("01 00 03", "04000000", ProtocolError.BadLength)] //           LENGTH 0
     [InlineData("01 00 03", "07000001 AA", ProtocolError.AddressOutOfRange)]
@@ -119,9 +119,18 @@ public sealed class RequestCodecTests
     [InlineData("01 00 05", "00 01 04000000", ProtocolError.BadParameter)] //  LIST before the items
     [InlineData("01 00 05", "01 01 04000000", ProtocolError.BadLength)] //     LENGTH 0
     [InlineData("01 00 05", "01 02 01000F02 04000000", ProtocolError.AddressOutOfRange)] // first failing item decides
-    [InlineData("01 00 05", "01 02 04000075 04000001", ProtocolError.BadLength)] // 117 + 1 > 117 for two items
+    [InlineData("01 00 05", "01 02 04000072 04000001", ProtocolError.BadLength)] // 114 + 1 > 114 for two items
     [InlineData("01 00 06", "", ProtocolError.BadLength)] //                   READ LIST without LIST
     [InlineData("01 00 06", "01 01", ProtocolError.BadLength)] //              READ LIST with an extra byte
+    [InlineData("01 00 07", "", ProtocolError.BadLength)] //                   STOP without its payload
+    [InlineData("01 00 07", "535450", ProtocolError.BadLength)] //             "STP"
+    [InlineData("01 00 07", "53544F50 00", ProtocolError.BadLength)] //        "STOP" and one byte more
+    [InlineData("01 00 07", "53544F51", ProtocolError.BadParameter)] //        "STOQ"
+    [InlineData("01 00 07", "73746F70", ProtocolError.BadParameter)] //        "stop"
+    [InlineData("01 00 08", "01", ProtocolError.BadLength)] //                 READ CHANGES without FLAGS
+    [InlineData("01 00 08", "01 00 00", ProtocolError.BadLength)] //           READ CHANGES with an extra byte
+    [InlineData("01 00 08", "01 02", ProtocolError.BadParameter)] //           FLAGS bit 1
+    [InlineData("01 00 08", "01 81", ProtocolError.BadParameter)] //           FULL and bit 7
     public void TryParse_RequestBreakingARule_GivesTheErrorCode(string head, string payload, ProtocolError expected)
     {
         RequestCodec.TryParse(Frame(head, payload), new FakeTarget(), out var request, out var error).Should().BeFalse();
@@ -167,6 +176,27 @@ public sealed class RequestCodecTests
 
         define.Should().BeEquivalentTo(new DefineListRequest(One, 7, 2, [new(ProtocolArea.V, 100, 4), new(ProtocolArea.M, 2, 1)]));
         read.Should().Be(new ReadListRequest(One, 8, 3));
+    }
+
+    [Fact]
+    public void TryParse_StopAndReadChanges_GiveTheRequests()
+    {
+        RequestCodec.TryParse(Frame("01 09 07", "53544F50"), new FakeTarget(), out var stop, out _).Should().BeTrue();
+        RequestCodec.TryParse(Frame("01 0A 08", "03 01"), new FakeTarget(), out var full, out _).Should().BeTrue();
+        RequestCodec.TryParse(Frame("01 0B 08", "05 00"), new FakeTarget(), out var changes, out _).Should().BeTrue(); // list 5 parses: the station answers 07
+
+        stop.Should().Be(new StopRequest(One, 9));
+        full.Should().Be(new ReadChangesRequest(One, 0x0A, 3, Full: true));
+        changes.Should().Be(new ReadChangesRequest(One, 0x0B, 5, Full: false));
+    }
+
+    [Fact]
+    public void Encode_StopAndReadChanges_GiveTheirPayloads()
+    {
+        RequestCodec.ToFrame(new StopRequest(One, 1)).Payload.Should().Equal("STOP"u8.ToArray());
+        RequestCodec.ToFrame(new ReadChangesRequest(One, 1, 2, Full: true)).Payload.Should().Equal(2, 1);
+        RequestCodec.ToFrame(new ReadChangesRequest(One, 1, 4, Full: false)).Payload.Should().Equal(4, 0);
+        ProtocolLimits.RequestChars(2).Should().Be(RequestCodec.Encode(new ReadChangesRequest(One, 1, 4, Full: false)).Length).And.Be(16);
     }
 
     [Theory]

@@ -12,8 +12,9 @@ public sealed class ResponseCodecTests
     [Fact]
     public void TryDecode_ReadReply_GivesTheDataInItemOrder()
     {
-        // 01 station, 08 seq, 82 READ reply, 00 OK, VD100 = 00000457, IB0 = A5, IB1 = 03; BCC 72
-        ResponseCodec.TryDecode("<0108820000000457A50372>"u8, Read, out var response, out var error).Should().BeTrue();
+        // 01 station, 08 seq, 82 READ reply, 00 OK, REQCHECK A4DD (the request's CRC), VD100 = 00000457, IB0 = A5, IB1 = 03
+        RequestCodec.Check(Read).Should().Be(0xA4DD);
+        ResponseCodec.TryDecode("<01088200A4DD00000457A503jnic>"u8, Read, out var response, out var error).Should().BeTrue();
 
         error.Should().Be(FrameError.None);
         response.Should().BeOfType<ReadResponse>().Which.Data.Should().Equal(0x00, 0x00, 0x04, 0x57, 0xA5, 0x03);
@@ -24,32 +25,39 @@ public sealed class ResponseCodecTests
     {
         var request = new IdentifyRequest(new Station(1), 0x07);
 
-        ResponseCodec.TryDecode("<01078100010103010F7705200100030002000975>"u8, request, out var response, out _).Should().BeTrue();
+        // v1's 15 bytes (protocol 02, MAX_READ_DATA 74 = 116), then port 0, V_FIRST 1E54 = 7764, V_BYTES 01AC = 428,
+        // FEATURES 02 (copies, no STOP), COPY_BYTES 78 = 120
+        ResponseCodec.TryDecode("<01078100C0C4020103010F74052001000300020009001E5401AC0278cecc>"u8, request, out var response, out _).Should().BeTrue();
 
-        response.Should().Be(new IdentifyResponse(new Station(1), 0x07, 1, 1, 3, 1, 0x0F, 119, 5, 0x20, 1, 3, 2, 9));
+        response.Should().Be(new IdentifyResponse(new Station(1), 0x07, 2, 1, 3, 1, 0x0F, 116, 5, 0x20, 1, 3, 2, 9, 0, 7764, 428, 2, 120) { RequestCheck = 0xC0C4 });
+        var identity = (IdentifyResponse)response;
+        (identity.StopEnabled, identity.HasCopies).Should().Be((false, true));
     }
 
     [Fact]
     public void TryDecode_ErrorReply_GivesErrorResponse()
     {
         var request = new WriteBlockRequest(new Station(1), 0x0B, ProtocolArea.I, 0, [0x01]);
-        var chars = ResponseCodec.Encode(new ErrorResponse(new Station(1), 0x0B, CommandCode.Write, ProtocolError.NotWritable));
+        var chars = ResponseCodec.Encode(new ErrorResponse(new Station(1), 0x0B, CommandCode.Write, ProtocolError.NotWritable), request);
 
-        Encoding.ASCII.GetString(chars).Should().Be("<010B83037B>");
+        Encoding.ASCII.GetString(chars).Should().Be("<010B830340E3blge>"); // REQCHECK 40E3: the CRC of <010B030100000101cn`d>
         ResponseCodec.TryDecode(chars, request, out var response, out _).Should().BeTrue();
-        response.Should().Be(new ErrorResponse(new Station(1), 0x0B, CommandCode.Write, ProtocolError.NotWritable));
+        response.Should().Be(new ErrorResponse(new Station(1), 0x0B, CommandCode.Write, ProtocolError.NotWritable) { RequestCheck = 0x40E3 });
     }
 
     [Theory]
-    [InlineData("01 08 02", "00 00000457A503", FrameError.NotAReply)] //     our own request echoed
-    [InlineData("02 08 82", "00 00000457A503", FrameError.StationMismatch)]
-    [InlineData("01 07 82", "00 00000457A503", FrameError.SequenceMismatch)] // a late reply to request 07
-    [InlineData("01 08 83", "00 00000457A503", FrameError.CommandMismatch)]
-    [InlineData("01 08 82", "00 00000457A5", FrameError.LengthMismatch)] //  5 data bytes for 6 asked
-    [InlineData("01 08 82", "", FrameError.LengthMismatch)] //                no STATUS
-    [InlineData("01 08 82", "02 00", FrameError.LengthMismatch)] //           an error status carries no data
-    [InlineData("01 08 82", "01", FrameError.UnknownStatus)] //               01 is never sent
-    [InlineData("01 08 82", "08", FrameError.UnknownStatus)]
+    [InlineData("01 08 02", "00 A4DD 00000457A503", FrameError.NotAReply)] //     our own request echoed
+    [InlineData("02 08 82", "00 A4DD 00000457A503", FrameError.StationMismatch)]
+    [InlineData("01 07 82", "00 A4DD 00000457A503", FrameError.SequenceMismatch)] // a late reply to request 07
+    [InlineData("01 08 83", "00 A4DD 00000457A503", FrameError.CommandMismatch)]
+    [InlineData("01 08 82", "00 A4DC 00000457A503", FrameError.RequestCheckMismatch)] // the PLC read another frame
+    [InlineData("01 08 82", "02 A4DC", FrameError.RequestCheckMismatch)] //       a refusal of another frame is no refusal
+    [InlineData("01 08 82", "00 A4DD 00000457A5", FrameError.LengthMismatch)] //  5 data bytes for 6 asked
+    [InlineData("01 08 82", "", FrameError.LengthMismatch)] //                     no STATUS
+    [InlineData("01 08 82", "00 A4", FrameError.LengthMismatch)] //                half a REQCHECK
+    [InlineData("01 08 82", "02 A4DD 00", FrameError.LengthMismatch)] //           an error status carries no data
+    [InlineData("01 08 82", "01 A4DD", FrameError.UnknownStatus)] //               01 is never sent
+    [InlineData("01 08 82", "08 A4DD", FrameError.UnknownStatus)]
     public void TryDecode_ReplyNotAnsweringTheRequest_ReportsTheError(string head, string payload, FrameError expected)
     {
         var h = Convert.FromHexString(head.Replace(" ", string.Empty, StringComparison.Ordinal));
@@ -63,7 +71,7 @@ public sealed class ResponseCodecTests
     [Fact]
     public void TryDecode_BadFrame_ReportsTheFramingError()
     {
-        ResponseCodec.TryDecode("<0108820000000457A50373>"u8, Read, out _, out var error).Should().BeFalse();
+        ResponseCodec.TryDecode("<01088200A4DD00000457A503jnid>"u8, Read, out _, out var error).Should().BeFalse();
 
         error.Should().Be(FrameError.ChecksumMismatch);
     }

@@ -1,4 +1,3 @@
-using System.Text;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
@@ -14,9 +13,12 @@ public sealed class ReferencePlcListTests
     /// <summary>VD100 (4 bytes) and MB2: the list of the doc's examples 5.6.</summary>
     private const string TwoItems = "02 04006404 03000201";
 
-    /// <summary>20 items, 81 bytes: VB0-VB61 (62 bytes) and 19 single bytes VB100 .. VB136: tail 80 bytes, reply 174 characters.</summary>
+    /// <summary>
+    /// 20 items, 77 bytes: VB0-VB57 (58 bytes) and 19 single bytes VB100 .. VB136: tail 80 bytes, longest reply (READ
+    /// CHANGES FULL) 20 + 154 = 174 characters, the most a 20-item list may have.
+    /// </summary>
     private static readonly string FullList =
-        "14 0400003E" + string.Concat(Enumerable.Range(0, 19).Select(i => $"04{100 + (2 * i):X4}01"));
+        "14 0400003A" + string.Concat(Enumerable.Range(0, 19).Select(i => $"04{100 + (2 * i):X4}01"));
 
     private readonly ReferencePlc _plc = new(new HandlerConfig(new Station(1), CpuProfiles.For(CpuModel.Cpu224)));
 
@@ -25,14 +27,6 @@ public sealed class ReferencePlcListTests
         _plc.Memory.WriteWord(ProtocolArea.V, 100, 0);
         _plc.Memory.WriteWord(ProtocolArea.V, 102, 1111);
         _plc.Memory.M[2] = 0x05;
-    }
-
-    [Fact]
-    public void HandleFrame_DocExamplesDefineReadAndError07_AnswerAsDocumented()
-    {
-        Answer("<0113050102040064040300020107>").Should().Be("<011385000E>");
-        Answer("<0114060103>").Should().Be("<01148600000004570509>");
-        Answer("<0115060201>").Should().Be("<011586070C>");
     }
 
     [Fact]
@@ -52,8 +46,8 @@ public sealed class ReferencePlcListTests
     }
 
     [Theory]
-    [InlineData(114, true)]  // 18 + 228 = 246 <= 247: the request ends before the floor at 248
-    [InlineData(115, false)] // 18 + 230 = 248: the request reaches the first descriptor
+    [InlineData(113, true)]  // 20 + 226 = 246 <= 247: the request ends before the floor at 248
+    [InlineData(114, false)] // 20 + 228 = 248: the request reaches the first descriptor
     public void LongWrite_ReachingTheTail_InvalidatesAndRedefineWorks(int length, bool kept)
     {
         Send(_plc, "01 01 05", "01 " + TwoItems);
@@ -71,11 +65,11 @@ public sealed class ReferencePlcListTests
     {
         Send(_plc, "01 01 05", "01 " + FullList)!.Payload.Should().Equal(0x00);
 
-        // Floor 176 - 8 = 168, and list 1's reply of 12 + 162 = 174 characters would reach it.
+        // Floor 176 - 8 = 168, and list 1's longest reply of 20 + 154 = 174 characters would reach it.
         Send(_plc, "01 02 05", "02 02 04100001 04100201")!.Payload.Should().Equal(0x04);
 
         _plc.Lists.Floor.Should().Be(176);
-        Send(_plc, "01 03 06", "01")!.Payload.Should().HaveCount(1 + 81).And.StartWith(new byte[] { 0x00 });
+        Send(_plc, "01 03 06", "01")!.Payload.Should().HaveCount(1 + 77).And.StartWith(new byte[] { 0x00 });
         Send(_plc, "01 04 06", "02")!.Payload.Should().Equal(0x07);
     }
 
@@ -105,7 +99,7 @@ public sealed class ReferencePlcListTests
     public void DefineList_DescriptorsWhoseAthWouldOverlapTheirSource_Refuses04BeforeTheItems()
     {
         // List 1 of 20 single bytes: floor 176. A list 2 of 14 items: 11 + 112 >= 176 - 56, so 04 comes before the
-        // unknown area 09 of its first item could give 02 (its replies alone would fit: 52 <= 119).
+        // unknown area 09 of its first item could give 02 (its replies alone would fit: 48 <= 119).
         Send(_plc, "01 01 05", "01 14" + string.Concat(Enumerable.Range(0, 20).Select(i => $"04{i:X4}01")))!.Payload.Should().Equal(0x00);
 
         Send(_plc, "01 02 05", "02 0E 09000001" + string.Concat(Enumerable.Range(1, 13).Select(i => $"04{i:X4}01")))!
@@ -138,8 +132,10 @@ public sealed class ReferencePlcListTests
     }
 
     [Theory]
-    [InlineData("01 04000010", true)]  // 16 bytes: 12 + 32 = 44 <= 175 - 4
-    [InlineData("01 04000077", false)] // 119 bytes: 12 + 238 = 250 > 171
+    [InlineData("01 04000010", true)]  // 16 bytes: 18 + 32 = 50 <= 175 - 4
+    [InlineData("01 0400004C", true)]  // 76 bytes: 18 + 152 = 170 <= 171
+    [InlineData("01 0400004D", false)] // 77 bytes: 18 + 154 = 172 > 171
+    [InlineData("01 04000074", false)] // 116 bytes: 18 + 232 = 250 > 171
     public void Read_WhoseReplyWouldReachTheTail_InvalidatesButIsAnswered(string items, bool kept)
     {
         Send(_plc, "01 01 05", "01 " + FullList);
@@ -147,7 +143,7 @@ public sealed class ReferencePlcListTests
         var read = Send(_plc, "01 02 02", items)!;
 
         read.Payload.Should().HaveCount(1 + Hex(items)[4]).And.StartWith(new byte[] { 0x00 });
-        Send(_plc, "01 03 06", "01")!.Payload.Should().HaveCount(kept ? 82 : 1);
+        Send(_plc, "01 03 06", "01")!.Payload.Should().HaveCount(kept ? 78 : 1);
     }
 
     [Fact]
@@ -165,11 +161,8 @@ public sealed class ReferencePlcListTests
     {
         Send(_plc, "01 01 05", "01 " + FullList);
 
-        Send(_plc, "01 02 01")!.Payload.Should().HaveCount(16);
+        Send(_plc, "01 02 01")!.Payload.Should().HaveCount(1 + 22);
 
-        Send(_plc, "01 03 06", "01")!.Payload.Should().HaveCount(82);
+        Send(_plc, "01 03 06", "01")!.Payload.Should().HaveCount(78);
     }
-
-    private string Answer(string request) =>
-        Encoding.ASCII.GetString(_plc.HandleFrame(Encoding.ASCII.GetBytes(request)) ?? Encoding.ASCII.GetBytes("(no reply)"));
 }

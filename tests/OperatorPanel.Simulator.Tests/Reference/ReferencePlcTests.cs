@@ -14,11 +14,14 @@ public sealed class ReferencePlcTests
         new(new HandlerConfig(new Station(1), CpuProfiles.For(model), port, writeMask, replyDelayMs: 5));
 
     [Theory]
-    [InlineData("<01070107>", "<01070108>")] //                      bad BCC
-    [InlineData("<01070107>", "<010701>")] //                        body shorter than 8 characters
-    [InlineData("<01070107>", "<010701070>")] //                     odd length
-    [InlineData("<01070107>", "<01070a07>")] //                      lowercase hex
-    [InlineData("<01070107>", "01070107>")] //                       no start character
+    [InlineData("<010701dl`l>", "<010701dl`m>")] //                  bad check
+    [InlineData("<010701dl`l>", "<010700dl`l>")] //                  a body bit flipped
+    [InlineData("<010701dl`l>", "<0107dl`l>")] //                    body shorter than 6 characters
+    [InlineData("<010701dl`l>", "<0107010dl`l>")] //                 odd length
+    [InlineData("<010701dl`l>", "<01070adl`l>")] //                  lowercase hex
+    [InlineData("<010701dl`l>", "<010701DL`L>")] //                  hex digits where the check characters belong
+    [InlineData("<010701dl`l>", "<01070107>")] //                    the v1 IDENTIFY probe
+    [InlineData("<010701dl`l>", "010701dl`l>")] //                   no start character
     public void HandleFrame_FramingFault_IsSilent(string good, string bad)
     {
         var plc = Plc224();
@@ -38,7 +41,12 @@ public sealed class ReferencePlcTests
     public void HandleFrame_OverheardReply_IsSilent() => Send(Plc224(), "01 07 81", "00").Should().BeNull();
 
     [Theory]
-    [InlineData("01 00 08", "", 0x05)] //                unknown command
+    [InlineData("01 00 09", "", 0x05)] //                unknown command
+    [InlineData("01 00 07", "53544F50", 0x05)] //        STOP in a handler generated without it
+    [InlineData("01 00 08", "01", 0x04)] //              READ CHANGES without FLAGS
+    [InlineData("01 00 08", "01 02", 0x06)] //           FLAGS bit 1
+    [InlineData("01 00 08", "01 01", 0x07)] //           list 1 not defined
+    [InlineData("01 00 08", "05 00", 0x07)] //           list 5 is never defined
     [InlineData("01 00 7F", "", 0x05)]
     [InlineData("01 00 01", "00", 0x04)] //              IDENTIFY with payload
     [InlineData("01 00 02", "00", 0x04)] //              COUNT 0
@@ -47,7 +55,7 @@ public sealed class ReferencePlcTests
     [InlineData("01 00 02", "01 09000001", 0x02)] //     area 09
     [InlineData("01 00 02", "01 04200001", 0x02)] //     VB8192 on a 224
     [InlineData("01 00 02", "01 05022502", 0x02)] //     SMB549 + 2 > 550
-    [InlineData("01 00 02", "02 04000040 04000036", 0x04)] // 64 + 54 = 118 > 117 for two items
+    [InlineData("01 00 02", "02 04000040 04000033", 0x04)] // 64 + 51 = 115 > 114 for two items
     [InlineData("01 00 03", "04000077" + "00", 0x04)] // WRITE LENGTH 119
     [InlineData("01 00 03", "04000002 00", 0x04)] //     body does not match LENGTH
     [InlineData("01 00 03", "01000001 00", 0x03)] //     I is never writable
@@ -55,7 +63,7 @@ public sealed class ReferencePlcTests
     [InlineData("01 00 04", "03000008 01", 0x06)] //     BIT 8
     [InlineData("01 00 04", "03000000 02", 0x06)] //     VALUE 2
     [InlineData("01 00 04", "03002000 01", 0x02)] //     MB32
-    [InlineData("01 00 04", "03000000", 0x04)] //      body 8 bytes
+    [InlineData("01 00 04", "03000000", 0x04)] //      body 7 bytes
     public void HandleFrame_RuleBroken_RepliesWithTheErrorCode(string head, string payload, byte status)
     {
         var reply = Send(Plc224(), head, payload) ?? throw new Xunit.Sdk.XunitException("the station stayed silent; an error reply was due");
@@ -139,10 +147,10 @@ public sealed class ReferencePlcTests
     }
 
     [Theory]
-    [InlineData(1, 119, 0x00)]
-    [InlineData(1, 120, 0x04)] // 2 x 120 + 4 x 1 = 244 > 243
-    [InlineData(20, 81, 0x00)]
-    [InlineData(20, 82, 0x04)] // 164 + 80 = 244 > 243
+    [InlineData(1, 116, 0x00)]
+    [InlineData(1, 117, 0x04)] // 2 x 117 + 4 x 1 = 238 > 237
+    [InlineData(20, 78, 0x00)]
+    [InlineData(20, 79, 0x04)] // 158 + 80 = 238 > 237
     [InlineData(21, 21, 0x04)] // COUNT above 20
     public void HandleFrame_ReadAgainstTheTwoDPlusFourNRule_AnswersUpToTheLimitAndRefusesPastIt(int items, int totalLength, byte status)
     {
@@ -164,12 +172,12 @@ public sealed class ReferencePlcTests
     }
 
     [Theory]
-    [InlineData(CpuModel.Cpu221, 1, 0x60)]
-    [InlineData(CpuModel.Cpu222, 2, 0x00)]
-    [InlineData(CpuModel.Cpu224, 3, 0x20)]
-    [InlineData(CpuModel.Cpu224XP, 4, 0x20)]
-    [InlineData(CpuModel.Cpu226, 5, 0x90)]
-    public void HandleFrame_Identify_ReportsHandlerAndCpu(CpuModel model, byte code, byte smb6)
+    [InlineData(CpuModel.Cpu221, 1, 0x60, 0x0654)] // V_FIRST = 2048 - 428
+    [InlineData(CpuModel.Cpu222, 2, 0x00, 0x0654)]
+    [InlineData(CpuModel.Cpu224, 3, 0x20, 0x1E54)] //  8192 - 428
+    [InlineData(CpuModel.Cpu224XP, 4, 0x20, 0x2654)] // 10240 - 428
+    [InlineData(CpuModel.Cpu226, 5, 0x90, 0x2654)]
+    public void HandleFrame_Identify_ReportsHandlerCpuPortAndVRange(CpuModel model, byte code, byte smb6, int vFirst)
     {
         var plc = new ReferencePlc(new HandlerConfig(new Station(1), CpuProfiles.For(model), 0, 0x1C, replyDelayMs: 7));
         plc.CompleteScan(4);
@@ -178,7 +186,11 @@ public sealed class ReferencePlcTests
 
         var reply = Send(plc, "01 07 01")!;
 
-        reply.Payload.Should().Equal(0x00, 0x01, 0x01, code, 0x01, 0x1C, 0x77, 0x07, smb6, 0x01, 0x00, 0x02, 0x00, 0x02, 0x00, 0x09);
+        // protocol 02, revision 01, CPU, Current, mask, MAX_READ_DATA 116, 7 ms, SMB6, RUN, scans 2/2/9 ms; then port 0,
+        // V_FIRST, V_BYTES 428 (256 buffer + 52 work bytes + 120 copy bytes), FEATURES 02 (copies, no STOP), COPY_BYTES 120
+        reply.Payload.Should().Equal(
+            0x00, 0x02, 0x01, code, 0x01, 0x1C, 0x74, 0x07, smb6, 0x01, 0x00, 0x02, 0x00, 0x02, 0x00, 0x09,
+            0x00, (byte)(vFirst >> 8), (byte)vFirst, 0x01, 0xAC, 0x02, 0x78);
     }
 
     [Fact]

@@ -2,6 +2,7 @@ using System.Text;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Simulator.Reference;
 
 namespace OperatorPanel.Simulator.Tests.Reference;
@@ -17,7 +18,7 @@ public sealed class SimulatedPlcPortTests
 
         port.Feed("\0\u0001>"u8).Should().BeEmpty();
         port.Feed("<0107"u8).Should().BeEmpty();
-        var replies = port.Feed("0107>"u8);
+        var replies = port.Feed("01dl`l>"u8);
 
         replies.Should().ContainSingle();
         Encoding.ASCII.GetString(replies[0]).Should().StartWith("<01078100");
@@ -30,17 +31,20 @@ public sealed class SimulatedPlcPortTests
         var port = new SimulatedPlcPort(Plc(1));
 
         port.Feed(Encoding.ASCII.GetBytes("<" + new string('0', 254))).Should().BeEmpty();
-        port.Feed("<01070107>"u8).Should().ContainSingle();
+        port.Feed("<010701dl`l>"u8).Should().ContainSingle();
         port.DroppedReceives.Should().Be(1);
     }
 
     [Fact]
-    public void Feed_StartCharacterInsideMessage_IsStoredLikeRcvAndTheFrameIsIgnored()
+    public void Feed_StartCharacterInsideMessage_IsStoredLikeRcvAndTheHandlerAnswersTheFrameFromTheLastStart()
     {
         var port = new SimulatedPlcPort(Plc(1));
 
-        port.Feed("<01<01070107>"u8).Should().BeEmpty();
+        var replies = port.Feed("<01<010701dl`l>"u8);
+
         port.ReceivedFrames.Should().Be(1);
+        replies.Should().ContainSingle();
+        Encoding.ASCII.GetString(replies[0]).Should().StartWith("<01078100C0C4");
     }
 
     [Fact]
@@ -50,7 +54,7 @@ public sealed class SimulatedPlcPortTests
         bus.Attach(Plc(1));
         bus.Attach(Plc(2));
 
-        var replies = bus.Feed("<02070104>"u8);
+        var replies = bus.Feed(RequestCodec.Encode(new IdentifyRequest(new Station(2), 7)));
 
         replies.Should().ContainSingle();
         Encoding.ASCII.GetString(replies[0]).Should().StartWith("<020781");
@@ -63,7 +67,7 @@ public sealed class SimulatedPlcPortTests
         var bus = new BusSimulator();
         bus.Attach(Plc(1));
         bus.Attach(Plc(2));
-        var reply = bus.Feed("<01070107>"u8).Single();
+        var reply = bus.Feed("<010701dl`l>"u8).Single();
 
         bus.Feed(reply).Should().BeEmpty();
     }

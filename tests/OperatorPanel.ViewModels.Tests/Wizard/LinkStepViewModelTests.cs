@@ -122,5 +122,5 @@ public sealed class LinkStepViewModelTests
     private ProjectWizardViewModel Wizard(IConnectionTester? tester = null) => new(tester ?? _tester, new FakePortCatalog());
 
     private static IdentifyResponse Identify(CpuModel model, byte smb6) =>
-        new(new Station(2), 1, 1, 1, HandlerIdentity.CpuModelCode(model), 1, 0x3C, 119, 5, smb6, 0x01, 3, 2, 9);
+        new(new Station(2), 1, HandlerIdentity.ProtocolVersion, 1, HandlerIdentity.CpuModelCode(model), 1, 0x3C, HandlerIdentity.MaxReadData, 5, smb6, 0x01, 3, 2, 9, 0, 7764, 428, 0, 120);
 }
