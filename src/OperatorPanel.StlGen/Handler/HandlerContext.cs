@@ -30,6 +30,15 @@ internal sealed class HandlerContext
 
     public int SmBytes { get; }
 
+    /// <summary>V_BYTES of IDENTIFY: the buffer, the work bytes and the READ CHANGES copies.</summary>
+    public const int HandlerVBytes = HandlerDefaults.FootprintBytes + CopyBytes;
+
+    /// <summary>COPY_BYTES of IDENTIFY: 0, this handler keeps no READ CHANGES copies.</summary>
+    public const byte CopyBytes = 0;
+
+    /// <summary>FEATURES of IDENTIFY: neither STOP (bit 0) nor READ CHANGES copies (bit 1) in this handler.</summary>
+    public const byte Features = 0;
+
     /// <summary>"0" or "1": the PORT operand of RCV and XMT.</summary>
     public string PortOperand => Port.ToString(CultureInfo.InvariantCulture);
 
@@ -69,6 +78,18 @@ internal sealed class HandlerContext
     public static string Hex(int value) => "16#" + value.ToString("X2", CultureInfo.InvariantCulture);
 
     public static string Dec(int value) => value.ToString(CultureInfo.InvariantCulture);
+
+    /// <summary>Characters of a request with <paramref name="payloadBytes"/> after STATION SEQ CMD, as the constant the count is compared with.</summary>
+    public static string RequestChars(int payloadBytes) => Dec(ProtocolLimits.RequestChars(payloadBytes));
+
+    /// <summary>Characters of a reply with <paramref name="payloadBytes"/> after STATUS and REQCHECK.</summary>
+    public static string ReplyChars(int payloadBytes) => Dec(ProtocolLimits.ReplyChars(payloadBytes));
+
+    /// <summary>The longest reply of a list without its 2D data characters (docs/protocol.md, "Lists", capacity rule).</summary>
+    public static string ListReplyChars => Dec(ProtocolLimits.ListReplyChars(0));
+
+    /// <summary>2D + 4N may be at most this: a READ reply of ReplyChars(D) ends before its descriptors at 256 - 4N.</summary>
+    public static int ReadReplyRoom => ProtocolLimits.MaxFrameChars - ProtocolLimits.ReplyChars(0);
 
     /// <summary>A command code as the constant the handler compares CMD with, taken from Core's protocol by name.</summary>
     public static string Dec(CommandCode code) => Dec((byte)code);

@@ -4,22 +4,35 @@ namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
 /// Where the handler keeps its bytes in V memory (docs/protocol.md, "Work bytes"): the 256-byte buffer (byte 0 =
-/// RCV/XMT count, bytes 1-255 the frame) and 36 work bytes after it. Pointers live in AC0-AC3 while OP_PANEL works on
+/// RCV/XMT count, bytes 1-255 the frame) and the work bytes after it. Pointers live in AC0-AC3 while OP_PANEL works on
 /// a request and in SAVE between its scans (a user's program may use the accumulators); nothing in L memory. The
-/// order of the work bytes matters: one ATH fills N, I, CMD from the header; one HTA writes CMD|80 and STATUS (kept
-/// in LIST) into the reply; START and LCOUNT are indexed by the list id; SAVE holds AC0-AC3 in that order.
+/// order of the work bytes matters: one ATH fills N, I, CMD from the header; one HTA writes CMD|80, STATUS (kept in
+/// LIST) and REQCHECK into the reply; START and LCOUNT are indexed by the list id; SAVE holds AC0-AC3 in that order.
+/// N, I, CMD and LIST double as <see cref="Scratch"/> while a frame's check is computed (before the request's header
+/// is decoded, after the reply's header is written): the CRC's temporary word and the four check characters.
 /// </summary>
 public sealed class HandlerLayout(int bufferStart)
 {
-    public const int WorkBytes = 36;
+    /// <summary>The work bytes after the buffer; v1's 36 grown by v2's check, REQCHECK and the room for 07 and 08.</summary>
+    public const int WorkBytes = 52;
+
     public const int Subroutines = 1;
     public const int Interrupts = 3;
 
     /// <summary>Offsets from the buffer start.</summary>
-    public const int N = 256, I = 257, Cmd = 258, List = 259, D = 260, Bcc = 261, MaxD = 262, LastFree = 263, Start1 = 264, LCount1 = 268;
+    public const int N = 256, I = 257, Cmd = 258, List = 259, ReqCheck = 260, MaxD = 262, LastFree = 263, Start1 = 264, LCount1 = 268;
 
     /// <summary>Offsets of the scan-slice state (docs/protocol.md, "Work bytes").</summary>
     public const int Step = 272, Budget = 273, Chunk = 274, Save = 276;
+
+    /// <summary>The CRC register (high byte first, as every S7-200 word) and the sum of the item lengths.</summary>
+    public const int Crc = 292, D = 294;
+
+    /// <summary>295 .. the last work byte: kept for 07 STOP and 08 READ CHANGES (stop request, copy starts and flags).</summary>
+    public const int CommandsFirst = 295;
+
+    /// <summary>N .. LIST as one double word while a check is computed (see the class summary).</summary>
+    public const int Scratch = N;
 
     public int BufferStart { get; } = bufferStart;
 
@@ -40,20 +53,21 @@ public sealed class HandlerLayout(int bufferStart)
     public IReadOnlyList<(string Symbol, string Address, string Comment)> Symbols =>
     [
         ("OP_BUF", B(0), "Panel handler: receive/transmit buffer, 256 bytes (byte 0 = character count)"),
-        ("OP_N", B(N), "Panel handler: item COUNT of a READ or DEFINE LIST (station byte while decoding)"),
-        ("OP_I", B(I), "Panel handler: item loop counter (sequence byte while decoding)"),
+        ("OP_N", B(N), "Panel handler: item COUNT of a READ or DEFINE LIST (station byte while decoding; scratch while checking)"),
+        ("OP_I", B(I), "Panel handler: item loop counter (sequence byte while decoding; scratch while checking)"),
         ("OP_CMD", B(Cmd), "Panel handler: command code of the request"),
         ("OP_LIST", B(List), "Panel handler: LIST id of DEFINE/READ LIST; reply STATUS code"),
-        ("OP_D", B(D), "Panel handler: sum of the item lengths; bit mask of WRITE BIT"),
-        ("OP_BCC", B(Bcc), "Panel handler: XOR block check accumulator"),
+        ("OP_REQCHECK", W(ReqCheck), "Panel handler: CRC of the request being answered (REQCHECK of the reply)"),
         ("OP_MAXD", B(MaxD), "Panel handler: largest data length of the stored READ lists"),
         ("OP_LAST_FREE", B(LastFree), "Panel handler: last buffer byte below the stored lists (255 = none)"),
         .. Enumerable.Range(1, 4).Select(n => ($"OP_START{n}", B(Start1 + n - 1), $"Panel handler: first buffer byte of READ list {n}")),
         .. Enumerable.Range(1, 4).Select(n => ($"OP_LCOUNT{n}", B(LCount1 + n - 1), $"Panel handler: item count of READ list {n} (0 = not defined)")),
         ("OP_STEP", B(Step), "Panel handler: 0 = idle, else where OP_PANEL goes on with the request in the next scan"),
         ("OP_BUDGET", B(Budget), "Panel handler: loop passes left in this scan"),
-        ("OP_CHUNK", W(Chunk), "Panel handler: characters of this pass of the block check"),
+        ("OP_CHUNK", W(Chunk), "Panel handler: characters of this pass over the frame"),
         .. Enumerable.Range(0, 4).Select(n => ($"OP_AC{n}", Dw(Save + (4 * n)), $"Panel handler: AC{n} kept between scans")),
+        ("OP_CRC", W(Crc), "Panel handler: CRC-16 register of the frame check"),
+        ("OP_D", B(D), "Panel handler: sum of the item lengths; bit mask of WRITE BIT"),
     ];
 
     private string Abs(int offset) => (BufferStart + offset).ToString(CultureInfo.InvariantCulture);

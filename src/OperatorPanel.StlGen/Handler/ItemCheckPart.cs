@@ -10,7 +10,8 @@ namespace OperatorPanel.StlGen.Handler;
 /// The item checks shared by READ, DEFINE LIST, WRITE and WRITE BIT (docs/protocol.md section 4, step 6): per item
 /// LENGTH 0 -> 04, unknown area -> 02, OFFSET + LENGTH past the area -> 02, the first failing item decides. In: AC2 at
 /// the first 4-byte descriptor (AREA, OFFSET high, OFFSET low, LENGTH), I = item count, AC1 = 0. Out: AC1 = sum of
-/// the lengths; then READ and DEFINE LIST check 2D + 4N &lt;= 243, WRITE and WRITE BIT go on to the write checks.
+/// the lengths; then READ and DEFINE LIST check 2D + 4N &lt;= 237 (a reply of 18 + 2D characters ends before the
+/// descriptors at 256 - 4N), WRITE and WRITE BIT go on to the write checks.
 /// </summary>
 internal static class ItemCheckPart
 {
@@ -53,7 +54,8 @@ internal static class ItemCheckPart
         yield return Always(
             "Items checked: 2D + 4N", "AC0 = 2 x (sum of lengths) + 4 x COUNT.",
             Op("MOVW", "AC1", "AC0"), Op("+I", "AC1", "AC0"), Op("BTI", l.B(N), "AC3"), Op("SLW", "AC3", "2"), Op("+I", "AC3", "AC0"));
-        yield return JumpIf("Items checked: too much data", "2D + 4N > 243: the reply would reach the descriptors, error 04.", e04, Op("LDW>", "AC0", "243"));
+        yield return JumpIf(
+            "Items checked: too much data", $"2D + 4N > {ReadReplyRoom}: the reply would reach the descriptors, error 04.", e04, Op("LDW>", "AC0", Dec(ReadReplyRoom)));
         yield return Always("Items checked: keep D", "D = sum of the lengths (at most 119 now).", Op("MOVB", "AC1", l.B(D)));
         yield return JumpIf("Items checked: DEFINE LIST", "On to the capacity rule.", HandlerLabels.DefineItemsChecked, Op("LDB=", l.B(Cmd), Dec(CommandCode.DefineList)));
         yield return JumpIf("Items checked: READ", "On to the reply.", HandlerLabels.ReadItemsChecked, Op("LD", "SM0.0"));

@@ -17,12 +17,12 @@ internal static class ReadPart
         var l = c.Layout;
         var e04 = HandlerLabels.Error(ProtocolError.BadLength);
         yield return Label(HandlerLabels.Read, "02 READ");
-        yield return JumpIf("READ: body at least 5 bytes", "Error 04 when count < 12.", e04, Op("LDB<", l.B(0), "12"));
-        yield return JumpIf("READ: COUNT 1-20", "Error 04.", e04, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), "20"));
+        yield return JumpIf("READ: body at least 4 bytes", $"Error 04 when count < {RequestChars(1)}.", e04, Op("LDB<", l.B(0), RequestChars(1)));
+        yield return JumpIf($"READ: COUNT 1-{ProtocolLimits.MaxReadItems}", "Error 04.", e04, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), Dec(ProtocolLimits.MaxReadItems)));
         yield return Always(
-            "READ: expected length", "A READ of N items has 12 + 8N characters: AC0 = 12 + 8N, AC3 = count.",
-            Op("BTI", l.B(8), "AC0"), Op("SLW", "AC0", "3"), Op("+I", "12", "AC0"), Op("BTI", l.B(0), "AC3"));
-        yield return JumpIf("READ: body = 5 + 4 x COUNT bytes", "Error 04.", e04, Op("LDW<>", "AC0", "AC3"));
+            "READ: expected length", $"A READ of N items has {RequestChars(1)} + 8N characters: AC0 = {RequestChars(1)} + 8N, AC3 = count.",
+            Op("BTI", l.B(8), "AC0"), Op("SLW", "AC0", "3"), Op("+I", RequestChars(1), "AC0"), Op("BTI", l.B(0), "AC3"));
+        yield return JumpIf("READ: body = 4 + 4 x COUNT bytes", "Error 04.", e04, Op("LDW<>", "AC0", "AC3"));
         yield return Always(
             "READ: descriptors against the stored lists", "N = COUNT. AC0 = 8 + 12N, AC3 = LAST_FREE.",
             Op("MOVB", l.B(8), l.B(N)), Op("BTI", l.B(N), "AC0"), Op("*I", "12", "AC0"), Op("+I", "8", "AC0"), Op("BTI", l.B(LastFree), "AC3"));
@@ -41,15 +41,15 @@ internal static class ReadPart
         var l = c.Layout;
         yield return Label(HandlerLabels.ReadItemsChecked, "READ items checked");
         yield return Always(
-            "READ: reply against the stored lists", "AC0 = reply length 12 + 2D; AC3 = LAST_FREE - 4N, the last byte before the descriptors.",
-            Op("BTI", l.B(D), "AC0"), Op("SLW", "AC0", "1"), Op("+I", "12", "AC0"), Op("BTI", l.B(LastFree), "AC3"),
+            "READ: reply against the stored lists", $"AC0 = reply length {ReplyChars(0)} + 2D; AC3 = LAST_FREE - 4N, the last byte before the descriptors.",
+            Op("BTI", l.B(D), "AC0"), Op("SLW", "AC0", "1"), Op("+I", ReplyChars(0), "AC0"), Op("BTI", l.B(LastFree), "AC3"),
             Op("BTI", l.B(N), "AC2"), Op("SLW", "AC2", "2"), Op("-I", "AC2", "AC3"));
         yield return new NetworkBuilder("READ: reply would reach the descriptors", "Forget the lists (invalidation 3).")
             .Op("LDW>", "AC0", "AC3").ClearLists(l).Build();
         yield return PlaceDescriptors(l, 9);
         yield return Always(
-            "READ: build the reply", "N items from AC2; the data characters start at buffer byte 10 (AC1).",
-            Op("MOVB", l.B(N), l.B(I)), Op("MOVD", l.Ptr(10), "AC1"), Op("MOVB", Dec(SlicePart.StepBuildItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
+            "READ: build the reply", $"N items from AC2; the data characters start at buffer byte {ReplyPart.PayloadStart} (AC1).",
+            Op("MOVB", l.B(N), l.B(I)), Op("MOVD", l.Ptr(ReplyPart.PayloadStart), "AC1"), Op("MOVB", Dec(SlicePart.StepBuildItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
     }
 
     /// <summary>In: AC2 at the first descriptor, I = item count, AC1 at the first data character. Out: AC1 after the data.</summary>

@@ -1,3 +1,4 @@
+using System.Globalization;
 using System.Numerics;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.StlGen.Model;
@@ -8,9 +9,10 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// docs/protocol.md section 4, steps 1-5: the receive-complete routine only takes a frame ended by '&gt;' and sets
-/// STEP = 1; OP_PANEL checks it in the next scans. Every failed check up to the dispatch means silence (label 1:
-/// receive again).
+/// docs/protocol.md section 4, steps 1-5: the receive-complete routine only takes a frame ended by '&gt;' whose first
+/// '&lt;' is followed by this station's address and a request's CMD, and sets STEP = 1; anything else is received again
+/// at once. OP_PANEL checks the frame from the last '&lt;' in the next scans. Every failed check up to the dispatch
+/// means silence (label 1: receive again). The dispatch is one table: a command is a row.
 /// </summary>
 internal static class ReceivePart
 {
@@ -35,6 +37,11 @@ internal static class ReceivePart
                 "Step 1: only a frame ended by '>' is processed",
                 $"{c.SmB(86)} bit 5 = end character received. Ended by count, timer or parity error: receive again.")
             .Op("LDN", $"SM{c.SmPort(86)}.5").Op("RCV", l.B(0), c.PortOperand).Op("CRETI").Build();
+        yield return new NetworkBuilder(
+                "Step 1: not for this station",
+                $"After the first '<' (byte 1): STATION not '{StationChars(c)}', or CMD's first character '8'-'F' (a reply) or no hex digit:",
+                "receive again at once, so the port is ready for the next frame on the bus.")
+            .Op("LDW<>", l.W(2), StationWord(c)).Op("OB>=", l.B(6), Hex('8')).Op("RCV", l.B(0), c.PortOperand).Op("CRETI").Build();
         yield return Always(
             "A request is waiting", $"{c.Names.Panel} checks and answers it in the next scans, a bounded part per scan.",
             Op("MOVB", Dec(SlicePart.StepStart), l.B(Step)));
@@ -44,30 +51,22 @@ internal static class ReceivePart
     {
         var l = c.Layout;
         const int silence = HandlerLabels.Silence;
-        yield return JumpIf(
-            "Step 2: body length", "Silence when the body has fewer than 8 characters (count < 10) or an odd number.",
-            silence, Op("LDB<", l.B(0), "10"), Op("O", l.Bit(0, 0)));
-        foreach (var network in SlicePart.BlockCheck(c, "AC1", "request", SlicePart.RequestCheckPass, SlicePart.StepRequestCheck))
+        foreach (var network in FrameCheckPart.Request(c))
         {
             yield return network;
         }
 
-        yield return SlicePart.Pause(c, "Request block check done", SlicePart.StepHeader);
+        yield return SlicePart.Pause(c, "Request checked", SlicePart.StepHeader);
         yield return Label(SlicePart.Header, "header and payload to binary");
         yield return Always(
             "Step 2: header to binary", "ATH the characters of STATION, SEQ and CMD (buffer bytes 2-7) into N, I and CMD.",
             Op("ATH", l.B(2), l.B(N), "6"));
         yield return JumpIf("Step 2: header characters are hex", "SM1.7 = a character was not 0-9 or A-F: silence.", silence, Op("LD", "SM1.7"));
         yield return Always(
-            "Step 2: payload and BCC to binary, in place",
-            "ATH the count-8 characters from buffer byte 8 onto themselves: payload byte k lands in buffer byte 8+k.",
-            Op("BTI", l.B(0), "AC0"), Op("-I", "8", "AC0"), Op("ATH", l.B(8), l.B(8), "AC0"));
+            "Step 2: payload to binary, in place",
+            $"ATH the count-{PayloadEnd} payload characters from buffer byte 8 onto themselves: payload byte k lands in buffer byte 8+k.",
+            Op("BTI", l.B(0), "AC0"), Op("-I", Dec(PayloadEnd), "AC0"), Op("ATH", l.B(8), l.B(8), "AC0"));
         yield return JumpIf("Step 2: payload characters are hex", "SM1.7 = a character was not 0-9 or A-F: silence.", silence, Op("LD", "SM1.7"));
-        yield return Always(
-            "Step 2: where the received BCC is",
-            "The last binary byte: buffer byte 3 + count/2. AC1 points at it.",
-            Op("MOVD", l.Ptr(3), "AC1"), Op("BTI", l.B(0), "AC0"), Op("SRW", "AC0", "1"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC1"));
-        yield return JumpIf("Step 2: block check", "Silence when the received BCC differs from the computed one.", silence, Op("LDB<>", "*AC1", l.B(Bcc)));
         yield return JumpIf(
             "Step 3: station address", $"This PLC is station {c.Options.Station}; a request for another station gets no reply.",
             silence, Op("LDB<>", l.B(N), Dec(c.Options.Station)));
@@ -83,4 +82,14 @@ internal static class ReceivePart
             "Step 5: unknown command", $"Any other CMD: error {Digits(ProtocolError.UnknownCommand)}.",
             HandlerLabels.Error(ProtocolError.UnknownCommand), Op("LD", "SM0.0"));
     }
+
+    /// <summary>The payload characters run from byte 8 to count - 5: '&lt;' and 6 header characters before, 4 check characters and '&gt;' after.</summary>
+    private const int PayloadEnd = 7 + CheckCharacters.Count + 1;
+
+    /// <summary>"02" for station 2: STATION as the two hex digits a request for this PLC starts with.</summary>
+    private static string StationChars(HandlerContext c) => c.Options.Station.ToString("X2", CultureInfo.InvariantCulture);
+
+    /// <summary>Buffer bytes 2-3 as one word holding <see cref="StationChars"/>: 16#3032 for station 2.</summary>
+    private static string StationWord(HandlerContext c) =>
+        "16#" + string.Concat(StationChars(c).Select(ch => ((int)ch).ToString("X2", CultureInfo.InvariantCulture)));
 }

@@ -7,8 +7,8 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// The end of the receive routine: error codes, the reply frame (header, count, BCC, '&gt;') over the request, the
-/// reply delay by timed interrupt 0, and silence (docs/protocol.md section 6, steps 5-6).
+/// The end of the request's work: error codes, the reply frame (header with REQCHECK, count, check characters, '&gt;')
+/// over the request, the reply delay by timed interrupt 0, and silence (docs/protocol.md section 6, steps 5-6).
 /// </summary>
 internal static class ReplyPart
 {
@@ -18,6 +18,11 @@ internal static class ReplyPart
     /// </summary>
     private static readonly ProtocolError[] ErrorReplies =
         [.. Enum.GetValues<ProtocolError>().Where(error => error is not (ProtocolError.None or ProtocolError.BadChecksum))];
+
+    /// <summary>
+    /// Buffer byte of the reply's first payload character: '&lt;', STATION, SEQ, CMD, STATUS and REQCHECK (2 bytes) before it.
+    /// </summary>
+    public const int PayloadStart = 2 + (2 * ProtocolLimits.ReplyHeaderBytes);
 
     public static IEnumerable<StlNetwork> Networks(HandlerContext c)
     {
@@ -30,29 +35,30 @@ internal static class ReplyPart
         }
 
         yield return Label(HandlerLabels.ErrorReply, "error reply");
-        yield return Always("Error reply", "No payload: the BCC goes to buffer byte 10.", Op("MOVD", l.Ptr(10), "AC1"));
+        yield return Always("Error reply", $"No payload: the check characters go to buffer byte {PayloadStart}.", Op("MOVD", l.Ptr(PayloadStart), "AC1"));
         yield return Label(HandlerLabels.Finish, "finish the reply");
-        yield return Always(
-            "Reply: header and count",
-            $"CMD | {Hex(FreeportFrame.ReplyBit)} and STATUS as characters 6-9 (STATION, SEQ stay as received); count = AC1 - buffer start + 2.",
-            Op("ORB", Hex(FreeportFrame.ReplyBit), l.B(Cmd)), Op("HTA", l.B(Cmd), l.B(6), "4"), Op("MOVD", l.Ptr(0), "AC2"), Op("MOVD", "AC1", "AC0"),
-            Op("-D", "AC2", "AC0"), Op("+D", "2", "AC0"), Op("MOVB", "AC0", l.B(0)));
+        yield return new NetworkBuilder(
+                "Reply: header and count",
+                $"CMD | {Hex(FreeportFrame.ReplyBit)}, STATUS and REQCHECK as characters 6-13 (STATION, SEQ stay as received);",
+                $"AC1 = the first check character; count = AC1 - buffer start + {CheckCharacters.Count}, the '>' last.")
+            .Op("LD", "SM0.0").Op("ORB", Hex(FreeportFrame.ReplyBit), l.B(Cmd)).Op("HTA", l.B(Cmd), l.B(6), "8").Op("MOVD", l.Ptr(0), "AC2")
+            .Op("MOVD", "AC1", "AC0").Op("-D", "AC2", "AC0").Op("+D", Dec(CheckCharacters.Count), "AC0").Op("MOVB", "AC0", l.B(0)).Build();
         yield return new NetworkBuilder(
                 "Reply: would it reach the stored lists?",
                 "A reply longer than LAST_FREE overwrites stored descriptors: forget every list (invalidation 3).")
             .Op("LDB>", l.B(0), l.B(LastFree)).ClearLists(l).Build();
         yield return SlicePart.Pause(c, "Reply built", SlicePart.StepReplyCheck);
-        yield return Label(SlicePart.ReplyCheck, "block check of the reply");
-        foreach (var network in SlicePart.BlockCheck(c, "AC2", "reply", SlicePart.ReplyCheckPass, SlicePart.StepReplyCheckPass))
+        yield return Label(SlicePart.ReplyCheck, "frame check of the reply");
+        foreach (var network in FrameCheckPart.Reply(c))
         {
             yield return network;
         }
 
         yield return Always(
-            "Reply: BCC, '>', reply delay",
-            $"BCC as 2 characters at AC1, then '>'. Timed interrupt 0 sends the reply in {c.Options.ReplyDelayMs} ms (SMB34).",
-            Op("HTA", l.B(Bcc), "*AC1", "2"), Op("INCD", "AC1"), Op("INCD", "AC1"), Op("MOVB", "16#3E", "*AC1"),
-            Op("MOVB", Dec(c.Options.ReplyDelayMs), "SMB34"), Op("ATCH", c.Names.Delay, Dec(DelayEvent)), SlicePart.Done(c), Op("JMP", Dec(SlicePart.EndOfSlice)));
+            "Reply: '>', reply delay",
+            $"'>' at AC1. Timed interrupt 0 sends the reply in {c.Options.ReplyDelayMs} ms (SMB34).",
+            Op("MOVB", "16#3E", "*AC1"), Op("MOVB", Dec(c.Options.ReplyDelayMs), "SMB34"), Op("ATCH", c.Names.Delay, Dec(DelayEvent)),
+            SlicePart.Done(c), Op("JMP", Dec(SlicePart.EndOfSlice)));
         yield return Label(HandlerLabels.Silence, "no reply");
         yield return Always(
             "No reply: receive again", "Silence: the port listens for the next frame at once.",

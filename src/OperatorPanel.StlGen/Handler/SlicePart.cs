@@ -13,11 +13,8 @@ namespace OperatorPanel.StlGen.Handler;
 /// </summary>
 internal static class SlicePart
 {
-    /// <summary>Loop passes per scan: block check passes of <see cref="CharactersPerPass"/> characters, items checked or replied.</summary>
+    /// <summary>Loop passes per scan: frame check passes of <see cref="FrameCheckPart.CharactersPerPass"/> characters, items checked or replied.</summary>
     public const int PassesPerScan = 2;
-
-    /// <summary>Characters one block check pass XORs.</summary>
-    public const int CharactersPerPass = 20;
 
     /// <summary>
     /// What the technician notes promise, at the StlTiming figures; HandlerCostTests measures every golden
@@ -31,17 +28,18 @@ internal static class SlicePart
 
     /// <summary>STEP values: where the next scan goes on (0 = no request).</summary>
     public const int StepStart = 1, StepRequestCheck = 2, StepHeader = 3, StepCheckItems = 4, StepItemsChecked = 5,
-        StepBuildItems = 6, StepReplyCheck = 7, StepReplyCheckPass = 8, StepWriteReadBack = 9;
+        StepBuildItems = 6, StepReplyCheck = 7, StepReplyCheckPass = 8, StepWriteReadBack = 9, StepFrameChecked = 10, StepMovePass = 11;
 
     /// <summary>The labels OP_PANEL goes on at; 30 and 40 are the item loops' own.</summary>
     public const int RequestCheckPass = 71, Header = 72, ItemsChecked = 73, ReplyCheck = 74, ReplyCheckPass = 75,
-        WriteReadBack = 76, Yield = 90, EndOfSlice = 99;
+        WriteReadBack = 76, FrameChecked = 77, MovePass = 78, Yield = 90, EndOfSlice = 99;
 
     private static readonly (int Step, int Label)[] Resumes =
     [
         (StepRequestCheck, RequestCheckPass), (StepHeader, Header), (StepCheckItems, HandlerLabels.CheckItems),
         (StepItemsChecked, ItemsChecked), (StepBuildItems, HandlerLabels.BuildItems), (StepReplyCheck, ReplyCheck),
-        (StepReplyCheckPass, ReplyCheckPass), (StepWriteReadBack, WriteReadBack),
+        (StepReplyCheckPass, ReplyCheckPass), (StepWriteReadBack, WriteReadBack), (StepFrameChecked, FrameChecked),
+        (StepMovePass, MovePass),
     ];
 
     /// <summary>The start of the work on a request: nothing to do, or accumulators back and on where STEP says.</summary>
@@ -82,28 +80,29 @@ internal static class SlicePart
     }
 
     /// <summary>
-    /// Block check of the request or reply in passes of <see cref="CharactersPerPass"/> characters: BCC = XOR of
-    /// buffer bytes 2 .. count-3. <paramref name="walker"/> walks the characters, AC3 counts those left.
+    /// A loop over characters in passes of at most <paramref name="perPass"/>, BUDGET passes per scan: AC3 counts the
+    /// characters left (the caller sets it), AC0 is the FOR index, <paramref name="perCharacter"/> the loop body. When
+    /// the scan's passes are used up the next scan goes on at <paramref name="passStep"/>.
     /// </summary>
-    public static IEnumerable<StlNetwork> BlockCheck(HandlerContext c, string walker, string what, int passLabel, int passStep)
+    public static IEnumerable<StlNetwork> Passes(
+        HandlerContext c, string what, int perPass, int passLabel, int passStep, IEnumerable<StlNetwork> perCharacter)
     {
         var l = c.Layout;
-        yield return Always(
-            $"Block check of the {what}",
-            "BCC = XOR of the body characters before the last two: buffer bytes 2 .. count-3, count-4 of them.",
-            Op("MOVB", "0", l.B(Bcc)), Op("MOVD", l.Ptr(2), walker), Op("BTI", l.B(0), "AC3"), Op("-I", "4", "AC3"));
-        yield return Label(passLabel, $"one pass of the {what} block check");
-        yield return Always($"Pass of the {what} block check", $"CHUNK = characters left, at most {CharactersPerPass}; one loop pass used.",
+        yield return Label(passLabel, $"one pass of the {what}");
+        yield return Always($"Pass of the {what}", $"CHUNK = characters left, at most {perPass}; one loop pass used.",
             Op("MOVW", "AC3", l.W(Chunk)), Op("DECB", l.B(Budget)));
-        yield return new NetworkBuilder("At most one pass worth", $"CHUNK = {CharactersPerPass} when more characters are left.")
-            .Op("LDW>", l.W(Chunk), Dec(CharactersPerPass)).Op("MOVW", Dec(CharactersPerPass), l.W(Chunk)).Build();
-        yield return Always($"XOR CHUNK {what} characters", "AC3 = characters left after this pass; AC0 counts the loop.",
+        yield return new NetworkBuilder("At most one pass worth", $"CHUNK = {perPass} when more characters are left.")
+            .Op("LDW>", l.W(Chunk), Dec(perPass)).Op("MOVW", Dec(perPass), l.W(Chunk)).Build();
+        yield return Always($"{what}: CHUNK characters", "AC3 = characters left after this pass; AC0 counts the loop.",
             Op("-I", l.W(Chunk), "AC3"), Op("FOR", "AC0", "1", l.W(Chunk)));
-        yield return Always($"XOR one {what} character", "BCC = BCC XOR character; next character.",
-            Op("XORB", "*" + walker, l.B(Bcc)), Op("INCD", walker));
+        foreach (var network in perCharacter)
+        {
+            yield return network;
+        }
+
         yield return new NetworkBuilder($"End of the {what} pass").Op("NEXT").Build();
-        yield return JumpIf($"{what} check: scan's passes used", "Characters left, no pass left in this scan: the next scan goes on.",
+        yield return JumpIf($"{what}: scan's passes used", "Characters left, no pass left in this scan: the next scan goes on.",
             Yield, Op("LDW>", "AC3", "0"), Op("AB=", l.B(Budget), "0"), Op("MOVB", Dec(passStep), l.B(Step)));
-        yield return JumpIf($"{what} check: next pass", "Characters left: another pass.", passLabel, Op("LDW>", "AC3", "0"));
+        yield return JumpIf($"{what}: next pass", "Characters left: another pass.", passLabel, Op("LDW>", "AC3", "0"));
     }
 }

@@ -17,17 +17,18 @@ internal static class WritePart
         var l = c.Layout;
         var e04 = HandlerLabels.Error(ProtocolError.BadLength);
         yield return Label(HandlerLabels.Write, "03 WRITE");
-        yield return JumpIf("WRITE: body at least 8 bytes", "Error 04 when count < 18.", e04, Op("LDB<", l.B(0), "18"));
-        yield return JumpIf("WRITE: LENGTH 1-118", "Error 04.", e04, Op("LDB=", l.B(11), "0"), Op("OB>", l.B(11), "118"));
+        yield return JumpIf("WRITE: body at least 7 bytes", $"Error 04 when count < {RequestChars(4)}.", e04, Op("LDB<", l.B(0), RequestChars(4)));
+        yield return JumpIf(
+            $"WRITE: LENGTH 1-{ProtocolLimits.MaxWriteData}", "Error 04.", e04, Op("LDB=", l.B(11), "0"), Op("OB>", l.B(11), Dec(ProtocolLimits.MaxWriteData)));
         yield return Always(
-            "WRITE: expected length", "A WRITE of L bytes has 18 + 2L characters: AC0 = 18 + 2L, AC3 = count.",
-            Op("BTI", l.B(11), "AC0"), Op("SLW", "AC0", "1"), Op("+I", "18", "AC0"), Op("BTI", l.B(0), "AC3"));
-        yield return JumpIf("WRITE: body = 8 + LENGTH bytes", "Error 04.", e04, Op("LDW<>", "AC0", "AC3"));
+            "WRITE: expected length", $"A WRITE of L bytes has {RequestChars(4)} + 2L characters: AC0 = {RequestChars(4)} + 2L, AC3 = count.",
+            Op("BTI", l.B(11), "AC0"), Op("SLW", "AC0", "1"), Op("+I", RequestChars(4), "AC0"), Op("BTI", l.B(0), "AC3"));
+        yield return JumpIf("WRITE: body = 7 + LENGTH bytes", "Error 04.", e04, Op("LDW<>", "AC0", "AC3"));
         yield return Always(
             "WRITE: check the block", "One item from buffer byte 8 through the item checks of label 30.",
             Op("MOVD", l.Ptr(8), "AC2"), Op("MOVB", "1", l.B(I)), Op("MOVD", "0", "AC1"), Op("MOVB", Dec(SlicePart.StepCheckItems), l.B(Step)), Op("JMP", Dec(SlicePart.Yield)));
         yield return Label(HandlerLabels.WriteBit, "04 WRITE BIT");
-        yield return JumpIf("WRITE BIT: body exactly 9 bytes", "Error 04 unless count = 20.", e04, Op("LDB<>", l.B(0), "20"));
+        yield return JumpIf("WRITE BIT: body exactly 8 bytes", $"Error 04 unless count = {RequestChars(5)}.", e04, Op("LDB<>", l.B(0), RequestChars(5)));
         yield return Always(
             "WRITE BIT: check the byte", "N = BIT; a LENGTH of 1 in its place makes a one-byte block for the item checks.",
             Op("MOVB", l.B(11), l.B(N)), Op("MOVB", "1", l.B(11)), Op("MOVD", l.Ptr(8), "AC2"), Op("MOVB", "1", l.B(I)),
@@ -55,9 +56,9 @@ internal static class WritePart
         yield return SlicePart.Pause(c, "WRITE: written", SlicePart.StepWriteReadBack);
         yield return Label(SlicePart.WriteReadBack, "WRITE read-back");
         yield return Always(
-            "WRITE: read it back", "HTA the LENGTH bytes at the target back as the reply from buffer byte 10.",
-            Op("BTI", l.B(11), "AC0"), Op("SLW", "AC0", "1"), Op("HTA", "*AC3", l.B(10), "AC0"),
-            Op("ITD", "AC0", "AC0"), Op("MOVD", l.Ptr(10), "AC1"), Op("+D", "AC0", "AC1"), Op("MOVB", "0", l.B(List)),
+            "WRITE: read it back", $"HTA the LENGTH bytes at the target back as the reply from buffer byte {ReplyPart.PayloadStart}.",
+            Op("BTI", l.B(11), "AC0"), Op("SLW", "AC0", "1"), Op("HTA", "*AC3", l.B(ReplyPart.PayloadStart), "AC0"),
+            Op("ITD", "AC0", "AC0"), Op("MOVD", l.Ptr(ReplyPart.PayloadStart), "AC1"), Op("+D", "AC0", "AC1"), Op("MOVB", "0", l.B(List)),
             Op("JMP", Dec(HandlerLabels.Finish)));
         yield return Label(HandlerLabels.WriteBitExecute, "WRITE BIT on the target byte");
         yield return JumpIf("WRITE BIT: BIT 0-7, VALUE 0-1", "Error 06.", HandlerLabels.Error(ProtocolError.BadParameter), Op("LDB>", l.B(N), "7"), Op("OB>", l.B(12), "1"));
@@ -67,8 +68,8 @@ internal static class WritePart
         yield return new NetworkBuilder("WRITE BIT: reset", "VALUE 0: AND the inverted mask into the byte; the other bits stay.")
             .Op("LDB=", l.B(12), "0").Op("INVB", l.B(D)).Op("ANDB", l.B(D), "*AC3").Build();
         yield return Always(
-            "WRITE BIT: read back", "The whole byte as 2 characters from buffer byte 10.",
-            Op("HTA", "*AC3", l.B(10), "2"), Op("MOVD", l.Ptr(12), "AC1"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
+            "WRITE BIT: read back", $"The whole byte as 2 characters from buffer byte {ReplyPart.PayloadStart}.",
+            Op("HTA", "*AC3", l.B(ReplyPart.PayloadStart), "2"), Op("MOVD", l.Ptr(ReplyPart.PayloadStart + 2), "AC1"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
     }
 
     /// <summary>

@@ -13,5 +13,16 @@ internal sealed class NetworkBuilder(string title, params string[] comments)
         return this;
     }
 
+    /// <summary>Several instructions in order, as <see cref="Op"/> would add them one by one.</summary>
+    public NetworkBuilder Ops(IEnumerable<(string Mnemonic, string[] Operands)> instructions)
+    {
+        foreach (var (mnemonic, operands) in instructions)
+        {
+            Op(mnemonic, operands);
+        }
+
+        return this;
+    }
+
     public StlNetwork Build() => new(title, [.. comments], _instructions.ToImmutable());
 }

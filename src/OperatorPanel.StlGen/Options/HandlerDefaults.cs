@@ -9,7 +9,7 @@ public static class HandlerDefaults
     /// <summary>Q, M, V and SM writable (protocol area codes 2-5), as the reference model's default.</summary>
     public const int WriteMask = 0x3C;
 
-    /// <summary>The 256-byte receive/transmit buffer (byte 0 = count) plus 36 work bytes.</summary>
+    /// <summary>The 256-byte receive/transmit buffer (byte 0 = count) plus the work bytes.</summary>
     public const int FootprintBytes = 256 + HandlerLayout.WorkBytes;
 
     /// <summary>

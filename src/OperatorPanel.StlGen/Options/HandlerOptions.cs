@@ -30,7 +30,7 @@ public sealed record HandlerOptions
     /// <summary>RS-485 station address 1-126.</summary>
     public int Station { get; init; } = 1;
 
-    /// <summary>First V byte of the handler's 292 bytes; null = <see cref="HandlerDefaults.BufferStart"/>.</summary>
+    /// <summary>First V byte of the handler's <see cref="HandlerDefaults.FootprintBytes"/> bytes; null = <see cref="HandlerDefaults.BufferStart"/>.</summary>
     public int? BufferStart { get; init; }
 
     /// <summary>Bit n set = protocol area code n may be written (2 Q, 3 M, 4 V, 5 SM); bit 1 (I) never.</summary>
