@@ -11,7 +11,7 @@ using OperatorPanel.StlGen.Options;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel soak [--minutes N] [--profile flips|mixed|clean] [--seed N] [--baud B]</c>: the long soak of docs/soak.md.
+/// <c>opanel soak [--minutes N] [--profile flips|mixed|clean] [--seed N] [--baud B] [--lines N]</c>: the long soak of docs/soak.md.
 /// The panel stack works against the generated CPU 226 handler in the STL interpreter through a noisy-line proxy
 /// between two socat pty pairs, and the judge prints the figures per profile (both noisy profiles unless one is
 /// named). Exit 0 when the must-be-0 figures are 0, 2 when one is not, 1 for a bad option or a missing socat.
@@ -26,7 +26,12 @@ internal static class SoakCommand
         var profile = new Option<string?>("--profile") { Description = "flips (1% bits), mixed (0.5% bits, 0.5% characters, 5% frames) or clean; default flips and mixed" };
         var seed = new Option<int>("--seed") { Description = "Seed of the faults and of the panel's choices (default 11)", DefaultValueFactory = _ => 11 };
         var baud = new Option<int>("--baud") { Description = "Baud rate of the line (default 19200)", DefaultValueFactory = _ => 19200 };
-        var command = new Command("soak", "Soak the link on a noisy simulated line and judge it against what the PLC executed") { minutes, profile, seed, baud };
+        var lines = new Option<int>("--lines")
+        {
+            Description = "Lines run side by side, each with its own pty pairs, PLC and seed (seed, seed+1, ...), counted together (default 1)",
+            DefaultValueFactory = _ => 1,
+        };
+        var command = new Command("soak", "Soak the link on a noisy simulated line and judge it against what the PLC executed") { minutes, profile, seed, baud, lines };
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
@@ -34,6 +39,12 @@ internal static class SoakCommand
             if (!(length > 0 && length <= 24 * 60))
             {
                 return cli.Fail(ExitCodes.BadInput, $"--minutes {length}: give more than 0 and at most 1440");
+            }
+
+            var lineCount = parse.GetValue(lines);
+            if (lineCount is < 1 or > 16)
+            {
+                return cli.Fail(ExitCodes.BadInput, $"--lines {lineCount}: give 1 to 16");
             }
 
             IReadOnlyList<LineFaults> profiles = [LineFaults.Flips, LineFaults.Mixed];
@@ -55,11 +66,14 @@ internal static class SoakCommand
             var allHold = true;
             foreach (var faults in profiles)
             {
-                var figures = await RunAsync(socat, faults, parse.GetValue(seed), parse.GetValue(baud), TimeSpan.FromMinutes(length), cli, cancellationToken);
-                if (figures is null)
+                var runs = await Task.WhenAll(Enumerable.Range(0, lineCount).Select(i =>
+                    RunAsync(socat, faults, parse.GetValue(seed) + i, parse.GetValue(baud), TimeSpan.FromMinutes(length), cli, cancellationToken)));
+                if (runs.Any(r => r is null))
                 {
                     return ExitCodes.BadInput;
                 }
+
+                var figures = SoakFigures.Combine([.. runs.Select(r => r!)]);
 
                 allHold &= figures.ZerosHold;
                 if (cli.Json)
@@ -68,7 +82,7 @@ internal static class SoakCommand
                 }
                 else
                 {
-                    foreach (var text in figures.Lines())
+                    foreach (var text in figures.Text())
                     {
                         cli.Out.WriteLine(text);
                     }

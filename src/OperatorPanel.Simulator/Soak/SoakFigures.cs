@@ -58,12 +58,46 @@ public sealed record SoakFigures
 
     public required long FramesDropped { get; init; }
 
+    /// <summary>Lines run side by side (own pty pairs, PLC and seed each), counted together.</summary>
+    public int Lines { get; init; } = 1;
+
     public bool ZerosHold => WrongValuesShownGood == 0 && FalseConfirmations == 0 && WritesOutOfOrder == 0;
 
-    public IEnumerable<string> Lines()
+    /// <summary>The figures of lines run side by side as one run: counts added, the longest elapsed time, the first seed.</summary>
+    public static SoakFigures Combine(IReadOnlyList<SoakFigures> lines)
+    {
+        ArgumentNullException.ThrowIfNull(lines);
+        return lines[0] with
+        {
+            Lines = lines.Sum(f => f.Lines),
+            Elapsed = lines.Max(f => f.Elapsed),
+            Exchanges = lines.Sum(f => f.Exchanges),
+            Retries = lines.Sum(f => f.Retries),
+            Timeouts = lines.Sum(f => f.Timeouts),
+            CorruptReplies = lines.Sum(f => f.CorruptReplies),
+            NegativeReplies = lines.Sum(f => f.NegativeReplies),
+            ValuesShownGood = lines.Sum(f => f.ValuesShownGood),
+            WrongValuesShownGood = lines.Sum(f => f.WrongValuesShownGood),
+            WritesSent = lines.Sum(f => f.WritesSent),
+            WritesConfirmed = lines.Sum(f => f.WritesConfirmed),
+            FalseConfirmations = lines.Sum(f => f.FalseConfirmations),
+            WritesOutOfOrder = lines.Sum(f => f.WritesOutOfOrder),
+            WritesNotConfirmed = lines.SelectMany(f => f.WritesNotConfirmed).GroupBy(p => p.Key)
+                .ToImmutableSortedDictionary(g => g.Key, g => g.Sum(p => p.Value)),
+            NotConfirmedButExecuted = lines.Sum(f => f.NotConfirmedButExecuted),
+            ExecutedNeverSent = lines.Sum(f => f.ExecutedNeverSent),
+            CharactersOnLine = lines.Sum(f => f.CharactersOnLine),
+            BitsFlipped = lines.Sum(f => f.BitsFlipped),
+            CharactersDropped = lines.Sum(f => f.CharactersDropped),
+            FramesDropped = lines.Sum(f => f.FramesDropped),
+        };
+    }
+
+    public IEnumerable<string> Text()
     {
         var c = CultureInfo.InvariantCulture;
-        yield return string.Create(c, $"soak {Faults}, seed {Seed}, {Elapsed.TotalSeconds:F0} s");
+        var lines = Lines == 1 ? "" : $", {Lines} lines side by side (seeds from {Seed})";
+        yield return string.Create(c, $"soak {Faults}, seed {Seed}, {Elapsed.TotalSeconds:F0} s{lines}");
         yield return string.Create(c, $"  line: {CharactersOnLine} characters, {BitsFlipped} bits flipped, {CharactersDropped} characters dropped, {FramesDropped} frames dropped");
         yield return string.Create(c, $"  exchanges {Exchanges}, retries {Retries}, timeouts {Timeouts}, corrupt replies {CorruptReplies}, error replies {NegativeReplies}");
         yield return string.Create(c, $"  values shown as good {ValuesShownGood}, wrong values shown as good {WrongValuesShownGood} (must be 0)");

@@ -30,7 +30,7 @@ public sealed class SoakTests(ITestOutputHelper output)
 
         var figures = await RunAsync(faults!, TimeSpan.FromSeconds(10));
 
-        var because = string.Join(Environment.NewLine, figures.Lines());
+        var because = string.Join(Environment.NewLine, figures.Text());
         figures.WrongValuesShownGood.Should().Be(0, because);
         figures.FalseConfirmations.Should().Be(0, because);
         figures.WritesOutOfOrder.Should().Be(0, because);
@@ -43,7 +43,7 @@ public sealed class SoakTests(ITestOutputHelper output)
     {
         var figures = await RunAsync(LineFaults.Clean, TimeSpan.FromSeconds(4));
 
-        var because = string.Join(Environment.NewLine, figures.Lines());
+        var because = string.Join(Environment.NewLine, figures.Text());
         figures.WritesConfirmed.Should().Be(figures.WritesSent, because).And.BeGreaterThan(3, because);
         figures.ValuesShownGood.Should().BeGreaterThan(6, because);
         figures.ExecutedNeverSent.Should().Be(0, because);
@@ -82,7 +82,7 @@ public sealed class SoakTests(ITestOutputHelper output)
             TimeProvider.System,
             log: null,
             CancellationToken.None);
-        foreach (var text in figures.Lines())
+        foreach (var text in figures.Text())
         {
             output.WriteLine(text);
         }
