@@ -13,8 +13,8 @@ namespace OperatorPanel.Simulator.Stl;
 /// </summary>
 public static class HandlerMeasurement
 {
-    /// <summary>A 119-byte V range the requests read and write; the caller keeps it clear of the handler's bytes.</summary>
-    public const int DataBytes = 119;
+    /// <summary>A V range the requests read and write, as long as the longest WRITE; the caller keeps it clear of the handler's bytes.</summary>
+    public const int DataBytes = ProtocolLimits.MaxWriteData;
 
     /// <summary>The first entry: the handler's scans without a request (its Instructions: the most in one scan).</summary>
     public const string IdleName = "no request (a scan)";
@@ -51,17 +51,23 @@ public static class HandlerMeasurement
 
     private static IEnumerable<(string Name, byte[] Frame)> WorstCases(Station station, int v)
     {
-        // 19 items of 4 bytes and one of 5: 81 bytes, 2 x 81 + 4 x 20 = 242 <= 243 (the reply capacity rule).
-        ImmutableArray<ReadItem> twenty = [.. Enumerable.Range(0, 20).Select(i => new ReadItem(ProtocolArea.V, v + (i * 5), i == 19 ? 5 : 4))];
+        // 19 items of 4 bytes and one of 1: 77 bytes, the most a list of 20 items may have (ListsFit: 80 + 20 + 2 x 77 <= 255).
+        ImmutableArray<ReadItem> twenty = [.. Enumerable.Range(0, 20).Select(i => new ReadItem(ProtocolArea.V, v + (i * 5), i == 19 ? 1 : 4))];
+        var readTwenty = RequestCodec.Encode(new ReadRequest(station, 3, twenty));
         yield return ("IDENTIFY", RequestCodec.Encode(new IdentifyRequest(station, 1)));
-        yield return ("READ 1 item 119 bytes", RequestCodec.Encode(new ReadRequest(station, 2, [new ReadItem(ProtocolArea.V, v, DataBytes)])));
-        yield return ("READ 20 items 81 bytes", RequestCodec.Encode(new ReadRequest(station, 3, twenty)));
-        yield return ("WRITE 118 bytes", RequestCodec.Encode(new WriteBlockRequest(station, 4, ProtocolArea.V, v, [.. Enumerable.Range(0, 118).Select(i => (byte)i)])));
+        yield return ($"READ 1 item {ProtocolLimits.MaxReadData} bytes", RequestCodec.Encode(new ReadRequest(station, 2, [new ReadItem(ProtocolArea.V, v, ProtocolLimits.MaxReadData)])));
+        yield return ("READ 20 items 77 bytes", readTwenty);
+        yield return ($"WRITE {DataBytes} bytes", RequestCodec.Encode(new WriteBlockRequest(station, 4, ProtocolArea.V, v, [.. Enumerable.Range(0, DataBytes).Select(i => (byte)i)])));
         yield return ("WRITE BIT", RequestCodec.Encode(new WriteBitRequest(station, 5, ProtocolArea.V, v, 3, true)));
         yield return ("DEFINE LIST 20 items", RequestCodec.Encode(new DefineListRequest(station, 6, 1, twenty)));
         yield return ("READ LIST 20 items", RequestCodec.Encode(new ReadListRequest(station, 7, 1)));
         var bad = RequestCodec.Encode(new IdentifyRequest(station, 8));
-        bad[^2] = (byte)(bad[^2] == '0' ? '1' : '0');
-        yield return ("bad block check", bad);
+        bad[^2] ^= 0x01;
+        yield return ("bad frame check", bad);
+
+        // The frame after the remains of a cut-off one: checked from the last '<' and moved down to buffer byte 1.
+        yield return ("cut-off frame, then READ 20 items", [.. readTwenty.AsSpan(0, 60), .. readTwenty]);
+        var other = new Station(station.Address % 126 + 1);
+        yield return ("READ 20 items for another station", RequestCodec.Encode(new ReadRequest(other, 9, twenty)));
     }
 }

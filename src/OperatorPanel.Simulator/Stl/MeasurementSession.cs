@@ -5,12 +5,12 @@ namespace OperatorPanel.Simulator.Stl;
 /// <summary>
 /// Sends one request at a time to a program that is the handler alone (every instruction is the handler's) and
 /// records its interrupt runs (receive complete 23/24, transmit complete 9/26, timed interrupt 0 = event 10) and its
-/// scans until the reply's last character has left and RCV is armed again, or, for silence, until the longest reply
-/// delay (255 ms) has passed.
+/// scans until the reply's last character has left and RCV is armed again, or, for silence, for a second and 256
+/// character times (more than the longest request's work, the longest reply delay of 255 ms and the longest reply).
 /// </summary>
 internal sealed class MeasurementSession
 {
-    private static readonly TimeSpan Settle = TimeSpan.FromMilliseconds(300);
+    private static readonly TimeSpan Settle = TimeSpan.FromMilliseconds(1000);
     private static readonly TimeSpan Overhead = TimeSpan.FromTicks(StlTiming.ScanOverhead / 100);
     private static readonly TimeSpan InterruptOverhead = TimeSpan.FromTicks(StlTiming.InterruptOverhead / 100);
 

@@ -1,4 +1,5 @@
 using System.Globalization;
+using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.StlGen.Handler;
 
@@ -13,8 +14,8 @@ namespace OperatorPanel.StlGen.Handler;
 /// </summary>
 public sealed class HandlerLayout(int bufferStart)
 {
-    /// <summary>The work bytes after the buffer; v1's 36 grown by v2's check, REQCHECK and the room for 07 and 08.</summary>
-    public const int WorkBytes = 52;
+    /// <summary>The work bytes after the buffer: Core's count, which the reference model and IDENTIFY's V_BYTES use too.</summary>
+    public const int WorkBytes = HandlerMemory.WorkBytes;
 
     public const int Subroutines = 1;
     public const int Interrupts = 3;

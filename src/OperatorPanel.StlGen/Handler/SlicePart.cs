@@ -19,12 +19,12 @@ internal static class SlicePart
     /// <summary>
     /// What the technician notes promise, at the StlTiming figures; HandlerCostTests measures every golden
     /// configuration against them: the longest interrupt routine, the most added to one scan while serving a request
-    /// and without one, and the scans a reply takes (IDENTIFY the fewest, a 20-item READ the most).
+    /// and without one, and the scans a reply takes (WRITE BIT the fewest, a 20-item READ after a cut-off frame the most).
     /// </summary>
-    public const string InterruptBoundMs = "0.3", ScanBoundMs = "10", IdleScanBoundMs = "0.3";
+    public const string InterruptBoundMs = "0.5", ScanBoundMs = "10", IdleScanBoundMs = "0.3";
 
     /// <inheritdoc cref="InterruptBoundMs"/>
-    public const int FewestScans = 3, MostScans = 40;
+    public const int FewestScans = 8, MostScans = 75;
 
     /// <summary>STEP values: where the next scan goes on (0 = no request).</summary>
     public const int StepStart = 1, StepRequestCheck = 2, StepHeader = 3, StepCheckItems = 4, StepItemsChecked = 5,

@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.StlGen.Handler;
 
 namespace OperatorPanel.StlGen.Options;
@@ -10,7 +11,7 @@ public static class HandlerDefaults
     public const int WriteMask = 0x3C;
 
     /// <summary>The 256-byte receive/transmit buffer (byte 0 = count) plus the work bytes.</summary>
-    public const int FootprintBytes = 256 + HandlerLayout.WorkBytes;
+    public const int FootprintBytes = HandlerMemory.BufferBytes + HandlerLayout.WorkBytes;
 
     /// <summary>
     /// The top of V memory: user programs grow from VB0 upwards, so the end of V is the place least likely to be in

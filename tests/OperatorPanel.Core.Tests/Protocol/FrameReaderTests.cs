@@ -9,7 +9,7 @@ public sealed class FrameReaderTests
     public void Append_FrameInSingleBytes_YieldsItOnceComplete()
     {
         var reader = new FrameReader();
-        var frame = Encoding.ASCII.GetBytes("<01070107>");
+        var frame = Encoding.ASCII.GetBytes("<010701dl`l>");
 
         foreach (var b in frame[..^1])
         {
@@ -29,23 +29,24 @@ public sealed class FrameReaderTests
         var reader = new FrameReader();
 
         reader.Append([0x00, 0xFF, (byte)'>', (byte)'1', (byte)'2']);
-        reader.Append("<01070107>"u8);
+        reader.Append("<010701dl`l>"u8);
 
         reader.TryTake(out var result).Should().BeTrue();
-        Encoding.ASCII.GetString(result.Frame.AsSpan()).Should().Be("<01070107>");
+        Encoding.ASCII.GetString(result.Frame.AsSpan()).Should().Be("<010701dl`l>");
         result.SkippedBytes.Should().Be(5);
     }
 
     [Fact]
-    public void Append_StartInsideFrame_RestartsTheFrame()
+    public void Append_StartInsideFrame_RestartsTheFrameAtTheLastStart()
     {
         var reader = new FrameReader();
 
-        reader.Append("<0108<01070107>"u8);
+        reader.Append("<0108<01<010701dl`l>"u8);
 
         reader.TryTake(out var result).Should().BeTrue();
-        Encoding.ASCII.GetString(result.Frame.AsSpan()).Should().Be("<01070107>");
-        result.SkippedBytes.Should().Be(5);
+        Encoding.ASCII.GetString(result.Frame.AsSpan()).Should().Be("<010701dl`l>");
+        FrameCodec.TryDecode(result.Frame.AsSpan(), out _, out _).Should().BeTrue();
+        result.SkippedBytes.Should().Be(8);
         reader.TryTake(out _).Should().BeFalse();
     }
 
@@ -54,7 +55,7 @@ public sealed class FrameReaderTests
     {
         var reader = new FrameReader();
 
-        reader.Append(Encoding.ASCII.GetBytes("<" + new string('A', 254) + "AB<01070107>"));
+        reader.Append(Encoding.ASCII.GetBytes("<" + new string('A', 254) + "AB<010701dl`l>"));
 
         reader.TryTake(out var tooLong).Should().BeTrue();
         tooLong.Error.Should().Be(FrameError.TooLong);
@@ -62,7 +63,7 @@ public sealed class FrameReaderTests
         reader.TryTake(out var next).Should().BeTrue();
         next.IsFrame.Should().BeTrue();
         next.SkippedBytes.Should().Be(2);
-        Encoding.ASCII.GetString(next.Frame.AsSpan()).Should().Be("<01070107>");
+        Encoding.ASCII.GetString(next.Frame.AsSpan()).Should().Be("<010701dl`l>");
     }
 
     [Fact]
@@ -85,7 +86,7 @@ public sealed class FrameReaderTests
         reader.Append("<0107"u8);
 
         reader.Reset();
-        reader.Append("0107>"u8);
+        reader.Append("01dl`l>"u8);
 
         reader.TryTake(out _).Should().BeFalse();
         reader.PendingChars.Should().Be(0);

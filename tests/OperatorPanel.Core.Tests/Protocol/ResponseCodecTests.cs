@@ -75,4 +75,62 @@ public sealed class ResponseCodecTests
 
         error.Should().Be(FrameError.ChecksumMismatch);
     }
+
+    [Theory]
+    [InlineData("00", true, "")] //                       idle: no pairs
+    [InlineData("02 0012 0400", true, "0012 0400")] //    two pairs, ascending
+    [InlineData("FF 0000045705", true, "")] //            FULL: the whole list
+    [InlineData("02 0400 0012", false, "")] //            indexes not ascending
+    [InlineData("02 0012 0012", false, "")] //            an index twice
+    [InlineData("01 0012 04", false, "")] //              K = 1, one and a half pairs
+    [InlineData("80", false, "")] //                      K = 128: neither a pair count nor FULL
+    [InlineData("FF", false, "")] //                      FULL without data
+    [InlineData("", false, "")] //                        no K
+    public void TryDecode_ReadChangesReply_TakesPairsOrFullAndRefusesAnythingElse(string payload, bool valid, string pairs)
+    {
+        var request = new ReadChangesRequest(new Station(1), 0x17, 1, Full: false);
+        var check = RequestCodec.Check(request);
+        var frame = new FreeportFrame(1, 0x17, 0x88, [0x00, (byte)(check >> 8), (byte)check, .. Hex(payload)]);
+
+        ResponseCodec.TryDecode(FrameCodec.Encode(frame), request, out var response, out var error).Should().Be(valid, error.ToString());
+
+        if (valid)
+        {
+            var changes = (ReadChangesResponse)response;
+            changes.Full.Should().Be(Hex(payload)[0] == 0xFF);
+            changes.Changes.SelectMany(c => new[] { c.Index, c.Value }).Should().Equal(Hex(pairs));
+        }
+        else
+        {
+            error.Should().Be(FrameError.LengthMismatch);
+        }
+    }
+
+    [Fact]
+    public void ReadChangesResponse_TryApply_PutsTheChangesOverWhatThePcHeld()
+    {
+        var pairs = ReadChangesResponse.Pairs(new Station(1), 1, [new ChangedByte(0, 0x12), new ChangedByte(4, 0x07)]);
+
+        pairs.TryApply([0x00, 0x00, 0x04, 0x57, 0x05], out var current).Should().BeTrue();
+        current.Should().Equal(0x12, 0x00, 0x04, 0x57, 0x07);
+        pairs.TryApply([0x00, 0x00], out _).Should().BeFalse("index 4 lies outside a 2-byte list");
+        ReadChangesResponse.Whole(new Station(1), 1, [1, 2]).TryApply([9, 9, 9], out var whole).Should().BeTrue();
+        whole.Should().Equal(1, 2);
+    }
+
+    [Fact]
+    public void TryDecode_ReplyEncodedForTheRequest_CarriesItsCheckAndAnotherRequestsReplyDoesNot()
+    {
+        var write = new WriteBlockRequest(new Station(1), 0x21, ProtocolArea.V, 100, [0x12, 0x34]);
+        var other = write with { Offset = 101 };
+        var reply = ResponseCodec.Encode(new WriteBlockResponse(new Station(1), 0x21, [0x12, 0x34]), other);
+
+        ResponseCodec.TryDecode(reply, other, out var confirmed, out _).Should().BeTrue();
+        confirmed.RequestCheck.Should().Be(RequestCodec.Check(other));
+        ResponseCodec.TryDecode(reply, write, out var response, out var error).Should().BeFalse("VB101 was written, not VB100");
+        error.Should().Be(FrameError.RequestCheckMismatch);
+        response.Should().BeNull();
+    }
+
+    private static byte[] Hex(string text) => Convert.FromHexString(text.Replace(" ", string.Empty, StringComparison.Ordinal));
 }

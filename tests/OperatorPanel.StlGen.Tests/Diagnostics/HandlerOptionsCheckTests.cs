@@ -15,7 +15,7 @@ public sealed class HandlerOptionsCheckTests
         { StlDiagnostics.BaudNotAllowed, new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224, CpuRevision.Early), BaudRate = 115200 }, "115200" },
         { StlDiagnostics.DataBitsNotAllowed, new HandlerOptions { Cpu = Cpu224, DataBits = 6 }, "6 data bits" },
         { StlDiagnostics.StopBitsNotAllowed, new HandlerOptions { Cpu = Cpu224, StopBits = 2 }, "2 stop bits" },
-        { StlDiagnostics.BufferOutsideV, new HandlerOptions { Cpu = Cpu224, BufferStart = 8000 }, "VB8000-VB8291" },
+        { StlDiagnostics.BufferOutsideV, new HandlerOptions { Cpu = Cpu224, BufferStart = 8000 }, "VB8000-VB8307" },
         { StlDiagnostics.StationOutOfRange, new HandlerOptions { Cpu = Cpu224, Station = 127 }, "127" },
         { StlDiagnostics.ReplyDelayOutOfRange, new HandlerOptions { Cpu = Cpu224, ReplyDelayMs = 0 }, "reply delay 0 ms" },
         { StlDiagnostics.CharTimeoutOutOfRange, new HandlerOptions { Cpu = Cpu224, CharTimeoutMs = -1 }, "-1 ms" },
@@ -56,10 +56,10 @@ public sealed class HandlerOptionsCheckTests
     }
 
     [Theory]
-    [InlineData(CpuModel.Cpu221, CpuRevision.Current, 1756)]
-    [InlineData(CpuModel.Cpu224, CpuRevision.Early, 4828)]
-    [InlineData(CpuModel.Cpu224, CpuRevision.Current, 7900)]
-    [InlineData(CpuModel.Cpu226, CpuRevision.Current, 9948)]
+    [InlineData(CpuModel.Cpu221, CpuRevision.Current, 1740)]
+    [InlineData(CpuModel.Cpu224, CpuRevision.Early, 4812)]
+    [InlineData(CpuModel.Cpu224, CpuRevision.Current, 7884)]
+    [InlineData(CpuModel.Cpu226, CpuRevision.Current, 9932)]
     public void Defaults_BufferStart_EndsAtTheLastVByteEvenAligned(CpuModel model, CpuRevision revision, int start)
     {
         var cpu = CpuProfiles.For(model, revision);

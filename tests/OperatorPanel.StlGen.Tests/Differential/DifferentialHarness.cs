@@ -162,18 +162,20 @@ internal sealed class DifferentialHarness
     }
 
     /// <summary>
-    /// The scan times of an IDENTIFY reply (SMW22-SMW26, characters 27-38 of its 42) and so its BCC are not
-    /// comparable: OP_PANEL builds the reply scans after the request, and those scans change SMW22-SMW26 in the
-    /// interpreter after the reference got its copy. Both sides are masked alike.
+    /// The scan times of an IDENTIFY reply (SMW22-SMW26, characters 31-42 of its 62) and so its check characters
+    /// (57-60) are not comparable: OP_PANEL builds the reply scans after the request, and those scans change
+    /// SMW22-SMW26 in the interpreter after the reference got its copy. Both sides are masked alike.
     /// </summary>
     private static string MaskScanTimes(string replies)
     {
+        const int length = 62;
         var text = replies.ToCharArray();
-        for (var start = replies.IndexOf('<', StringComparison.Ordinal); start >= 0 && start + 42 <= text.Length; start = replies.IndexOf('<', start + 1))
+        for (var start = replies.IndexOf('<', StringComparison.Ordinal); start >= 0 && start + length <= text.Length; start = replies.IndexOf('<', start + 1))
         {
-            if (text[start + 41] == '>' && replies.Substring(start + 5, 2) == "81")
+            if (text[start + length - 1] == '>' && replies.Substring(start + 5, 2) == "81")
             {
-                Array.Fill(text, '*', start + 27, 14);
+                Array.Fill(text, '*', start + 31, 12);
+                Array.Fill(text, '*', start + 57, 4);
             }
         }
 

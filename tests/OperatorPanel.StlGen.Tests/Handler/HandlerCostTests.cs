@@ -28,7 +28,7 @@ public sealed class HandlerCostTests
 
         var idle = measured.Single(m => m.Name == HandlerMeasurement.IdleName);
         var requests = measured.Where(m => m != idle).ToList();
-        requests.Should().HaveCount(8).And.OnlyContain(m => m.WorstInterrupt <= Ms(SlicePart.InterruptBoundMs) && m.WorstScan <= Ms(SlicePart.ScanBoundMs));
+        requests.Should().HaveCount(10).And.OnlyContain(m => m.WorstInterrupt <= Ms(SlicePart.InterruptBoundMs) && m.WorstScan <= Ms(SlicePart.ScanBoundMs));
         requests.Where(m => m.ReplyChars > 0).Should().OnlyContain(m => m.Scans >= SlicePart.FewestScans && m.Scans <= SlicePart.MostScans);
         idle.WorstScan.Should().BeLessThan(Ms(SlicePart.IdleScanBoundMs));
         requests.Single(m => m.Name.StartsWith("READ 20", StringComparison.Ordinal)).Scans.Should().BeGreaterThan(SlicePart.MostScans / 2, "the bound is near what a 20-item READ takes");

@@ -53,7 +53,7 @@ public sealed class HandlerFragmentTests
     {
         var program = HandlerGenerator.Generate(HandlerGoldenTests.Cpu224Port0Station2).Program!;
 
-        program.Blocks[3].Networks.Single().Instructions.Select(AwlText).Should().Equal("LD SM0.0", "DTCH 10", "XMT VB7900, 0");
+        program.Blocks[3].Networks.Single().Instructions.Select(AwlText).Should().Equal("LD SM0.0", "DTCH 10", "XMT VB7884, 0");
     }
 
     [Fact]

@@ -22,9 +22,13 @@ public sealed class HandlerOwnBytesTests
     /// <summary>
     /// Buffer byte 0 (count) and 1 ('&lt;'); byte 11, the WRITE's own LENGTH: before the check, writing FF there made the
     /// read-back HTA 510 characters past the buffer and the CPU stopped on the indirect address (silent until restarted);
-    /// the stored-list tail, LAST_FREE, STEP and the last saved accumulator byte.
+    /// the stored-list tail, LAST_FREE, STEP, the last saved accumulator byte, REQCHECK, the CRC and the last work byte.
     /// </summary>
-    public static TheoryData<int> HandlerOffsets => [0, 1, 11, 200, 255, HandlerLayout.LastFree, HandlerLayout.Step, HandlerLayout.Save + 15];
+    public static TheoryData<int> HandlerOffsets =>
+    [
+        0, 1, 11, 200, 255, HandlerLayout.LastFree, HandlerLayout.Step, HandlerLayout.Save + 15, HandlerLayout.ReqCheck, HandlerLayout.Crc + 1,
+        HandlerMemory.BufferBytes + HandlerLayout.WorkBytes - 1,
+    ];
 
     [Theory]
     [MemberData(nameof(HandlerOffsets))]
@@ -33,12 +37,14 @@ public sealed class HandlerOwnBytesTests
         var harness = new DifferentialHarness(Options, new Random(9));
         var at = Options.EffectiveBufferStart + offset;
 
-        var write = Send(harness, new WriteBlockRequest(new Station(2), 1, ProtocolArea.V, at, [0xFF]));
-        var bit = Send(harness, new WriteBitRequest(new Station(2), 2, ProtocolArea.V, at, 0, false));
+        PlcRequest writeRequest = new WriteBlockRequest(new Station(2), 1, ProtocolArea.V, at, [0xFF]);
+        PlcRequest bitRequest = new WriteBitRequest(new Station(2), 2, ProtocolArea.V, at, 0, false);
+        var write = Send(harness, writeRequest);
+        var bit = Send(harness, bitRequest);
         var identify = Send(harness, new IdentifyRequest(new Station(2), 3));
 
-        write.Stl.Should().Be(write.Reference).And.Be(ErrorReply(1, CommandCode.Write));
-        bit.Stl.Should().Be(bit.Reference).And.Be(ErrorReply(2, CommandCode.WriteBit));
+        write.Stl.Should().Be(write.Reference).And.Be(ErrorReply(writeRequest));
+        bit.Stl.Should().Be(bit.Reference).And.Be(ErrorReply(bitRequest));
         identify.Stl.Should().StartWith("<020381").And.Be(identify.Reference);
     }
 
@@ -48,9 +54,10 @@ public sealed class HandlerOwnBytesTests
         var harness = new DifferentialHarness(Options, new Random(9));
         harness.Poke(ProtocolArea.V, Options.EffectiveBufferStart - 2, 0xAA);
 
-        var write = Send(harness, new WriteBlockRequest(new Station(2), 1, ProtocolArea.V, Options.EffectiveBufferStart - 2, [1, 2, 3]));
+        PlcRequest request = new WriteBlockRequest(new Station(2), 1, ProtocolArea.V, Options.EffectiveBufferStart - 2, [1, 2, 3]);
+        var write = Send(harness, request);
 
-        write.Stl.Should().Be(write.Reference).And.Be(ErrorReply(1, CommandCode.Write));
+        write.Stl.Should().Be(write.Reference).And.Be(ErrorReply(request));
         harness.Interpreted(ProtocolArea.V)[Options.EffectiveBufferStart - 2].Should().Be(0xAA, "nothing of a refused block is written");
     }
 
@@ -82,6 +89,12 @@ public sealed class HandlerOwnBytesTests
     private static (string Stl, string Reference) Send(DifferentialHarness harness, PlcRequest request) =>
         harness.Exchange([WireChunk.Now(RequestCodec.Encode(request))]);
 
-    private static string ErrorReply(byte sequence, CommandCode command) =>
-        Encoding.ASCII.GetString(FrameCodec.Encode(new FreeportFrame(2, sequence, (byte)((byte)command | FreeportFrame.ReplyBit), ImmutableArray.Create((byte)ProtocolError.NotWritable))));
+    /// <summary>Error 03 to <paramref name="request"/>: STATUS, then REQCHECK, the CRC of the request's characters.</summary>
+    private static string ErrorReply(PlcRequest request)
+    {
+        FrameCodec.TryGetCheck(RequestCodec.Encode(request), out var check).Should().BeTrue();
+        var command = (byte)((byte)request.Command | FreeportFrame.ReplyBit);
+        return Encoding.ASCII.GetString(FrameCodec.Encode(new FreeportFrame(
+            2, request.Sequence, command, ImmutableArray.Create((byte)ProtocolError.NotWritable, (byte)(check >> 8), (byte)check))));
+    }
 }

@@ -4,24 +4,24 @@ using OperatorPanel.StlGen.Tests.Merge.UserPrograms;
 
 namespace OperatorPanel.StlGen.Tests.Merge;
 
-/// <summary>CPU 224 handler on port 0 by default: VB7900-VB8191, SBR63, INT125-INT127, events 23, 10, 9.</summary>
+/// <summary>CPU 224 handler on port 0 by default: VB7884-VB8191, SBR63, INT125-INT127, events 23, 10, 9.</summary>
 public sealed class HandlerMergerCollisionTests
 {
     private const int Line = UserProgram.FirstInstructionLine;
 
     [Theory]
-    [InlineData("MOVB   1, VB7900", "VB7900")]
-    [InlineData("MOVW   VW7899, VW0", "VW7899 (VB7899-VB7900)")]
+    [InlineData("MOVB   1, VB7884", "VB7884")]
+    [InlineData("MOVW   VW7883, VW0", "VW7883 (VB7883-VB7884)")]
     [InlineData("LDD=   VD8188, 0", "VD8188 (VB8188-VB8191)")]
     [InlineData("LD     V8000.3", "V8000.3 (VB8000)")]
     [InlineData("MOVD   &VB8191, AC1", "&VB8191 (VB8191)")]
-    [InlineData("BMB    VB0, VB7880, 21", "VB7880 (VB7880-VB7900)")]
-    [InlineData("BMW    VW7780, VW0, 61", "VW7780 (VB7780-VB7901)")]
-    [InlineData("FILL   0, VW7890, 6", "VW7890 (VB7890-VB7901)")]
-    [InlineData("ATH    VB0, VB7899, 4", "VB7899 (VB7899-VB7900)")]
-    [InlineData("HTA    VB0, VB7897, 8", "VB7897 (VB7897-VB7904)")]
-    [InlineData("S      V7899.7, 2", "V7899.7 (VB7899-VB7900)")]
-    [InlineData("SHRB   I0.0, V7899.0, 9", "V7899.0 (VB7899-VB7900)")]
+    [InlineData("BMB    VB0, VB7864, 21", "VB7864 (VB7864-VB7884)")]
+    [InlineData("BMW    VW7764, VW0, 61", "VW7764 (VB7764-VB7885)")]
+    [InlineData("FILL   0, VW7874, 6", "VW7874 (VB7874-VB7885)")]
+    [InlineData("ATH    VB0, VB7883, 4", "VB7883 (VB7883-VB7884)")]
+    [InlineData("HTA    VB0, VB7881, 8", "VB7881 (VB7881-VB7888)")]
+    [InlineData("S      V7883.7, 2", "V7883.7 (VB7883-VB7884)")]
+    [InlineData("SHRB   I0.0, V7883.0, 9", "V7883.0 (VB7883-VB7884)")]
     [InlineData("INCW   VW8190", "VW8190 (VB8190-VB8191)")]
     public void Merge_UserTouchesHandlerVBytes_ReportsOverlapAtItsLine(string instruction, string described)
     {
@@ -32,14 +32,14 @@ public sealed class HandlerMergerCollisionTests
         var overlap = result.Errors.Should().ContainSingle().Which;
         overlap.Id.Should().Be(StlDiagnostics.VMemoryOverlap);
         overlap.Line.Should().Be(Line + 1);
-        overlap.Message.Should().StartWith($"{described} overlaps the handler's VB7900-VB8191; move the handler with --buffer VBn");
+        overlap.Message.Should().StartWith($"{described} overlaps the handler's VB7884-VB8191; move the handler with --buffer VBn");
     }
 
     [Theory]
-    [InlineData("MOVB   1, VB7899")]
-    [InlineData("BMB    VB0, VB7880, 20")]
-    [InlineData("S      V7899.0, 8")]
-    [InlineData("ATH    VB0, VB7899, 2")]
+    [InlineData("MOVB   1, VB7883")]
+    [InlineData("BMB    VB0, VB7864, 20")]
+    [InlineData("S      V7883.0, 8")]
+    [InlineData("ATH    VB0, VB7883, 2")]
     public void Merge_UserStopsJustBelowHandler_NoCollision(string instruction)
     {
         var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.0", instruction), UserProgram.Cpu224);
@@ -53,7 +53,7 @@ public sealed class HandlerMergerCollisionTests
     {
         var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.0", "MOVB   1, VB8000"), UserProgram.Cpu224);
 
-        result.Errors.Single().Message.Should().EndWith("(VB7708-VB7999 is not used by the user's program)");
+        result.Errors.Single().Message.Should().EndWith("(VB7692-VB7999 is not used by the user's program)");
     }
 
     [Fact]
