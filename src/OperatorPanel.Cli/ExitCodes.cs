@@ -14,6 +14,12 @@ internal static class ExitCodes
     /// <summary>The link to the PLC failed: port unavailable, no answer, a corrupt reply, a write read back differently.</summary>
     public const int LinkFailure = 2;
 
+    /// <summary>
+    /// <c>opanel write</c>: a write's reply was lost and reading back could not settle whether the PLC applied it; check
+    /// the value on the PLC before writing again (3 wins over 2 and 1).
+    /// </summary>
+    public const int WriteUnknown = 3;
+
     /// <summary><c>opanel generate</c>: the handler settings are impossible; each STLnnn diagnostic is printed.</summary>
     public const int GeneratorRefused = 2;
 }

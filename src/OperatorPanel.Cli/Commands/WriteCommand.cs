@@ -13,11 +13,14 @@ internal static class WriteCommand
 {
     private const string Description =
         "Write values to a PLC, each confirmed by the PLC's read-back; prints old -> new and confirmed, mismatch (read back X) or failed: reason. "
+        + "A write whose reply is lost is never sent again: the panel reads the address back and prints confirmed (reply lost, read back), "
+        + "not applied (the old value is still there: write again if still wanted) or unknown (check the value before writing again). "
         + "Every write is logged with old and new value. "
         + "VALUE notation: a bit takes 0/1, true/false, on/off; 16#FF or 0xFF is hex, 2#1010 binary, 'AB' or \"AB\" ASCII of exactly "
         + "the width's length, a number with '.' or an exponent a REAL (double words only), a leading '-' a signed number, anything else unsigned. "
         + "Exit codes: 0 all confirmed; 1 bad input (address, value) or refused by the PLC (not writable, out of range), nothing written "
-        + "for bad input; 2 a write failed on the link or read back differently (2 wins over 1)";
+        + "for bad input; 2 not applied (nothing sent, or the old value read back after a lost reply) or read back differently; "
+        + "3 unknown whether applied (3 wins over 2, 2 over 1)";
 
     public static Command Create(Func<ParseResult, CliContext> context)
     {

@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Link;
 
@@ -11,9 +12,27 @@ public interface IPlcLink
 {
     /// <summary>
     /// Sends <paramref name="request"/> under the link's next sequence number and returns the matching reply (an <see cref="ErrorResponse"/> included). Throws
-    /// <see cref="Transport.PlcCommunicationException"/> when no valid reply came after the retries.
+    /// <see cref="PlcCommunicationException"/> when no valid reply came after the retries. A request that acts on
+    /// the process (<see cref="PlcLink.ActsOnProcess"/>) gets no retries.
     /// </summary>
     Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken);
+
+    /// <summary>
+    /// Sends a request that acts on the process once and says whether it was answered, never sent, or may have acted
+    /// without an answer. This default cannot tell a frame that never left from a lost reply, so it takes every failure
+    /// for a lost reply: the safe side.
+    /// </summary>
+    async Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken)
+    {
+        try
+        {
+            return new OnceReply.Answered(await ExchangeAsync(request, cancellationToken).ConfigureAwait(false));
+        }
+        catch (PlcCommunicationException failure)
+        {
+            return new OnceReply.ReplyLost(failure.Message, CorruptedCopy: false);
+        }
+    }
 
     /// <summary>Counters and round-trip times per station since the link was created.</summary>
     LinkStatistics StatisticsFor(Station station);

@@ -26,6 +26,9 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     private long? _lastExchangeEnd;
     private byte _sequence;
 
+    /// <summary>Whether the exchange under way handed its frame to the port (so the PLC may have got it).</summary>
+    private bool _frameSent;
+
     public PlcLink(ITransport transport, LinkOptions options, TimeProvider? time = null, ILogger? log = null)
     {
         ArgumentNullException.ThrowIfNull(transport);
@@ -45,6 +48,39 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
 
     public async Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
     {
+        var result = await RunAsync(request, cancellationToken).ConfigureAwait(false);
+        return result.Response ?? throw result.Failure!;
+    }
+
+    public async Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken)
+    {
+        var result = await RunAsync(request, cancellationToken).ConfigureAwait(false);
+        return result switch
+        {
+            { Response: { } response } => new OnceReply.Answered(response),
+            { Sent: false } => new OnceReply.NotSent(result.Failure!),
+            _ => new OnceReply.ReplyLost(result.Failure!.Message, result.CorruptedCopy),
+        };
+    }
+
+    /// <summary>
+    /// True for the commands that act on the process: WRITE, WRITE BIT. They are sent once: after a lost reply the PLC
+    /// may have acted, and a repeat could act twice (a bit the PLC program resets at once, a value it changed meanwhile).
+    /// </summary>
+    public static bool ActsOnProcess(CommandCode command) => command switch
+    {
+        CommandCode.Write or CommandCode.WriteBit => true,
+        CommandCode.Identify or CommandCode.Read or CommandCode.DefineList or CommandCode.ReadList => false,
+    };
+
+    public async ValueTask DisposeAsync()
+    {
+        _arbiter.Dispose();
+        await _transport.DisposeAsync().ConfigureAwait(false);
+    }
+
+    private async Task<ExchangeResult> RunAsync(PlcRequest request, CancellationToken cancellationToken)
+    {
         ArgumentNullException.ThrowIfNull(request);
         using var turn = await _arbiter.AcquireAsync(cancellationToken).ConfigureAwait(false);
 
@@ -53,9 +89,11 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         var statistics = _statistics.GetOrAdd(request.Station, _ => new StationStatistics());
         var frame = RequestCodec.Encode(request);
         var timeout = _options.ReplyTimeoutFor(request, frame.Length);
+        var retries = ActsOnProcess(request.Command) ? 0 : _options.Retries;
+        _frameSent = false;
         PlcCommunicationException? lastFailure = null;
 
-        for (var attempt = 0; attempt <= _options.Retries; attempt++)
+        for (var attempt = 0; attempt <= retries; attempt++)
         {
             if (attempt > 0)
             {
@@ -64,7 +102,16 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             }
 
             statistics.Request();
-            var outcome = await AttemptAsync(request, frame, timeout, cancellationToken).ConfigureAwait(false);
+            AttemptOutcome outcome;
+            try
+            {
+                outcome = await AttemptAsync(request, frame, timeout, cancellationToken).ConfigureAwait(false);
+            }
+            catch (PlcCommunicationException portFailure)
+            {
+                return new ExchangeResult(null, portFailure, _frameSent, CorruptedCopy: false);
+            }
+
             if (outcome.Response is { } response)
             {
                 statistics.Reply(outcome.Elapsed);
@@ -75,7 +122,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
                 }
 
                 _online[request.Station] = true;
-                return response;
+                return new ExchangeResult(response, null, Sent: true, CorruptedCopy: false);
             }
 
             lastFailure = outcome.Failure!;
@@ -91,15 +138,10 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
 
         _online[request.Station] = false;
         var kind = lastFailure!.Kind == PlcErrorKind.Timeout ? PlcErrorKind.NoAnswer : PlcErrorKind.FrameCorrupt;
-        var message = $"{request.Station} on {_transport.Name}: no valid reply to {request.Command} after {_options.Retries + 1} attempts ({lastFailure.Message})";
+        var attempts = ActsOnProcess(request.Command) ? "sent once, never repeated" : $"after {retries + 1} attempts";
+        var message = $"{request.Station} on {_transport.Name}: no valid reply to {request.Command} {attempts} ({lastFailure.Message})";
         _log.Warning("{Message}", message);
-        throw new PlcCommunicationException(kind, request.Station, message);
-    }
-
-    public async ValueTask DisposeAsync()
-    {
-        _arbiter.Dispose();
-        await _transport.DisposeAsync().ConfigureAwait(false);
+        return new ExchangeResult(null, new PlcCommunicationException(kind, request.Station, message), Sent: true, CorruptedCopy: false);
     }
 
     private async Task<AttemptOutcome> AttemptAsync(PlcRequest request, byte[] frame, TimeSpan timeout, CancellationToken cancellationToken)
@@ -111,6 +153,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             _transport.DiscardInput();
             _reader.Reset();
             var started = _time.GetTimestamp();
+            _frameSent = true;
             await _transport.WriteAsync(frame, cancellationToken).ConfigureAwait(false);
             var outcome = await ReceiveAsync(request, started, timeout, cancellationToken).ConfigureAwait(false);
             _lastExchangeEnd = _time.GetTimestamp();
@@ -180,6 +223,9 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             await Task.Delay(wait, _time, cancellationToken).ConfigureAwait(false);
         }
     }
+
+    /// <summary>An exchange's end: the reply, or the failure and whether the frame went out.</summary>
+    private sealed record ExchangeResult(PlcResponse? Response, PlcCommunicationException? Failure, bool Sent, bool CorruptedCopy);
 
     private sealed record AttemptOutcome(PlcResponse? Response, PlcCommunicationException? Failure, TimeSpan Elapsed)
     {

@@ -1,3 +1,5 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Writes;
 
@@ -5,7 +7,8 @@ namespace OperatorPanel.Core.Polling;
 
 /// <summary>
 /// Writes: queued by any thread, sent by the loop ahead of the next READ (between two exchanges, never inside one),
-/// confirmed by the read-back, logged with old and new value, never retried beyond the link's identical-frame retries.
+/// sent once (<see cref="IPlcLink.ExchangeOnceAsync"/>), confirmed by the reply's read-back or, when the reply was lost,
+/// by reading the target back (WriteOutcome.ConfirmedByReadBack, NotApplied, Unknown), logged with old and new value.
 /// </summary>
 public sealed partial class PollingEngine
 {
@@ -41,7 +44,8 @@ public sealed partial class PollingEngine
             {
                 // A bug of ours must not leave the caller waiting forever: the write still gets an outcome.
                 _logger.Error(exception, "Write {Request} broke the engine's own handling", pending.Request.ToString());
-                Finish(pending, WriteLog.Unknown, new WriteOutcome.Failed($"internal error: {exception.Message}", WriteFailureKind.UnexpectedReply));
+                Finish(pending, WriteLog.Unknown, new WriteOutcome.Unknown(
+                    default, $"internal error: {exception.Message}", "the panel's own handling broke after the write may have been sent"));
             }
 
             done++;
@@ -53,31 +57,51 @@ public sealed partial class PollingEngine
     private async Task ExecuteWriteAsync(PendingWrite pending, CancellationToken cancellationToken)
     {
         var request = pending.Request;
-        var oldValue = OldValueText(request);
+        var oldRaw = OldValue(request);
+        var oldValue = WriteLog.Format(request.Address, oldRaw);
         if (!WriteCommand.TryBuild(request, _plan.Cpus.GetValueOrDefault(request.Station), out var plcRequest, out var refusal))
         {
             Finish(pending, oldValue, refusal);
             return;
         }
 
-        PlcResponse? response;
+        OnceReply reply;
         try
         {
-            response = await _link.ExchangeAsync(plcRequest, cancellationToken).ConfigureAwait(false);
+            reply = await _link.ExchangeOnceAsync(plcRequest, cancellationToken).ConfigureAwait(false);
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {
-            Finish(pending, oldValue, new WriteOutcome.Failed(
-                "polling stopped while the write was on the wire; the PLC may or may not have applied it", WriteFailureKind.EngineStopped));
+            Finish(pending, oldValue, new WriteOutcome.Unknown(
+                default, "polling stopped while the write was on the wire", "no read-back: the panel stopped polling"));
             throw;
         }
         catch (Exception exception)
         {
             var (message, _) = _stations.RecordFailure(request.Station, exception);
-            Finish(pending, oldValue, new WriteOutcome.Failed(message, WriteFailureKind.LinkFailure));
+            Finish(pending, oldValue, LostReplyResolution.Unresolved("the link failed while sending", message));
             return;
         }
 
+        switch (reply)
+        {
+            case OnceReply.Answered answered:
+                Finish(pending, oldValue, Judge(request, answered.Response));
+                break;
+            case OnceReply.NotSent notSent:
+                var (message, _) = _stations.RecordFailure(request.Station, notSent.Failure);
+                Finish(pending, oldValue, new WriteOutcome.Failed($"{message}; nothing was sent", WriteFailureKind.LinkFailure));
+                break;
+            case OnceReply.ReplyLost lost:
+                Finish(pending, oldValue, await ResolveByReadBackAsync(request, oldRaw, lost, cancellationToken).ConfigureAwait(false));
+                break;
+            default:
+                throw new InvalidOperationException($"unknown link reply {reply}");
+        }
+    }
+
+    private WriteOutcome Judge(WriteRequest request, PlcResponse response)
+    {
         var outcome = WriteCommand.Interpret(request, response, out var readBack);
         if (outcome is WriteOutcome.Failed { Kind: WriteFailureKind.UnexpectedReply } odd)
         {
@@ -88,19 +112,61 @@ public sealed partial class PollingEngine
             _stations.RecordReply(request.Station, (outcome as WriteOutcome.Failed)?.Reason);
         }
 
+        PublishReadBack(request, readBack);
+        return outcome;
+    }
+
+    /// <summary>
+    /// The write's reply was lost, so the PLC may have acted: read the target back (a READ, retried as reads are) and
+    /// judge it, never repeating the write. Cancellation leaves the write unknown.
+    /// </summary>
+    private async Task<WriteOutcome> ResolveByReadBackAsync(
+        WriteRequest request, ImmutableArray<byte> oldRaw, OnceReply.ReplyLost lost, CancellationToken cancellationToken)
+    {
+        var cause = lost.CorruptedCopy
+            ? $"{lost.Cause}; the PLC acted on a corrupted copy of the request, so it may have written another address too: check the values near {request.Address}"
+            : lost.Cause;
+        _logger.Warning("Write {Request}: {Cause}; reading the target back", request.ToString(), cause);
+        PlcResponse response;
+        try
+        {
+            response = await _link.ExchangeAsync(LostReplyResolution.ReadBackOf(request), cancellationToken).ConfigureAwait(false);
+        }
+        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
+        {
+            return new WriteOutcome.Unknown(default, cause, "no read-back: the panel stopped polling");
+        }
+        catch (Exception exception)
+        {
+            var (message, _) = _stations.RecordFailure(request.Station, exception);
+            return LostReplyResolution.Unresolved(cause, message);
+        }
+
+        if (response is not ReadResponse read || read.Data.Length != LostReplyResolution.ReadBackOf(request).TotalLength)
+        {
+            var problem = response is ErrorResponse refused ? ProtocolErrorText.Describe(refused.Error) : $"a {response?.Command} reply";
+            _stations.RecordBadReply(request.Station, $"read-back of {request.Address}: {problem}");
+            return LostReplyResolution.Unresolved(cause, problem);
+        }
+
+        _stations.RecordReply(request.Station);
+        PublishReadBack(request, read.Data);
+        return LostReplyResolution.Judge(request, oldRaw, read.Data, cause);
+    }
+
+    private void PublishReadBack(WriteRequest request, ImmutableArray<byte> readBack)
+    {
         if (!readBack.IsDefault)
         {
             var area = ProtocolAreaExtensions.FromMemoryArea(request.Address.Area)!.Value;
             Publish(_values.Apply(request.Station, area, request.Address.ByteOffset, readBack, _time.GetUtcNow()));
         }
-
-        Finish(pending, oldValue, outcome);
     }
 
-    private string OldValueText(WriteRequest request) =>
-        _values.TryGet(new WatchedItem(request.Station, request.Address), out var old) && old.HasValue
-            ? WriteLog.Format(request.Address, old.Raw)
-            : WriteLog.Unknown;
+    private ImmutableArray<byte> OldValue(WriteRequest request) =>
+        _values.TryGet(new WatchedItem(request.Station, request.Address), out var old) && old.HasValue ? old.Raw : default;
+
+    private string OldValueText(WriteRequest request) => WriteLog.Format(request.Address, OldValue(request));
 
     private void Finish(PendingWrite pending, string oldValue, WriteOutcome outcome)
     {

@@ -6,7 +6,8 @@ namespace OperatorPanel.Core.Writes;
 
 /// <summary>
 /// Every write to a PLC is logged with station, address, old value (last polled, or "unknown") and new value, and its
-/// outcome: Information when confirmed, Warning otherwise. Values print as the manual writes constants: 16#002A, or 0/1 for a bit.
+/// outcome: Information when confirmed (by the reply or, after a lost reply, by
+/// reading back), Warning otherwise. Values print as the manual writes constants: 16#002A, or 0/1 for a bit.
 /// </summary>
 internal static class WriteLog
 {
@@ -27,6 +28,21 @@ internal static class WriteLog
                 logger.Warning(
                     "Write station {Station} {Address:l}: {OldValue:l} -> {NewValue:l} read back {ReadBack:l}",
                     station, address, oldValue, newValue, Format(request.Address, mismatch.ReadBack));
+                break;
+            case WriteOutcome.ConfirmedByReadBack byReadBack:
+                logger.Information(
+                    "Write station {Station} {Address:l}: {OldValue:l} -> {NewValue:l} confirmed (reply lost, read back): {Cause:l}",
+                    station, address, oldValue, newValue, byReadBack.Cause);
+                break;
+            case WriteOutcome.NotApplied notApplied:
+                logger.Warning(
+                    "Write station {Station} {Address:l}: {OldValue:l} -> {NewValue:l} not applied, read back {ReadBack:l}: {Cause:l}",
+                    station, address, oldValue, newValue, Format(request.Address, notApplied.ReadBack), notApplied.Cause);
+                break;
+            case WriteOutcome.Unknown unknown:
+                logger.Warning(
+                    "Write station {Station} {Address:l}: {OldValue:l} -> {NewValue:l} unknown: {Cause:l}; {Detail:l}",
+                    station, address, oldValue, newValue, unknown.Cause, unknown.Detail);
                 break;
             case WriteOutcome.Failed failed:
                 logger.Warning(

@@ -54,7 +54,7 @@ public sealed partial class MemoryViewModel
         catch (Exception exception) when (exception is not OutOfMemoryException)
         {
             _logger.Error(exception, "Writing {Address} failed in the panel", address.ToString());
-            outcome = new WriteOutcome.Failed($"the panel failed: {exception.Message}", WriteFailureKind.UnexpectedReply);
+            outcome = new WriteOutcome.Unknown(default, $"the panel failed: {exception.Message}", "it may have reached the PLC");
         }
         finally
         {

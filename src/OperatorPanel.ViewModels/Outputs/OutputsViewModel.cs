@@ -74,7 +74,7 @@ public sealed class OutputsViewModel : PaneViewModel
         catch (Exception exception) when (exception is not OutOfMemoryException)
         {
             _logger.Error(exception, "Switching {Address} failed in the panel", output.Address);
-            outcome = new WriteOutcome.Failed($"the panel failed: {exception.Message}", WriteFailureKind.UnexpectedReply);
+            outcome = new WriteOutcome.Unknown(default, $"the panel failed: {exception.Message}", "it may have reached the PLC");
         }
         finally
         {

@@ -8,20 +8,32 @@ namespace OperatorPanel.ViewModels.Session;
 /// <summary>What the operator reads about a write's outcome, on the row and in the status line.</summary>
 internal static class WriteMessages
 {
-    /// <summary>Null when confirmed; else the problem, without the address (the row shows that).</summary>
+    /// <summary>
+    /// Null when confirmed (by the reply or by reading back after a lost reply); else the problem and what to do,
+    /// without the address (the row shows that).
+    /// </summary>
     public static string? Problem(PlcAddress address, DisplayFormat format, WriteOutcome outcome) => outcome switch
     {
-        WriteOutcome.Confirmed => null,
+        WriteOutcome.Confirmed or WriteOutcome.ConfirmedByReadBack => null,
         WriteOutcome.ReadBackMismatch m =>
             $"wrote {Text(address, format, m.Expected)}, the PLC read back {Text(address, format, m.ReadBack)}: its program changed it at once",
+        WriteOutcome.NotApplied n =>
+            $"not applied: the reply was lost ({n.Cause}) and the PLC still holds {Text(address, format, n.ReadBack)}; {WriteOutcome.NotApplied.Advice}",
+        WriteOutcome.Unknown u => $"unknown whether written: {u.Cause}; {u.Detail}; {WriteOutcome.Unknown.Advice}",
         WriteOutcome.Failed f => f.Reason,
         _ => throw new ArgumentOutOfRangeException(nameof(outcome), outcome, null),
     };
 
     public static string StatusText(string symbol, PlcAddress address, DisplayFormat format, string newValue, WriteOutcome outcome) =>
-        Problem(address, format, outcome) is { } problem
-            ? $"{address} ({symbol}): write of {newValue} not confirmed: {problem}"
-            : $"{address} ({symbol}): {newValue} written and confirmed by the PLC";
+        outcome switch
+        {
+            WriteOutcome.Confirmed => $"{address} ({symbol}): {newValue} written and confirmed by the PLC",
+            WriteOutcome.ConfirmedByReadBack c =>
+                $"{address} ({symbol}): {newValue} written, confirmed by reading back (the reply was lost: {c.Cause})",
+            WriteOutcome.ReadBackMismatch or WriteOutcome.NotApplied or WriteOutcome.Unknown or WriteOutcome.Failed =>
+                $"{address} ({symbol}): write of {newValue} not confirmed: {Problem(address, format, outcome)}",
+            _ => throw new ArgumentOutOfRangeException(nameof(outcome), outcome, null),
+        };
 
     private static string Text(PlcAddress address, DisplayFormat format, System.Collections.Immutable.ImmutableArray<byte> raw)
     {

@@ -95,17 +95,17 @@ public sealed class PollingEngineWritesTests
     }
 
     [Fact]
-    public async Task Write_LinkFails_FailedAndSentOnlyOnce()
+    public async Task Write_LinkFailsAndReadBackFailsToo_UnknownAndSentOnlyOnce()
     {
         var engine = Engine(Items(One, "VB0"));
         _link.Throw(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer after 3 tries"));
 
         var outcome = await WriteThroughCycle(engine, WriteRequest.Bytes(One, PlcAddress.Parse("VB5"), [0x05]));
 
-        outcome.Should().BeEquivalentTo(new WriteOutcome.Failed("NoAnswer: no answer after 3 tries", WriteFailureKind.LinkFailure));
+        outcome.Should().BeEquivalentTo(new WriteOutcome.Unknown(default, "no answer after 3 tries", "the read-back failed too (NoAnswer: no answer after 3 tries)"));
         _link.Requests.OfType<WriteBlockRequest>().Should().ContainSingle();
         engine.GetStationStatus(One).State.Should().Be(StationState.Offline);
-        _log.Events.Should().Contain(e => e.Level == LogEventLevel.Warning && PollingLogSink.Property(e, "Kind") is WriteFailureKind);
+        _log.Events.Should().Contain(e => e.Level == LogEventLevel.Warning && PollingLogSink.Property(e, "Detail") is string);
     }
 
     [Fact]
