@@ -69,8 +69,8 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     /// </summary>
     public static bool ActsOnProcess(CommandCode command) => command switch
     {
-        CommandCode.Write or CommandCode.WriteBit => true,
-        CommandCode.Identify or CommandCode.Read or CommandCode.DefineList or CommandCode.ReadList => false,
+        CommandCode.Write or CommandCode.WriteBit or CommandCode.Stop => true,
+        CommandCode.Identify or CommandCode.Read or CommandCode.DefineList or CommandCode.ReadList or CommandCode.ReadChanges => false,
     };
 
     public async ValueTask DisposeAsync()
