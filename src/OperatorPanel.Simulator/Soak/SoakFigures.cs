@@ -35,7 +35,10 @@ public sealed record SoakFigures
 
     public required int WritesConfirmed { get; init; }
 
-    /// <summary>Confirmed writes the PLC did not execute exactly (that address, those bytes, nothing more).</summary>
+    /// <summary>Of <see cref="WritesConfirmed"/>, those confirmed by reading back after the reply was lost.</summary>
+    public required int ConfirmedByReadBack { get; init; }
+
+    /// <summary>Confirmed writes (from the reply or by read-back) the PLC did not execute exactly (that address, those bytes, nothing more).</summary>
     public required int FalseConfirmations { get; init; }
 
     /// <summary>Executed panel writes that came after a later one of the panel's writes had been executed.</summary>
@@ -46,6 +49,9 @@ public sealed record SoakFigures
 
     /// <summary>Writes not reported confirmed that the PLC did execute exactly.</summary>
     public required int NotConfirmedButExecuted { get; init; }
+
+    /// <summary>Writes reported as certainly not written (not applied, failed) that the PLC did execute.</summary>
+    public required int FalseNotApplied { get; init; }
 
     /// <summary>Memory changes no panel write explains: the PLC acted on a corrupted request.</summary>
     public required int ExecutedNeverSent { get; init; }
@@ -80,11 +86,13 @@ public sealed record SoakFigures
             WrongValuesShownGood = lines.Sum(f => f.WrongValuesShownGood),
             WritesSent = lines.Sum(f => f.WritesSent),
             WritesConfirmed = lines.Sum(f => f.WritesConfirmed),
+            ConfirmedByReadBack = lines.Sum(f => f.ConfirmedByReadBack),
             FalseConfirmations = lines.Sum(f => f.FalseConfirmations),
             WritesOutOfOrder = lines.Sum(f => f.WritesOutOfOrder),
             WritesNotConfirmed = lines.SelectMany(f => f.WritesNotConfirmed).GroupBy(p => p.Key)
                 .ToImmutableSortedDictionary(g => g.Key, g => g.Sum(p => p.Value)),
             NotConfirmedButExecuted = lines.Sum(f => f.NotConfirmedButExecuted),
+            FalseNotApplied = lines.Sum(f => f.FalseNotApplied),
             ExecutedNeverSent = lines.Sum(f => f.ExecutedNeverSent),
             CharactersOnLine = lines.Sum(f => f.CharactersOnLine),
             BitsFlipped = lines.Sum(f => f.BitsFlipped),
@@ -101,9 +109,9 @@ public sealed record SoakFigures
         yield return string.Create(c, $"  line: {CharactersOnLine} characters, {BitsFlipped} bits flipped, {CharactersDropped} characters dropped, {FramesDropped} frames dropped");
         yield return string.Create(c, $"  exchanges {Exchanges}, retries {Retries}, timeouts {Timeouts}, corrupt replies {CorruptReplies}, error replies {NegativeReplies}");
         yield return string.Create(c, $"  values shown as good {ValuesShownGood}, wrong values shown as good {WrongValuesShownGood} (must be 0)");
-        yield return string.Create(c, $"  writes {WritesSent}, confirmed {WritesConfirmed}, false confirmations {FalseConfirmations} (must be 0), executed out of order {WritesOutOfOrder} (must be 0)");
+        yield return string.Create(c, $"  writes {WritesSent}, confirmed {WritesConfirmed} ({ConfirmedByReadBack} by read-back), false confirmations {FalseConfirmations} (must be 0), executed out of order {WritesOutOfOrder} (must be 0)");
         var notConfirmed = WritesNotConfirmed.Count == 0 ? "none" : string.Join(", ", WritesNotConfirmed.Select(p => $"{p.Key} {p.Value}"));
-        yield return string.Create(c, $"  writes not confirmed: {notConfirmed}; of them executed by the PLC {NotConfirmedButExecuted}");
+        yield return string.Create(c, $"  writes not confirmed: {notConfirmed}; of them executed by the PLC {NotConfirmedButExecuted}, reported as certainly not written {FalseNotApplied}");
         yield return string.Create(c, $"  PLC memory changes no panel write explains (acted on a corrupted request): {ExecutedNeverSent}");
         yield return ZerosHold ? "  result: the zeros hold" : "  result: FAILED, a must-be-0 figure is not 0";
     }

@@ -42,32 +42,40 @@ public sealed class SoakJudge(SoakRegion region, ReadOnlyMemory<byte> initial)
             }
         }
 
-        var confirmed = writes.Where(w => w.Outcome is WriteOutcome.Confirmed).ToList();
-        var notConfirmed = writes.Where(w => w.Outcome is not WriteOutcome.Confirmed).ToList();
+        var confirmed = writes.Where(w => IsConfirmed(w.Outcome)).ToList();
+        var notConfirmed = writes.Where(w => !IsConfirmed(w.Outcome)).ToList();
         return new SoakJudgement(
             ValuesShownGood: shown.Count,
             WrongValuesShownGood: shown.Count(v => !WasHeld(timelines[v.Offset], v)),
             WritesSent: writes.Count,
             WritesConfirmed: confirmed.Count,
+            ConfirmedByReadBack: confirmed.Count(w => w.Outcome is WriteOutcome.ConfirmedByReadBack),
             FalseConfirmations: confirmed.Count(w => !executed.Contains(w.Number)),
             WritesOutOfOrder: outOfOrder,
             WritesNotConfirmed: notConfirmed.GroupBy(w => Describe(w.Outcome)).ToImmutableSortedDictionary(g => g.Key, g => g.Count()),
             NotConfirmedButExecuted: notConfirmed.Count(w => executed.Contains(w.Number)),
+            FalseNotApplied: notConfirmed.Count(w => (w.Outcome is WriteOutcome.NotApplied or WriteOutcome.Failed) && executed.Contains(w.Number)),
             ExecutedNeverSent: neverSent);
     }
+
+    /// <summary>The panel says the PLC holds the value: from the reply, or from a read-back after the reply was lost.</summary>
+    public static bool IsConfirmed(WriteOutcome outcome) => outcome is WriteOutcome.Confirmed or WriteOutcome.ConfirmedByReadBack;
 
     /// <summary>What the panel reported, in the words of the figures.</summary>
     public static string Describe(WriteOutcome outcome) => outcome switch
     {
         WriteOutcome.Confirmed => "confirmed",
+        WriteOutcome.ConfirmedByReadBack => "confirmed by read-back",
+        WriteOutcome.NotApplied => "not applied",
+        WriteOutcome.Unknown => "unknown",
         WriteOutcome.ReadBackMismatch => "read back differently",
         WriteOutcome.Failed failed => failed.Kind switch
         {
             WriteFailureKind.InvalidRequest => "invalid request",
             WriteFailureKind.RefusedByPlc => "refused by the PLC",
-            WriteFailureKind.LinkFailure => "link failure (unknown)",
+            WriteFailureKind.LinkFailure => "port failure (not sent)",
             WriteFailureKind.UnexpectedReply => "unexpected reply",
-            WriteFailureKind.EngineStopped => "engine stopped",
+            WriteFailureKind.EngineStopped => "engine stopped (not sent)",
         },
         _ => throw new ArgumentOutOfRangeException(nameof(outcome), outcome, "a write outcome the soak does not know"),
     };

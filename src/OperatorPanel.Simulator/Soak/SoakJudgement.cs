@@ -8,8 +8,10 @@ public sealed record SoakJudgement(
     int WrongValuesShownGood,
     int WritesSent,
     int WritesConfirmed,
+    int ConfirmedByReadBack,
     int FalseConfirmations,
     int WritesOutOfOrder,
     ImmutableSortedDictionary<string, int> WritesNotConfirmed,
     int NotConfirmedButExecuted,
+    int FalseNotApplied,
     int ExecutedNeverSent);

@@ -9,7 +9,8 @@ public sealed class SoakJudgeTests
 {
     private static readonly SoakRegion Region = new(1000, 2);
     private static readonly WriteOutcome Confirmed = new WriteOutcome.Confirmed([]);
-    private static readonly WriteOutcome LinkFailure = new WriteOutcome.Failed("no reply", WriteFailureKind.LinkFailure);
+    private static readonly WriteOutcome Unknown = new WriteOutcome.Unknown(default, "no reply", "the read-back failed too");
+    private static readonly WriteOutcome NotApplied = new WriteOutcome.NotApplied([0, 0, 0, 0], "no reply");
 
     [Fact]
     public void Judge_ConfirmedWriteExecutedAtItsAddress_IsNoFalseConfirmation()
@@ -57,13 +58,25 @@ public sealed class SoakJudgeTests
     [Fact]
     public void Judge_SecondWriteExecutedBeforeTheFirst_CountsOneOutOfOrder()
     {
-        var writes = new[] { new SoakWrite(1, 1000, 0x01010101, LinkFailure), new SoakWrite(2, 1004, 0x02020202, Confirmed) };
+        var writes = new[] { new SoakWrite(1, 1000, 0x01010101, Unknown), new SoakWrite(2, 1004, 0x02020202, Confirmed) };
 
         var result = Judge(writes, [], [Change(10, 1004, [0, 0, 0, 0], [2, 2, 2, 2]), Change(20, 1000, [0, 0, 0, 0], [1, 1, 1, 1])]);
 
         result.WritesOutOfOrder.Should().Be(1);
         result.NotConfirmedButExecuted.Should().Be(1);
-        result.WritesNotConfirmed.Should().Equal(new Dictionary<string, int> { ["link failure (unknown)"] = 1 });
+        result.WritesNotConfirmed.Should().Equal(new Dictionary<string, int> { ["unknown"] = 1 });
+        result.FalseNotApplied.Should().Be(0);
+    }
+
+    [Fact]
+    public void Judge_WriteReportedNotAppliedThatThePlcExecuted_IsAFalseNotApplied()
+    {
+        var writes = new[] { new SoakWrite(1, 1000, 0x01010101, NotApplied) };
+
+        var result = Judge(writes, [], [Change(10, 1000, [0, 0, 0, 0], [1, 1, 1, 1])]);
+
+        result.FalseNotApplied.Should().Be(1);
+        result.FalseConfirmations.Should().Be(0);
     }
 
     [Fact]
