@@ -30,7 +30,8 @@ public static class SoakSession
         var region = setup.Region;
         var initial = setup.Memory.V.AsSpan(region.First, region.Bytes).ToArray();
         var observer = new ExecutedWriteObserver(setup.Line, setup.Memory, Watched(setup), time);
-        var host = new SimulatedPlcHost(new SerialPortTransport(Serial(setup, setup.PlcPort)), observer, time, log);
+        var plcPort = new SerialPortTransport(Serial(setup, setup.PlcPort));
+        var host = new SimulatedPlcHost(plcPort, observer, time, log);
         var proxyPanel = new SerialPortTransport(Serial(setup, setup.ProxyPanelSide));
         var proxyPlc = new SerialPortTransport(Serial(setup, setup.ProxyPlcSide));
         var proxy = new NoisyLineProxy(proxyPanel, proxyPlc, setup.Faults, setup.Seed);
@@ -61,6 +62,7 @@ public static class SoakSession
             await Ended(running).ConfigureAwait(false);
             await proxyPanel.DisposeAsync().ConfigureAwait(false);
             await proxyPlc.DisposeAsync().ConfigureAwait(false);
+            await plcPort.DisposeAsync().ConfigureAwait(false);
         }
 
         var judgement = new SoakJudge(region, initial).Judge(work.Writes, work.Shown, observer.Changes);
