@@ -56,6 +56,9 @@ public sealed record SoakFigures
     /// <summary>Memory changes no panel write explains: the PLC acted on a corrupted request.</summary>
     public required int ExecutedNeverSent { get; init; }
 
+    /// <summary>The first findings in words (see <see cref="SoakJudgement.Findings"/>).</summary>
+    public required ImmutableArray<string> Findings { get; init; }
+
     public required long CharactersOnLine { get; init; }
 
     public required long BitsFlipped { get; init; }
@@ -94,6 +97,7 @@ public sealed record SoakFigures
             NotConfirmedButExecuted = lines.Sum(f => f.NotConfirmedButExecuted),
             FalseNotApplied = lines.Sum(f => f.FalseNotApplied),
             ExecutedNeverSent = lines.Sum(f => f.ExecutedNeverSent),
+            Findings = [.. lines.SelectMany(f => f.Findings).Take(10)],
             CharactersOnLine = lines.Sum(f => f.CharactersOnLine),
             BitsFlipped = lines.Sum(f => f.BitsFlipped),
             CharactersDropped = lines.Sum(f => f.CharactersDropped),
@@ -113,6 +117,11 @@ public sealed record SoakFigures
         var notConfirmed = WritesNotConfirmed.Count == 0 ? "none" : string.Join(", ", WritesNotConfirmed.Select(p => $"{p.Key} {p.Value}"));
         yield return string.Create(c, $"  writes not confirmed: {notConfirmed}; of them executed by the PLC {NotConfirmedButExecuted}, reported as certainly not written {FalseNotApplied}");
         yield return string.Create(c, $"  PLC memory changes no panel write explains (acted on a corrupted request): {ExecutedNeverSent}");
+        foreach (var finding in Findings)
+        {
+            yield return "  finding: " + finding;
+        }
+
         yield return ZerosHold ? "  result: the zeros hold" : "  result: FAILED, a must-be-0 figure is not 0";
     }
 }

@@ -10,6 +10,9 @@ namespace OperatorPanel.Simulator.Soak;
 /// </summary>
 public sealed class SoakJudge(SoakRegion region, ReadOnlyMemory<byte> initial)
 {
+    /// <summary>Findings kept for the report: enough to see what went wrong, not a log.</summary>
+    private const int FindingsKept = 10;
+
     public SoakJudgement Judge(IReadOnlyList<SoakWrite> writes, IReadOnlyList<ShownValue> shown, IReadOnlyList<MemoryChange> changes)
     {
         ArgumentNullException.ThrowIfNull(writes);
@@ -20,6 +23,7 @@ public sealed class SoakJudge(SoakRegion region, ReadOnlyMemory<byte> initial)
         var bytes = initial.ToArray();
         var executed = new HashSet<int>();
         var (outOfOrder, neverSent, latest) = (0, 0, 0);
+        var findings = new List<string>();
         foreach (var change in changes)
         {
             var inside = region.Apply(change, bytes);
@@ -33,29 +37,42 @@ public sealed class SoakJudge(SoakRegion region, ReadOnlyMemory<byte> initial)
                 && change.First >= only && change.Last <= only + 3)
             {
                 executed.Add(write.Number);
-                outOfOrder += write.Number < latest ? 1 : 0;
+                if (write.Number < latest)
+                {
+                    outOfOrder++;
+                    findings.Add($"write {write.Number} (VD{write.Offset}) executed after write {latest}");
+                }
+
                 latest = Math.Max(latest, write.Number);
             }
             else
             {
                 neverSent++;
+                findings.Add($"{change.Area} bytes {change.First}-{change.Last} changed {Convert.ToHexString(change.Before.AsSpan())} -> "
+                    + $"{Convert.ToHexString(change.After.AsSpan())}: no panel write explains it");
             }
         }
 
+        var wrong = shown.Where(v => !WasHeld(timelines[v.Offset], v)).ToList();
+        findings.AddRange(wrong.Select(v => $"VD{v.Offset} shown as good 16#{v.Value:X8}, which it did not hold then"));
+
         var confirmed = writes.Where(w => IsConfirmed(w.Outcome)).ToList();
         var notConfirmed = writes.Where(w => !IsConfirmed(w.Outcome)).ToList();
+        var falselyConfirmed = confirmed.Where(w => !executed.Contains(w.Number)).ToList();
+        findings.AddRange(falselyConfirmed.Select(w => $"write {w.Number} VD{w.Offset} := 16#{w.Value:X8} reported {Describe(w.Outcome)}, not executed as sent"));
         return new SoakJudgement(
             ValuesShownGood: shown.Count,
-            WrongValuesShownGood: shown.Count(v => !WasHeld(timelines[v.Offset], v)),
+            WrongValuesShownGood: wrong.Count,
             WritesSent: writes.Count,
             WritesConfirmed: confirmed.Count,
             ConfirmedByReadBack: confirmed.Count(w => w.Outcome is WriteOutcome.ConfirmedByReadBack),
-            FalseConfirmations: confirmed.Count(w => !executed.Contains(w.Number)),
+            FalseConfirmations: falselyConfirmed.Count,
             WritesOutOfOrder: outOfOrder,
             WritesNotConfirmed: notConfirmed.GroupBy(w => Describe(w.Outcome)).ToImmutableSortedDictionary(g => g.Key, g => g.Count()),
             NotConfirmedButExecuted: notConfirmed.Count(w => executed.Contains(w.Number)),
             FalseNotApplied: notConfirmed.Count(w => (w.Outcome is WriteOutcome.NotApplied or WriteOutcome.Failed) && executed.Contains(w.Number)),
-            ExecutedNeverSent: neverSent);
+            ExecutedNeverSent: neverSent,
+            Findings: [.. findings.Take(FindingsKept)]);
     }
 
     /// <summary>The panel says the PLC holds the value: from the reply, or from a read-back after the reply was lost.</summary>

@@ -2,7 +2,10 @@ using System.Collections.Immutable;
 
 namespace OperatorPanel.Simulator.Soak;
 
-/// <summary>The judge's part of <see cref="SoakFigures"/>: the panel's claims held against what the PLC executed.</summary>
+/// <summary>
+/// The judge's part of <see cref="SoakFigures"/>: the panel's claims held against what the PLC executed, and the first
+/// findings (memory changes no write explains, writes out of order, wrong values, false confirmations) in words.
+/// </summary>
 public sealed record SoakJudgement(
     int ValuesShownGood,
     int WrongValuesShownGood,
@@ -14,4 +17,5 @@ public sealed record SoakJudgement(
     ImmutableSortedDictionary<string, int> WritesNotConfirmed,
     int NotConfirmedButExecuted,
     int FalseNotApplied,
-    int ExecutedNeverSent);
+    int ExecutedNeverSent,
+    ImmutableArray<string> Findings);

@@ -88,6 +88,7 @@ public static class SoakSession
             NotConfirmedButExecuted = judgement.NotConfirmedButExecuted,
             FalseNotApplied = judgement.FalseNotApplied,
             ExecutedNeverSent = judgement.ExecutedNeverSent,
+            Findings = judgement.Findings,
             CharactersOnLine = proxy.ToPlc.Characters + proxy.ToPanel.Characters,
             BitsFlipped = proxy.ToPlc.BitsFlipped + proxy.ToPanel.BitsFlipped,
             CharactersDropped = proxy.ToPlc.CharactersDropped + proxy.ToPanel.CharactersDropped,

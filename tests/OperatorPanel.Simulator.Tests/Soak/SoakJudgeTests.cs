@@ -33,6 +33,9 @@ public sealed class SoakJudgeTests
 
         result.FalseConfirmations.Should().Be(1);
         result.ExecutedNeverSent.Should().Be(1);
+        result.Findings.Should().Equal(
+            "V bytes 1001-1004 changed 00000000 -> 11223344: no panel write explains it",
+            "write 1 VD1000 := 16#11223344 reported confirmed, not executed as sent");
     }
 
     [Fact]
