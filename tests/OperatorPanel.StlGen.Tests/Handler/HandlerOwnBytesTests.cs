@@ -83,7 +83,7 @@ public sealed class HandlerOwnBytesTests
         var config = new HandlerConfig(new Station(1), cpu);
         var stats = HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu }).Stats!;
 
-        (config.BufferStart, config.BufferStart + HandlerConfig.HandlerVBytes - 1).Should().Be((stats.FirstVByte, stats.LastVByte));
+        (config.BufferStart, config.BufferStart + config.HandlerVBytes - 1).Should().Be((stats.FirstVByte, stats.LastVByte));
     }
 
     private static (string Stl, string Reference) Send(DifferentialHarness harness, PlcRequest request) =>
