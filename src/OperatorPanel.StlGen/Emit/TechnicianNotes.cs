@@ -48,9 +48,9 @@ public static class TechnicianNotes
         w.Line("  switch back to RUN takes the port again for the panel. No panel request is answered meanwhile.");
         w.Line(string.Empty);
         w.Line("Timing (at the manual's execution times; conservative where the manual gives none)");
-        w.Line("  The receive interrupt only notes that a request for this station has arrived, and listens again at once");
-        w.Line($"  after any other frame (under {SlicePart.InterruptBoundMs} ms). {options.Names.Panel} then checks the frame (a CRC-16 over its");
-        w.Line($"  characters) and builds the reply a part per scan: it adds at most {SlicePart.ScanBoundMs} ms to a scan while it");
+        w.Line("  The receive interrupt only notes that a request for this station has arrived and listens again");
+        w.Line($"  at once after any other frame (under {SlicePart.InterruptBoundMs} ms). {options.Names.Panel} then checks the frame");
+        w.Line($"  (a CRC-16 over its characters) and builds the reply a part per scan: it adds at most {SlicePart.ScanBoundMs} ms to a scan while it");
         w.Line($"  works on a request, under {SlicePart.IdleScanBoundMs} ms to a scan without one. A reply takes {SlicePart.FewestScans} to {SlicePart.MostScans} scans");
         w.Line("  (WRITE BIT the fewest, a READ of 20 items the most), so a long scan of your program slows the panel.");
         w.Line($"  The reply leaves {options.ReplyDelayMs} ms after the last of those scans (timed interrupt 0), so a");

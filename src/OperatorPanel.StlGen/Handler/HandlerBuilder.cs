@@ -42,7 +42,7 @@ internal static class HandlerBuilder
                     "per scan (docs/protocol.md section 4). Call from OB1 every scan."], panel.ToImmutable()),
             new StlBlock(
                 StlBlockKind.Interrupt, c.Names.Receive, first, "Operator panel: request received",
-                [$"Event {c.ReceiveEvent}: a frame ended by '>' waits for {c.Names.Panel}; any other end: receive again."], [.. ReceivePart.Interrupt(c)]),
+                [$"Event {c.ReceiveEvent}: a frame ended by '>' for this station waits for {c.Names.Panel}; anything else: receive again."], [.. ReceivePart.Interrupt(c)]),
             new StlBlock(
                 StlBlockKind.Interrupt, c.Names.Delay, first + 1, "Operator panel: reply delay",
                 [$"Event {HandlerContext.DelayEvent}, timed interrupt 0 (SMB34): sends the reply."], [InterruptParts.Delay(c)]),

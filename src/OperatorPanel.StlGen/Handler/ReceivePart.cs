@@ -39,9 +39,10 @@ internal static class ReceivePart
             .Op("LDN", $"SM{c.SmPort(86)}.5").Op("RCV", l.B(0), c.PortOperand).Op("CRETI").Build();
         yield return new NetworkBuilder(
                 "Step 1: not for this station",
-                $"After the first '<' (byte 1): STATION not '{StationChars(c)}', or CMD's first character '8'-'F' (a reply) or no hex digit:",
+                $"After the first '<' (byte 1): STATION not '{StationChars(c)}', or CMD's first character '8'-'9' or 'A'-'F' (a reply):",
                 "receive again at once, so the port is ready for the next frame on the bus.")
-            .Op("LDW<>", l.W(2), StationWord(c)).Op("OB>=", l.B(6), Hex('8')).Op("RCV", l.B(0), c.PortOperand).Op("CRETI").Build();
+            .Op("LDW<>", l.W(2), StationWord(c)).Op("LDB>=", l.B(6), Hex('8')).Op("AB<=", l.B(6), Hex('F')).Op("LDB<", l.B(6), Hex(':'))
+            .Op("OB>", l.B(6), Hex('@')).Op("ALD").Op("OLD").Op("RCV", l.B(0), c.PortOperand).Op("CRETI").Build();
         yield return Always(
             "A request is waiting", $"{c.Names.Panel} checks and answers it in the next scans, a bounded part per scan.",
             Op("MOVB", Dec(SlicePart.StepStart), l.B(Step)));

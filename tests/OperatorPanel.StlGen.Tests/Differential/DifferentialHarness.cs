@@ -61,7 +61,10 @@ internal sealed class DifferentialHarness
         Line = new LineSettings(options.BaudRate, options.Parity, options.DataBits);
         _port = new FreeportPort(options.Port, _plc.Memory, options.Cpu, Line);
         _plc.AttachPort(_port);
-        _reference = new ReferencePlc(new HandlerConfig(new Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs, options.EffectiveBufferStart));
+        // The generated handler has neither STOP nor READ CHANGES copies (IDENTIFY: FEATURES 0, COPY_BYTES 0).
+        _reference = new ReferencePlc(new HandlerConfig(
+            new Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs, options.EffectiveBufferStart,
+            allowStop: false, copyBytes: 0));
         Fill(random);
         if (inputsOff)
         {

@@ -31,7 +31,7 @@ public sealed class HandlerCostTests
         requests.Should().HaveCount(10).And.OnlyContain(m => m.WorstInterrupt <= Ms(SlicePart.InterruptBoundMs) && m.WorstScan <= Ms(SlicePart.ScanBoundMs));
         requests.Where(m => m.ReplyChars > 0).Should().OnlyContain(m => m.Scans >= SlicePart.FewestScans && m.Scans <= SlicePart.MostScans);
         idle.WorstScan.Should().BeLessThan(Ms(SlicePart.IdleScanBoundMs));
-        requests.Single(m => m.Name.StartsWith("READ 20", StringComparison.Ordinal)).Scans.Should().BeGreaterThan(SlicePart.MostScans / 2, "the bound is near what a 20-item READ takes");
+        requests.Single(m => m.Name.StartsWith("READ 20 items 77", StringComparison.Ordinal)).Scans.Should().BeGreaterThan(SlicePart.MostScans / 2, "the bound is near what a 20-item READ takes");
     }
 
     [Theory]

@@ -2,6 +2,7 @@ using System.Globalization;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Stl;
 using OperatorPanel.Core.Stl.Checks;
+using OperatorPanel.StlGen.Handler;
 using OperatorPanel.StlGen.Merge;
 using OperatorPanel.StlGen.Options;
 
@@ -72,7 +73,11 @@ internal sealed class HandlerFootprintAudit
         }
 
         Expect(Events.SetEquals(_stats.InterruptEvents), $"events {string.Join(", ", Events)} are not the stats' {string.Join(", ", _stats.InterruptEvents)}");
-        Expect(VBytes.Count > 0 && VBytes.Min == _stats.FirstVByte && VBytes.Max == _stats.LastVByte, $"V bytes touched VB{VBytes.Min}-VB{VBytes.Max}, reserved {_stats.VRange}");
+        // The work bytes from CommandsFirst on are kept for 07 STOP and 08 READ CHANGES: reserved, not all touched yet.
+        var lastUsed = _stats.FirstVByte + HandlerLayout.CommandsFirst - 1;
+        Expect(
+            VBytes.Count > 0 && VBytes.Min == _stats.FirstVByte && VBytes.Max >= lastUsed && VBytes.Max <= _stats.LastVByte,
+            $"V bytes touched VB{VBytes.Min}-VB{VBytes.Max}, reserved {_stats.VRange}, used at least to VB{lastUsed}");
         Expect(_stats.FirstVByte == _footprint.FirstVByte && _stats.LastVByte == _footprint.LastVByte && _stats.Port == _options.Port, "stats and merge footprint disagree");
     }
 

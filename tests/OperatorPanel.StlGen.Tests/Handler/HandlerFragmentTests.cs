@@ -62,7 +62,7 @@ public sealed class HandlerFragmentTests
         var program = HandlerGenerator.Generate(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), WriteMask = 0x1C }).Program!;
         var all = program.Blocks[1].Networks.SelectMany(n => n.Instructions).Select(AwlText).ToList();
 
-        all.Should().Contain("LDB= VB7908, 5").And.NotContain(i => i.StartsWith("AW< ", StringComparison.Ordinal));
+        all.Should().Contain("LDB= VB7892, 5").And.NotContain(i => i.StartsWith("AW< ", StringComparison.Ordinal));
     }
 
     [Fact]

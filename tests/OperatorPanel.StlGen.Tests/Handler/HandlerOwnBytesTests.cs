@@ -80,7 +80,7 @@ public sealed class HandlerOwnBytesTests
     public void ReferenceModel_DefaultHandlerBytes_AreWhereTheGeneratorPutsThem(CpuModel model)
     {
         var cpu = CpuProfiles.For(model);
-        var config = new HandlerConfig(new Station(1), cpu);
+        var config = new HandlerConfig(new Station(1), cpu, copyBytes: 0);
         var stats = HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu }).Stats!;
 
         (config.BufferStart, config.BufferStart + config.HandlerVBytes - 1).Should().Be((stats.FirstVByte, stats.LastVByte));
