@@ -1,8 +1,10 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Bench;
+using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Simulator.Hosting;
+using OperatorPanel.Simulator.Reference;
 using OperatorPanel.Simulator.Soak;
 using OperatorPanel.Simulator.Stl.Freeport;
 using OperatorPanel.StlGen;
@@ -11,8 +13,8 @@ using OperatorPanel.StlGen.Options;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel soak [--minutes N] [--profile flips|mixed|clean] [--seed N] [--baud B] [--lines N]</c>: the long soak of docs/soak.md.
-/// The panel stack works against the generated CPU 226 handler in the STL interpreter through a noisy-line proxy
+/// <c>opanel soak [--minutes N] [--profile flips|mixed|clean] [--seed N] [--baud B] [--lines N] [--model stl|reference]</c>: the long soak of docs/soak.md.
+/// The panel stack works against the generated CPU 226 handler in the STL interpreter (or the reference model) through a noisy-line proxy
 /// between two socat pty pairs, and the judge prints the figures per profile (both noisy profiles unless one is
 /// named). Exit 0 when the must-be-0 figures are 0, 2 when one is not, 1 for a bad option or a missing socat.
 /// </summary>
@@ -31,7 +33,8 @@ internal static class SoakCommand
             Description = "Lines run side by side, each with its own pty pairs, PLC and seed (seed, seed+1, ...), counted together (default 1)",
             DefaultValueFactory = _ => 1,
         };
-        var command = new Command("soak", "Soak the link on a noisy simulated line and judge it against what the PLC executed") { minutes, profile, seed, baud, lines };
+        var model = ModelOption.Create();
+        var command = new Command("soak", "Soak the link on a noisy simulated line and judge it against what the PLC executed") { minutes, profile, seed, baud, lines, model };
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
@@ -67,7 +70,7 @@ internal static class SoakCommand
             foreach (var faults in profiles)
             {
                 var runs = await Task.WhenAll(Enumerable.Range(0, lineCount).Select(i =>
-                    RunAsync(socat, faults, parse.GetValue(seed) + i, parse.GetValue(baud), TimeSpan.FromMinutes(length), cli, cancellationToken)));
+                    RunAsync(socat, parse.GetValue(model), faults, parse.GetValue(seed) + i, parse.GetValue(baud), TimeSpan.FromMinutes(length), cli, cancellationToken)));
                 if (runs.Any(r => r is null))
                 {
                     return ExitCodes.BadInput;
@@ -95,25 +98,14 @@ internal static class SoakCommand
     }
 
     private static async Task<SoakFigures?> RunAsync(
-        string socat, LineFaults faults, int seed, int baud, TimeSpan duration, CliContext cli, CancellationToken cancellationToken)
+        string socat, SimulationModel model, LineFaults faults, int seed, int baud, TimeSpan duration, CliContext cli, CancellationToken cancellationToken)
     {
-        var options = new HandlerOptions { Cpu = Cpu, Station = 2, BaudRate = baud };
-        var generated = HandlerGenerator.Generate(options);
-        var settings = new LineSettings(baud, Core.Transport.Parity.None, 8);
-        if (!generated.Ok)
+        if (!TryCreatePlc(model, baud, out var plc, out var error))
         {
-            cli.Fail(ExitCodes.BadInput, $"the handler for {baud} baud cannot be generated: {string.Join("; ", generated.Diagnostics)}");
+            cli.Fail(ExitCodes.BadInput, error);
             return null;
         }
 
-        if (!StlStation.TryCreate(generated.AwlText, Cpu, 0, settings, out var station, out var loadError))
-        {
-            cli.Fail(ExitCodes.BadInput, $"the handler does not load in the interpreter: {loadError}");
-            return null;
-        }
-
-        var line = new StlLine(settings);
-        line.Attach(station, runProcess: false);
         using var panelPair = await SocatPty.StartAsync(socat, TimeProvider.System, cancellationToken);
         using var plcPair = await SocatPty.StartAsync(socat, TimeProvider.System, cancellationToken);
         return await SoakSession.RunAsync(
@@ -129,12 +121,48 @@ internal static class SoakCommand
                 Duration = duration,
                 Station = new Station(2),
                 Cpu = Cpu,
-                Line = line,
-                Memory = station.Memory,
-                HandlerFirstByte = options.EffectiveBufferStart,
+                Line = plc.Line,
+                Memory = plc.Memory,
+                HandlerFirstByte = plc.HandlerFirstByte,
             },
             TimeProvider.System,
             cli.Log,
             cancellationToken);
+    }
+
+    /// <summary>Station 2 on a line of its own: the generated handler in the interpreter, or the reference model.</summary>
+    private static bool TryCreatePlc(SimulationModel model, int baud, out (ISimulatedLine Line, PlcMemory Memory, int HandlerFirstByte) plc, out string error)
+    {
+        plc = default;
+        error = string.Empty;
+        if (model == SimulationModel.Reference)
+        {
+            var config = new HandlerConfig(new Station(2), Cpu);
+            var reference = new ReferencePlc(config);
+            var bus = new BusSimulator();
+            bus.Attach(reference);
+            plc = (new Simulator.Hosting.ReferenceLine(bus, []), reference.Memory, config.BufferStart);
+            return true;
+        }
+
+        var options = new HandlerOptions { Cpu = Cpu, Station = 2, BaudRate = baud };
+        var generated = HandlerGenerator.Generate(options);
+        if (!generated.Ok)
+        {
+            error = $"the handler for {baud} baud cannot be generated: {string.Join("; ", generated.Diagnostics)}";
+            return false;
+        }
+
+        var settings = new LineSettings(baud, Core.Transport.Parity.None, 8);
+        if (!StlStation.TryCreate(generated.AwlText, Cpu, 0, settings, out var station, out var loadError))
+        {
+            error = $"the handler does not load in the interpreter: {loadError}";
+            return false;
+        }
+
+        var line = new StlLine(settings);
+        line.Attach(station, runProcess: false);
+        plc = (line, station.Memory, options.EffectiveBufferStart);
+        return true;
     }
 }
