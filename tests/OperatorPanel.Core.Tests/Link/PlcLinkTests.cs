@@ -19,7 +19,7 @@ public sealed class PlcLinkTests
     private static string Request => Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x01 }));
 
     private static string Reply(byte data, byte sequence = 0x01) =>
-        Ascii(ResponseCodec.Encode(new ReadResponse(Station2, sequence, [data])));
+        Ascii(ResponseCodec.Encode(new ReadResponse(Station2, sequence, [data]), ReadMb0 with { Sequence = sequence }));
 
     [Fact]
     public async Task Exchange_StationAnswers_ReturnsDecodedReplyAndCountsIt()
@@ -91,7 +91,7 @@ public sealed class PlcLinkTests
         var corrupt = good[..^3] + (good[^3] == '0' ? '1' : '0') + good[^2..];
         var transport = new ScriptedTransport($"""
             > "{Request}"
-            < "{corrupt}"   // one BCC digit flipped by noise
+            < "{corrupt}"   // one check character hit by noise
             > "{Request}"
             < "{good}"
             """, clock);
@@ -125,7 +125,7 @@ public sealed class PlcLinkTests
     public async Task Exchange_StationRefuses_ReturnsErrorResponseAndCountsIt()
     {
         var clock = new ManualTimeProvider();
-        var refusal = Ascii(ResponseCodec.Encode(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange)));
+        var refusal = Ascii(ResponseCodec.Encode(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange), ReadMb0 with { Sequence = 0x01 }));
         var transport = new ScriptedTransport($"""
             > "{Request}"
             < "{refusal}"
@@ -134,7 +134,8 @@ public sealed class PlcLinkTests
 
         var response = await link.ExchangeAsync(ReadMb0, default);
 
-        response.Should().BeEquivalentTo(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange));
+        response.Should().BeEquivalentTo(
+            new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange) { RequestCheck = RequestCodec.Check(ReadMb0 with { Sequence = 0x01 }) });
         link.IsOnline(Station2).Should().BeTrue();
         link.StatisticsFor(Station2).NegativeReplies.Should().Be(1);
     }
@@ -176,7 +177,7 @@ public sealed class PlcLinkTests
         await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x01)), default);
         (await first).Should().BeOfType<ReadResponse>();
         (await ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(other with { Sequence = 0x02 })));
-        await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x02, 0x02)), default);
+        await pair.BusSide.WriteAsync(ResponseCodec.Encode(new ReadResponse(Station2, 0x02, [0x02]), other with { Sequence = 0x02 }), default);
         ((ReadResponse)await second).Data.Should().Equal(0x02);
     }
 
@@ -212,12 +213,12 @@ public sealed class PlcLinkTests
     }
 
     [Theory]
-    [InlineData(LinkKind.Cable, 449.17)]
-    [InlineData(LinkKind.RadioModule, 753.33)]
+    [InlineData(LinkKind.Cable, 532.08)]
+    [InlineData(LinkKind.RadioModule, 859.17)]
     public void ReplyTimeout_Identify9600_IsLineTimePlusDelayScansMediumAndMargin(LinkKind kind, double milliseconds)
     {
-        // IDENTIFY: 10 request + 42 reply characters, 10 bits each at 9600 baud = 54.17 ms; + 5 ms delay + 100 ms scan
-        // + 9 handler scans (4 + 1 + 4) x 30 ms + 20 ms margin; a radio module adds 250 ms and the line time once more.
+        // IDENTIFY: 12 request + 62 reply characters, 10 bits each at 9600 baud = 77.08 ms; + 5 ms delay + 100 ms scan
+        // + 11 handler scans (4 + 1 + 6) x 30 ms + 20 ms margin; a radio module adds 250 ms and the line time once more.
         var options = LinkOptions.For(Some.SerialSettings(9600, kind));
 
         options.ReplyTimeoutFor(new IdentifyRequest(Station2, 1)).TotalMilliseconds.Should().BeApproximately(milliseconds, 0.01);

@@ -43,7 +43,7 @@ internal sealed class UnpluggableTransport : ITransport
     {
         EnsurePresent("write");
         FrameCodec.TryDecode(data.Span, out var request, out _).Should().BeTrue("the link sends well-formed frames");
-        foreach (var b in ResponseCodec.Encode(new ReadResponse(new(request.Station), request.Sequence, [Mb0])))
+        foreach (var b in ResponseCodec.Encode(new ReadResponse(new(request.Station), request.Sequence, [Mb0]) { RequestCheck = FrameCodec.CheckOf(request) }))
         {
             _reply.Enqueue(b);
         }

@@ -5,10 +5,10 @@ namespace OperatorPanel.Core.Tests.Polling;
 public sealed class PollCostModelTests
 {
     [Theory]
-    [InlineData(1, 119)]
-    [InlineData(2, 117)]
-    [InlineData(8, 105)]
-    [InlineData(20, 81)]
+    [InlineData(1, 116)]
+    [InlineData(2, 114)]
+    [InlineData(8, 102)]
+    [InlineData(20, 78)]
     [InlineData(21, 0)] // more items than one READ may carry
     public void MaxDataFor_ItemCount_FollowsTheTwoDPlusFourNRule(int items, int expected)
     {
@@ -16,11 +16,11 @@ public sealed class PollCostModelTests
     }
 
     [Theory]
-    [InlineData(20, 81, true)]
-    [InlineData(20, 82, false)]
+    [InlineData(20, 78, true)]
+    [InlineData(20, 79, false)]
     [InlineData(21, 21, false)]
-    [InlineData(1, 119, true)]
-    [InlineData(1, 120, false)]
+    [InlineData(1, 116, true)]
+    [InlineData(1, 117, false)]
     [InlineData(0, 0, false)]
     public void Fits_ItemsAndData_TrueOnlyWithinBothLimits(int items, int dataBytes, bool expected)
     {
