@@ -1,3 +1,4 @@
+using System.Globalization;
 using System.Text;
 using System.Text.RegularExpressions;
 using OperatorPanel.Core.Protocol;
@@ -29,19 +30,36 @@ public sealed partial class GoldenDocExamplesTests
         // VB8192 (example error-02) exists on the CPUs with 10240 V bytes: there the read succeeds.
         var vBeyond8192 = harness.Reference.AreaBytes(ProtocolArea.V) > 8192;
 
-        foreach (var (example, pc, plc) in Examples())
+        foreach (var (example, pc, plc) in Examples().Where(e => !NotInThisHandler(e.Pc)))
         {
             var request = Readdress(pc, options.Station);
             var (stl, reference) = harness.Exchange([WireChunk.Now(Encoding.ASCII.GetBytes(request))]);
             var fromReference = example == "identify" || (example == "error-02" && vBeyond8192);
-            var expected = fromReference ? reference : plc == NoReply ? "" : Readdress(plc, options.Station);
+            var expected = fromReference ? reference : plc == NoReply ? "" : Readdress(plc, options.Station, request);
             stl.Should().Be(expected, $"example {example}: {request}");
         }
     }
 
-    /// <summary>The frame with station 1 replaced by <paramref name="station"/> (other stations, the multi-drop examples, stay) and its BCC redone.</summary>
-    private static string Readdress(string frame, int station)
+    /// <summary>
+    /// 07 STOP and 08 READ CHANGES: this handler has neither (it answers 05 like any unknown command); branch
+    /// i11-changes adds them and their examples.
+    /// </summary>
+    private static bool NotInThisHandler(string request) =>
+        FrameCodec.TryDecode(Encoding.ASCII.GetBytes(request), out var decoded, out _) && decoded.Command is (byte)CommandCode.Stop or (byte)CommandCode.ReadChanges;
+
+    /// <summary>
+    /// The frame with station 1 replaced by <paramref name="station"/> (other stations, the multi-drop examples, stay)
+    /// and its check redone; a reply's REQCHECK becomes that of the re-addressed <paramref name="request"/>.
+    /// </summary>
+    private static string Readdress(string frame, int station, string? request = null)
     {
+        var last = frame.LastIndexOf('<');
+        if (last > 0)
+        {
+            // The remains of a cut-off frame, then a frame: each re-addressed alike.
+            return RemainsReaddressed(frame[..last], station) + Readdress(frame[last..], station, request);
+        }
+
         var bytes = Encoding.ASCII.GetBytes(frame);
         if (!FrameCodec.TryDecode(bytes, out var decoded, out _))
         {
@@ -49,7 +67,21 @@ public sealed partial class GoldenDocExamplesTests
         }
 
         var to = decoded.Station == 1 ? (byte)station : decoded.Station == station ? (byte)1 : decoded.Station;
-        return Encoding.ASCII.GetString(FrameCodec.Encode(decoded with { Station = to }));
+        var payload = decoded.Payload;
+        if (decoded.IsReply && request is not null && FrameCodec.TryGetCheck(Encoding.ASCII.GetBytes(request[request.LastIndexOf('<')..]), out var check))
+        {
+            payload = payload.SetItem(1, (byte)(check >> 8)).SetItem(2, (byte)check);
+        }
+
+        return Encoding.ASCII.GetString(FrameCodec.Encode(decoded with { Station = to, Payload = payload }));
+    }
+
+    /// <summary>"&lt;0114" for station 2: "&lt;0214" (a station 2 the other way round, any other station stays).</summary>
+    private static string RemainsReaddressed(string remains, int station)
+    {
+        var own = station.ToString("X2", CultureInfo.InvariantCulture);
+        var to = remains.StartsWith("<01", StringComparison.Ordinal) ? own : remains.StartsWith("<" + own, StringComparison.Ordinal) ? "01" : null;
+        return to is null || remains.Length < 3 ? remains : "<" + to + remains[3..];
     }
 
     private static List<(string Name, string Pc, string Plc)> Examples()
