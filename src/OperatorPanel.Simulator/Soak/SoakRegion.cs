@@ -11,8 +11,8 @@ public sealed record SoakRegion(int First, int Count)
 {
     /// <summary>
     /// VD1000 and VD1004, below the handler's buffer on every CPU with that much V. Small on purpose: at 1% of bits
-    /// flipped a frame of n characters arrives whole with probability 0.99^(8n), 10% for the 28-character READ reply
-    /// of these 8 bytes, 0.1% for the 145 characters of 64 bytes.
+    /// flipped a frame of n characters arrives whole with probability 0.99^(8n), 6.5% for the 34-character v2 READ
+    /// reply of these 8 bytes, 0.001% for the 146 characters of 64 bytes.
     /// </summary>
     public static SoakRegion Default { get; } = new(1000, 2);
 
