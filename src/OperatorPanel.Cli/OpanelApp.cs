@@ -39,6 +39,7 @@ internal static class OpanelApp
         yield return BenchCommand.Create(context);
         yield return GenerateCommand.Create(context);
         yield return StlCommand.Create(context);
+        yield return SoakCommand.Create(context);
     }
 }
 
