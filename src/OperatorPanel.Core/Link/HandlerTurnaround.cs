@@ -1,3 +1,5 @@
+using OperatorPanel.Core.Protocol;
+
 namespace OperatorPanel.Core.Link;
 
 /// <summary>
@@ -15,6 +17,26 @@ public static class HandlerTurnaround
 
     /// <summary>Characters one scan is allowed for, request and reply alike.</summary>
     public const int CharactersPerScan = 6;
+
+    /// <summary>
+    /// Most scans READ CHANGES spends comparing a list with its copy besides its frames: one per chunk of at most
+    /// <see cref="ChangeChunkBytes"/> bytes of one item, so at most one per item plus one per 8 data bytes.
+    /// </summary>
+    public const int ChangeComparisonScans = ProtocolLimits.MaxReadItems + ((ProtocolLimits.MaxReadData + ChangeChunkBytes - 1) / ChangeChunkBytes);
+
+    /// <summary>Bytes of one item the handler compares with the copy in one scan (StlGen ChangesPart).</summary>
+    public const int ChangeChunkBytes = 8;
+
+    /// <summary>
+    /// The bound the link's reply timeout uses for <paramref name="request"/>: its frames, at the longest reply it can
+    /// get, and for READ CHANGES the comparison with the copy, which depends on the list and not on the frames.
+    /// </summary>
+    public static int ScansFor(PlcRequest request, int requestChars)
+    {
+        ArgumentNullException.ThrowIfNull(request);
+        var scans = ScansFor(requestChars, ProtocolLimits.ReplyChars(ResponseCodec.ExpectedDataBytes(request)));
+        return request is ReadChangesRequest ? scans + ChangeComparisonScans : scans;
+    }
 
     public static int ScansFor(int requestChars, int replyChars) =>
         FixedScans + Ceiling(requestChars) + Ceiling(replyChars);

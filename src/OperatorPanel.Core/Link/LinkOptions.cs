@@ -89,7 +89,7 @@ public sealed record LinkOptions
         ArgumentNullException.ThrowIfNull(request);
         var replyChars = ProtocolLimits.ReplyChars(ResponseCodec.ExpectedDataBytes(request));
         return (Serial.CharacterTime * (requestChars + replyChars))
-            + ReplyDelay + ScanAllowance + (HandlerScanAllowance * HandlerTurnaround.ScansFor(requestChars, replyChars))
+            + ReplyDelay + ScanAllowance + (HandlerScanAllowance * HandlerTurnaround.ScansFor(request, requestChars))
             + Medium.ExtraFor(Serial, requestChars, replyChars) + Margin;
     }
 }

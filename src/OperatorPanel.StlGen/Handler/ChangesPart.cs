@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.StlGen.Model;
 using static OperatorPanel.StlGen.Handler.HandlerContext;
@@ -17,7 +18,7 @@ namespace OperatorPanel.StlGen.Handler;
 internal static class ChangesPart
 {
     /// <summary>Chunks the comparison handles per scan, and the most bytes of one item in a chunk.</summary>
-    public const int ChunksPerScan = 1, ChunkBytes = 8;
+    public const int ChunksPerScan = 1, ChunkBytes = HandlerTurnaround.ChangeChunkBytes;
 
     /// <summary>STEP values of READ CHANGES.</summary>
     public const int StepCompare = 20, StepCopyItems = 21, StepCopyToReply = 22;

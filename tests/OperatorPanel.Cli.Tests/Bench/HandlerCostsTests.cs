@@ -10,11 +10,11 @@ public sealed class HandlerCostsTests
     [Fact]
     public void Bound_SixteenAndTwentyCharacters_CoreScansTimesTheLargestSlice()
     {
-        // HandlerTurnaround: 4 + ceil(16 / 12) + ceil(20 / 12) = 8 scans, each with a 10 ms slice.
+        // HandlerTurnaround: 5 + ceil(16 / 6) + ceil(20 / 6) = 12 scans, each with a 10 ms slice.
         var cost = HandlerCosts.Bound(new PlannedExchange("x", new byte[16], 20));
 
-        cost.Scans.Should().Be(8);
-        cost.HandlerAlone.Should().Be(TimeSpan.FromMilliseconds(80));
+        cost.Scans.Should().Be(12);
+        cost.HandlerAlone.Should().Be(TimeSpan.FromMilliseconds(120));
         cost.Source.Should().StartWith("bound");
     }
 

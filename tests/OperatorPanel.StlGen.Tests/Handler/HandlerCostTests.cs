@@ -47,16 +47,16 @@ public sealed class HandlerCostTests
     }
 
     /// <summary>
-    /// READ CHANGES takes scans by the list, not by its short request and reply: at most the scans of the list's
-    /// longest reply (whole, ListReplyChars(D)) plus one per compared chunk (an item, or ChunkBytes of a long one).
-    /// The measured list: 20 items, 77 bytes, one chunk each. HandlerTurnaround (Core) does not count the chunks yet.
+    /// READ CHANGES takes scans by the list, not by its short request and reply: the link's bound (HandlerTurnaround for
+    /// a READ CHANGES request) adds the comparison's chunks to its longest reply, and must cover every measured case
+    /// (20 items, 77 bytes: none, one, 40 and every byte changed).
     /// </summary>
     [Theory]
     [MemberData(nameof(Configurations))]
-    public void ReadChanges_ScansStayWithinTheListsWholeReplyPlusOnePerChunk(string name)
+    public void ReadChanges_LinkBoundCoversEveryScanOfTheComparison(string name)
     {
         var measured = Measure(name);
-        var bound = HandlerTurnaround.ScansFor(ProtocolLimits.RequestChars(2), ProtocolLimits.ListReplyChars(77)) + (ChangesPart.ChunksPerScan * 20);
+        var bound = HandlerTurnaround.ScansFor(new ReadChangesRequest(new Station(1), 0, 1, Full: false), ProtocolLimits.RequestChars(2));
 
         measured.Where(m => m.Name.StartsWith(ReadChanges, StringComparison.Ordinal)).Should().HaveCount(4).And.OnlyContain(m => m.Scans <= bound);
     }

@@ -16,9 +16,9 @@ public sealed class GenerateCodeViewModelTests : IDisposable
     public void Dispose() => _folder.Dispose();
 
     [Theory]
-    [InlineData(CpuModel.Cpu222, "VB1740", "63", "125", new[] { 0 })]
-    [InlineData(CpuModel.Cpu224, "VB7884", "63", "125", new[] { 0 })]
-    [InlineData(CpuModel.Cpu226, "VB9932", "127", "125", new[] { 0, 1 })]
+    [InlineData(CpuModel.Cpu222, "VB1620", "63", "125", new[] { 0 })]
+    [InlineData(CpuModel.Cpu224, "VB7764", "63", "125", new[] { 0 })]
+    [InlineData(CpuModel.Cpu226, "VB9812", "127", "125", new[] { 0, 1 })]
     public void Defaults_PerCpu_TheGeneratorsDefaultsShown(CpuModel model, string buffer, string sbr, string firstInt, int[] ports)
     {
         var cpu = CpuProfiles.For(model);
@@ -92,7 +92,7 @@ public sealed class GenerateCodeViewModelTests : IDisposable
 
         generate.Diagnostics.Should().BeEmpty();
         generate.Preview.Should().Be(expected.AwlText);
-        generate.Stats.Should().Contain($"V memory: {expected.Stats!.VRange} (308 bytes)");
+        generate.Stats.Should().Contain($"V memory: {expected.Stats!.VRange} (428 bytes)");
         File.ReadAllText(_folder.File("Filler-handler.awl"), Encoding.ASCII).Should().Be(expected.AwlText);
         File.ReadAllText(_folder.File("Filler-symbols.txt"), Encoding.ASCII).Should().Be(expected.SymbolTableText);
         File.ReadAllText(_folder.File("Filler-README.txt"), Encoding.ASCII).Should().Be(expected.TechnicianText);

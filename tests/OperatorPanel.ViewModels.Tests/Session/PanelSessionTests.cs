@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Simulator.Reference;
@@ -95,7 +96,9 @@ public sealed class PanelSessionTests : IAsyncDisposable
         _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out var stale).Should().BeTrue();
         stale.Quality.Should().Be(ValueQuality.Stale);
 
+        // The cable is plugged back in a while later: the link reopens the port at most every ReopenInterval.
         _panel.Transport.Vanished = false;
+        _panel.Clock.Advance(ReconnectOptions.Default.ReopenInterval);
         await _panel.RefreshAsync();
 
         station.Health.Should().Be(StationHealth.Online);

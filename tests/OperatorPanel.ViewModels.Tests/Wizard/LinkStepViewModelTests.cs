@@ -103,6 +103,8 @@ public sealed class LinkStepViewModelTests
             < no response
             > "{request}"   // the cable's one retry
             < no response
+            > "<02020101>"   // one v1 IDENTIFY (XOR check): is an old handler there?
+            < no response
             """, clock, "COM3");
         var link = Wizard(new LinkConnectionTester(_ => transport, clock)).LinkStep;
 
