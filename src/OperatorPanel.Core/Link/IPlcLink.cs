@@ -18,21 +18,10 @@ public interface IPlcLink
     Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken);
 
     /// <summary>
-    /// Sends a request that acts on the process once and says whether it was answered, never sent, or may have acted
-    /// without an answer. This default cannot tell a frame that never left from a lost reply, so it takes every failure
-    /// for a lost reply: the safe side.
+    /// Sends a request that acts on the process once, never repeated, and says whether it was answered, never left the
+    /// PC, or may have acted without an answer (the caller then reads the target back).
     /// </summary>
-    async Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken)
-    {
-        try
-        {
-            return new OnceReply.Answered(await ExchangeAsync(request, cancellationToken).ConfigureAwait(false));
-        }
-        catch (PlcCommunicationException failure)
-        {
-            return new OnceReply.ReplyLost(failure.Message, CorruptedCopy: false);
-        }
-    }
+    Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken);
 
     /// <summary>Counters and round-trip times per station since the link was created.</summary>
     LinkStatistics StatisticsFor(Station station);

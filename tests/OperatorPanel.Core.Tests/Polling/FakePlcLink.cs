@@ -140,6 +140,19 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
         return Task.FromResult(response);
     }
 
+    /// <summary>The fake answers or throws at once, so every failure counts as a lost reply: the safe side.</summary>
+    public async Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken)
+    {
+        try
+        {
+            return new OnceReply.Answered(await ExchangeAsync(request, cancellationToken));
+        }
+        catch (PlcCommunicationException failure)
+        {
+            return new OnceReply.ReplyLost(failure.Message, CorruptedCopy: false);
+        }
+    }
+
     public LinkStatistics StatisticsFor(Station station) => LinkStatistics.Empty;
 
     public bool IsOnline(Station station) => true;
