@@ -4,7 +4,7 @@ namespace OperatorPanel.Core.Polling;
 
 /// <summary>
 /// The PC's side of one stored list's change copy: the list's data as the PLC's copy holds it after the last good READ
-/// CHANGES reply (default: unknown, so the next READ CHANGES must ask FULL), when the last FULL answer came, and until
+/// CHANGES reply, 08 or 09 (default: unknown, so the next READ CHANGES must ask FULL), when the last FULL answer came, and until
 /// when the list is read with READ LIST because the handler answered FULL unasked (it keeps no copy for it).
 /// </summary>
 internal sealed class ListCopy
@@ -17,6 +17,12 @@ internal sealed class ListCopy
 
     /// <summary>Whether the READ CHANGES in flight asked FULL.</summary>
     public bool AskedFull { get; set; }
+
+    /// <summary>
+    /// Whether the list is "in step": an 08 READ CHANGES of it without FULL is allowed (docs/protocol.md, 08 PC rules 1-3),
+    /// so it may also go in a 09 MASK (09 PC rule 1): its last READ CHANGES brought a good answer and no FULL is due.
+    /// </summary>
+    public bool InStep(DateTimeOffset now, TimeSpan fullReadInterval) => !Data.IsDefault && now - LastFull < fullReadInterval;
 
     /// <summary>Protocol rule 2: after anything but a good reply the PLC's copy may have moved on; ask FULL next time.</summary>
     public void Forget() => Data = default;

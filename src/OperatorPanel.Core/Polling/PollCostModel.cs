@@ -81,6 +81,12 @@ public sealed record PollCostModel
     /// <summary>A READ CHANGES reply when nothing changed: K = 0.</summary>
     public int ListIdleReplyChars { get; init; } = ProtocolLimits.ReplyChars(1);
 
+    /// <summary>09 READ CHANGES OF LISTS: '&lt;', STATION, SEQ, CMD, MASK, check, '&gt;', whatever the lists hold.</summary>
+    public int ReadChangesOfListsRequestChars { get; init; } = ProtocolLimits.RequestChars(1);
+
+    /// <summary>A 09 reply when nothing changed in any of <paramref name="lists"/> lists: one K = 0 per list.</summary>
+    public int ListsIdleReplyChars(int lists) => ReplyFixedChars + (DataByteChars * lists);
+
     /// <summary>DEFINE LIST: LIST, COUNT and the items' descriptors.</summary>
     public int DefineListRequestChars(int items) => ReadChangesRequestChars + (ItemChars * items);
 

@@ -32,10 +32,15 @@ public sealed record PollPlan(
     /// <summary>Both ways per steady cycle in which every byte changed (every list answers FULL).</summary>
     public int FullRefreshChars => RequestChars + ReplyChars;
 
-    /// <summary>Both ways per steady cycle in which nothing changed: a list costs its READ CHANGES and an empty answer.</summary>
-    public int IdleChars => Frames.Sum(f => f.List is null
-        ? CostModel.RequestChars(f.Items.Length) + CostModel.ReplyChars(f.DataBytes)
-        : CostModel.ReadChangesRequestChars + CostModel.ListIdleReplyChars);
+    /// <summary>
+    /// Both ways per steady cycle in which nothing changed: a station's lists cost one 09 READ CHANGES OF LISTS answered
+    /// with K = 0 per list (14 + 18 + 2 x lists; a handler without FEATURES bit 2 costs 36 per list with 08), a plain READ
+    /// its request and data.
+    /// </summary>
+    public int IdleChars =>
+        Frames.Where(f => f.List is null).Sum(f => CostModel.RequestChars(f.Items.Length) + CostModel.ReplyChars(f.DataBytes))
+        + Frames.Where(f => f.List is not null).GroupBy(f => f.Station)
+            .Sum(lists => CostModel.ReadChangesOfListsRequestChars + CostModel.ListsIdleReplyChars(lists.Count()));
 
     /// <summary>The one-off DEFINE LIST exchanges (request and 18-character reply) before the first steady cycle.</summary>
     public int DefineChars => Frames.Where(f => f.List is not null)

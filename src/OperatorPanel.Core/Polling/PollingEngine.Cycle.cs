@@ -46,9 +46,12 @@ public sealed partial class PollingEngine
         foreach (var station in _plan.Stations)
         {
             string? offlineError = null;
+            writes += await ExecutePendingWritesAsync(cancellationToken).ConfigureAwait(false);
+            var servedByChangesOfLists = await ReadChangesOfListsAsync(station, reads, cancellationToken).ConfigureAwait(false);
+            sent += servedByChangesOfLists.Count;
             for (var i = 0; i < _plan.Frames.Length; i++)
             {
-                if (_plan.Frames[i].Station != station)
+                if (_plan.Frames[i].Station != station || servedByChangesOfLists.Contains(i))
                 {
                     continue;
                 }
@@ -159,6 +162,7 @@ public sealed partial class PollingEngine
         ReadListResponse list => $"{list.Data.Length} data bytes",
         ReadChangesResponse { Full: true } changes => $"FULL with {changes.Data.Length} data bytes",
         ReadChangesResponse changes => $"{changes.Changes.Length} changed bytes that do not fit the list",
+        ReadChangesOfListsResponse lists => $"entries for lists {string.Join(", ", lists.Lists.Select(e => e.List))} whose changes do not fit them",
         ErrorResponse error => $"error {(byte)error.Error:X2} {error.Error}",
         _ => $"{response.GetType().Name}",
     };

@@ -13,7 +13,8 @@ namespace OperatorPanel.Core.Polling;
 /// <see cref="PollingOptions.FullReadInterval"/>. A station whose handler keeps no copies, or a list answered FULL unasked,
 /// is read with READ LIST instead (until the next periodic FULL tries READ CHANGES again). A station that lost its lists
 /// answers 07: its lists are defined again and the frame is read once more in the same cycle. A frame whose DEFINE is
-/// refused is read with plain READs from then on.
+/// refused is read with plain READs from then on. A handler with 09 gets the lists in step in one exchange first
+/// (PollingEngine.ChangesOfLists.cs); what that does not bring comes here.
 /// </summary>
 public sealed partial class PollingEngine
 {
@@ -35,13 +36,23 @@ public sealed partial class PollingEngine
     /// <summary>
     /// What an IDENTIFY reply says about the station's handler: without READ CHANGES copies (FEATURES bit 1 clear or
     /// COPY_BYTES 0) every READ CHANGES would answer FULL, 4 characters longer than READ LIST, so its lists are read with
-    /// READ LIST. Call from the thread that talks to the engine; takes effect from the next exchange.
+    /// READ LIST; with FEATURES bit 2 its lists in step are read with one 09 READ CHANGES OF LISTS a cycle. Call from the
+    /// thread that talks to the engine; takes effect from the next exchange.
     /// </summary>
     public void NoteIdentity(IdentifyResponse identity)
     {
         ArgumentNullException.ThrowIfNull(identity);
         lock (_gate)
         {
+            if (identity.HasChangesOfLists)
+            {
+                _stationsWithChangesOfLists.Add(identity.Station);
+            }
+            else
+            {
+                _stationsWithChangesOfLists.Remove(identity.Station);
+            }
+
             if (identity.HasCopies && identity.CopyBytes > 0)
             {
                 _stationsWithoutCopies.Remove(identity.Station);
@@ -111,15 +122,21 @@ public sealed partial class PollingEngine
         var frame = _plan.Frames[index];
         var copy = CopyOf(index);
         var now = _time.GetUtcNow();
-        bool withoutCopies;
-        lock (_gate) { withoutCopies = _stationsWithoutCopies.Contains(frame.Station); }
-        if (!Options.UseReadChanges || withoutCopies || now < copy.ReadListUntil)
+        if (!ReadsChanges(index, now))
         {
             return new ReadListRequest(frame.Station, list);
         }
 
-        copy.AskedFull = copy.Data.IsDefault || now - copy.LastFull >= Options.FullReadInterval;
+        copy.AskedFull = !copy.InStep(now, Options.FullReadInterval);
         return new ReadChangesRequest(frame.Station, list, copy.AskedFull);
+    }
+
+    /// <summary>Whether the list at <paramref name="index"/> is read with READ CHANGES (08 or 09) now, not READ LIST.</summary>
+    private bool ReadsChanges(int index, DateTimeOffset now)
+    {
+        bool withoutCopies;
+        lock (_gate) { withoutCopies = _stationsWithoutCopies.Contains(_plan.Frames[index].Station); }
+        return Options.UseReadChanges && !withoutCopies && now >= CopyOf(index).ReadListUntil;
     }
 
     /// <summary>

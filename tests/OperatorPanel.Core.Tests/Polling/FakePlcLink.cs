@@ -51,6 +51,12 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
     /// <summary>Stations whose handler keeps no READ CHANGES copies: every READ CHANGES answers FULL.</summary>
     public HashSet<Station> KeepsNoCopies { get; } = [];
 
+    /// <summary>Stations whose handler predates 09 READ CHANGES OF LISTS: it answers 05, unknown command.</summary>
+    public HashSet<Station> LacksChangesOfLists { get; } = [];
+
+    /// <summary>Rewrites a served reply before it reaches the engine, e.g. into one the handler should never send.</summary>
+    public Func<PlcRequest, PlcResponse, PlcResponse>? Tamper { get; set; }
+
     /// <summary>Requests the station serves (its copy moves on) but whose reply is lost on the way: the link throws NoAnswer.</summary>
     public Func<PlcRequest, bool>? LosesReplyTo { get; set; }
 
@@ -132,6 +138,7 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
         }
 
         var response = refusal != ProtocolError.None ? Error(request, refusal) : Serve(request);
+        response = Tamper?.Invoke(request, response) ?? response;
         if (LosesReplyTo?.Invoke(request) == true)
         {
             throw new PlcCommunicationException(PlcErrorKind.NoAnswer, request.Station, "reply lost");
@@ -181,6 +188,46 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
         }
     }
 
+    /// <summary>
+    /// As the handler: one entry per list of the mask, REREAD (and the copy invalid) when the list has no valid copy or
+    /// its pairs would not be shorter than its data; else the pairs, and the copy moves on. The fit rule (reply reaching
+    /// the descriptors) is not modelled: the fake's lists are small.
+    /// </summary>
+    private PlcResponse ServeChangesOfLists(ReadChangesOfListsRequest request)
+    {
+        lock (_lock)
+        {
+            if (LacksChangesOfLists.Contains(request.Station))
+            {
+                return Error(request, ProtocolError.UnknownCommand);
+            }
+
+            if (request.Lists.Any(list => !_lists.ContainsKey((request.Station, list))))
+            {
+                return Error(request, ProtocolError.ListNotDefined);
+            }
+
+            var entries = new List<ListChanges>();
+            foreach (var list in request.Lists)
+            {
+                var key = (request.Station, list);
+                byte[] data = [.. _lists[key].SelectMany(i => Memory(request.Station, i.Area).Skip(i.Offset).Take(i.Length))];
+                var changed = _copies.TryGetValue(key, out var copy) ? Enumerable.Range(0, data.Length).Where(i => data[i] != copy[i]).ToList() : null;
+                if (changed is null || KeepsNoCopies.Contains(request.Station) || 2 * changed.Count >= data.Length)
+                {
+                    _copies.Remove(key);
+                    entries.Add(ListChanges.RereadList(list));
+                    continue;
+                }
+
+                _copies[key] = data;
+                entries.Add(ListChanges.Pairs(list, [.. changed.Select(i => new ChangedByte((byte)i, data[i]))]));
+            }
+
+            return new ReadChangesOfListsResponse(request.Station, request.Sequence, [.. entries]);
+        }
+    }
+
     private static ErrorResponse Error(PlcRequest request, ProtocolError error) => new(request.Station, request.Sequence, request.Command, error);
 
     private PlcResponse Serve(PlcRequest request)
@@ -220,6 +267,8 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
                 return new ReadListResponse(list.Station, list.Sequence, [.. items.SelectMany(i => Memory(list.Station, i.Area).Skip(i.Offset).Take(i.Length))]);
             case ReadChangesRequest changes:
                 return ServeChanges(changes);
+            case ReadChangesOfListsRequest lists:
+                return ServeChangesOfLists(lists);
             case WriteBlockRequest write:
                 if (write.Area == ProtocolArea.I)
                 {

@@ -34,7 +34,7 @@ public sealed class PollPlannerListTests
         plan.DataBytes.Should().Be(74);
         plan.FullRefreshChars.Should().Be(220, "2 x (16 + 20) + 2 x 74");
         plan.FullRefreshChars.Should().BeLessThanOrEqualTo((int)(1.6 * 2 * 74));
-        plan.IdleChars.Should().Be(72, "two READ CHANGES answered with K = 0");
+        plan.IdleChars.Should().Be(36, "one 09 READ CHANGES OF LISTS (14) answered with K = 0 for each list (18 + 2 x 2)");
     }
 
     [Fact]
@@ -99,6 +99,15 @@ public sealed class PollPlannerListTests
 
         plan.ListCount.Should().Be(0);
         plan.IdleChars.Should().Be(plan.FullRefreshChars);
+    }
+
+    [Fact]
+    public void Build_TwoStationsWithTwoListsEach_IdlePricesOne09PerStation()
+    {
+        var plan = PollPlanner.Build([.. Items(One, ReferenceLine), .. Items(Two, ReferenceLine)], Cpu226(One, Two));
+
+        plan.ListCount.Should().Be(4);
+        plan.IdleChars.Should().Be(2 * (14 + 18 + (2 * 2)), "per station one 09 and a K = 0 for each of its two lists");
     }
 
     /// <summary>Which (area, byte) the reply byte <paramref name="dataOffset"/> of <paramref name="frame"/> carries.</summary>

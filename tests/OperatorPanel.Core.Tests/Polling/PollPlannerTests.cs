@@ -187,7 +187,7 @@ public sealed class PollPlannerTests
         plan.Frames.Should().ContainSingle().Which.List.Should().Be(1);
         plan.RequestChars.Should().Be(16, "READ CHANGES: LIST and FLAGS");
         plan.ReplyChars.Should().Be(20 + (4 * 2), "a FULL answer: K = FF and the data");
-        plan.IdleChars.Should().Be(16 + 20, "nothing changed: K = 0");
+        plan.IdleChars.Should().Be(14 + 20, "nothing changed: one 09 READ CHANGES OF LISTS answered with K = 0");
         plan.DefineChars.Should().Be(16 + (3 * 8) + 18);
         plan.CostChars.Should().Be(16 + 20 + 4 + 20, "the planner prices a list byte at 1 character, the midpoint of idle and FULL");
     }
