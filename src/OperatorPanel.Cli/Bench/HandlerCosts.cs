@@ -1,5 +1,6 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Cli.Bench;
 
@@ -37,7 +38,7 @@ internal sealed record HandlerCosts(ImmutableArray<HandlerCost> Steady, Immutabl
                 }
 
                 // The link's reply timeout allows Core's bound of scans; a handler that takes more risks timeouts.
-                var bound = HandlerTurnaround.ScansFor(exchange.RequestChars, exchange.ReplyChars);
+                var bound = LinkBound(exchange);
                 if (cost!.Scans > bound)
                 {
                     problems.Add($"{exchange.Name}: the handler took {cost.Scans} scans, more than Core's HandlerTurnaround bound of {bound}");
@@ -58,6 +59,19 @@ internal sealed record HandlerCosts(ImmutableArray<HandlerCost> Steady, Immutabl
         var steady = cycles.Steady.Select(Serve).ToImmutableArray();
         var idle = cycles.Idle.Select(Serve).ToImmutableArray();
         return new(steady, idle, problems.ToImmutable());
+    }
+
+    /// <summary>
+    /// The scans the link's reply timeout allows for the exchange (<see cref="HandlerTurnaround.ScansFor(PlcRequest, int)"/>:
+    /// the longest reply the request can get, and the copy comparisons of READ CHANGES and READ CHANGES OF LISTS); for
+    /// bytes that are no request, the bound of their characters alone.
+    /// </summary>
+    public static int LinkBound(PlannedExchange exchange)
+    {
+        ArgumentNullException.ThrowIfNull(exchange);
+        return FrameCodec.TryDecode(exchange.Request, out var frame, out _) && RequestCodec.TryParse(frame, null, out var request, out _)
+            ? HandlerTurnaround.ScansFor(request, exchange.RequestChars)
+            : HandlerTurnaround.ScansFor(exchange.RequestChars, exchange.ReplyChars);
     }
 
     public static HandlerCost Bound(PlannedExchange exchange)

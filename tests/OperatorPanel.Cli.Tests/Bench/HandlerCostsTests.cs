@@ -1,7 +1,9 @@
 using OperatorPanel.Cli.Bench;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Cli.Tests.Bench;
 
@@ -16,6 +18,21 @@ public sealed class HandlerCostsTests
         cost.Scans.Should().Be(12);
         cost.HandlerAlone.Should().Be(TimeSpan.FromMilliseconds(120));
         cost.Source.Should().StartWith("bound");
+    }
+
+    [Fact]
+    public void LinkBound_ReadChangesOfTwoLists_TheLinksTimeoutBoundWithOneComparisonPerList()
+    {
+        var exchange = new PlannedExchange("09", RequestCodec.Encode(new ReadChangesOfListsRequest(new Station(2), 0x03)), 22);
+
+        // 5 + ceil(14 / 6) + ceil(254 / 6) for the longest reply (118 payload bytes), + 2 x 35 comparison scans.
+        HandlerCosts.LinkBound(exchange).Should().Be(5 + 3 + 43 + (2 * HandlerTurnaround.ChangeComparisonScans));
+    }
+
+    [Fact]
+    public void LinkBound_BytesThatAreNoRequest_TheBoundOfTheirCharacters()
+    {
+        HandlerCosts.LinkBound(new PlannedExchange("x", new byte[16], 20)).Should().Be(12);
     }
 
     [Fact]
@@ -55,7 +72,7 @@ public sealed class HandlerCostsTests
 
         var costs = HandlerCosts.Measure(cycles, probe, error);
 
-        cycles.Idle.Select(e => e.Name).Should().Equal("READ CHANGES 1");
+        cycles.Idle.Select(e => e.Name).Should().Equal("READ CHANGES OF LISTS 1");
         costs.Problems.Where(p => !p.Contains("HandlerTurnaround", StringComparison.Ordinal)).Should().BeEmpty("the handler answers every exchange with the reply length Core computes");
         costs.Idle.Single().Source.Should().StartWith("measured");
     }

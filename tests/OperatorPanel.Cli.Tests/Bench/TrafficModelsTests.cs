@@ -27,11 +27,12 @@ public sealed class TrafficModelsTests
         var cycles = RefreshCycles.For(plan);
 
         // One list of 3 items and 4 bytes. DEFINE LIST: payload LIST COUNT + 3 x 4 = 14 -> 40, reply 18.
-        // READ CHANGES: payload LIST FLAGS -> 16; FULL reply K + 4 bytes -> 28; idle reply K = 0 -> 20.
+        // READ CHANGES: payload LIST FLAGS -> 16; FULL reply K + 4 bytes -> 28.
+        // Idle, READ CHANGES OF LISTS: payload MASK -> 14; reply K = 0 -> 20.
         ReadListAssignment.For(plan).Should().HaveCount(1);
         cycles.Setup.Select(e => (e.Name, e.RequestChars, e.ReplyChars)).Should().Equal(("DEFINE LIST 1", 40, 18), ("READ CHANGES 1 FULL", 16, 28));
         cycles.Steady.Select(e => (e.Name, e.RequestChars, e.ReplyChars)).Should().Equal(("READ CHANGES 1 FULL", 16, 28));
-        cycles.Idle.Select(e => (e.Name, e.RequestChars, e.ReplyChars)).Should().Equal(("READ CHANGES 1", 16, 20));
+        cycles.Idle.Select(e => (e.Name, e.RequestChars, e.ReplyChars)).Should().Equal(("READ CHANGES OF LISTS 1", 14, 20));
     }
 
     [Fact]
@@ -39,19 +40,32 @@ public sealed class TrafficModelsTests
     {
         var cycles = RefreshCycles.For(Tiny.Plan());
         var full = new ReadChangesRequest(Tiny.Station, 1, 1, true);
-        var idle = full with { Full = false };
+        var idle = new ReadChangesOfListsRequest(Tiny.Station, 1, 0x01);
 
         cycles.Steady[0].ReplyChars.Should().Be(ResponseCodec.Encode(ReadChangesResponse.Whole(Tiny.Station, 1, [1, 2, 3, 4]), full).Length);
-        cycles.Idle[0].ReplyChars.Should().Be(ResponseCodec.Encode(ReadChangesResponse.Pairs(Tiny.Station, 1, []), idle).Length);
+        Decoded(cycles.Idle[0].Request).Should().BeOfType<ReadChangesOfListsRequest>().Which.ListMask.Should().Be(0x01);
+        cycles.Idle[0].ReplyChars.Should().Be(ResponseCodec.Encode(new ReadChangesOfListsResponse(Tiny.Station, 1, [ListChanges.Pairs(1, [])]), idle).Length);
         cycles.Setup[0].ReplyChars.Should().Be(ResponseCodec.Encode(new DefineListResponse(Tiny.Station, 1), new DefineListRequest(Tiny.Station, 1, 1, Tiny.Plan().Frames[0].Items)).Length);
     }
 
     [Fact]
-    public void FromCycle_Idle_ThirtySixCharactersPerIdleList()
+    public void FromCycle_IdleOneList_ThirtyFourCharacters()
     {
         var figures = TrafficModels.FromCycle(TrafficModels.Idle, RefreshCycles.For(Tiny.Plan()).Idle);
 
-        figures.Should().Be(new TrafficFigures(TrafficModels.Idle, 1, 16, 20));
+        figures.Should().Be(new TrafficFigures(TrafficModels.Idle, 1, 14, 20));
+    }
+
+    [Fact]
+    public void RefreshCycles_ReferenceLine_IdleIsOneReadChangesOfListsOverBothListsInThirtySixCharacters()
+    {
+        var line = ReferenceLine.Create();
+        var cycles = RefreshCycles.For(line.Plan());
+
+        // Request payload MASK 03 -> 14 characters; reply K = 0 for list 1 and for list 2 -> 18 + 2 x 2 = 22.
+        cycles.Idle.Select(e => (e.Name, e.RequestChars, e.ReplyChars)).Should().Equal(("READ CHANGES OF LISTS 1+2", 14, 22));
+        Decoded(cycles.Idle[0].Request).Should().BeOfType<ReadChangesOfListsRequest>().Which.Lists.Should().Equal(1, 2);
+        TrafficModels.FromCycle(TrafficModels.Idle, cycles.Idle).TotalChars.Should().Be(36);
     }
 
     [Fact]
@@ -125,5 +139,12 @@ public sealed class TrafficModelsTests
         var replies = plan.Frames.Sum(f => ResponseCodec.Encode(new ReadResponse(line.Station, 0, ImmutableArray.Create(new byte[f.DataBytes]))).Length);
         figures.RequestChars.Should().Be(requests);
         figures.ReplyChars.Should().Be(replies);
+    }
+
+    private static PlcRequest Decoded(byte[] frame)
+    {
+        FrameCodec.TryDecode(frame, out var decoded, out var error).Should().BeTrue(error.ToString());
+        RequestCodec.TryParse(decoded, null, out var request, out var refusal).Should().BeTrue(refusal.ToString());
+        return request;
     }
 }
