@@ -81,7 +81,8 @@ public sealed partial class ReferencePlc
         (byte)Config.BufferStart,
         (byte)(Config.HandlerVBytes >> 8),
         (byte)Config.HandlerVBytes,
-        (byte)((Config.AllowStop ? HandlerIdentity.StopFeature : 0) | (Config.CopyBytes > 0 ? HandlerIdentity.CopiesFeature : 0)),
+        (byte)((Config.AllowStop ? HandlerIdentity.StopFeature : 0) | (Config.CopyBytes > 0 ? HandlerIdentity.CopiesFeature : 0)
+            | HandlerIdentity.ChangesOfListsFeature),
         (byte)Config.CopyBytes,
     ];
 }
