@@ -128,5 +128,5 @@ public static class HandlerMeasurement
     }
 
     private static byte[] ChangesOfListsFrame(Station station, byte sequence, byte mask) =>
-        FrameCodec.Encode(new FreeportFrame((byte)station.Address, sequence, 0x09, [mask]));
+        RequestCodec.Encode(new ReadChangesOfListsRequest(station, sequence, mask));
 }

@@ -192,7 +192,7 @@ internal static class ChangesPart
         yield return Label(CompareDone, "READ CHANGES: comparison done");
         yield return JumpIf(
             "Comparison: one list of 09", "READ CHANGES OF LISTS goes on with its entry for this list.", ChangesOfListsPart.ListCompared,
-            Op("LDB=", l.B(Cmd), Dec((CommandCode)0x09)));
+            Op("LDB=", l.B(Cmd), Dec(CommandCode.ReadChangesOfLists)));
         yield return JumpIf(
             "Comparison: pairs not shorter",
             "K >= N (2K >= D): the whole list instead. The copy took every changed byte, so it holds the list as compared: the next scan sends it (AC1 = its end).",

@@ -28,7 +28,7 @@ internal static class ReceivePart
     private static readonly (CommandCode Code, int Label, string Name)[] ChangesCommands =
     [
         (CommandCode.ReadChanges, HandlerLabels.ReadChanges, "READ CHANGES"),
-        ((CommandCode)0x09, HandlerLabels.ReadChangesOfLists, "READ CHANGES OF LISTS"),
+        (CommandCode.ReadChangesOfLists, HandlerLabels.ReadChangesOfLists, "READ CHANGES OF LISTS"),
     ];
 
     /// <summary>08 and 09 always; 07 STOP only when generated with it (else CMD 07 is unknown: 05).</summary>

@@ -65,14 +65,8 @@ internal sealed class ChangesExchange(DifferentialHarness harness, int station)
             return;
         }
 
-        var bytes = _known[entry.List].ToArray();
-        foreach (var change in entry.Changes)
-        {
-            change.Index.Should().BeLessThan(bytes.Length, "every INDEX lies inside the list");
-            bytes[change.Index] = change.Value;
-        }
-
-        _known[entry.List] = [.. bytes];
+        entry.TryApply(_known[entry.List].AsSpan(), out var now).Should().BeTrue("every INDEX lies inside the list");
+        _known[entry.List] = now;
     }
 
     /// <summary>A frame the codec would not build (bad FLAGS, wrong length): both answers, undecoded.</summary>

@@ -143,11 +143,14 @@ internal sealed class RandomRequests(Random random, DifferentialHarness harness,
         return cmd;
     }
 
-    /// <summary>A command code this handler does not know (error 05): 07 STOP (generated without it) and 0A-FF.</summary>
+    /// <summary>
+    /// A command code this handler does not know (error 05): 07 STOP (generated without it) and 0A-FF. 08 and 09 are
+    /// left out: both answer them.
+    /// </summary>
     private byte UnknownCommand()
     {
-        var code = random.Next(7, 253);
-        return (byte)(code >= 8 ? code + 2 : code);
+        var code = random.Next(9, 256);
+        return (byte)(code == 9 ? 7 : code);
     }
 
     /// <summary>AREA OFFSET(2) LENGTH; for WRITE BIT the LENGTH byte becomes BIT (the caller overwrites it).</summary>
