@@ -112,7 +112,6 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
                 _log.Debug("{Station}: retry {Attempt} of {Command} after {Reason}", request.Station, attempt, request.Command, lastFailure!.Message);
             }
 
-            statistics.Request();
             AttemptOutcome outcome;
             try
             {
@@ -120,8 +119,17 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             }
             catch (PlcCommunicationException portFailure)
             {
+                if (_frameSent)
+                {
+                    statistics.Request();
+                }
+
                 return new ExchangeResult(null, portFailure, _frameSent, CorruptedCopy: false);
             }
+
+            // Counted once the attempt has ended, so a snapshot taken while a frame is in flight does not show a
+            // request without its reply or timeout.
+            statistics.Request();
 
             if (outcome.CorruptedRefusal is { } refusal)
             {

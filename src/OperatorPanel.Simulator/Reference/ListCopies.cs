@@ -5,7 +5,7 @@ namespace OperatorPanel.Simulator.Reference;
 /// <summary>
 /// The READ CHANGES copies (docs/protocol.md, "08 READ CHANGES"): COPY_BYTES V bytes after the work bytes, handed to
 /// the lists in definition order. A list whose data does not fit in what is left gets no copy and is always answered
-/// FULL. A new copy is not valid until a FULL answer has filled it. Cleared with the lists.
+/// FULL. A new copy is not valid until a FULL answer has filled it, and not after a 09 REREAD entry. Cleared with the lists.
 /// </summary>
 public sealed class ListCopies
 {
@@ -47,6 +47,9 @@ public sealed class ListCopies
 
     /// <summary>The copy's bytes (only for a list that <see cref="HasCopy"/>).</summary>
     public Span<byte> Of(int list, int dataBytes) => _bytes.AsSpan(_start[list], dataBytes);
+
+    /// <summary>A 09 entry REREAD: whatever the copy holds, the next READ CHANGES of the list answers FULL.</summary>
+    public void Invalidate(int list) => _valid[list] = false;
 
     /// <summary>The copy now holds what the reply reports: valid from here on.</summary>
     public void Renew(int list, ReadOnlySpan<byte> data)

@@ -37,6 +37,7 @@ public sealed partial class ReferencePlc
             DefineListRequest define => _lists.Define(define),
             ReadListRequest list when !_lists.IsDefined(list.List) => ProtocolError.ListNotDefined,
             ReadChangesRequest changes when !_lists.IsDefined(changes.List) => ProtocolError.ListNotDefined,
+            ReadChangesOfListsRequest lists when !lists.Lists.All(_lists.IsDefined) => ProtocolError.ListNotDefined,
             _ => ProtocolError.None,
         };
         if (error != ProtocolError.None)
@@ -46,9 +47,10 @@ public sealed partial class ReferencePlc
 
         // Step 7: execute; the caller sends the reply after the configured delay. A reply (18 + 2P characters) that
         // would reach the floor, or a READ's descriptors below it, clears every list first. READ LIST and READ CHANGES
-        // replies stay within the capacity rule; STOP's reply (18 characters) is shorter than any list's.
+        // replies stay within the capacity rule, READ CHANGES OF LISTS replies within LAST_FREE by their REREAD rule;
+        // STOP's reply (18 characters) is shorter than any list's.
         var payload = Execute(request);
-        if (request is not (ReadListRequest or ReadChangesRequest or DefineListRequest))
+        if (request is not (ReadListRequest or ReadChangesRequest or ReadChangesOfListsRequest or DefineListRequest))
         {
             _lists.ClearIfReached(ProtocolLimits.ReplyChars(payload.Length), request is ReadRequest read ? 4 * read.Items.Length : 0);
         }

@@ -15,6 +15,8 @@ public sealed partial class ReferencePlc
                 return ReadItems(_lists.Items(list.List));
             case ReadChangesRequest changes:
                 return ReadChanges(changes);
+            case ReadChangesOfListsRequest lists:
+                return ReadChangesOfLists(lists);
             case DefineListRequest or StopRequest:
                 return [];
             case WriteBlockRequest write:
@@ -61,6 +63,44 @@ public sealed partial class ReferencePlc
             : [(byte)changed.Count, .. changed.SelectMany(i => new[] { (byte)i, data[i] })];
     }
 
+    /// <summary>
+    /// One entry per list in MASK, ascending: K pairs exactly as 08 answers them, the copy renewed; or REREAD (16#FE)
+    /// with the copy invalid when the list has no valid copy, its pairs would not be shorter (2K &gt;= D), or would not
+    /// fit: the reply with them, and one K byte for each later list, must end before LAST_FREE (= floor - 1).
+    /// </summary>
+    private byte[] ReadChangesOfLists(ReadChangesOfListsRequest request)
+    {
+        var copies = _lists.Copies;
+        var payload = new List<byte>();
+        for (var n = 0; n < request.Lists.Count; n++)
+        {
+            var list = request.Lists[n];
+            if (!copies.HasCopy(list) || !copies.IsValid(list))
+            {
+                payload.Add(ProtocolLimits.RereadListMarker);
+                continue;
+            }
+
+            var data = ReadItems(_lists.Items(list));
+            var copy = copies.Of(list, data.Length).ToArray();
+            var changed = Enumerable.Range(0, data.Length).Where(i => data[i] != copy[i]).ToList();
+            var later = request.Lists.Count - n - 1;
+            var fits = ProtocolLimits.ReplyChars(payload.Count + 1 + (2 * changed.Count) + later) <= _lists.Floor - 1;
+            copies.Renew(list, data);
+            if (2 * changed.Count >= data.Length || !fits)
+            {
+                copies.Invalidate(list);
+                payload.Add(ProtocolLimits.RereadListMarker);
+                continue;
+            }
+
+            payload.Add((byte)changed.Count);
+            payload.AddRange(changed.SelectMany(i => new[] { (byte)i, data[i] }));
+        }
+
+        return [.. payload];
+    }
+
     private byte[] ReadItems(IEnumerable<ReadItem> items) =>
         [.. items.SelectMany(item => Memory.Area(item.Area).Skip(item.Offset).Take(item.Length))];
 
@@ -81,7 +121,8 @@ public sealed partial class ReferencePlc
         (byte)Config.BufferStart,
         (byte)(Config.HandlerVBytes >> 8),
         (byte)Config.HandlerVBytes,
-        (byte)((Config.AllowStop ? HandlerIdentity.StopFeature : 0) | (Config.CopyBytes > 0 ? HandlerIdentity.CopiesFeature : 0)),
+        (byte)((Config.AllowStop ? HandlerIdentity.StopFeature : 0) | (Config.CopyBytes > 0 ? HandlerIdentity.CopiesFeature : 0)
+            | HandlerIdentity.ChangesOfListsFeature),
         (byte)Config.CopyBytes,
     ];
 }

@@ -40,16 +40,20 @@ public static class HandlerMeasurement
         var session = new MeasurementSession(plc, freeport, line, port);
         var builder = ImmutableArray.CreateBuilder<MeasuredRequest>();
         builder.Add(session.Idle(IdleName));
-        foreach (var (name, frame) in WorstCases(station, dataStart))
+        foreach (var (name, frame) in WorstCases(station, dataStart).Concat(ChangesOfLists(station, dataStart)))
         {
-            builder.Add(session.Serve(name, frame));
+            var served = session.Serve(name ?? "", frame);
+            if (name is not null)
+            {
+                builder.Add(served);
+            }
         }
 
         (requests, error) = (builder.ToImmutable(), plc.Fault is { } fault ? $"the handler faulted: {fault}" : "");
         return plc.Fault is null;
     }
 
-    private static IEnumerable<(string Name, byte[] Frame)> WorstCases(Station station, int v)
+    private static IEnumerable<(string? Name, byte[] Frame)> WorstCases(Station station, int v)
     {
         // 19 items of 4 bytes and one of 1: 77 bytes, the most a list of 20 items may have (ListsFit: 80 + 20 + 2 x 77 <= 255).
         ImmutableArray<ReadItem> twenty = [.. Enumerable.Range(0, 20).Select(i => new ReadItem(ProtocolArea.V, v + (i * 5), i == 19 ? 1 : 4))];
@@ -79,4 +83,50 @@ public static class HandlerMeasurement
         var other = new Station(station.Address % 126 + 1);
         yield return ("READ 20 items for another station", RequestCodec.Encode(new ReadRequest(other, 9, twenty)));
     }
+
+    /// <summary>
+    /// 09 READ CHANGES OF LISTS, after the requests that prepare it (no name: served, not reported). Two lists of the
+    /// reference line's size (20 items and 13, 37 bytes each) idle, beside the two READ CHANGES it replaces; then four
+    /// lists of 10 two-byte items: first without a valid copy (four REREAD entries in the scan that decodes the request),
+    /// then with 9 bytes changed in each: the first list's pairs fit, the other three's do not (REREAD after a whole
+    /// comparison, the pairs written up to the room left).
+    /// </summary>
+    private static IEnumerable<(string? Name, byte[] Frame)> ChangesOfLists(Station station, int v)
+    {
+        byte sequence = 20;
+        ImmutableArray<ReadItem> first = [.. Enumerable.Range(0, 20).Select(i => new ReadItem(ProtocolArea.V, v + (i * 5), i < 17 ? 2 : 1))];
+        ImmutableArray<ReadItem> second = [.. Enumerable.Range(0, 13).Select(i => new ReadItem(ProtocolArea.V, v + (i * 8), i < 11 ? 3 : 2))];
+        yield return (null, RequestCodec.Encode(new DefineListRequest(station, sequence++, 1, first)));
+        yield return (null, RequestCodec.Encode(new DefineListRequest(station, sequence++, 2, second)));
+        yield return (null, RequestCodec.Encode(new ReadChangesRequest(station, sequence++, 1, true)));
+        yield return (null, RequestCodec.Encode(new ReadChangesRequest(station, sequence++, 2, true)));
+        yield return ("READ CHANGES list 1 of 2, none changed", RequestCodec.Encode(new ReadChangesRequest(station, sequence++, 1, false)));
+        yield return ("READ CHANGES list 2 of 2, none changed", RequestCodec.Encode(new ReadChangesRequest(station, sequence++, 2, false)));
+        yield return ("READ CHANGES OF LISTS 2 lists idle", ChangesOfListsFrame(station, sequence++, 0b0011));
+
+        const int lists = 4, items = 10, itemBytes = 2, listBytes = items * itemBytes;
+        yield return (null, RequestCodec.Encode(new WriteBlockRequest(station, sequence++, ProtocolArea.V, v, [.. new byte[lists * listBytes]])));
+        for (var list = 1; list <= lists; list++)
+        {
+            var at = v + ((list - 1) * listBytes);
+            yield return (null, RequestCodec.Encode(new DefineListRequest(station, sequence++, list, [.. Enumerable.Range(0, items).Select(i => new ReadItem(ProtocolArea.V, at + (i * itemBytes), itemBytes))])));
+        }
+
+        yield return ("READ CHANGES OF LISTS 4 lists, no valid copy", ChangesOfListsFrame(station, sequence++, 0b1111));
+        for (var list = 1; list <= lists; list++)
+        {
+            yield return (null, RequestCodec.Encode(new ReadChangesRequest(station, sequence++, list, true)));
+        }
+
+        for (var list = 1; list <= lists; list++)
+        {
+            var changed = Enumerable.Range(0, listBytes).Select(b => (byte)(b % itemBytes == 0 && b / itemBytes < 9 ? 0xA5 : 0)).ToArray();
+            yield return (null, RequestCodec.Encode(new WriteBlockRequest(station, sequence++, ProtocolArea.V, v + ((list - 1) * listBytes), [.. changed])));
+        }
+
+        yield return ("READ CHANGES OF LISTS 4 lists, 9 changed in each", ChangesOfListsFrame(station, sequence, 0b1111));
+    }
+
+    private static byte[] ChangesOfListsFrame(Station station, byte sequence, byte mask) =>
+        RequestCodec.Encode(new ReadChangesOfListsRequest(station, sequence, mask));
 }

@@ -77,11 +77,7 @@ internal static class ChangesPart
         yield return JumpIf("READ CHANGES: FLAGS", "Only bit 0 (FULL) may be set: error 06.", HandlerLabels.Error(ProtocolError.BadParameter),
             Op("LDB>", l.B(9), Dec(ReadChangesFlags.Full)));
         yield return JumpIf("READ CHANGES: LIST 1-4", "Any other LIST is never defined: error 07.", e07, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), "4"));
-        yield return Always(
-            "READ CHANGES: the list's descriptors",
-            "LIST kept; AC3 points at START of the list, AC2 at its first descriptor; then AC3 at LCOUNT.",
-            Op("MOVB", l.B(8), l.B(List)), Op("MOVD", l.Ptr(Start1 - 1), "AC3"), Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"),
-            Op("+D", "AC0", "AC3"), Op("MOVD", l.Ptr(0), "AC2"), Op("BTI", "*AC3", "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC2"), Op("+D", "4", "AC3"));
+        yield return Descriptors(c, "READ CHANGES: the list's descriptors", "LIST kept; ", Op("MOVB", l.B(8), l.B(List)));
         yield return JumpIf("READ CHANGES: list not defined", "LCOUNT = 0: error 07.", e07, Op("LDB=", "*AC3", "0"));
         var whole = new NetworkBuilder(
                 "READ CHANGES: K = 16#FF for now",
@@ -97,20 +93,51 @@ internal static class ChangesPart
         yield return JumpIf(
             "READ CHANGES: no copy", "CSTART = 255: the whole list, built like READ LIST's from the next scan on.", SlicePart.Yield,
             Op("LDB=", "*AC3", Dec(NoCopy)), Op("MOVB", Dec(SlicePart.StepBuildItems), l.B(Step)));
-        yield return Always(
+        yield return Copy(c);
+        yield return JumpIf("READ CHANGES: FULL asked or no valid copy", "FLAGS bit 0, or CD bit 7 clear: the whole list into the copy and the reply.",
+            FullWithCopy, Op("LD", l.Bit(9, 0)), Op("OB<", "*AC3", Dec(CopyValid)));
+        yield return CompareSetUp(c, "with K >= N pairs (2K >= D) the whole list is not longer");
+        yield return SlicePart.Pause(c, "READ CHANGES: comparison ready", StepCompare);
+    }
+
+    /// <summary>
+    /// The list whose id is in LIST (set by <paramref name="first"/> or before): AC3 at its START, AC2 at its first
+    /// descriptor, then AC3 at its LCOUNT.
+    /// </summary>
+    public static StlNetwork Descriptors(HandlerContext c, string title, string kept, params (string, string[])[] first)
+    {
+        var l = c.Layout;
+        return Always(
+            title,
+            kept + "AC3 points at START of the list, AC2 at its first descriptor; then AC3 at LCOUNT.",
+            [.. first, Op("MOVD", l.Ptr(Start1 - 1), "AC3"), Op("BTI", l.B(List), "AC0"), Op("ITD", "AC0", "AC0"),
+            Op("+D", "AC0", "AC3"), Op("MOVD", l.Ptr(0), "AC2"), Op("BTI", "*AC3", "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC2"), Op("+D", "4", "AC3")]);
+    }
+
+    /// <summary>In: AC3 at CSTART of a list with a copy. Out: AC0 at its first copy byte, AC3 at CD, D = the list's data bytes.</summary>
+    public static StlNetwork Copy(HandlerContext c)
+    {
+        var l = c.Layout;
+        return Always(
             "READ CHANGES: the copy",
             "AC0 = first copy byte of the list (copy area + CSTART, through OP_AC0 as scratch); D = CD with its valid bit; AC3 on to CD.",
             Op("MOVD", l.Ptr(CopyArea), "AC0"), Op("MOVD", "0", l.Dw(Save)), Op("MOVB", "*AC3", l.B(Save + 3)), Op("+D", l.Dw(Save), "AC0"),
             Op("+D", "4", "AC3"), Op("MOVB", "*AC3", l.B(D)), Op("ANDB", Hex(~CopyValid & 0xFF), l.B(D)));
-        yield return JumpIf("READ CHANGES: FULL asked or no valid copy", "FLAGS bit 0, or CD bit 7 clear: the whole list into the copy and the reply.",
-            FullWithCopy, Op("LD", l.Bit(9, 0)), Op("OB<", "*AC3", Dec(CopyValid)));
-        yield return Always(
+    }
+
+    /// <summary>
+    /// Before the comparison of a list with a valid copy (AC0 at the copy, AC2 at the descriptors): the counters, N =
+    /// (D + 1) / 2, and the pointers where <see cref="Compare"/> wants them.
+    /// </summary>
+    public static StlNetwork CompareSetUp(HandlerContext c, string why)
+    {
+        var l = c.Layout;
+        return Always(
             "READ CHANGES: compare with the copy",
-            "K = 0, INDEX = 0, no item begun (CLEFT = 0); N = (D + 1) / 2: with K >= N pairs (2K >= D) the whole list is not longer. "
+            $"K = 0, INDEX = 0, no item begun (CLEFT = 0); N = (D + 1) / 2: {why}. "
             + "Only AC1-AC3 can be pointers: the copy pointer goes to AC2, the descriptor pointer waits in AC0 (OP_AC2 as scratch).",
             Op("MOVB", "0", l.B(K)), Op("MOVB", "0", l.B(PairIndex)), Op("MOVB", "0", l.B(CLeft)), Op("MOVB", l.B(D), l.B(N)),
             Op("INCB", l.B(N)), Op("SRB", l.B(N), "1"), Op("MOVD", "AC0", l.Dw(Save + 8)), Op("MOVD", "AC2", "AC0"), Op("MOVD", l.Dw(Save + 8), "AC2"));
-        yield return SlicePart.Pause(c, "READ CHANGES: comparison ready", StepCompare);
     }
 
     /// <summary>
@@ -163,6 +190,9 @@ internal static class ChangesPart
         yield return new NetworkBuilder("Comparison: end of the chunk").Op("NEXT").Build();
         yield return JumpIf("Comparison: go on", "Next chunk or item.", CompareLoop, Op("LD", "SM0.0"));
         yield return Label(CompareDone, "READ CHANGES: comparison done");
+        yield return JumpIf(
+            "Comparison: one list of 09", "READ CHANGES OF LISTS goes on with its entry for this list.", ChangesOfListsPart.ListCompared,
+            Op("LDB=", l.B(Cmd), Dec(CommandCode.ReadChangesOfLists)));
         yield return JumpIf(
             "Comparison: pairs not shorter",
             "K >= N (2K >= D): the whole list instead. The copy took every changed byte, so it holds the list as compared: the next scan sends it (AC1 = its end).",

@@ -28,6 +28,7 @@ internal static class HandlerBuilder
         panel.AddRange(ListPart.Define(c));
         panel.AddRange(ListPart.Read(c));
         panel.AddRange(ChangesPart.Networks(c));
+        panel.AddRange(ChangesOfListsPart.Networks(c));
         panel.AddRange(StopPart.Networks(c));
         panel.AddRange(ItemCheckPart.Networks(c));
         panel.AddRange(ReadPart.Reply(c));

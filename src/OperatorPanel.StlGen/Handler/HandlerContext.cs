@@ -36,8 +36,9 @@ internal sealed class HandlerContext
     /// <summary>COPY_BYTES of IDENTIFY: the READ CHANGES copy area (0 = none).</summary>
     public int CopyBytes => Options.CopyBytes;
 
-    /// <summary>FEATURES of IDENTIFY: bit 0 = 07 STOP included, bit 1 = READ CHANGES copies present.</summary>
-    public int Features => (Options.AllowStop ? 1 : 0) | (CopyBytes > 0 ? 2 : 0);
+    /// <summary>FEATURES of IDENTIFY: bit 0 = 07 STOP included, bit 1 = READ CHANGES copies present, bit 2 = 09 present (always).</summary>
+    public int Features =>
+        (Options.AllowStop ? HandlerIdentity.StopFeature : 0) | (CopyBytes > 0 ? HandlerIdentity.CopiesFeature : 0) | HandlerIdentity.ChangesOfListsFeature;
 
     /// <summary>"0" or "1": the PORT operand of RCV and XMT.</summary>
     public string PortOperand => Port.ToString(CultureInfo.InvariantCulture);

@@ -16,6 +16,7 @@ internal static class HandlerLabels
     public const int ReadList = 16;
     public const int ReadChanges = 17;
     public const int Stop = 18;
+    public const int ReadChangesOfLists = 19;
 
     /// <summary>22-27: reply with error code 02-07 (docs/protocol.md section 3).</summary>
     public const int ErrorBase = 20;

@@ -14,9 +14,9 @@ public sealed partial class HandlerLayout
 {
     /// <summary>Offsets from the buffer start.</summary>
     public const int StopState = CommandsFirst, CFree = StopState + 1, CStart1 = CFree + 1, CD1 = CStart1 + 4, K = CD1 + 4,
-        CLeft = K + 1, PairIndex = Crc, PairValue = Crc + 1;
+        CLeft = K + 1, Entry = CLeft + 1, PairIndex = Crc, PairValue = Crc + 1;
 
-    /// <summary>The work bytes READ CHANGES and STOP use of their own (the last one is spare).</summary>
+    /// <summary>The work bytes READ CHANGES (08 and 09) and STOP use of their own.</summary>
     public const int ChangesBytes = 256 + WorkBytes - CommandsFirst;
 
     /// <summary>CD bit 7: the copy is valid.</summary>
@@ -39,6 +39,7 @@ public sealed partial class HandlerLayout
         .. Enumerable.Range(1, 4).Select(n => ($"OP_CD{n}", B(CD1 + n - 1), $"Panel handler: data bytes of list {n}; bit 7 = its copy holds what the last reply reported")),
         ("OP_K", B(K), "Panel handler: READ CHANGES pairs so far"),
         ("OP_CLEFT", B(CLeft), "Panel handler: READ CHANGES bytes left in the current item"),
+        ("OP_ENTRY", B(Entry), "Panel handler: READ CHANGES OF LISTS: buffer byte of the next list's entry"),
         .. CopyBytes == 0 ? [] : new[] { ("OP_COPIES", B(CopyArea), $"Panel handler: READ CHANGES copy area, {CopyBytes.ToString(CultureInfo.InvariantCulture)} bytes") },
     ];
 }

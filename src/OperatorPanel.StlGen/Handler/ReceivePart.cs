@@ -25,11 +25,15 @@ internal static class ReceivePart
         (CommandCode.DefineList, HandlerLabels.DefineList, "DEFINE LIST"), (CommandCode.ReadList, HandlerLabels.ReadList, "READ LIST"),
     ];
 
-    /// <summary>08 READ CHANGES always; 07 STOP only when generated with it (else CMD 07 is unknown: 05).</summary>
-    private static IEnumerable<(CommandCode Code, int Label, string Name)> V2Commands(HandlerContext c) =>
-        c.Options.AllowStop
-            ? [(CommandCode.Stop, HandlerLabels.Stop, "STOP"), (CommandCode.ReadChanges, HandlerLabels.ReadChanges, "READ CHANGES")]
-            : [(CommandCode.ReadChanges, HandlerLabels.ReadChanges, "READ CHANGES")];
+    private static readonly (CommandCode Code, int Label, string Name)[] ChangesCommands =
+    [
+        (CommandCode.ReadChanges, HandlerLabels.ReadChanges, "READ CHANGES"),
+        (CommandCode.ReadChangesOfLists, HandlerLabels.ReadChangesOfLists, "READ CHANGES OF LISTS"),
+    ];
+
+    /// <summary>08 and 09 always; 07 STOP only when generated with it (else CMD 07 is unknown: 05).</summary>
+    private static (CommandCode Code, int Label, string Name)[] V2Commands(HandlerContext c) =>
+        c.Options.AllowStop ? [(CommandCode.Stop, HandlerLabels.Stop, "STOP"), .. ChangesCommands] : ChangesCommands;
 
     public static IEnumerable<StlNetwork> Interrupt(HandlerContext c)
     {

@@ -53,7 +53,7 @@ internal static class SlicePart
             $"AC0-AC3 as the last slice left them (the program may have used them since); {PassesPerScan} loop passes in this scan.",
             Op("MOVD", l.Dw(Save), "AC0"), Op("MOVD", l.Dw(Save + 4), "AC1"), Op("MOVD", l.Dw(Save + 8), "AC2"),
             Op("MOVD", l.Dw(Save + 12), "AC3"), Op("MOVB", Dec(PassesPerScan), l.B(Budget)));
-        foreach (var (step, label) in Resumes.Concat(ChangesPart.Resumes(c)))
+        foreach (var (step, label) in Resumes.Concat(ChangesPart.Resumes(c)).Concat(ChangesOfListsPart.Resumes))
         {
             yield return JumpIf($"STEP {step}", $"Go on at label {label}.", label, Op("LDB=", l.B(Step), Dec(step)));
         }

@@ -39,7 +39,34 @@ internal sealed class ChangesExchange(DifferentialHarness harness, int station)
             _known[asked.List] = now;
         }
 
+        if (response is ReadChangesOfListsResponse lists)
+        {
+            foreach (var entry in lists.Lists)
+            {
+                Apply(entry);
+            }
+        }
+
         return response;
+    }
+
+    /// <summary>Whether the panel holds <paramref name="list"/>'s data (a REREAD entry leaves it to an 08 FULL).</summary>
+    public bool Knows(int list) => _known.ContainsKey(list);
+
+    public ReadChangesOfListsResponse ReadChangesOfLists(byte mask) =>
+        Send(new ReadChangesOfListsRequest(Station, NextSequence(), mask)).Should().BeOfType<ReadChangesOfListsResponse>().Subject;
+
+    /// <summary>PC rule 3 and 08's rules: a REREAD list is unknown until read whole; pairs apply to the last good data.</summary>
+    private void Apply(ListChanges entry)
+    {
+        if (entry.Reread)
+        {
+            _known.Remove(entry.List);
+            return;
+        }
+
+        entry.TryApply(_known[entry.List].AsSpan(), out var now).Should().BeTrue("every INDEX lies inside the list");
+        _known[entry.List] = now;
     }
 
     /// <summary>A frame the codec would not build (bad FLAGS, wrong length): both answers, undecoded.</summary>

@@ -63,8 +63,10 @@ internal sealed class RandomRequests(Random random, DifferentialHarness harness,
     private byte Command(out ImmutableArray<byte> payload)
     {
         var p = new List<byte>();
-        byte cmd = random.Next(20) switch
+        byte cmd = random.Next(22) switch
         {
+            20 => (byte)CommandCode.ReadChanges,
+            21 => (byte)CommandCode.ReadChangesOfLists,
             0 => 1,
             1 => UnknownCommand(),
             2 => 0,
@@ -94,6 +96,13 @@ internal sealed class RandomRequests(Random random, DifferentialHarness harness,
                 break;
             case 6:
                 p.Add((byte)random.Next(0, 6));
+                break;
+            case 8:
+                p.Add((byte)random.Next(0, 6));
+                p.Add((byte)(random.Next(8) == 0 ? random.Next(256) : random.Next(2)));
+                break;
+            case 9:
+                p.Add((byte)(random.Next(8) == 0 ? random.Next(256) : random.Next(1, 16)));
                 break;
             case 3:
                 var length = random.Next(6) == 0 ? random.Next(0, 120) : random.Next(1, 20);
@@ -135,13 +144,13 @@ internal sealed class RandomRequests(Random random, DifferentialHarness harness,
     }
 
     /// <summary>
-    /// A command code this handler does not know (error 05): 07 STOP (generated without it) and 09-FF. 08 READ CHANGES is
-    /// left out: the reference model answers it, and this handler does not have it yet (branch i11-changes adds it).
+    /// A command code this handler does not know (error 05): 07 STOP (generated without it) and 0A-FF. 08 and 09 are
+    /// left out: both answer them.
     /// </summary>
     private byte UnknownCommand()
     {
-        var code = random.Next(7, 255);
-        return (byte)(code >= 8 ? code + 1 : code);
+        var code = random.Next(9, 256);
+        return (byte)(code == 9 ? 7 : code);
     }
 
     /// <summary>AREA OFFSET(2) LENGTH; for WRITE BIT the LENGTH byte becomes BIT (the caller overwrites it).</summary>

@@ -45,7 +45,7 @@ public sealed partial class GoldenDocExamplesTests
     /// i11-changes adds them and their examples.
     /// </summary>
     private static bool NotInThisHandler(string request) =>
-        FrameCodec.TryDecode(Encoding.ASCII.GetBytes(request), out var decoded, out _) && decoded.Command is (byte)CommandCode.Stop or (byte)CommandCode.ReadChanges;
+        FrameCodec.TryDecode(Encoding.ASCII.GetBytes(request), out var decoded, out _) && decoded.Command is (byte)CommandCode.Stop;
 
     /// <summary>
     /// The frame with station 1 replaced by <paramref name="station"/> (other stations, the multi-drop examples, stay)

@@ -1,0 +1,198 @@
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.StlGen.Options;
+using OperatorPanel.StlGen.Tests.Differential;
+
+namespace OperatorPanel.StlGen.Tests.Changes;
+
+/// <summary>
+/// 09 READ CHANGES OF LISTS of the generated handler, executed in the STL interpreter, against the reference model
+/// byte for byte (every exchange goes through <see cref="ChangesExchange"/>): idle lists, pairs in several lists, each
+/// reason for a REREAD entry (no copy, copy not valid, pairs not shorter, pairs that do not fit before LAST_FREE) and
+/// the 08 that follows it, and the checks 04, 06 and 07 in their order. After every reply the panel's view of each list
+/// it still knows is the list's bytes as the memory holds them.
+/// </summary>
+public sealed class ReadChangesOfListsDifferentialTests
+{
+    private static readonly ReadItem[][] Lists =
+    [
+        [new(ProtocolArea.V, 100, 4), new(ProtocolArea.M, 0, 2), new(ProtocolArea.Q, 0, 1), new(ProtocolArea.V, 200, 10)],
+        [new(ProtocolArea.V, 300, 12)],
+        [new(ProtocolArea.V, 400, 6), new(ProtocolArea.M, 4, 2)],
+        [new(ProtocolArea.V, 500, 3)],
+    ];
+
+    [Fact]
+    public void ReadChangesOfLists_TwoIdleLists_AnswersKZeroForEachIn36Characters()
+    {
+        var (harness, panel) = Station();
+        DefineAndFill(panel, 2);
+
+        var (stl, _) = panel.Raw(new FreeportFrame(2, panel.NextSequence(), (byte)CommandCode.ReadChangesOfLists, [0b0011]));
+        var idle = panel.ReadChangesOfLists(0b0011);
+
+        Entries(idle).Should().Equal((1, false, 0), (2, false, 0));
+        (ProtocolLimits.RequestChars(1) + stl.Length).Should().Be(14 + 22, "one exchange of 36 characters for both lists, one 08's cost");
+        AssertKnown(harness, panel, 2);
+    }
+
+    [Fact]
+    public void ReadChangesOfLists_FourLists_AnswersPairsInEachChangedListAndKZeroInTheOthers()
+    {
+        var (harness, panel) = Station();
+        DefineAndFill(panel, 4);
+        panel.ReadChangesOfLists(0b1111);
+
+        harness.Poke(ProtocolArea.V, 205, (byte)~harness.Reference.Memory.V[205]);
+        harness.Poke(ProtocolArea.V, 401, (byte)~harness.Reference.Memory.V[401]);
+        harness.Poke(ProtocolArea.M, 5, (byte)~harness.Reference.Memory.M[5]);
+        var changed = panel.ReadChangesOfLists(0b1111);
+        var idle = panel.ReadChangesOfLists(0b1101);
+
+        Entries(changed).Should().Equal((1, false, 1), (2, false, 0), (3, false, 2), (4, false, 0));
+        changed.Lists[0].Changes.Single().Index.Should().Be(4 + 2 + 1 + 5, "V205 in list 1's data");
+        changed.Lists[2].Changes.Select(c => (int)c.Index).Should().Equal(1, 6 + 1);
+        Entries(idle).Should().Equal((1, false, 0), (3, false, 0), (4, false, 0));
+        AssertKnown(harness, panel, 4);
+    }
+
+    [Fact]
+    public void ReadChangesOfLists_ListWhoseCopyIsNotValid_AnswersRereadAndItsNextReadChangesIsWhole()
+    {
+        var (harness, panel) = Station();
+        panel.Define(1, Lists[0]);
+        panel.Define(2, Lists[1]);
+        panel.ReadChanges(1);
+
+        var entries = panel.ReadChangesOfLists(0b0011);
+        var whole = panel.ReadChanges(2);
+
+        Entries(entries).Should().Equal((1, false, 0), (2, true, 0));
+        whole.Full.Should().BeTrue("a just-defined copy is filled by a whole-list answer first");
+        panel.ReadChangesOfLists(0b0011).Lists.Should().OnlyContain(l => !l.Reread && l.Changes.IsEmpty);
+        AssertKnown(harness, panel, 2);
+    }
+
+    [Fact]
+    public void ReadChangesOfLists_ListWithoutCopy_AlwaysAnswersReread()
+    {
+        // 16 copy bytes: list 1 (17 bytes) gets none, list 2 (12 bytes) gets one.
+        var (harness, panel) = Station(copyBytes: 16);
+        DefineAndFill(panel, 2);
+
+        var first = panel.ReadChangesOfLists(0b0011);
+        var second = panel.ReadChangesOfLists(0b0011);
+
+        Entries(first).Should().Equal((1, true, 0), (2, false, 0));
+        Entries(second).Should().Equal(Entries(first));
+        panel.ReadChanges(1).Full.Should().BeTrue();
+        AssertKnown(harness, panel, 2);
+    }
+
+    [Fact]
+    public void ReadChangesOfLists_PairsNotShorterThanTheList_AnswersRereadThenTheNextReadChangesAnswersWhole()
+    {
+        var (harness, panel) = Station();
+        DefineAndFill(panel, 4);
+
+        // List 4 has 3 bytes: 2 changes take 4 bytes as pairs (2K >= D).
+        harness.Poke(ProtocolArea.V, 500, (byte)~harness.Reference.Memory.V[500], (byte)~harness.Reference.Memory.V[501]);
+        var entries = panel.ReadChangesOfLists(0b1001);
+        var afterwards = panel.ReadChanges(4, full: false);
+
+        Entries(entries).Should().Equal((1, false, 0), (4, true, 0));
+        afterwards.Full.Should().BeTrue("the REREAD left the copy invalid, so 08 without FULL answers the whole list");
+        afterwards.Data.Should().Equal(harness.Reference.Memory.V.AsSpan(500, 3).ToArray());
+        panel.ReadChangesOfLists(0b1000).Lists.Single().Should().Match<ListChanges>(l => !l.Reread && l.Changes.IsEmpty);
+        AssertKnown(harness, panel, 4);
+    }
+
+    [Fact]
+    public void ReadChangesOfLists_PairsThatDoNotFitBeforeTheStoredLists_AnswersRereadForThoseLists()
+    {
+        // Four lists of 10 two-byte items: the tail holds 160 bytes, LAST_FREE = 95. Nine changes in each list: 18 pair
+        // bytes are shorter than 20 data bytes, but only the first list's pairs fit (18 + 2 x (19 + 3) = 62 <= 95; the
+        // second's would end at 18 + 2 x (38 + 2) = 98).
+        var (harness, panel) = Station();
+        var lists = Enumerable.Range(0, 4).Select(l => Enumerable.Range(0, 10).Select(i => new ReadItem(ProtocolArea.V, 600 + (l * 20) + (2 * i), 2)).ToArray()).ToArray();
+        for (var l = 0; l < 4; l++)
+        {
+            panel.Define(l + 1, lists[l]);
+        }
+
+        for (var l = 1; l <= 4; l++)
+        {
+            panel.ReadChanges(l);
+        }
+
+        for (var i = 0; i < 4 * 20; i += 20)
+        {
+            harness.Poke(ProtocolArea.V, 600 + i, [.. harness.Reference.Memory.V.AsSpan(600 + i, 18).ToArray().Select((b, n) => n % 2 == 0 ? (byte)~b : b)]);
+        }
+
+        var entries = panel.ReadChangesOfLists(0b1111);
+        var second = panel.ReadChanges(2);
+
+        Entries(entries).Should().Equal((1, false, 9), (2, true, 0), (3, true, 0), (4, true, 0));
+        second.Full.Should().BeTrue();
+        panel.ReadChangesOfLists(0b0001).Lists.Single().Changes.Should().BeEmpty();
+        for (var l = 1; l <= 2; l++)
+        {
+            panel.Known(l).Should().Equal(lists[l - 1].SelectMany(item => harness.Reference.Memory.V.AsSpan(item.Offset, item.Length).ToArray()));
+        }
+    }
+
+    [Theory]
+    [InlineData(new byte[] { }, "04")]
+    [InlineData(new byte[] { 0b0011, 0 }, "04")]
+    [InlineData(new byte[] { 0, 0 }, "04")]
+    [InlineData(new byte[] { 0 }, "06")]
+    [InlineData(new byte[] { 0x10 }, "06")]
+    [InlineData(new byte[] { 0x13 }, "06")]
+    [InlineData(new byte[] { 0x14 }, "06")]
+    [InlineData(new byte[] { 0b0100 }, "07")]
+    [InlineData(new byte[] { 0b1011 }, "07")]
+    public void ReadChangesOfLists_BadLengthMaskOrUndefinedList_AnswersTheFirstFailingCheckLikeTheReference(byte[] payload, string status)
+    {
+        var (_, panel) = Station();
+        panel.Define(1, Lists[0]);
+        panel.Define(2, Lists[1]);
+
+        var (stl, reference) = panel.Raw(new FreeportFrame(2, panel.NextSequence(), (byte)CommandCode.ReadChangesOfLists, [.. payload]));
+
+        stl.Should().Be(reference);
+        stl.Substring(5, 4).Should().Be("89" + status);
+    }
+
+    private static (DifferentialHarness Harness, ChangesExchange Panel) Station(int copyBytes = HandlerDefaults.CopyBytes)
+    {
+        var options = new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2, CopyBytes = copyBytes };
+        var harness = new DifferentialHarness(options, new Random(13));
+        return (harness, new ChangesExchange(harness, 2));
+    }
+
+    /// <summary>Lists 1 .. <paramref name="count"/> defined and read whole once (their copies valid, where they have one).</summary>
+    private static void DefineAndFill(ChangesExchange panel, int count)
+    {
+        for (var list = 1; list <= count; list++)
+        {
+            panel.Define(list, Lists[list - 1]);
+        }
+
+        for (var list = 1; list <= count; list++)
+        {
+            panel.ReadChanges(list).Full.Should().BeTrue();
+        }
+    }
+
+    private static IEnumerable<(int List, bool Reread, int K)> Entries(ReadChangesOfListsResponse response) =>
+        response.Lists.Select(l => (l.List, l.Reread, l.Changes.Length));
+
+    private static void AssertKnown(DifferentialHarness harness, ChangesExchange panel, int count)
+    {
+        foreach (var list in Enumerable.Range(1, count).Where(panel.Knows))
+        {
+            panel.Known(list).Should().Equal(Lists[list - 1].SelectMany(i => harness.Reference.Memory.Area(i.Area).AsSpan(i.Offset, i.Length).ToArray()), $"list {list}");
+        }
+    }
+}
