@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
@@ -9,8 +10,9 @@ namespace OperatorPanel.Cli.Bench;
 /// <summary>
 /// The measured part of `opanel bench link`: the line's reference PLC served by SimulatedPlcHost on one end of a socat
 /// pty pair, the panel's PlcLink and PollingEngine (triggered mode) on the other, and N full refreshes requested one
-/// after the other. A pty does not pace characters at the baud rate, so this measures software turnaround plus the
-/// configured reply delay, not line time.
+/// after the other, after one IDENTIFY as the panel sends on connecting (so a handler with 09 is read with it). A pty
+/// does not pace characters at the baud rate, so this measures software turnaround plus the configured reply delay,
+/// not line time.
 /// </summary>
 internal static class LinkRoundTrip
 {
@@ -39,6 +41,12 @@ internal static class LinkRoundTrip
 
         using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
         var hostRun = Task.Run(() => host.RunAsync(stop.Token), CancellationToken.None);
+        // As the panel does on connecting: IDENTIFY tells the engine the handler's features (09 READ CHANGES OF LISTS).
+        if (await link.ExchangeAsync(new IdentifyRequest(line.Station), cancellationToken).ConfigureAwait(false) is IdentifyResponse identity)
+        {
+            engine.NoteIdentity(identity);
+        }
+
         var engineRun = Task.Run(() => engine.RunAsync(stop.Token), CancellationToken.None);
         var refreshes = new List<double>(cycles);
         var failed = 0;

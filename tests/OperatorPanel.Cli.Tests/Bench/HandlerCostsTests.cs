@@ -55,8 +55,8 @@ public sealed class HandlerCostsTests
 
         var costs = HandlerCosts.Measure(cycles, probe, error);
 
-        // Scans beyond Core's bound are a finding the bench prints (StlGen's HandlerCostTests own that bound).
-        costs.Problems.Where(p => !p.Contains("HandlerTurnaround", StringComparison.Ordinal)).Should().BeEmpty();
+        // Neither a reply length other than Core's nor more scans than the link's reply timeout allows.
+        costs.Problems.Should().BeEmpty();
         costs.Steady.Concat(costs.Idle).Should().OnlyContain(c => c.Source.StartsWith("measured", StringComparison.Ordinal) && c.Scans > 0);
     }
 
@@ -73,7 +73,7 @@ public sealed class HandlerCostsTests
         var costs = HandlerCosts.Measure(cycles, probe, error);
 
         cycles.Idle.Select(e => e.Name).Should().Equal("READ CHANGES OF LISTS 1");
-        costs.Problems.Where(p => !p.Contains("HandlerTurnaround", StringComparison.Ordinal)).Should().BeEmpty("the handler answers every exchange with the reply length Core computes");
+        costs.Problems.Should().BeEmpty("the handler answers every exchange with the reply length Core computes, within the link's bound");
         costs.Idle.Single().Source.Should().StartWith("measured");
     }
 }
