@@ -11,6 +11,7 @@ internal sealed class PlcPortTap(ITransport inner) : ITransport
 {
     private readonly Lock _lock = new();
     private readonly System.Text.StringBuilder _received = new();
+    private readonly System.Text.StringBuilder _sent = new();
     private int _writes;
 
     public Action? OnReceived { get; set; }
@@ -27,6 +28,12 @@ internal sealed class PlcPortTap(ITransport inner) : ITransport
         get { lock (_lock) { return _received.ToString(); } }
     }
 
+    /// <summary>Every character the PLC end has sent so far (replies and any noise), as ASCII.</summary>
+    public string Sent
+    {
+        get { lock (_lock) { return _sent.ToString(); } }
+    }
+
     public string Name => inner.Name;
 
     public bool IsOpen => inner.IsOpen;
@@ -37,6 +44,7 @@ internal sealed class PlcPortTap(ITransport inner) : ITransport
     {
         var number = Interlocked.Increment(ref _writes) - 1;
         var noise = NoiseBeforeReply?.Invoke(number) ?? [];
+        lock (_lock) { _sent.Append(System.Text.Encoding.ASCII.GetString(noise)).Append(System.Text.Encoding.ASCII.GetString(data.Span)); }
         if (noise.Length > 0)
         {
             await inner.WriteAsync(noise, cancellationToken);
