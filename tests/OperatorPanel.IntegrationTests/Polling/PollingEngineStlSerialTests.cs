@@ -65,6 +65,28 @@ public sealed class PollingEngineStlSerialTests
         rig.State(new Station(3)).Should().Be(StationState.Online);
     }
 
+    [Fact]
+    public async Task Refresh_GeneratedHandlerWithTwoLists_ChangesArriveThroughOne09()
+    {
+        var (line, station) = Line(2);
+        string[] watched = [.. Enumerable.Range(0, 26).Select(i => $"VB{i * 10}")];
+        await using var rig = await SerialLineRig.StartAsync(line, [(new Station(2), Cpu)], watched, Baud);
+        var identity = await rig.Link.ExchangeAsync(new IdentifyRequest(new Station(2)), CancellationToken.None).WaitAsync(SerialLineRig.Limit);
+        rig.Engine.NoteIdentity(identity.Should().BeOfType<IdentifyResponse>().Subject);
+        await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
+        (station.Memory.V[0], station.Memory.V[250]) = (0x11, 0x5A);
+        var before = rig.Tap.Received.Length;
+
+        var result = await rig.RefreshAsync();
+
+        result.FramesFailed.Should().Be(0);
+        rig.Engine.Plan.ListCount.Should().Be(2);
+        System.Text.RegularExpressions.Regex.Matches(rig.Tap.Received[before..], "<[^<>]*>").Select(m => m.Value[5..7])
+            .Should().Equal(["09"], "the handler's IDENTIFY has FEATURES bit 2, so both lists in step go in one 09");
+        rig.Value(new Station(2), "VB0").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x11);
+        rig.Value(new Station(2), "VB250").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x5A);
+    }
+
     /// <summary>Stations with the generated handler on one line; the first is returned for memory access.</summary>
     private static (StlLine Line, StlStation First) Line(params int[] stations)
     {
