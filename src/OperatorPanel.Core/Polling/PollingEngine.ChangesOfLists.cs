@@ -9,7 +9,9 @@ namespace OperatorPanel.Core.Polling;
 /// bit 2, every list in step (an 08 without FULL would be allowed) is read with ONE 09 before the station's other
 /// frames. The lists due a FULL, and every list of the mask the 09 did not bring (a REREAD entry, a 09 without a good
 /// reply, a reply whose INDEX lies past a list's data), go the 08 way in the same cycle with FULL, so the cycle's values
-/// stay complete. A 09 is never repeated. Without bit 2 every list is read with 08 as before.
+/// stay complete. A 09 is never repeated. A list answered REREAD although nothing changed has no copy in the handler:
+/// like a list answered FULL unasked it is read with READ LIST until its next periodic FULL. Without bit 2 every list
+/// is read with 08 as before.
 /// </summary>
 public sealed partial class PollingEngine
 {
@@ -131,6 +133,7 @@ public sealed partial class PollingEngine
         {
             if (entry.Reread)
             {
+                CopyOf(index).BeforeReread = CopyOf(index).Data;
                 CopyOf(index).Forget();
                 _logger.Debug("{Station}: list {List} answered REREAD in READ CHANGES OF LISTS; asking it FULL", reply.Station.Address, list);
             }

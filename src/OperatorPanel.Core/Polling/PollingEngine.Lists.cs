@@ -162,6 +162,13 @@ public sealed partial class PollingEngine
                 copy.ReadListUntil = copy.LastFull + Options.FullReadInterval;
                 _logger.Debug("{Station}: list {List} answered FULL unasked (no copy for it); READ LIST until the next periodic FULL", changes.Station.Address, _listIds[index]);
             }
+            else if (copy.RereadWithoutChanges(data))
+            {
+                copy.ReadListUntil = copy.LastFull + Options.FullReadInterval;
+                _logger.Debug("{Station}: list {List} answered REREAD with nothing changed (no copy for it); READ LIST until the next periodic FULL", changes.Station.Address, _listIds[index]);
+            }
+
+            copy.BeforeReread = default;
         }
 
         copy.Data = data;

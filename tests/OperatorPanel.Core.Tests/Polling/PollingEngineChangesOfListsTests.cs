@@ -179,6 +179,26 @@ public sealed class PollingEngineChangesOfListsTests
         _log.Events.Should().Contain(e => e.Level == LogEventLevel.Warning && e.RenderMessage(null).Contains("READ CHANGES OF LISTS 1, 2", StringComparison.Ordinal));
     }
 
+    [Fact]
+    public async Task RunCycle_ListsRereadWithNothingChanged_ReadListUntilTheNextPeriodicFull()
+    {
+        // A handler whose lists got no copy answers every 09 entry REREAD: the FULL that follows shows nothing changed.
+        _link.KeepsNoCopies.Add(One);
+        var engine = TwoListEngine();
+        await engine.RunCycleAsync(CancellationToken.None);
+
+        var reread = await CycleAsync(engine);
+        _clock.Advance(TimeSpan.FromSeconds(5));
+        var spell = await CycleAsync(engine);
+        _clock.Advance(TimeSpan.FromSeconds(5));
+        var periodic = await CycleAsync(engine);
+
+        reread.Requests.Should().Equal("09 1+2", "08 1 full", "08 2 full");
+        spell.Requests.Should().Equal("06 1", "06 2");
+        periodic.Requests.Should().Equal("08 1 full", "08 2 full");
+        Value(engine, "VB250").Quality.Should().Be(ValueQuality.Good);
+    }
+
     [Theory]
     [InlineData(false)]
     [InlineData(true)]
@@ -262,6 +282,7 @@ public sealed class PollingEngineChangesOfListsTests
         DefineListRequest define => $"define {define.List}",
         ReadChangesRequest changes => $"08 {changes.List}{(changes.Full ? " full" : string.Empty)}",
         ReadChangesOfListsRequest lists => $"09 {string.Join("+", lists.Lists)}",
+        ReadListRequest list => $"06 {list.List}",
         _ => throw new InvalidOperationException($"the engine sent {request.Command}, which these tests do not expect"),
     };
 
