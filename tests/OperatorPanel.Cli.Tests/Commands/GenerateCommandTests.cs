@@ -36,7 +36,7 @@ public sealed class GenerateCommandTests : IDisposable
         run.Out.Should().Contain("V bytes reserved:       VB7764-VB8191 (428 bytes)")
             .And.Contain("READ CHANGES copies:    VB8072-VB8191 (120 bytes; READ CHANGES and STOP work bytes: 13)")
             .And.Contain("STOP command:           not included (07 gets error 05)")
-            .And.Contain("instructions generated: 925")
+            .And.Contain("instructions generated: 1072")
             .And.Contain("interrupt events used:  23, 10, 9")
             .And.Contain("blocks used:            OP_PANEL (SBR63), OP_RX (INT125), OP_DELAY (INT126), OP_TX (INT127)");
     }
@@ -50,15 +50,20 @@ public sealed class GenerateCommandTests : IDisposable
 
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Should().Contain("  no request (a scan)        0 ->   0          38     0.000               0.000          0.256      0")
-            .And.Contain("  IDENTIFY                  12 ->  62        1783    58.469               0.388          7.836     10")
-            .And.Contain("  READ LIST 20 items        14 -> 172        5456   183.969               0.388          8.499     30")
-            .And.Contain("  READ CHANGES 77 bytes whole  16 -> 174        5651   194.168               0.387          9.344     30")
-            .And.Contain("  READ CHANGES none changed  16 ->  20        4420   123.537               0.387          9.344     26")
-            .And.Contain("  READ CHANGES 1 changed    16 ->  24        4487   126.564               0.387          9.344     26")
-            .And.Contain("  READ CHANGES 40 changed   16 -> 174        7903   260.144               0.388          9.731     42")
-            .And.Contain("worst interrupt routine: 0.498 ms (cut-off frame, then READ 20 items)")
-            .And.Contain("worst added to one scan: 9.731 ms (READ CHANGES 40 changed)")
-            .And.Contain("most scans per reply:    70");
+            .And.Contain("  IDENTIFY                  12 ->  62        1785    58.561               0.388          7.836     10")
+            .And.Contain("  READ LIST 20 items        14 -> 172        5458   184.061               0.387          8.203     30")
+            .And.Contain("  READ CHANGES 77 bytes whole  16 -> 174        5691   194.517               0.388          9.436     31")
+            .And.Contain("  READ CHANGES none changed  16 ->  20        4424   123.722               0.388          9.823     26")
+            .And.Contain("  READ CHANGES 1 changed    16 ->  24        4491   126.748               0.387          9.436     26")
+            .And.Contain("  READ CHANGES 40 changed   16 -> 174        7907   260.328               0.388          9.823     42")
+            .And.Contain("  READ CHANGES list 1 of 2, none changed  16 ->  20        3944   111.347               0.387          9.436     26")
+            .And.Contain("  READ CHANGES list 2 of 2, none changed  16 ->  20        3076    87.651               0.387          9.436     19")
+            .And.Contain("  READ CHANGES OF LISTS 2 lists idle  14 ->  22        6277   174.078               0.388          8.203     41")
+            .And.Contain("  READ CHANGES OF LISTS 4 lists, no valid copy  14 ->  26        1503    47.232               0.388          8.591      9")
+            .And.Contain("  READ CHANGES OF LISTS 4 lists, 9 changed in each  14 ->  62        8679   258.340               0.387          8.591     56")
+            .And.Contain("worst interrupt routine: 0.499 ms (cut-off frame, then READ 20 items)")
+            .And.Contain("worst added to one scan: 9.823 ms (READ CHANGES none changed)")
+            .And.Contain("most scans per reply:    71");
     }
 
     [Fact]
@@ -72,18 +77,18 @@ public sealed class GenerateCommandTests : IDisposable
         using var json = JsonDocument.Parse(run.Out);
         var stats = json.RootElement.GetProperty("stats");
         var measured = stats.GetProperty("measured").EnumerateArray().ToList();
-        measured.Should().HaveCount(17);
+        measured.Should().HaveCount(22);
         measured[1].GetProperty("request").GetString().Should().Be("IDENTIFY");
         measured[1].GetProperty("replyChars").GetInt32().Should().Be(62);
-        measured[1].GetProperty("instructions").GetInt64().Should().Be(1783);
-        measured[1].GetProperty("microseconds").GetInt64().Should().Be(58469);
+        measured[1].GetProperty("instructions").GetInt64().Should().Be(1785);
+        measured[1].GetProperty("microseconds").GetInt64().Should().Be(58561);
         measured[1].GetProperty("worstInterruptMicroseconds").GetInt64().Should().Be(388);
         measured[1].GetProperty("scans").GetInt32().Should().Be(10);
-        stats.GetProperty("worstInstructions").GetInt64().Should().Be(13827);
-        stats.GetProperty("worstMicroseconds").GetInt64().Should().Be(459567);
+        stats.GetProperty("worstInstructions").GetInt64().Should().Be(13867);
+        stats.GetProperty("worstMicroseconds").GetInt64().Should().Be(459916);
         stats.GetProperty("worstInterruptMicroseconds").GetInt64().Should().Be(498);
-        stats.GetProperty("worstScanMicroseconds").GetInt64().Should().Be(9731);
-        stats.GetProperty("mostScansPerReply").GetInt32().Should().Be(70);
+        stats.GetProperty("worstScanMicroseconds").GetInt64().Should().Be(9823);
+        stats.GetProperty("mostScansPerReply").GetInt32().Should().Be(71);
         (stats.GetProperty("copyBytes").GetInt32(), stats.GetProperty("stopEnabled").GetBoolean()).Should().Be((120, false));
     }
 

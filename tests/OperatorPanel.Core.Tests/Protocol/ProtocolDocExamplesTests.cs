@@ -28,7 +28,7 @@ public sealed partial class ProtocolDocExamplesTests
     {
         ["identify"] = Exchange(
             new IdentifyRequest(One, 0x07),
-            new IdentifyResponse(One, 0x07, 2, 1, 3, 1, 0x3C, 116, 5, 0x20, 1, 3, 2, 9, 0, 7764, 428, 3, 120)),
+            new IdentifyResponse(One, 0x07, 2, 1, 3, 1, 0x3C, 116, 5, 0x20, 1, 3, 2, 9, 0, 7764, 428, 7, 120)),
         ["read-multi"] = Exchange(
             new ReadRequest(One, 0x08, [new(ProtocolArea.V, 100, 4), new(ProtocolArea.I, 0, 2), new(ProtocolArea.M, 2, 1)]),
             new ReadResponse(One, 0x08, [0x00, 0x00, 0x04, 0x57, 0xA5, 0x03, 0x05])),
@@ -61,9 +61,23 @@ public sealed partial class ProtocolDocExamplesTests
             new ReadChangesRequest(One, 0x1B, 1, Full: false), ReadChangesResponse.Whole(One, 0x1B, [0x00, 0x01, 0x11, 0x70, 0x07])),
         ["read-changes-full"] = Exchange(
             new ReadChangesRequest(One, 0x1C, 1, Full: true), ReadChangesResponse.Whole(One, 0x1C, [0x00, 0x01, 0x11, 0x70, 0x07])),
+        ["define-list-2"] = Exchange(
+            new DefineListRequest(One, 0x20, 2, [new(ProtocolArea.I, 0, 2), new(ProtocolArea.V, 104, 2)]), new DefineListResponse(One, 0x20)),
+        ["read-changes-list-2"] = Exchange(
+            new ReadChangesRequest(One, 0x21, 2, Full: false), ReadChangesResponse.Whole(One, 0x21, [0xA5, 0x03, 0x00, 0x3C])),
+        ["read-changes-of-lists-idle"] = Exchange(
+            new ReadChangesOfListsRequest(One, 0x22, 0b0011), new ReadChangesOfListsResponse(One, 0x22, [ListChanges.Pairs(1, []), ListChanges.Pairs(2, [])])),
+        ["write-v100-v105"] = Exchange(
+            new WriteBlockRequest(One, 0x23, ProtocolArea.V, 100, [0x00, 0x00, 0x04, 0x57, 0x00, 0x41]),
+            new WriteBlockResponse(One, 0x23, [0x00, 0x00, 0x04, 0x57, 0x00, 0x41])),
+        ["read-changes-of-lists-reread"] = Exchange(
+            new ReadChangesOfListsRequest(One, 0x24, 0b0011),
+            new ReadChangesOfListsResponse(One, 0x24, [ListChanges.RereadList(1), ListChanges.Pairs(2, [new ChangedByte(3, 0x41)])])),
+        ["read-changes-after-reread"] = Exchange(
+            new ReadChangesRequest(One, 0x25, 1, Full: false), ReadChangesResponse.Whole(One, 0x25, [0x00, 0x00, 0x04, 0x57, 0x07])),
         ["restart"] = (
             [.. "<0114"u8, .. RequestCodec.Encode(RestartedReadList)],
-            ResponseCodec.Encode(new ReadListResponse(One, 0x1D, [0x00, 0x01, 0x11, 0x70, 0x07]), RestartedReadList)),
+            ResponseCodec.Encode(new ReadListResponse(One, 0x1D, [0x00, 0x00, 0x04, 0x57, 0x07]), RestartedReadList)),
         ["silence-early-other-station"] = ([.. "<0211"u8, .. RequestCodec.Encode(new ReadListRequest(One, 0x1F, 1))], null),
         ["silence-bad-check"] = ("<010701dl`m>"u8.ToArray(), null),
         ["silence-other-station"] = (RequestCodec.Encode(new IdentifyRequest(new Station(2), 0x11)), null),

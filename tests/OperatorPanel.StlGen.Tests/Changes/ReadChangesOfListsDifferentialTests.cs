@@ -113,21 +113,10 @@ public sealed class ReadChangesOfListsDifferentialTests
         // Four lists of 10 two-byte items: the tail holds 160 bytes, LAST_FREE = 95. Nine changes in each list: 18 pair
         // bytes are shorter than 20 data bytes, but only the first list's pairs fit (18 + 2 x (19 + 3) = 62 <= 95; the
         // second's would end at 18 + 2 x (38 + 2) = 98).
-        var (harness, panel) = Station();
-        var lists = Enumerable.Range(0, 4).Select(l => Enumerable.Range(0, 10).Select(i => new ReadItem(ProtocolArea.V, 600 + (l * 20) + (2 * i), 2)).ToArray()).ToArray();
-        for (var l = 0; l < 4; l++)
+        var (harness, panel, lists) = FourTailLists();
+        for (var list = 0; list < 4; list++)
         {
-            panel.Define(l + 1, lists[l]);
-        }
-
-        for (var l = 1; l <= 4; l++)
-        {
-            panel.ReadChanges(l);
-        }
-
-        for (var i = 0; i < 4 * 20; i += 20)
-        {
-            harness.Poke(ProtocolArea.V, 600 + i, [.. harness.Reference.Memory.V.AsSpan(600 + i, 18).ToArray().Select((b, n) => n % 2 == 0 ? (byte)~b : b)]);
+            ChangeItems(harness, list, 9);
         }
 
         var entries = panel.ReadChangesOfLists(0b1111);
@@ -140,6 +129,24 @@ public sealed class ReadChangesOfListsDifferentialTests
         {
             panel.Known(l).Should().Equal(lists[l - 1].SelectMany(item => harness.Reference.Memory.V.AsSpan(item.Offset, item.Length).ToArray()));
         }
+    }
+
+    [Theory]
+    [InlineData(0b1111, 8, false)]
+    [InlineData(0b1111, 9, true)]
+    [InlineData(0b0111, 8, false)]
+    [InlineData(0b0111, 9, true)]
+    public void ReadChangesOfLists_PairsEndingJustBeforeLastFree_FitAndOneMorePairDoesNot(byte mask, int changed, bool reread)
+    {
+        // LAST_FREE = 95. List 1: 9 pairs (P = 19). List 2 with K pairs and R lists after it: the reply ends at
+        // 18 + 2 x (19 + 1 + 2K + R). R = 2: 94 with 8 pairs fits, 98 with 9 does not; R = 1: 92 fits, 96 does not.
+        var (harness, panel, _) = FourTailLists();
+        ChangeItems(harness, 0, 9);
+        ChangeItems(harness, 1, changed);
+
+        var entries = panel.ReadChangesOfLists(mask);
+
+        Entries(entries).Should().Equal(new[] { (1, false, 9), (2, reread, reread ? 0 : changed), (3, false, 0), (4, false, 0) }.Take(mask == 0b1111 ? 4 : 3));
     }
 
     [Theory]
@@ -169,6 +176,31 @@ public sealed class ReadChangesOfListsDifferentialTests
         var options = new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2, CopyBytes = copyBytes };
         var harness = new DifferentialHarness(options, new Random(13));
         return (harness, new ChangesExchange(harness, 2));
+    }
+
+    /// <summary>Lists 1-4 of 10 two-byte items each at VB600-VB679, read whole once: the tail holds 160 bytes, LAST_FREE = 95.</summary>
+    private static (DifferentialHarness Harness, ChangesExchange Panel, ReadItem[][] Lists) FourTailLists()
+    {
+        var (harness, panel) = Station();
+        var lists = Enumerable.Range(0, 4).Select(l => Enumerable.Range(0, 10).Select(i => new ReadItem(ProtocolArea.V, 600 + (l * 20) + (2 * i), 2)).ToArray()).ToArray();
+        for (var l = 0; l < 4; l++)
+        {
+            panel.Define(l + 1, lists[l]);
+        }
+
+        for (var l = 1; l <= 4; l++)
+        {
+            panel.ReadChanges(l).Full.Should().BeTrue();
+        }
+
+        return (harness, panel, lists);
+    }
+
+    /// <summary>The first byte of the first <paramref name="items"/> items of tail list <paramref name="list"/> (0-3) inverted.</summary>
+    private static void ChangeItems(DifferentialHarness harness, int list, int items)
+    {
+        var at = 600 + (list * 20);
+        harness.Poke(ProtocolArea.V, at, [.. harness.Reference.Memory.V.AsSpan(at, 2 * items).ToArray().Select((b, n) => n % 2 == 0 ? (byte)~b : b)]);
     }
 
     /// <summary>Lists 1 .. <paramref name="count"/> defined and read whole once (their copies valid, where they have one).</summary>

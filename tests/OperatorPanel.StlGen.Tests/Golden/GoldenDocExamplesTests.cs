@@ -41,8 +41,8 @@ public sealed partial class GoldenDocExamplesTests
     }
 
     /// <summary>
-    /// 07 STOP and 08 READ CHANGES: this handler has neither (it answers 05 like any unknown command); branch
-    /// i11-changes adds them and their examples.
+    /// 07 STOP: the golden configurations are generated without it (they answer 05), and after it the CPU would be in
+    /// STOP. READ CHANGES and READ CHANGES OF LISTS run as documented: every golden configuration has 120 copy bytes.
     /// </summary>
     private static bool NotInThisHandler(string request) =>
         FrameCodec.TryDecode(Encoding.ASCII.GetBytes(request), out var decoded, out _) && decoded.Command is (byte)CommandCode.Stop;

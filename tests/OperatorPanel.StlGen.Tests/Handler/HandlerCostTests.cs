@@ -16,6 +16,7 @@ namespace OperatorPanel.StlGen.Tests.Handler;
 /// The handler run in the interpreter at the StlTiming figures keeps what the technician notes promise
 /// (SlicePart's bounds): no interrupt routine longer than 0.3 ms (the limit is 10 ms), at most 10 ms added
 /// to a scan while serving, 0.3 ms without a request, and 3 to 30 scans per reply, for every worst-case request.
+/// The link's reply timeout (HandlerTurnaround) must cover the scans every measured request takes.
 /// </summary>
 public sealed class HandlerCostTests
 {
@@ -60,6 +61,28 @@ public sealed class HandlerCostTests
 
         measured.Where(IsReadChanges).Should().HaveCount(6).And.OnlyContain(m => m.Scans <= bound);
     }
+
+    /// <summary>
+    /// READ CHANGES OF LISTS: the link's bound (its frames at the longest 09 reply, and one comparison per list of the
+    /// mask) covers the measured 2-list and 4-list requests; two idle lists take fewer scans in one 09 than in two 08s.
+    /// </summary>
+    [Theory]
+    [MemberData(nameof(Configurations))]
+    public void ReadChangesOfLists_LinkBoundCoversEveryScanAndTwoIdleListsCostLessThanTwoReadChanges(string name)
+    {
+        var measured = Measure(name);
+        var lists = measured.Where(m => m.Name.StartsWith(ReadChangesOfLists, StringComparison.Ordinal)).ToList();
+        var idle = lists.Single(m => m.Name.Contains("2 lists idle", StringComparison.Ordinal));
+        var twoReadChanges = measured.Where(m => m.Name.Contains(" of 2, none changed", StringComparison.Ordinal)).ToList();
+
+        lists.Should().HaveCount(3).And.OnlyContain(m => m.Scans <= Bound((byte)(m.Name.Contains("4 lists", StringComparison.Ordinal) ? 0b1111 : 0b0011)));
+        twoReadChanges.Should().HaveCount(2);
+        idle.Scans.Should().BeLessThan(twoReadChanges.Sum(m => m.Scans));
+        (idle.RequestChars + idle.ReplyChars).Should().Be(36);
+    }
+
+    private static int Bound(byte mask) =>
+        HandlerTurnaround.ScansFor(new ReadChangesOfListsRequest(new Station(1), mask), ProtocolLimits.RequestChars(1));
 
     private const string ReadChanges = "READ CHANGES", ReadChangesOfLists = "READ CHANGES OF LISTS";
 
