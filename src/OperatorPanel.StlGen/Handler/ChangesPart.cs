@@ -14,6 +14,8 @@ namespace OperatorPanel.StlGen.Handler;
 /// items per scan; nothing runs in an interrupt routine. Whatever a reply reports is what the copy holds afterwards:
 /// a changed byte is moved into the copy and sent from there, and a whole list is moved into the copy item by item
 /// and sent from there, so a program changing the bytes between two slices never makes the copy and the reply differ.
+/// 09 READ CHANGES OF LISTS (<see cref="ChangesOfListsPart"/>) runs each of its lists through the same networks: the
+/// list's descriptors, its copy, the comparison's set-up and the comparison, which hands a list of 09 back at its end.
 /// </summary>
 internal static class ChangesPart
 {

@@ -52,10 +52,10 @@ public sealed class ReferencePlcStopTests
     }
 
     [Theory]
-    [InlineData(true, 120, 0x03, 428)]
-    [InlineData(false, 120, 0x02, 428)]
-    [InlineData(true, 0, 0x01, 308)]
-    [InlineData(false, 255, 0x02, 563)]
+    [InlineData(true, 120, 0x07, 428)]
+    [InlineData(false, 120, 0x06, 428)]
+    [InlineData(true, 0, 0x05, 308)]
+    [InlineData(false, 255, 0x06, 563)]
     public void Identify_ReportsFeaturesCopyBytesAndTheVRangeTheyTake(bool allowStop, int copyBytes, byte features, int vBytes)
     {
         var plc = Plc(allowStop, copyBytes);

@@ -41,7 +41,7 @@ public sealed class ReferencePlcTests
     public void HandleFrame_OverheardReply_IsSilent() => Send(Plc224(), "01 07 81", "00").Should().BeNull();
 
     [Theory]
-    [InlineData("01 00 09", "", 0x05)] //                unknown command
+    [InlineData("01 00 0A", "", 0x05)] //                unknown command
     [InlineData("01 00 07", "53544F50", 0x05)] //        STOP in a handler generated without it
     [InlineData("01 00 08", "01", 0x04)] //              READ CHANGES without FLAGS
     [InlineData("01 00 08", "01 02", 0x06)] //           FLAGS bit 1
@@ -187,10 +187,10 @@ public sealed class ReferencePlcTests
         var reply = Send(plc, "01 07 01")!;
 
         // protocol 02, revision 01, CPU, Current, mask, MAX_READ_DATA 116, 7 ms, SMB6, RUN, scans 2/2/9 ms; then port 0,
-        // V_FIRST, V_BYTES 428 (256 buffer + 52 work bytes + 120 copy bytes), FEATURES 02 (copies, no STOP), COPY_BYTES 120
+        // V_FIRST, V_BYTES 428 (256 buffer + 52 work bytes + 120 copy bytes), FEATURES 06 (copies and 09, no STOP), COPY_BYTES 120
         reply.Payload.Should().Equal(
             0x00, 0x02, 0x01, code, 0x01, 0x1C, 0x74, 0x07, smb6, 0x01, 0x00, 0x02, 0x00, 0x02, 0x00, 0x09,
-            0x00, (byte)(vFirst >> 8), (byte)vFirst, 0x01, 0xAC, 0x02, 0x78);
+            0x00, (byte)(vFirst >> 8), (byte)vFirst, 0x01, 0xAC, 0x06, 0x78);
     }
 
     [Fact]
