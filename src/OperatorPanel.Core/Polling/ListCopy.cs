@@ -4,8 +4,9 @@ namespace OperatorPanel.Core.Polling;
 
 /// <summary>
 /// The PC's side of one stored list's change copy: the list's data as the PLC's copy holds it after the last good READ
-/// CHANGES reply, 08 or 09 (default: unknown, so the next READ CHANGES must ask FULL), when the last FULL answer came, and until
-/// when the list is read with READ LIST because the handler answered FULL unasked (it keeps no copy for it).
+/// CHANGES reply, 08 or 09 (default: unknown, so the next READ CHANGES must ask FULL), when the last FULL answer came,
+/// and until when the list is read with READ LIST because the handler keeps no copy for it (it answered FULL unasked,
+/// or REREAD with nothing changed).
 /// </summary>
 internal sealed class ListCopy
 {
