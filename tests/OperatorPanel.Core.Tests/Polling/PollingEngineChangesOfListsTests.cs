@@ -254,6 +254,20 @@ public sealed class PollingEngineChangesOfListsTests
     }
 
     [Fact]
+    public async Task RunCycle_TwoStationsOnlyOneWithFeatureBit2_EachIsReadTheWayItsHandlerAnswers()
+    {
+        var engine = new PollingEngine(_link, PollPlanner.Build([.. Items(One, "VB0", "VW2"), .. Items(Two, "VB0", "VW2")]), _clock);
+        engine.NoteIdentity(Identity(ChangesOfListsHandler));
+        engine.NoteIdentity(Identity(HandlerIdentity.CopiesFeature) with { Station = Two });
+        await engine.RunCycleAsync(CancellationToken.None);
+        var before = _link.Requests.Count;
+
+        await engine.RunCycleAsync(CancellationToken.None);
+
+        _link.Requests.Skip(before).Select(r => $"{r.Station.Address}: {Describe(r)}").Should().Equal("1: 09 1", "2: 08 1");
+    }
+
+    [Fact]
     public async Task RunCycle_StationWithOneList_IdleCycleIsOne09()
     {
         var engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0", "VW2")), _clock);
