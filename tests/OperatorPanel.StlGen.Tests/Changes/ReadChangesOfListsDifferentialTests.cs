@@ -73,17 +73,19 @@ public sealed class ReadChangesOfListsDifferentialTests
         AssertKnown(harness, panel, 2);
     }
 
-    [Fact]
-    public void ReadChangesOfLists_ListWithoutCopy_AlwaysAnswersReread()
+    [Theory]
+    [InlineData(0)]
+    [InlineData(16)]
+    public void ReadChangesOfLists_ListWithoutCopy_AlwaysAnswersReread(int copyBytes)
     {
-        // 16 copy bytes: list 1 (17 bytes) gets none, list 2 (12 bytes) gets one.
-        var (harness, panel) = Station(copyBytes: 16);
+        // 16 copy bytes: list 1 (17 bytes) gets none, list 2 (12 bytes) gets one; 0 copy bytes: neither has one.
+        var (harness, panel) = Station(copyBytes);
         DefineAndFill(panel, 2);
 
         var first = panel.ReadChangesOfLists(0b0011);
         var second = panel.ReadChangesOfLists(0b0011);
 
-        Entries(first).Should().Equal((1, true, 0), (2, false, 0));
+        Entries(first).Should().Equal((1, true, 0), (2, copyBytes == 0, 0));
         Entries(second).Should().Equal(Entries(first));
         panel.ReadChanges(1).Full.Should().BeTrue();
         AssertKnown(harness, panel, 2);
