@@ -2,6 +2,8 @@ using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using Serilog;
 
@@ -39,7 +41,31 @@ internal sealed class WatchSession : IAsyncDisposable
             return (null, ex.Message);
         }
 
+        await IdentifyEveryStationAsync(line, log);
         return (new WatchSession(line), null);
+    }
+
+    /// <summary>
+    /// IDENTIFY each station once, as the panel does on connecting: the engine learns what the handler has (READ
+    /// CHANGES copies, 09 READ CHANGES OF LISTS) and polls accordingly. A station that does not answer is polled as
+    /// before and shows up offline; a v1 handler's message is logged.
+    /// </summary>
+    private static async Task IdentifyEveryStationAsync(ProjectLine line, ILogger log)
+    {
+        foreach (var station in line.Project.Stations)
+        {
+            try
+            {
+                if (await line.IdentifyAsync(station.Address) is ErrorResponse refused)
+                {
+                    log.Warning("{Station}: IDENTIFY refused: {Error}", station.Address, refused.Error);
+                }
+            }
+            catch (PlcCommunicationException failure)
+            {
+                log.Warning("{Station}: IDENTIFY failed: {Reason}", station.Address, failure.Message);
+            }
+        }
     }
 
     /// <summary>

@@ -130,6 +130,13 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             // Counted once the attempt has ended, so a snapshot taken while a frame is in flight does not show a
             // request without its reply or timeout.
             statistics.Request();
+            _log.Verbose(
+                "{Station}: {Command} SEQ {Sequence}, {Characters} characters: {Outcome}",
+                request.Station,
+                request.Command,
+                request.Sequence,
+                frame.Length,
+                outcome.Response?.GetType().Name ?? outcome.Failure?.Message);
 
             if (outcome.CorruptedRefusal is { } refusal)
             {

@@ -56,6 +56,21 @@ public sealed class WatchCommandTests : IDisposable
     }
 
     [Fact]
+    public void Watch_Demo_IdentifiesTheStationAndThenPollsItsListWithReadChangesOfLists()
+    {
+        using var output = new StringWriter();
+        using var error = new StringWriter();
+        var logs = Path.Combine(_folder, "logs");
+
+        var exit = OpanelApp.Run(["watch", Sample, "--demo", "--cycles", "4", "--log-level", "Verbose", "--log-dir", logs], output, error);
+
+        exit.Should().Be(0, error.ToString());
+        var trace = Directory.GetFiles(logs).SelectMany(File.ReadAllLines).Where(l => l.Contains("OperatorPanel.Core.Link.PlcLink", StringComparison.Ordinal)).ToList();
+        trace.Should().Contain(l => l.Contains("\"Identify\" SEQ 1, 12 characters: IdentifyResponse", StringComparison.Ordinal), "the watch identifies first");
+        trace.Should().Contain(l => l.Contains("\"ReadChangesOfLists\"", StringComparison.Ordinal) && l.Contains("14 characters: ReadChangesOfListsResponse", StringComparison.Ordinal));
+    }
+
+    [Fact]
     public void Watch_BadProject_ExitsOneListingTheProblems()
     {
         var file = Path.Combine(_folder, "bad.opproj");
