@@ -51,7 +51,7 @@ public static class SoakSession
             Task.Run(() => engine.RunAsync(stop.Token), stop.Token),
         };
         var started = time.GetTimestamp();
-        var work = new SoakWork(setup, engine, time);
+        var work = new SoakWork(setup, engine, link, time);
         try
         {
             await work.RunAsync(running, stop.Token).ConfigureAwait(false);
@@ -93,6 +93,7 @@ public static class SoakSession
             BitsFlipped = proxy.ToPlc.BitsFlipped + proxy.ToPanel.BitsFlipped,
             CharactersDropped = proxy.ToPlc.CharactersDropped + proxy.ToPanel.CharactersDropped,
             FramesDropped = proxy.ToPlc.FramesDropped + proxy.ToPanel.FramesDropped,
+            LinesIdentified = work.Identified ? 1 : 0,
         };
     }
 
@@ -121,9 +122,17 @@ public static class SoakSession
     }
 
     /// <summary>The panel's side of the run: its writes and the good values it showed, recorded for the judge.</summary>
-    private sealed class SoakWork(SoakSetup setup, PollingEngine engine, TimeProvider time)
+    private sealed class SoakWork(SoakSetup setup, PollingEngine engine, PlcLink link, TimeProvider time)
     {
+        /// <summary>IDENTIFY attempts before the run goes on without: at 1% flips its 62-character reply rarely survives.</summary>
+        private const int IdentifyAttempts = 5;
+
+        private int _identifyAttempts;
+
         public List<SoakWrite> Writes { get; } = [];
+
+        /// <summary>The handler answered IDENTIFY, so the engine polls its lists with 09 as the panel does.</summary>
+        public bool Identified { get; private set; }
 
         public List<ShownValue> Shown { get; } = [];
 
@@ -141,7 +150,11 @@ public static class SoakSession
                 }
 
                 var stepStart = time.GetTimestamp();
-                if (random.Next(2) == 0)
+                if (!Identified && _identifyAttempts < IdentifyAttempts)
+                {
+                    await IdentifyAsync(cancellationToken).ConfigureAwait(false);
+                }
+                else if (random.Next(2) == 0)
                 {
                     await WriteAsync(slots[random.Next(slots.Count)], cancellationToken).ConfigureAwait(false);
                 }
@@ -151,6 +164,24 @@ public static class SoakSession
                 }
 
                 previous = stepStart;
+            }
+        }
+
+        /// <summary>IDENTIFY as the panel sends it on connecting; the engine hears the reply (READ CHANGES copies, 09).</summary>
+        private async Task IdentifyAsync(CancellationToken cancellationToken)
+        {
+            _identifyAttempts++;
+            try
+            {
+                if (await link.ExchangeAsync(new IdentifyRequest(setup.Station), cancellationToken).WaitAsync(StepLimit, cancellationToken).ConfigureAwait(false) is IdentifyResponse identity)
+                {
+                    engine.NoteIdentity(identity);
+                    Identified = true;
+                }
+            }
+            catch (PlcCommunicationException)
+            {
+                // Noise took it: the run polls as a panel that has not identified the handler yet.
             }
         }
 

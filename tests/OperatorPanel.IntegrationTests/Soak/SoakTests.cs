@@ -37,13 +37,17 @@ public sealed class SoakTests(ITestOutputHelper output)
         figures.Exchanges.Should().BeGreaterThanOrEqualTo(6, because);
     }
 
-    /// <summary>The judge's other side: on a clean line every write is confirmed and executed, and values are shown.</summary>
+    /// <summary>
+    /// The judge's other side: on a clean line the handler is identified (so its list is polled with 09, as the panel
+    /// does), every write is confirmed and executed, and values are shown.
+    /// </summary>
     [Fact]
-    public async Task CleanLine_EveryWriteConfirmedAndExecutedAndValuesShown()
+    public async Task CleanLine_IdentifiedEveryWriteConfirmedAndExecutedAndValuesShown()
     {
         var figures = await RunAsync(LineFaults.Clean, TimeSpan.FromSeconds(4));
 
         var because = string.Join(Environment.NewLine, figures.Text());
+        figures.LinesIdentified.Should().Be(1, because);
         figures.WritesConfirmed.Should().Be(figures.WritesSent, because).And.BeGreaterThan(3, because);
         figures.ValuesShownGood.Should().BeGreaterThan(6, because);
         figures.ExecutedNeverSent.Should().Be(0, because);
