@@ -1,0 +1,32 @@
+using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Stop;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary>One STOP as <c>opanel stop</c> prints it (text and JSON share this shape).</summary>
+/// <param name="Station">The station address.</param>
+/// <param name="Port">The port it was sent on.</param>
+/// <param name="Outcome">stopped, stoppedReplyLost, notExecuted, notStopped, notSent, notInHandler, refused or unknown.</param>
+/// <param name="Message">The sentence for the operator, with the next step.</param>
+/// <param name="ExitCode">What a script sees (the verb's help lists them).</param>
+internal sealed record StopResultView(int Station, string Port, string Outcome, string Message, [property: System.Text.Json.Serialization.JsonIgnore] int ExitCode)
+{
+    public static StopResultView From(LinkTarget target, StopOutcome outcome)
+    {
+        ArgumentNullException.ThrowIfNull(target);
+        ArgumentNullException.ThrowIfNull(outcome);
+        var (name, exitCode) = outcome switch
+        {
+            StopOutcome.Stopped => ("stopped", ExitCodes.Ok),
+            StopOutcome.StoppedReplyLost => ("stoppedReplyLost", ExitCodes.Ok),
+            StopOutcome.NotExecuted => ("notExecuted", ExitCodes.LinkFailure),
+            StopOutcome.NotStopped => ("notStopped", ExitCodes.LinkFailure),
+            StopOutcome.NotSent => ("notSent", ExitCodes.LinkFailure),
+            StopOutcome.NotInHandler => ("notInHandler", ExitCodes.BadInput),
+            StopOutcome.Refused => ("refused", ExitCodes.BadInput),
+            StopOutcome.Unknown => ("unknown", ExitCodes.WriteUnknown),
+            _ => throw new ArgumentOutOfRangeException(nameof(outcome), outcome, null),
+        };
+        return new StopResultView(target.Station.Address, target.Serial.PortName, name, outcome.Text, exitCode);
+    }
+}
