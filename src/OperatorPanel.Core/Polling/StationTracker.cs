@@ -39,7 +39,7 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
         }
         else if (before.State == StationState.StoppedByPanel)
         {
-            logger.Information("{Station} answers again after the panel stopped it: someone set RUN", station.Address);
+            logger.Information("Station {Station} answers again after the panel stopped it: someone set RUN", station.Address);
         }
 
         if (refusal is not null && refusal != before.LastError)
@@ -91,7 +91,7 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
     public void RecordStoppedByPanel(Station station)
     {
         Store(Get(station) with { State = StationState.StoppedByPanel, LastError = "stopped by the panel" });
-        logger.Information("{Station} stopped by the panel: polled once per cycle until it answers again", station.Address);
+        logger.Information("Station {Station} stopped by the panel: polled once per cycle until it answers again", station.Address);
     }
 
     /// <summary>A reply came but did not fit the request; the station is answering, so it stays as it was.</summary>

@@ -45,7 +45,7 @@ public sealed class StoppedByPanelTests
         await _engine.RunCycleAsync(CancellationToken.None);
 
         _engine.GetStationStatus(One).State.Should().Be(StationState.Online);
-        _log.Events.Should().Contain(e => e.RenderMessage() == "1 answers again after the panel stopped it: someone set RUN");
+        _log.Events.Should().Contain(e => e.RenderMessage() == "Station 1 answers again after the panel stopped it: someone set RUN");
     }
 
     [Fact]
