@@ -43,6 +43,35 @@ public sealed class StopCommandTests
     }
 
     [Fact]
+    public void Stop_SampleProjectOnTheDemoLine_StopsItsStation()
+    {
+        var run = CliRunner.Run("stop", "--project", Sample, "--demo", "--yes");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Should().Be("station 2 stopped: the port speaks PPI until someone sets RUN" + Environment.NewLine);
+    }
+
+    [Fact]
+    public void Stop_ProjectWithoutAllowStop_RefusesBeforeSendingAndExitsOne()
+    {
+        var project = Path.Combine(Path.GetTempPath(), $"opanel-nostop-{Guid.NewGuid():N}.opproj");
+        File.WriteAllText(project, File.ReadAllText(Sample).Replace("\"allowStop\": true", "\"allowStop\": false", StringComparison.Ordinal));
+        try
+        {
+            var run = CliRunner.Run("stop", "--project", project, "--demo", "--yes");
+
+            run.ExitCode.Should().Be(1);
+            run.Out.Should().BeEmpty();
+            run.Error.Should().Be($"opanel: the project does not allow STOP for Filler (station 2): set \"allowStop\": true for it in {project}, "
+                + "generate the PLC code again and download it; nothing sent" + Environment.NewLine);
+        }
+        finally
+        {
+            File.Delete(project);
+        }
+    }
+
+    [Fact]
     public void Stop_MissingDevice_NothingSentExitsTwo()
     {
         var run = CliRunner.Run("stop", "--yes", "--device", "/dev/opanel-no-such-port");
@@ -79,7 +108,25 @@ public sealed class StopCommandTests
         stop.Out.Should().Contain("station 3: its handler was generated without STOP (IDENTIFY FEATURES bit 0 is 0), nothing sent")
             .And.Contain("\"allowStop\": true").And.Contain("opanel generate --allow-stop");
         identify.ExitCode.Should().Be(0, "the PLC keeps running");
+        identify.Out.Should().Contain("STOP          not in the handler");
         (await simulator).Should().Be(0);
+    }
+
+    private static string Sample
+    {
+        get
+        {
+            for (var folder = new DirectoryInfo(AppContext.BaseDirectory); folder is not null; folder = folder.Parent)
+            {
+                var candidate = Path.Combine(folder.FullName, "samples", "bottling-line.opproj");
+                if (File.Exists(candidate))
+                {
+                    return candidate;
+                }
+            }
+
+            throw new FileNotFoundException("samples/bottling-line.opproj not found");
+        }
     }
 
     /// <summary>Starts <c>opanel simulate</c> for station 3 on the pty's A end and returns once it serves (a bounded real wait: process start-up).</summary>
