@@ -29,13 +29,19 @@ public static class HandlerTurnaround
 
     /// <summary>
     /// The bound the link's reply timeout uses for <paramref name="request"/>: its frames, at the longest reply it can
-    /// get, and for READ CHANGES the comparison with the copy, which depends on the list and not on the frames.
+    /// get, and for READ CHANGES the comparison with the copy, which depends on the list and not on the frames (for
+    /// READ CHANGES OF LISTS, one comparison per list in the mask).
     /// </summary>
     public static int ScansFor(PlcRequest request, int requestChars)
     {
         ArgumentNullException.ThrowIfNull(request);
         var scans = ScansFor(requestChars, ProtocolLimits.ReplyChars(ResponseCodec.ExpectedDataBytes(request)));
-        return request is ReadChangesRequest ? scans + ChangeComparisonScans : scans;
+        return request switch
+        {
+            ReadChangesRequest => scans + ChangeComparisonScans,
+            ReadChangesOfListsRequest lists => scans + (lists.Lists.Count * ChangeComparisonScans),
+            _ => scans,
+        };
     }
 
     public static int ScansFor(int requestChars, int replyChars) =>

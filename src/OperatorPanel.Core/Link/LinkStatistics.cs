@@ -1,6 +1,10 @@
 namespace OperatorPanel.Core.Link;
 
-/// <summary>A snapshot of one station's link counters, as the diagnostics view and `opanel` show them.</summary>
+/// <summary>
+/// A snapshot of one station's link counters, as the diagnostics view and `opanel` show them. <see cref="Requests"/>
+/// counts attempts that have ended (answered, timed out, corrupt, or cut off by the port), so a snapshot never shows the
+/// frame in flight as a request without its outcome.
+/// </summary>
 public sealed record LinkStatistics(
     long Requests,
     long Replies,

@@ -12,14 +12,14 @@ public sealed partial class PlcLink
 {
     /// <summary>
     /// Under the turn, after IDENTIFY got no answer: sends the v1 probe under the next sequence number and waits one
-    /// IDENTIFY reply time. True when a v1 handler answered. Counted as one more request (and its reply or timeout).
+    /// IDENTIFY reply time. True when a v1 handler answered. Counted as one more request (and its reply or timeout) once it
+    /// has ended.
     /// </summary>
     private async Task<bool> AnswersV1ProbeAsync(IdentifyRequest identify, StationStatistics statistics, CancellationToken cancellationToken)
     {
         var sequence = unchecked(++_sequence);
         var probe = V1IdentifyProbe.Encode(identify.Station, sequence);
         var timeout = _options.ReplyTimeoutFor(identify);
-        statistics.Request();
         var started = _time.GetTimestamp();
         try
         {
@@ -36,6 +36,7 @@ public sealed partial class PlcLink
                 {
                     if (result.IsFrame && V1IdentifyProbe.TryDecodeReply(result.Frame.AsSpan(), identify.Station, sequence, out _))
                     {
+                        statistics.Request();
                         statistics.Reply(_time.GetElapsedTime(started));
                         _log.Warning("{Message}", HandlerV1.Message(identify.Station));
                         return true;
@@ -43,6 +44,7 @@ public sealed partial class PlcLink
                 }
             }
 
+            statistics.Request();
             statistics.Timeout();
             return false;
         }

@@ -70,15 +70,17 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     public static bool ActsOnProcess(CommandCode command) => command switch
     {
         CommandCode.Write or CommandCode.WriteBit or CommandCode.Stop => true,
-        CommandCode.Identify or CommandCode.Read or CommandCode.DefineList or CommandCode.ReadList or CommandCode.ReadChanges => false,
+        CommandCode.Identify or CommandCode.Read or CommandCode.DefineList or CommandCode.ReadList or CommandCode.ReadChanges
+            or CommandCode.ReadChangesOfLists => false,
     };
 
     /// <summary>
     /// Identical-frame retries a request gets: none for one that acts on the process, and none for READ CHANGES without
-    /// FULL, whose handler copy moved on with the lost reply (docs/protocol.md, PC rule: the next one must be FULL).
+    /// FULL or READ CHANGES OF LISTS, whose handler copies moved on with the lost reply (docs/protocol.md, PC rule: the
+    /// next read of each list must be FULL).
     /// </summary>
     private int RetriesFor(PlcRequest request) =>
-        ActsOnProcess(request.Command) || request is ReadChangesRequest { Full: false } ? 0 : _options.Retries;
+        ActsOnProcess(request.Command) || request is ReadChangesRequest { Full: false } or ReadChangesOfListsRequest ? 0 : _options.Retries;
 
     public async ValueTask DisposeAsync()
     {
@@ -110,7 +112,6 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
                 _log.Debug("{Station}: retry {Attempt} of {Command} after {Reason}", request.Station, attempt, request.Command, lastFailure!.Message);
             }
 
-            statistics.Request();
             AttemptOutcome outcome;
             try
             {
@@ -118,8 +119,17 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             }
             catch (PlcCommunicationException portFailure)
             {
+                if (_frameSent)
+                {
+                    statistics.Request();
+                }
+
                 return new ExchangeResult(null, portFailure, _frameSent, CorruptedCopy: false);
             }
+
+            // Counted once the attempt has ended, so a snapshot taken while a frame is in flight does not show a
+            // request without its reply or timeout.
+            statistics.Request();
 
             if (outcome.CorruptedRefusal is { } refusal)
             {

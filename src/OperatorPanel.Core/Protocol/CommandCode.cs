@@ -19,4 +19,7 @@ public enum CommandCode : byte
 
     /// <summary>Read a stored list as the bytes changed since the handler's copy, or whole (FULL).</summary>
     ReadChanges = 0x08,
+
+    /// <summary>Read the changes of several stored lists (a mask) in one exchange; a list that cannot be answered so is marked REREAD.</summary>
+    ReadChangesOfLists = 0x09,
 }

@@ -25,6 +25,9 @@ public static class HandlerIdentity
     /// <summary>FEATURES bit 1: the handler has READ CHANGES copies (COPY_BYTES &gt; 0).</summary>
     public const byte CopiesFeature = 0x02;
 
+    /// <summary>FEATURES bit 2: the handler answers 09 READ CHANGES OF LISTS (else 09 is error 05).</summary>
+    public const byte ChangesOfListsFeature = 0x04;
+
     /// <summary>CPU_MODEL: 1 = 221, 2 = 222, 3 = 224, 4 = 224XP, 5 = 226.</summary>
     public static byte CpuModelCode(CpuModel model) => model switch
     {

@@ -118,3 +118,27 @@ public sealed record ReadChangesRequest(Station Station, byte Sequence, int List
 
     public override CommandCode Command => CommandCode.ReadChanges;
 }
+
+/// <summary>
+/// Read the changes of the lists in <see cref="ListMask"/> (bit n-1 = list n) in one exchange. PC rule
+/// (docs/protocol.md): a list may be in the mask only when an 08 READ CHANGES of it without FULL would be allowed, and
+/// after a 09 that did not bring a good reply every list of its mask is next read with 08 FULL.
+/// </summary>
+public sealed record ReadChangesOfListsRequest(Station Station, byte Sequence, byte ListMask) : PlcRequest(Station, Sequence)
+{
+    public ReadChangesOfListsRequest(Station station, byte listMask)
+        : this(station, 0, listMask)
+    {
+    }
+
+    public override CommandCode Command => CommandCode.ReadChangesOfLists;
+
+    /// <summary>The list ids in the mask, ascending: the order of the reply's entries.</summary>
+    public IReadOnlyList<int> Lists => [.. Enumerable.Range(1, ProtocolLimits.MaxLists).Where(list => (ListMask & MaskBit(list)) != 0)];
+
+    /// <summary>The mask bit of list <paramref name="list"/> (1-4).</summary>
+    public static byte MaskBit(int list) => (byte)(1 << (list - 1));
+
+    /// <summary>The mask naming <paramref name="lists"/>.</summary>
+    public static byte MaskOf(IEnumerable<int> lists) => (byte)lists.Aggregate(0, (mask, list) => mask | MaskBit(list));
+}

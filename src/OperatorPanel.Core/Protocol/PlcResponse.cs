@@ -47,6 +47,9 @@ public sealed record IdentifyResponse(
 
     /// <summary>FEATURES bit 1: READ CHANGES can answer with pairs (the handler keeps copies).</summary>
     public bool HasCopies => (Features & HandlerIdentity.CopiesFeature) != 0;
+
+    /// <summary>FEATURES bit 2: the handler answers 09 READ CHANGES OF LISTS.</summary>
+    public bool HasChangesOfLists => (Features & HandlerIdentity.ChangesOfListsFeature) != 0;
 }
 
 /// <summary>The data of every item of the READ request, concatenated in request order.</summary>
@@ -140,4 +143,21 @@ public sealed record ReadChangesResponse(Station Station, byte Sequence, bool Fu
         && Full == other.Full && Data.AsSpan().SequenceEqual(other.Data.AsSpan()) && Changes.AsSpan().SequenceEqual(other.Changes.AsSpan());
 
     public override int GetHashCode() => HashCode.Combine(Station, Sequence, Full, Data.Length, Changes.Length);
+}
+
+/// <summary>
+/// A READ CHANGES OF LISTS reply: one entry per list of the request's mask, in ascending list id. Each entry's list
+/// copy in the handler now holds the values the PC has after applying it, except for a REREAD entry, whose copy is
+/// invalid.
+/// </summary>
+public sealed record ReadChangesOfListsResponse(Station Station, byte Sequence, ImmutableArray<ListChanges> Lists)
+    : PlcResponse(Station, Sequence)
+{
+    public override CommandCode Command => CommandCode.ReadChangesOfLists;
+
+    public bool Equals(ReadChangesOfListsResponse? other) =>
+        other is not null && Station == other.Station && Sequence == other.Sequence && RequestCheck == other.RequestCheck
+        && Lists.SequenceEqual(other.Lists);
+
+    public override int GetHashCode() => HashCode.Combine(Station, Sequence, Lists.Length);
 }

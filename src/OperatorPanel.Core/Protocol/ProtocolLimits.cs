@@ -35,6 +35,15 @@ public static class ProtocolLimits
     /// <summary>READ CHANGES: K = 16#FF marks a whole list's data; 0-127 count INDEX VALUE pairs.</summary>
     public const byte FullListMarker = 0xFF;
 
+    /// <summary>READ CHANGES OF LISTS: K = 16#FE marks a list whose changes are not in the reply (its copy is now invalid).</summary>
+    public const byte RereadListMarker = 0xFE;
+
+    /// <summary>READ CHANGES OF LISTS: the MASK bits that name lists (bit n-1 = list n); any other bit is error 06.</summary>
+    public const byte ListMaskBits = 0x0F;
+
+    /// <summary>Most payload bytes after STATUS and REQCHECK any reply can carry: 124 - 6.</summary>
+    public const int MaxReplyPayload = MaxBodyBytes - ReplyHeaderBytes;
+
     /// <summary>The characters of a frame whose body has <paramref name="bodyBytes"/> bytes: '&lt;', 2B, 4 check, '&gt;'.</summary>
     public static int FrameChars(int bodyBytes) => FrameCodec.OverheadChars + (2 * bodyBytes);
 

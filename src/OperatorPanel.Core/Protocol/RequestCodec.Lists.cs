@@ -68,6 +68,27 @@ public static partial class RequestCodec
     }
 
     /// <summary>
+    /// Body == 4 bytes else 04; MASK 0 or with a bit outside 0-3 -> 06. Whether every list in the mask is defined (else
+    /// 07) is the station's.
+    /// </summary>
+    private static ProtocolError ParseReadChangesOfLists(Station station, FreeportFrame frame, ReadOnlySpan<byte> p, out PlcRequest request)
+    {
+        request = null!;
+        if (frame.BodyBytes != 4)
+        {
+            return ProtocolError.BadLength;
+        }
+
+        if (p[0] == 0 || (p[0] & ~ProtocolLimits.ListMaskBits) != 0)
+        {
+            return ProtocolError.BadParameter;
+        }
+
+        request = new ReadChangesOfListsRequest(station, frame.Sequence, p[0]);
+        return ProtocolError.None;
+    }
+
+    /// <summary>
     /// Body == 7 bytes else 04; payload not the characters "STOP" -> 06. Whether the handler has STOP at all (else 05,
     /// as for an unknown command) is the station's, before this.
     /// </summary>

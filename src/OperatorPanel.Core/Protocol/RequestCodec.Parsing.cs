@@ -39,6 +39,7 @@ public static partial class RequestCodec
             CommandCode.ReadList => ParseReadList(station, frame, p, out request),
             CommandCode.Stop => ParseStop(station, frame, p, out request),
             CommandCode.ReadChanges => ParseReadChanges(station, frame, p, out request),
+            CommandCode.ReadChangesOfLists => ParseReadChangesOfLists(station, frame, p, out request),
         };
         if (error != ProtocolError.None)
         {

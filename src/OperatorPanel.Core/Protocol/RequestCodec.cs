@@ -31,6 +31,7 @@ public static partial class RequestCodec
             ReadListRequest list => [ListId(list.List)],
             StopRequest => [.. StopPayload],
             ReadChangesRequest changes => [ListId(changes.List), changes.Full ? ReadChangesFlags.Full : (byte)0],
+            ReadChangesOfListsRequest lists => [ListMask(lists.ListMask)],
             _ => throw new ArgumentException($"unknown request type {request.GetType().Name}", nameof(request)),
         };
         return new FreeportFrame((byte)request.Station.Address, request.Sequence, (byte)request.Command, payload);
@@ -58,6 +59,16 @@ public static partial class RequestCodec
         ArgumentOutOfRangeException.ThrowIfLessThan(list, 1);
         ArgumentOutOfRangeException.ThrowIfGreaterThan(list, ProtocolLimits.MaxLists);
         return (byte)list;
+    }
+
+    private static byte ListMask(byte mask)
+    {
+        if (mask == 0 || (mask & ~ProtocolLimits.ListMaskBits) != 0)
+        {
+            throw new ArgumentOutOfRangeException(nameof(mask), mask, "a list mask names lists 1-4 in bits 0-3, at least one");
+        }
+
+        return mask;
     }
 
     private static ImmutableArray<byte> WritePayload(WriteBlockRequest write)

@@ -36,6 +36,7 @@ public static class ResponseCodec
             ReadListResponse list => list.Data,
             StopResponse => [],
             ReadChangesResponse changes => ChangesPayload(changes),
+            ReadChangesOfListsResponse lists => [.. lists.Lists.SelectMany(ListPayload)],
             _ => throw new ArgumentException($"unknown response type {response.GetType().Name}", nameof(response)),
         };
         var status = response is ErrorResponse e ? (byte)e.Error : (byte)0;
@@ -98,6 +99,7 @@ public static class ResponseCodec
             CommandCode.ReadList => new ReadListResponse(request.Station, request.Sequence, [.. data]),
             CommandCode.Stop => new StopResponse(request.Station, request.Sequence),
             CommandCode.ReadChanges => Changes(request, data),
+            CommandCode.ReadChangesOfLists => ChangesOfLists(request, data),
         };
         response = decoded with { RequestCheck = requestCheck };
         return true;
@@ -117,6 +119,7 @@ public static class ResponseCodec
         ReadListRequest => ProtocolLimits.MaxReadData,
         StopRequest => 0,
         ReadChangesRequest => 1 + ProtocolLimits.MaxReadData,
+        ReadChangesOfListsRequest => ProtocolLimits.MaxReplyPayload,
         _ => throw new ArgumentException($"unknown request type {request.GetType().Name}", nameof(request)),
     };
 
@@ -139,8 +142,42 @@ public static class ResponseCodec
         ReadChangesRequest => data.Length >= 1 && (data[0] == ProtocolLimits.FullListMarker
             ? data.Length - 1 is >= 1 and <= ProtocolLimits.MaxReadData
             : data[0] <= 127 && data.Length == 1 + (2 * data[0]) && Ascending(data[1..])),
+        ReadChangesOfListsRequest lists => EntriesFit(data, lists.Lists.Count),
         _ => data.Length == ExpectedDataBytes(request),
     };
+
+    /// <summary>
+    /// Exactly <paramref name="entries"/> entries fill the data: each K = 16#FE alone, or K = 0-127 and K pairs with
+    /// strictly ascending indexes.
+    /// </summary>
+    private static bool EntriesFit(ReadOnlySpan<byte> data, int entries)
+    {
+        var at = 0;
+        for (var entry = 0; entry < entries; entry++)
+        {
+            if (at >= data.Length)
+            {
+                return false;
+            }
+
+            var k = data[at];
+            if (k == ProtocolLimits.RereadListMarker)
+            {
+                at++;
+                continue;
+            }
+
+            var end = at + 1 + (2 * k);
+            if (k > 127 || end > data.Length || !Ascending(data[(at + 1)..end]))
+            {
+                return false;
+            }
+
+            at = end;
+        }
+
+        return at == data.Length;
+    }
 
     private static bool Ascending(ReadOnlySpan<byte> pairs)
     {
@@ -173,6 +210,37 @@ public static class ResponseCodec
         }
 
         return ReadChangesResponse.Pairs(request.Station, request.Sequence, changes.MoveToImmutable());
+    }
+
+    private static IEnumerable<byte> ListPayload(ListChanges entry) => entry.Reread
+        ? [ProtocolLimits.RereadListMarker]
+        : [(byte)entry.Changes.Length, .. entry.Changes.SelectMany(c => new[] { c.Index, c.Value })];
+
+    /// <summary>The entries, one per list of the mask in ascending id; <see cref="EntriesFit"/> has checked their shape.</summary>
+    private static ReadChangesOfListsResponse ChangesOfLists(PlcRequest request, ReadOnlySpan<byte> d)
+    {
+        var lists = ((ReadChangesOfListsRequest)request).Lists;
+        var entries = ImmutableArray.CreateBuilder<ListChanges>(lists.Count);
+        var at = 0;
+        foreach (var list in lists)
+        {
+            var k = d[at++];
+            if (k == ProtocolLimits.RereadListMarker)
+            {
+                entries.Add(ListChanges.RereadList(list));
+                continue;
+            }
+
+            var changes = ImmutableArray.CreateBuilder<ChangedByte>(k);
+            for (var pair = 0; pair < k; pair++, at += 2)
+            {
+                changes.Add(new ChangedByte(d[at], d[at + 1]));
+            }
+
+            entries.Add(ListChanges.Pairs(list, changes.MoveToImmutable()));
+        }
+
+        return new ReadChangesOfListsResponse(request.Station, request.Sequence, entries.MoveToImmutable());
     }
 
     private static ImmutableArray<byte> IdentifyPayload(IdentifyResponse r) =>

@@ -185,6 +185,24 @@ public sealed class PlcLinkTests
     }
 
     [Fact]
+    public async Task Statistics_WhileAFrameIsInFlight_CountTheRequestOnlyOnceItHasEnded()
+    {
+        var clock = new ManualTimeProvider();
+        var pair = new InMemoryTransportPair(clock);
+        await pair.BusSide.OpenAsync(default);
+        var link = new PlcLink(pair.PanelSide, LinkOptions.For(Some.SerialSettings()) with { InterFrameGap = TimeSpan.Zero }, clock);
+
+        var exchange = link.ExchangeAsync(ReadMb0, default);
+        (await ReadFrameAsync(pair.BusSide)).Should().Be(Request);
+        var inFlight = link.StatisticsFor(Station2);
+        await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x01)), default);
+        await exchange;
+
+        inFlight.Should().BeEquivalentTo(new { Requests = 0, Replies = 0 }, "the screen drawn mid-exchange must not show a request without its outcome");
+        link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 1, Replies = 1 });
+    }
+
+    [Fact]
     public async Task Exchange_EveryRequestIdentifyIncluded_GoesOutUnderTheLinksNextSequenceWhateverTheCallerSet()
     {
         var clock = new ManualTimeProvider();

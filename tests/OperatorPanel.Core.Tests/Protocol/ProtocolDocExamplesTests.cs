@@ -41,7 +41,7 @@ public sealed partial class ProtocolDocExamplesTests
         ["error-03"] = Refused(new WriteBlockRequest(One, 0x0D, ProtocolArea.I, 0, [0xFF]), ProtocolError.NotWritable),
         ["error-04"] = RawRefused(0x0E, 0x02, [0x00], ProtocolError.BadLength),
         ["error-04-data"] = RawRefused(0x12, 0x02, DataRuleItems, ProtocolError.BadLength),
-        ["error-05"] = RawRefused(0x0F, 0x09, [], ProtocolError.UnknownCommand),
+        ["error-05"] = RawRefused(0x0F, 0x0A, [], ProtocolError.UnknownCommand),
         ["error-06"] = RawRefused(0x10, 0x04, [0x03, 0x00, 0x02, 0x08, 0x01], ProtocolError.BadParameter),
         ["define-list"] = Exchange(
             new DefineListRequest(One, 0x13, 1, [new(ProtocolArea.V, 100, 4), new(ProtocolArea.M, 2, 1)]),
@@ -67,7 +67,7 @@ public sealed partial class ProtocolDocExamplesTests
         ["silence-early-other-station"] = ([.. "<0211"u8, .. RequestCodec.Encode(new ReadListRequest(One, 0x1F, 1))], null),
         ["silence-bad-check"] = ("<010701dl`m>"u8.ToArray(), null),
         ["silence-other-station"] = (RequestCodec.Encode(new IdentifyRequest(new Station(2), 0x11)), null),
-        ["silence-overheard-reply"] = (RawRefused(0x0F, 0x09, [], ProtocolError.UnknownCommand).Reply!, null),
+        ["silence-overheard-reply"] = (RawRefused(0x0F, 0x0A, [], ProtocolError.UnknownCommand).Reply!, null),
         ["silence-v1-probe"] = (V1IdentifyProbe.Encode(One, 0x07), null),
         ["stop"] = Exchange(new StopRequest(One, 0x1E), new StopResponse(One, 0x1E)),
     };

@@ -14,8 +14,9 @@ internal static class RandomMessages
     {
         var station = new Station(rng.Next(Station.Min, Station.Max + 1));
         var sequence = (byte)rng.Next(256);
-        return rng.Next(8) switch
+        return rng.Next(9) switch
         {
+            8 => new ReadChangesOfListsRequest(station, sequence, (byte)rng.Next(1, ProtocolLimits.ListMaskBits + 1)),
             6 => new StopRequest(station, sequence),
             7 => new ReadChangesRequest(station, sequence, rng.Next(1, ProtocolLimits.MaxLists + 1), rng.Next(2) == 1),
             4 => new DefineListRequest(station, sequence, rng.Next(1, ProtocolLimits.MaxLists + 1), Items(rng)),
@@ -53,6 +54,7 @@ internal static class RandomMessages
             StopRequest => new StopResponse(station, sequence),
             ReadChangesRequest when rng.Next(2) == 0 => ReadChangesResponse.Whole(station, sequence, Bytes(rng, rng.Next(1, ProtocolLimits.MaxReadData + 1))),
             ReadChangesRequest => ReadChangesResponse.Pairs(station, sequence, Changes(rng)),
+            ReadChangesOfListsRequest lists => new ReadChangesOfListsResponse(station, sequence, [.. lists.Lists.Select(list => Entry(rng, list))]),
             _ => new WriteBitResponse(station, sequence, (byte)rng.Next(256)),
         };
     }
@@ -63,6 +65,11 @@ internal static class RandomMessages
         rng.NextBytes(bytes);
         return [.. bytes];
     }
+
+    /// <summary>A REREAD entry one time in three, else 0-10 ascending pairs: four entries stay within one reply.</summary>
+    private static ListChanges Entry(Random rng, int list) => rng.Next(3) == 0
+        ? ListChanges.RereadList(list)
+        : ListChanges.Pairs(list, [.. Enumerable.Range(0, 40).Where(_ => rng.Next(4) == 0).Take(10).Select(i => new ChangedByte((byte)i, (byte)rng.Next(256)))]);
 
     /// <summary>0-57 pairs (fewer than half of the largest list's 116 bytes), ascending distinct indexes.</summary>
     private static ImmutableArray<ChangedByte> Changes(Random rng) =>

@@ -85,7 +85,7 @@ public sealed class RequestCodecTests
     }
 
     [Theory]
-    [InlineData("01 00 09", "", ProtocolError.UnknownCommand)]
+    [InlineData("01 00 0A", "", ProtocolError.UnknownCommand)]
     [InlineData("01 00 00", "", ProtocolError.UnknownCommand)]
     [InlineData("01 00 01", "00", ProtocolError.BadLength)] //                  IDENTIFY with a payload
     [InlineData("01 00 02", "", ProtocolError.BadLength)] //                    READ without COUNT
@@ -188,6 +188,39 @@ public sealed class RequestCodecTests
         stop.Should().Be(new StopRequest(One, 9));
         full.Should().Be(new ReadChangesRequest(One, 0x0A, 3, Full: true));
         changes.Should().Be(new ReadChangesRequest(One, 0x0B, 5, Full: false));
+    }
+
+    [Theory]
+    [InlineData("01 0C 09", "05", "", 1, 3)] //        lists 1 and 3
+    [InlineData("01 0D 09", "0F", "", 1, 2, 3, 4)] //  all four
+    [InlineData("01 0E 09", "00", "BadParameter")] //   no list
+    [InlineData("01 0E 09", "13", "BadParameter")] //   a bit outside 0-3
+    [InlineData("01 0E 09", "0300", "BadLength")] //    body 5 bytes
+    [InlineData("01 0E 09", "", "BadLength")] //        no MASK
+    public void TryParse_ReadChangesOfLists_TakesAMaskOfListsOneToFour(string head, string payload, string error, params int[] lists)
+    {
+        var parsed = RequestCodec.TryParse(Frame(head, payload), new FakeTarget(), out var request, out var code);
+
+        parsed.Should().Be(error.Length == 0);
+        if (parsed)
+        {
+            request.Should().BeOfType<ReadChangesOfListsRequest>().Which.Lists.Should().Equal(lists);
+        }
+        else
+        {
+            code.ToString().Should().Be(error);
+        }
+    }
+
+    [Fact]
+    public void Encode_ReadChangesOfLists_SendsTheMaskInFourteenCharacters()
+    {
+        var request = new ReadChangesOfListsRequest(One, 1, ReadChangesOfListsRequest.MaskOf([2, 4]));
+
+        RequestCodec.ToFrame(request).Payload.Should().Equal(0x0A);
+        RequestCodec.Encode(request).Length.Should().Be(ProtocolLimits.RequestChars(1)).And.Be(14);
+        FluentActions.Invoking(() => RequestCodec.Encode(request with { ListMask = 0 })).Should().Throw<ArgumentOutOfRangeException>();
+        FluentActions.Invoking(() => RequestCodec.Encode(request with { ListMask = 0x10 })).Should().Throw<ArgumentOutOfRangeException>();
     }
 
     [Fact]

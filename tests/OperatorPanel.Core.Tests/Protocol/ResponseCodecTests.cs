@@ -106,6 +106,48 @@ public sealed class ResponseCodecTests
         }
     }
 
+    [Theory]
+    [InlineData("00 00", true, "1:;3:")] //                     both idle
+    [InlineData("01 0012 FE", true, "1:0012;3:reread")] //     one pair in list 1, list 3 to be read again
+    [InlineData("FE 02 0012 0400", true, "1:reread;3:0012 0400")]
+    [InlineData("00", false, "")] //                           an entry missing
+    [InlineData("00 00 00", false, "")] //                     an entry too many
+    [InlineData("02 0400 0012 00", false, "")] //              indexes not ascending within an entry
+    [InlineData("80 00", false, "")] //                        K = 128
+    [InlineData("FF 0000 00", false, "")] //                   FULL is not an entry of 09
+    [InlineData("01 0012", false, "")] //                      list 3's K missing after list 1's pair
+    public void TryDecode_ReadChangesOfListsReply_TakesOneEntryPerListOfTheMask(string payload, bool valid, string entries)
+    {
+        var request = new ReadChangesOfListsRequest(new Station(1), 0x1D, ReadChangesOfListsRequest.MaskOf([1, 3]));
+        var check = RequestCodec.Check(request);
+        var frame = new FreeportFrame(1, 0x1D, 0x89, [0x00, (byte)(check >> 8), (byte)check, .. Hex(payload)]);
+
+        ResponseCodec.TryDecode(FrameCodec.Encode(frame), request, out var response, out var error).Should().Be(valid, error.ToString());
+
+        if (valid)
+        {
+            var lists = ((ReadChangesOfListsResponse)response).Lists;
+            string.Join(';', lists.Select(l => $"{l.List}:" + (l.Reread ? "reread" : string.Join(' ', l.Changes.Select(c => $"{c.Index:X2}{c.Value:X2}")))))
+                .Should().Be(entries);
+            ResponseCodec.Encode(response).Should().Equal(FrameCodec.Encode(frame), "the entries encode back to the same frame");
+        }
+        else
+        {
+            error.Should().Be(FrameError.LengthMismatch);
+        }
+    }
+
+    [Fact]
+    public void ListChanges_TryApply_PutsTheChangesOverWhatThePcHeldAndARereadGivesNothing()
+    {
+        var entry = ListChanges.Pairs(2, [new ChangedByte(1, 0x34)]);
+
+        entry.TryApply([0x00, 0x00, 0x05], out var current).Should().BeTrue();
+        current.Should().Equal(0x00, 0x34, 0x05);
+        entry.TryApply([0x00], out _).Should().BeFalse("index 1 lies outside a 1-byte list");
+        ListChanges.RereadList(2).TryApply([0x00, 0x00], out _).Should().BeFalse("a REREAD entry carries no values");
+    }
+
     [Fact]
     public void ReadChangesResponse_TryApply_PutsTheChangesOverWhatThePcHeld()
     {

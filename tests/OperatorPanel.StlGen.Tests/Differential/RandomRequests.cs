@@ -135,13 +135,13 @@ internal sealed class RandomRequests(Random random, DifferentialHarness harness,
     }
 
     /// <summary>
-    /// A command code this handler does not know (error 05): 07 STOP (generated without it) and 09-FF. 08 READ CHANGES is
-    /// left out: the reference model answers it, and this handler does not have it yet (branch i11-changes adds it).
+    /// A command code this handler does not know (error 05): 07 STOP (generated without it) and 0A-FF. 08 and 09 are
+    /// left out: both answer them.
     /// </summary>
     private byte UnknownCommand()
     {
-        var code = random.Next(7, 255);
-        return (byte)(code >= 8 ? code + 1 : code);
+        var code = random.Next(9, 256);
+        return (byte)(code == 9 ? 7 : code);
     }
 
     /// <summary>AREA OFFSET(2) LENGTH; for WRITE BIT the LENGTH byte becomes BIT (the caller overwrites it).</summary>
