@@ -16,16 +16,16 @@ namespace OperatorPanel.Core.Stop;
 /// </summary>
 public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
 {
+    private readonly IPlcLink _link = link ?? throw new ArgumentNullException(nameof(link));
     private readonly ILogger _log = (logger ?? Logger.None).ForContext<RemoteStop>();
 
     public async Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default)
     {
-        ArgumentNullException.ThrowIfNull(link);
         var outcome = await CheckAsync(station, cancellationToken).ConfigureAwait(false);
         if (outcome is null)
         {
             _log.Information("Station {Station} RUN -> STOP by operator: sending STOP", station.Address);
-            var sent = await link.ExchangeOnceAsync(new StopRequest(station), cancellationToken).ConfigureAwait(false);
+            var sent = await _link.ExchangeOnceAsync(new StopRequest(station), cancellationToken).ConfigureAwait(false);
             outcome = await JudgeAsync(station, sent, cancellationToken).ConfigureAwait(false);
         }
 
@@ -46,7 +46,7 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
     {
         try
         {
-            return await link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false) switch
+            return await _link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false) switch
             {
                 IdentifyResponse { StopEnabled: true } => null,
                 IdentifyResponse => new StopOutcome.NotInHandler(station),
@@ -105,7 +105,7 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
     {
         try
         {
-            await link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
+            await _link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
             return new SilenceCheck(true, string.Empty);
         }
         catch (PlcCommunicationException failure)

@@ -113,6 +113,7 @@ public sealed class GenerateCodeViewModelTests : IDisposable
 
         generate.Preview.Should().Be(HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu, Station = 2, AllowStop = allowStop }).AwlText);
         generate.Preview.Contains("command 07 STOP", StringComparison.Ordinal).Should().Be(allowStop);
+        generate.StopText.Should().StartWith(allowStop ? "included" : "not included");
     }
 
     [Fact]
