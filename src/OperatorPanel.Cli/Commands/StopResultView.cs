@@ -1,3 +1,4 @@
+using System.Text.Json;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Stop;
 
@@ -15,18 +16,14 @@ internal sealed record StopResultView(int Station, string Port, string Outcome, 
     {
         ArgumentNullException.ThrowIfNull(target);
         ArgumentNullException.ThrowIfNull(outcome);
-        var (name, exitCode) = outcome switch
+        var exitCode = outcome.Verdict switch
         {
-            StopOutcome.Stopped => ("stopped", ExitCodes.Ok),
-            StopOutcome.StoppedReplyLost => ("stoppedReplyLost", ExitCodes.Ok),
-            StopOutcome.NotExecuted => ("notExecuted", ExitCodes.LinkFailure),
-            StopOutcome.NotStopped => ("notStopped", ExitCodes.LinkFailure),
-            StopOutcome.NotSent => ("notSent", ExitCodes.LinkFailure),
-            StopOutcome.NotInHandler => ("notInHandler", ExitCodes.BadInput),
-            StopOutcome.Refused => ("refused", ExitCodes.BadInput),
-            StopOutcome.Unknown => ("unknown", ExitCodes.WriteUnknown),
-            _ => throw new ArgumentOutOfRangeException(nameof(outcome), outcome, null),
+            StopVerdict.Stopped or StopVerdict.StoppedReplyLost => ExitCodes.Ok,
+            StopVerdict.NotExecuted or StopVerdict.NotStopped or StopVerdict.NotSent => ExitCodes.LinkFailure,
+            StopVerdict.NotInHandler or StopVerdict.Refused => ExitCodes.BadInput,
+            StopVerdict.Unknown => ExitCodes.WriteUnknown,
         };
+        var name = JsonNamingPolicy.CamelCase.ConvertName(outcome.Verdict.ToString());
         return new StopResultView(target.Station.Address, target.Serial.PortName, name, outcome.Text, exitCode);
     }
 }
