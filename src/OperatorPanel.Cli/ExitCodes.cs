@@ -16,9 +16,13 @@ internal static class ExitCodes
 
     /// <summary>
     /// <c>opanel write</c>: a write's reply was lost and reading back could not settle whether the PLC applied it; check
-    /// the value on the PLC before writing again (3 wins over 2 and 1).
+    /// the value on the PLC before writing again (3 wins over 2 and 1). <c>opanel stop</c>: the reply to STOP was lost
+    /// and the IDENTIFY after it failed on the link too.
     /// </summary>
     public const int WriteUnknown = 3;
+
+    /// <summary><c>opanel stop</c> without <c>--yes</c>: it said what it would do and sent nothing.</summary>
+    public const int StopNotConfirmed = 4;
 
     /// <summary><c>opanel generate</c>: the handler settings are impossible; each STLnnn diagnostic is printed.</summary>
     public const int GeneratorRefused = 2;

@@ -33,6 +33,7 @@ internal static class OpanelApp
         yield return ProjectCommand.Create(context);
         yield return ReadCommand.Create(context);
         yield return WriteCommand.Create(context);
+        yield return StopCommand.Create(context);
         yield return IdentifyCommand.Create(context);
         yield return SimulateCommand.Create(context);
         yield return WatchCommand.Create(context);

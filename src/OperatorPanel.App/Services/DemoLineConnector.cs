@@ -31,7 +31,8 @@ public sealed class DemoLineConnector(ILogger log) : ILineConnector
         var lines = new List<(SerialSettings Serial, ISimulatedLine Line)>();
         foreach (var bus in ProjectBus.Of(project))
         {
-            var stations = bus.Stations.Select(s => new HandlerConfig(s.Address, s.Cpu));
+            // The demo PLCs carry STOP where the project allows it (the sample does), so Stop can be tried on them.
+            var stations = bus.Stations.Select(s => new HandlerConfig(s.Address, s.Cpu, allowStop: s.AllowStop));
             if (!SimulatedLineFactory.TryCreate(stations, SimulationModel.Stl, bus.Serial, runProcess: true, GeneratedHandler, out var line, out var error))
             {
                 throw new InvalidOperationException($"the demo line cannot simulate {bus.Serial.PortName}: {error}");
@@ -73,5 +74,7 @@ public sealed class DemoLineConnector(ILogger log) : ILineConnector
     /// <summary>The handler StlGen generates for the station: the same text Generate PLC code / opanel generate saves.</summary>
     private static bool GeneratedHandler(HandlerConfig config, SerialSettings serial, [NotNullWhen(true)] out string? awlText, [NotNullWhen(false)] out string? error) =>
         HandlerGenerator.TryGenerateAwl(
-            HandlerOptions.ForLine(config.Cpu, config.Port, config.Station.Address, config.WriteMask, config.ReplyDelayMs, serial), out awlText, out error);
+            HandlerOptions.ForLine(config.Cpu, config.Port, config.Station.Address, config.WriteMask, config.ReplyDelayMs, serial) with { AllowStop = config.AllowStop },
+            out awlText,
+            out error);
 }

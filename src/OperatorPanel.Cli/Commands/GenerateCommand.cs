@@ -31,7 +31,7 @@ internal static class GenerateCommand
         var sbr = new Option<int?>("--sbr") { Description = "Subroutine number of the handler (default: the CPU's last)" };
         var interrupt = new Option<int?>("--int") { Description = "First of the handler's 3 interrupt routines (default 125)" };
         var copyBytes = new Option<int>("--copy-bytes") { Description = "V bytes for READ CHANGES copies after the work bytes, 0-255 (0 = none: every READ CHANGES answers the whole list; default 120)", DefaultValueFactory = _ => HandlerDefaults.CopyBytes };
-        var allowStop = new Option<bool>("--allow-stop") { Description = "Include 07 STOP: the panel may put the CPU in STOP (default off: no STOP code, the command is refused with error 05)" };
+        var allowStop = new Option<bool>("--allow-stop") { Description = "Include 07 STOP: the panel may put the CPU in STOP (default: the station's \"allowStop\" in the project, off unless set; off = no STOP code, the command is refused with error 05)" };
         var merge = new Option<string?>("--merge") { Description = "A program exported from Micro/WIN (File > Export): check for collisions and write STATION-merged.awl" };
         var command = new Command("generate", "Generate the S7-200 handler program (.awl), symbol table and technician notes. Exit codes: 0 written, 1 bad input, 2 impossible settings")
         {
@@ -74,7 +74,7 @@ internal static class GenerateCommand
                 FirstSubroutine = parse.GetValue(sbr),
                 FirstInterrupt = parse.GetValue(interrupt),
                 CopyBytes = parse.GetValue(copyBytes),
-                AllowStop = parse.GetValue(allowStop),
+                AllowStop = chosen.AllowStop || parse.GetValue(allowStop),
             };
             string? userProgram = null;
             var userPath = parse.GetValue(merge);

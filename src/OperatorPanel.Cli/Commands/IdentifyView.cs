@@ -22,6 +22,7 @@ internal sealed record IdentifyView(
     IReadOnlyList<string> WritableAreas,
     int ReplyDelayMs,
     int MaxReadData,
+    bool StopEnabled,
     string? ExpectedCpu,
     string? CpuMismatch)
 {
@@ -50,6 +51,7 @@ internal sealed record IdentifyView(
             areas,
             r.ReplyDelayMs,
             r.MaxReadData,
+            r.StopEnabled,
             target.Cpu?.DisplayName,
             target.Cpu is null ? null : Mismatch(target.Cpu, model, cpuId, smb6Means));
     }
@@ -87,6 +89,7 @@ internal sealed record IdentifyView(
         o.WriteLine($"scan          last {LastScanMs} ms, min {MinScanMs} ms, max {MaxScanMs} ms");
         o.WriteLine($"write mask    {WriteMask}: {(WritableAreas.Count == 0 ? "nothing writable" : string.Join(" ", WritableAreas))}");
         o.WriteLine($"reply delay   {ReplyDelayMs} ms");
+        o.WriteLine($"STOP          {(StopEnabled ? "in the handler (FEATURES bit 0): opanel stop can put it into STOP" : "not in the handler")}");
         if (ExpectedCpu is not null)
         {
             o.WriteLine(CpuMismatch is null ? $"cpu check     ok: matches {ExpectedCpu}" : $"cpu check     MISMATCH with {ExpectedCpu}: {CpuMismatch}");

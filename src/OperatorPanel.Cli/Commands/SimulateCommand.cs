@@ -24,9 +24,10 @@ internal static class SimulateCommand
         var noProcess = new Option<bool>("--no-process") { Description = "Do not run the demo bottling process: memory stays as the panel writes it" };
         var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
         var model = ModelOption.Create();
+        var allowStop = new Option<bool>("--allow-stop") { Description = "The handler carries 07 STOP (opanel generate --allow-stop): the panel may put the simulated CPU in STOP" };
         var command = new Command("simulate", "Serve simulated S7-200 PLCs running the protocol handler on a serial device. Exit codes: 0 stopped, 1 bad input, 2 port failure")
         {
-            cpu, revision, stations, replyDelay, noProcess, duration, model,
+            cpu, revision, stations, replyDelay, noProcess, duration, model, allowStop,
         };
         serial.AddTo(command);
         command.SetAction(async parse =>
@@ -57,7 +58,7 @@ internal static class SimulateCommand
                     return cli.Fail(ExitCodes.BadInput, $"{station} is given twice; stations on one bus need distinct addresses");
                 }
 
-                configs.Add(new HandlerConfig(station, profile, replyDelayMs: (byte)delay));
+                configs.Add(new HandlerConfig(station, profile, replyDelayMs: (byte)delay, allowStop: parse.GetValue(allowStop)));
             }
 
             var seconds = parse.GetValue(duration);

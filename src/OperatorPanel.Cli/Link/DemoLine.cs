@@ -1,6 +1,4 @@
 using System.Diagnostics.CodeAnalysis;
-using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
@@ -38,11 +36,11 @@ internal sealed class DemoLine : IAsyncDisposable
 
     /// <summary>Starts the line on <paramref name="serial"/>'s settings; false with the reason when a station cannot be simulated.</summary>
     public static bool TryStart(
-        SerialSettings serial, IEnumerable<(Station Station, CpuProfile Cpu)> stations, SimulationModel model, ILogger log,
+        SerialSettings serial, IEnumerable<HandlerConfig> stations, SimulationModel model, ILogger log,
         [NotNullWhen(true)] out DemoLine? demo, [NotNullWhen(false)] out string? error)
     {
         demo = null;
-        if (!SimulatedLine.TryCreate(stations.Select(s => new HandlerConfig(s.Station, s.Cpu)), model, serial, runProcess: true, out var line, out error))
+        if (!SimulatedLine.TryCreate(stations, model, serial, runProcess: true, out var line, out error))
         {
             return false;
         }

@@ -3,6 +3,7 @@ using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
+using OperatorPanel.Simulator.Reference;
 using Serilog;
 
 namespace OperatorPanel.Cli.Link;
@@ -19,7 +20,8 @@ internal sealed class DemoLineConnector(SimulationModel model, ILogger log) : IL
         var transports = new Dictionary<string, ITransport>(StringComparer.OrdinalIgnoreCase);
         foreach (var bus in ProjectBus.Of(project))
         {
-            if (!DemoLine.TryStart(bus.Serial, bus.Stations.Select(s => (s.Address, s.Cpu)), model, log, out var demo, out var error))
+            var stations = bus.Stations.Select(s => new HandlerConfig(s.Address, s.Cpu, allowStop: s.AllowStop));
+            if (!DemoLine.TryStart(bus.Serial, stations, model, log, out var demo, out var error))
             {
                 await StopAsync(demos);
                 throw new InvalidOperationException(error);

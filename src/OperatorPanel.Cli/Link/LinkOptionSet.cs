@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Cli.Commands;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 
 namespace OperatorPanel.Cli.Link;
@@ -52,18 +53,31 @@ internal sealed class LinkOptionSet
         command.Options.Add(ScanMs);
     }
 
-    public bool TryBind(ParseResult parse, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error)
+    public bool TryBind(ParseResult parse, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error) =>
+        TryBind(parse, projectLink: null, out target, out error);
+
+    /// <summary>
+    /// The target; with <paramref name="projectLink"/> (a project's station) its port and line settings unless --device or
+    /// --demo is given.
+    /// </summary>
+    public bool TryBind(ParseResult parse, SerialSettings? projectLink, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error)
     {
         target = null;
         var demo = parse.GetValue(Demo);
-        if (demo && parse.GetValue(_serial.Device) is not null)
+        var device = parse.GetValue(_serial.Device);
+        if (demo && device is not null)
         {
             error = "--demo talks to the in-process simulated PLC; leave out --device";
             return false;
         }
 
-        if (!Core.Addressing.Station.TryCreate(parse.GetValue(Station), out var station, out error)
-            || !_serial.TryBind(parse, demo ? DemoPort : null, out var serial, out error))
+        if (!Core.Addressing.Station.TryCreate(parse.GetValue(Station), out var station, out error))
+        {
+            return false;
+        }
+
+        SerialSettings? serial = demo || device is not null ? null : projectLink;
+        if (serial is null && !_serial.TryBind(parse, demo ? DemoPort : null, out serial, out error))
         {
             return false;
         }

@@ -1,9 +1,8 @@
 using System.Diagnostics.CodeAnalysis;
-using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
+using OperatorPanel.Simulator.Reference;
 using Serilog;
 
 namespace OperatorPanel.Cli.Link;
@@ -28,7 +27,7 @@ internal sealed class LinkSession : IAsyncDisposable
     /// <paramref name="model"/>; false with the reason when the demo line cannot simulate a station.
     /// </summary>
     public static bool TryOpen(
-        SerialSettings serial, IReadOnlyList<(Station Station, CpuProfile Cpu)>? demoStations, SimulationModel model, ILogger log,
+        SerialSettings serial, IReadOnlyList<HandlerConfig>? demoStations, SimulationModel model, ILogger log,
         TimeSpan? scanAllowance, [NotNullWhen(true)] out LinkSession? session, [NotNullWhen(false)] out string? error)
     {
         session = null;
@@ -53,7 +52,10 @@ internal sealed class LinkSession : IAsyncDisposable
     }
 
     public static bool TryOpen(LinkTarget target, ILogger log, [NotNullWhen(true)] out LinkSession? session, [NotNullWhen(false)] out string? error) =>
-        TryOpen(target.Serial, target.Demo ? [(target.Station, target.Cpu!)] : null, target.Model, log, target.ScanAllowance, out session, out error);
+        TryOpen(target.Serial, target.Demo ? [DemoStation(target)] : null, target.Model, log, target.ScanAllowance, out session, out error);
+
+    /// <summary>The --demo PLC: the target's station and CPU, its handler with STOP so <c>opanel stop --demo</c> can be tried.</summary>
+    private static HandlerConfig DemoStation(LinkTarget target) => new(target.Station, target.Cpu!, allowStop: true);
 
     public async ValueTask DisposeAsync()
     {

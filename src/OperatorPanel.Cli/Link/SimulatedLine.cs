@@ -50,5 +50,7 @@ internal sealed class SimulatedLine
     /// <summary>The handler StlGen generates for the station: the same text Generate PLC code / opanel generate saves.</summary>
     private static bool GeneratedHandler(HandlerConfig config, SerialSettings serial, [NotNullWhen(true)] out string? awlText, [NotNullWhen(false)] out string? error) =>
         HandlerGenerator.TryGenerateAwl(
-            HandlerOptions.ForLine(config.Cpu, config.Port, config.Station.Address, config.WriteMask, config.ReplyDelayMs, serial), out awlText, out error);
+            HandlerOptions.ForLine(config.Cpu, config.Port, config.Station.Address, config.WriteMask, config.ReplyDelayMs, serial) with { AllowStop = config.AllowStop },
+            out awlText,
+            out error);
 }

@@ -3,6 +3,7 @@ using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Stop;
 using OperatorPanel.Core.Writes;
 using Serilog;
 using Serilog.Core;
@@ -170,6 +171,26 @@ public sealed partial class ProjectLine : IAsyncDisposable
         BusOf(station) is { } bus
             ? IdentifyOnAsync(bus, station, cancellationToken)
             : throw new InvalidOperationException($"{station} is not on a connected bus");
+
+    /// <summary>
+    /// STOP to one station beside the polling (<see cref="RemoteStop"/>: IDENTIFY, 07 once, IDENTIFY). A STOP that left
+    /// the station silent tells its engine, which then shows it as stopped by the panel instead of offline.
+    /// </summary>
+    public async Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default)
+    {
+        if (BusOf(station) is not { } bus)
+        {
+            return new StopOutcome.NotSent(station, "not connected");
+        }
+
+        var outcome = await new RemoteStop(bus.Line.Link, _logger).StopAsync(station, cancellationToken).ConfigureAwait(false);
+        if (outcome.IsStopped)
+        {
+            bus.Line.Engine.NoteStoppedByPanel(station);
+        }
+
+        return outcome;
+    }
 
     /// <summary>The station's polling status; null when not connected.</summary>
     public StationStatus? StatusOf(Station station) => BusOf(station)?.Line.Engine.GetStationStatus(station);

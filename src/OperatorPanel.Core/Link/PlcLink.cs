@@ -185,7 +185,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         var message = $"{request.Station} on {_transport.Name}: no valid reply to {request.Command} {attempts} ({lastFailure.Message})";
         if (kind == PlcErrorKind.NoAnswer && request is IdentifyRequest identify && await AnswersV1ProbeAsync(identify, statistics, cancellationToken).ConfigureAwait(false))
         {
-            return new ExchangeResult(null, new PlcCommunicationException(kind, request.Station, HandlerV1.Message(request.Station)), Sent: true, CorruptedCopy: false);
+            return new ExchangeResult(null, new PlcCommunicationException(PlcErrorKind.HandlerProtocolV1, request.Station, HandlerV1.Message(request.Station)), Sent: true, CorruptedCopy: false);
         }
 
         _log.Warning("{Message}", message);

@@ -90,6 +90,9 @@ public sealed partial class PollingEngine
 
     public StationStatus GetStationStatus(Station station) => _stations.Get(station);
 
+    /// <summary>The panel stopped the station (Stop/RemoteStop confirmed it): its silence is no longer news.</summary>
+    public void NoteStoppedByPanel(Station station) => _stations.RecordStoppedByPanel(station);
+
     /// <summary>
     /// Asks for one full cycle and returns its result. In <see cref="RefreshMode.OnDemand"/> this is what makes the
     /// engine poll; in continuous mode it completes with the next regular cycle. Cancelled when polling stops first.

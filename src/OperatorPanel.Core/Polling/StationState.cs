@@ -13,4 +13,11 @@ public enum StationState
     /// unexpected exception. It is still tried once per cycle.
     /// </summary>
     Offline,
+
+    /// <summary>
+    /// It acknowledged a STOP from this panel and fell silent (docs/protocol.md, "07 STOP"): its port speaks PPI until
+    /// someone sets RUN. Still tried once per cycle like an offline station, so RUN is noticed; its silence is logged
+    /// at Debug only, and its first reply makes it <see cref="Online"/> again.
+    /// </summary>
+    StoppedByPanel,
 }

@@ -37,6 +37,10 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
         {
             logger.Information("{Station} is back online", station.Address);
         }
+        else if (before.State == StationState.StoppedByPanel)
+        {
+            logger.Information("Station {Station} answers again after the panel stopped it: someone set RUN", station.Address);
+        }
 
         if (refusal is not null && refusal != before.LastError)
         {
@@ -58,10 +62,12 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
             _ => ($"link error ({exception.GetType().Name}): {exception.Message}", true),
         };
         var before = Get(station);
+        // A station the panel stopped is expected to be silent; a lost port is still news.
+        var stopped = before.State == StationState.StoppedByPanel && exception is PlcCommunicationException { Kind: PlcErrorKind.NoAnswer or PlcErrorKind.Timeout };
         var after = before with
         {
-            State = offline ? StationState.Offline : before.State,
-            LastError = message,
+            State = offline && !stopped ? StationState.Offline : before.State,
+            LastError = stopped ? before.LastError : message,
             ConsecutiveFailures = before.ConsecutiveFailures + 1,
         };
         Store(after);
@@ -69,7 +75,7 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
         {
             logger.Error(exception, "{Station}: unexpected link exception, polling continues", station.Address);
         }
-        else if (after.State != before.State || message != before.LastError)
+        else if (!stopped && (after.State != before.State || message != before.LastError))
         {
             logger.Warning("{Station}: {Error} ({State})", station.Address, message, after.State);
         }
@@ -79,6 +85,13 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
         }
 
         return (message, offline);
+    }
+
+    /// <summary>The station acknowledged a STOP from the panel and a following IDENTIFY found it silent.</summary>
+    public void RecordStoppedByPanel(Station station)
+    {
+        Store(Get(station) with { State = StationState.StoppedByPanel, LastError = "stopped by the panel" });
+        logger.Information("Station {Station} stopped by the panel: polled once per cycle until it answers again", station.Address);
     }
 
     /// <summary>A reply came but did not fit the request; the station is answering, so it stays as it was.</summary>

@@ -15,6 +15,10 @@ namespace OperatorPanel.Core.Projects;
 /// <param name="Outputs">Symbols for Q bits (the "Output" window, where the operator may also set them).</param>
 /// <param name="Tags">Memory cells shown in the PLC memory window.</param>
 /// <param name="Alarms">Flag bits whose rising state shows a message.</param>
+/// <remarks>
+/// <see cref="AllowStop"/> ("allowStop" in the file, default false) is an init property so the many stations built
+/// in code keep their shape.
+/// </remarks>
 public sealed record ProjectStation(
     string Name,
     Station Address,
@@ -23,4 +27,11 @@ public sealed record ProjectStation(
     ImmutableArray<IoSymbol> Inputs,
     ImmutableArray<IoSymbol> Outputs,
     ImmutableArray<ProjectTag> Tags,
-    ImmutableArray<AlarmDefinition> Alarms);
+    ImmutableArray<AlarmDefinition> Alarms)
+{
+    /// <summary>
+    /// The station's handler is generated with 07 STOP (HandlerOptions.AllowStop) and the panel offers Stop for it. Off
+    /// by default: a remote STOP halts the line (docs/protocol.md, "07 STOP").
+    /// </summary>
+    public bool AllowStop { get; init; }
+}

@@ -65,6 +65,7 @@ internal static class ProjectWriter
         json.WriteNumber("stopBits", station.Link.StopBits);
         json.WriteString("kind", JsonWords.Of(station.Link.Kind));
         json.WriteEndObject();
+        json.WriteBoolean("allowStop", station.AllowStop);
         WriteSymbols(json, "inputs", station.Inputs);
         WriteSymbols(json, "outputs", station.Outputs);
         json.WriteStartArray("tags");

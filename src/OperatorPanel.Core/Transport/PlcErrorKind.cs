@@ -17,4 +17,10 @@ public enum PlcErrorKind
 
     /// <summary>Every retry timed out: the station is off the bus, in STOP, or its mode switch is at TERM.</summary>
     NoAnswer,
+
+    /// <summary>
+    /// IDENTIFY got no answer but the station answered the v1 IDENTIFY probe: its handler speaks protocol v1, ignores
+    /// every v2 frame, and must be regenerated and downloaded (<see cref="Link.HandlerV1"/>).
+    /// </summary>
+    HandlerProtocolV1,
 }

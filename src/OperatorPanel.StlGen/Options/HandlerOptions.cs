@@ -59,7 +59,7 @@ public sealed record HandlerOptions
     /// <summary>Whether the handler carries 07 STOP; off = no STOP code at all, CMD 07 gets error 05 like any unknown command.</summary>
     public bool AllowStop { get; init; }
 
-    /// <summary>The settings a project fixes for one station: CPU, station address, baud, parity, data and stop bits.</summary>
+    /// <summary>The settings a project fixes for one station: CPU, station address, baud, parity, data and stop bits, STOP.</summary>
     public static HandlerOptions For(ProjectStation station)
     {
         ArgumentNullException.ThrowIfNull(station);
@@ -71,6 +71,7 @@ public sealed record HandlerOptions
             Parity = station.Link.Parity,
             DataBits = station.Link.DataBits,
             StopBits = station.Link.StopBits,
+            AllowStop = station.AllowStop,
         };
     }
 

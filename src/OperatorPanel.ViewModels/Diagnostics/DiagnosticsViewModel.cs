@@ -2,6 +2,7 @@ using System.Collections.ObjectModel;
 using System.Collections.Specialized;
 using System.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
+using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Shell;
 
@@ -11,12 +12,15 @@ namespace OperatorPanel.ViewModels.Diagnostics;
 public sealed partial class DiagnosticsViewModel : PaneViewModel
 {
     private readonly PanelSession _session;
+    private readonly IDialogService _dialogs;
 
-    public DiagnosticsViewModel(PanelSession session)
+    public DiagnosticsViewModel(PanelSession session, IDialogService dialogs)
         : base("Diagnostics", "diagnostics")
     {
         ArgumentNullException.ThrowIfNull(session);
+        ArgumentNullException.ThrowIfNull(dialogs);
         _session = session;
+        _dialogs = dialogs;
         session.Stations.CollectionChanged += OnStationsChanged;
         session.PropertyChanged += OnSessionChanged;
         OnStationsChanged(null, new NotifyCollectionChangedEventArgs(NotifyCollectionChangedAction.Reset));
@@ -45,7 +49,7 @@ public sealed partial class DiagnosticsViewModel : PaneViewModel
         Stations.Clear();
         foreach (var station in _session.Stations)
         {
-            Stations.Add(new StationDiagnosticsViewModel(station));
+            Stations.Add(new StationDiagnosticsViewModel(station, _session, _dialogs));
         }
     }
 
@@ -54,6 +58,14 @@ public sealed partial class DiagnosticsViewModel : PaneViewModel
         if (e.PropertyName == nameof(PanelSession.IsConnected))
         {
             IdentifyCommand.NotifyCanExecuteChanged();
+        }
+
+        if (e.PropertyName is nameof(PanelSession.IsConnected) or nameof(PanelSession.IsReadOnly))
+        {
+            foreach (var station in Stations)
+            {
+                station.OnSessionChanged();
+            }
         }
     }
 }

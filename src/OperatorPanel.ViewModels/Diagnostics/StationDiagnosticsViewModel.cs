@@ -1,6 +1,8 @@
 using System.ComponentModel;
 using System.Globalization;
 using CommunityToolkit.Mvvm.ComponentModel;
+using CommunityToolkit.Mvvm.Input;
+using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 
 namespace OperatorPanel.ViewModels.Diagnostics;
@@ -8,13 +10,20 @@ namespace OperatorPanel.ViewModels.Diagnostics;
 /// <summary>
 /// One station in the Diagnostics window: the CPU the PLC reports (IDENTIFY) beside the project's, RUN/STOP, the scan
 /// times SMW22/SMW24/SMW26 (seed 002 Table C-9) and the link counters. Follows its <see cref="StationStatusViewModel"/>.
+/// Its Stop command puts the PLC into STOP after the operator confirms.
 /// </summary>
-public sealed class StationDiagnosticsViewModel : ObservableObject
+public sealed partial class StationDiagnosticsViewModel : ObservableObject
 {
-    public StationDiagnosticsViewModel(StationStatusViewModel status)
+    private readonly PanelSession _session;
+    private readonly IDialogService _dialogs;
+
+    public StationDiagnosticsViewModel(StationStatusViewModel status, PanelSession session, IDialogService dialogs)
     {
         ArgumentNullException.ThrowIfNull(status);
+        ArgumentNullException.ThrowIfNull(session);
+        ArgumentNullException.ThrowIfNull(dialogs);
         Status = status;
+        (_session, _dialogs) = (session, dialogs);
         status.PropertyChanged += OnStatusChanged;
     }
 
@@ -46,6 +55,8 @@ public sealed class StationDiagnosticsViewModel : ObservableObject
     {
         StationHealth.Online or StationHealth.HandlerMismatch => Status.Identity is { ModeSwitchRun: false } ? "RUN, mode switch at TERM" : "RUN",
         StationHealth.Stopped => "STOP or TERM (no Freeport reply)",
+        StationHealth.StoppedByPanel => "STOP (by the panel)",
+        StationHealth.HandlerV1 => "RUN (handler protocol v1)",
         StationHealth.Offline => "unknown (offline)",
         StationHealth.Unknown => "-",
     };
@@ -66,5 +77,41 @@ public sealed class StationDiagnosticsViewModel : ObservableObject
 
     public string HealthText => Status.HealthText;
 
-    private void OnStatusChanged(object? sender, PropertyChangedEventArgs e) => OnPropertyChanged(string.Empty);
+    /// <summary>
+    /// The session changed (connected, read-only): whether Stop may run depends on it. Called by the Diagnostics window,
+    /// which outlives its rows, so a row never subscribes to the session itself.
+    /// </summary>
+    internal void OnSessionChanged() => StopCommand.NotifyCanExecuteChanged();
+
+    /// <summary>
+    /// StopCommand: the project allows STOP for the station, its IDENTIFY reported FEATURES bit 0, the line is connected
+    /// and not read-only. Always confirmed first (whatever "confirm writes" says): a STOP halts the line.
+    /// </summary>
+    [RelayCommand(CanExecute = nameof(CanStop))]
+    private async Task StopAsync()
+    {
+        var question = $"Put {Name} ({Status.Address}) into STOP? Its program stops, so the line stops, and its port returns to PPI: "
+            + "the panel cannot reach it until someone sets RUN (mode switch or Micro/WIN).";
+        if (!await _dialogs.ConfirmAsync("Stop PLC", question))
+        {
+            return;
+        }
+
+        try
+        {
+            await _session.StopAsync(Status.Address);
+        }
+        catch (Exception exception) when (exception is not OutOfMemoryException)
+        {
+            _session.StatusLine.ShowError($"{Name}: STOP failed: {exception.Message}");
+        }
+    }
+
+    private bool CanStop() => Status.StopAvailable && _session.IsConnected && !_session.IsReadOnly;
+
+    private void OnStatusChanged(object? sender, PropertyChangedEventArgs e)
+    {
+        OnPropertyChanged(string.Empty);
+        StopCommand.NotifyCanExecuteChanged();
+    }
 }

@@ -157,6 +157,7 @@ public sealed partial class GenerateCodeViewModel
             ReplyDelayMs = delay ?? 0,
             CharTimeoutMs = charTimeout ?? 0,
             WriteMask = (WriteQ ? 1 << 2 : 0) | (WriteM ? 1 << 3 : 0) | (WriteV ? 1 << 4 : 0) | (WriteSm ? 1 << 5 : 0),
+            AllowStop = station.AllowStop,
         };
         return Diagnostics.Count == 0;
     }

@@ -85,6 +85,11 @@ public sealed partial class GenerateCodeViewModel : ObservableObject
 
     public bool WriteSm { get => _writeSm; set => Change(ref _writeSm, value); }
 
+    /// <summary>Whether the handler gets 07 STOP: the station's "allowStop" in the project decides (File > Edit project).</summary>
+    public string StopText => Station.AllowStop
+        ? "included: the project allows the panel to put this CPU into STOP"
+        : "not included (allow remote STOP for the station in File > Edit project)";
+
     /// <summary>The serial settings taken from the station's link: "9600 8N1".</summary>
     public string LineText => Station.Link.LineText;
 

@@ -18,7 +18,7 @@ public sealed partial class PanelSession
             }
             catch (PlcCommunicationException exception)
             {
-                view.RecordIdentify(null, $"IDENTIFY: {exception.Kind}: {exception.Message}");
+                view.RecordIdentify(null, $"IDENTIFY: {exception.Kind}: {exception.Message}", exception.Kind == PlcErrorKind.HandlerProtocolV1);
             }
         }
 

@@ -19,4 +19,16 @@ public enum StationHealth
 
     /// <summary>IDENTIFY reported a protocol version this panel does not speak: the PLC runs another handler.</summary>
     HandlerMismatch,
+
+    /// <summary>
+    /// This panel put it into STOP and it fell silent (Core/Stop/RemoteStop): its port speaks PPI until someone sets
+    /// RUN. Not "offline": the panel knows why it is silent.
+    /// </summary>
+    StoppedByPanel,
+
+    /// <summary>
+    /// It ignores the panel's frames but answered the v1 IDENTIFY probe: it runs an Operator Panel handler of protocol
+    /// version 1, which must be generated again and downloaded (Core/Link/HandlerV1).
+    /// </summary>
+    HandlerV1,
 }

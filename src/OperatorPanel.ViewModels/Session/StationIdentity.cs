@@ -6,7 +6,7 @@ namespace OperatorPanel.ViewModels.Session;
 /// <summary>What a station said about itself in its IDENTIFY reply (docs/protocol.md, "01 IDENTIFY").</summary>
 /// <param name="Model">The CPU model the handler was generated for; null for a code this panel does not know.</param>
 /// <param name="Revision">Early or current, as the handler was generated.</param>
-/// <param name="ProtocolVersion">The frame protocol the handler speaks; this panel speaks version 1.</param>
+/// <param name="ProtocolVersion">The frame protocol the handler speaks; this panel speaks version 2.</param>
 /// <param name="HandlerRevision">The generator revision of the handler program.</param>
 /// <param name="Smb6">SMB6, the CPU identifier register (CPU type in bits 4-7, seed 002 Table C-7).</param>
 /// <param name="ModeSwitchRun">SM0.7: the mode switch is at RUN.</param>
@@ -26,6 +26,9 @@ public sealed record StationIdentity(
 {
     public bool ProtocolMatches => ProtocolVersion == HandlerIdentity.ProtocolVersion;
 
+    /// <summary>FEATURES bit 0: the handler was generated with 07 STOP (docs/protocol.md, "01 IDENTIFY").</summary>
+    public bool StopEnabled { get; init; }
+
     public string CpuText => Model is { } model
         ? CpuModelNames.Format(model) + (Revision == CpuRevision.Early ? " (early)" : string.Empty)
         : "unknown CPU code";
@@ -37,7 +40,10 @@ public sealed record StationIdentity(
         var revision = reply.CpuRevisionCode == HandlerIdentity.CpuRevisionCode(CpuRevision.Early) ? CpuRevision.Early : CpuRevision.Current;
         return new StationIdentity(
             model, revision, reply.ProtocolVersion, reply.HandlerRevision, reply.Smb6, reply.ModeSwitchRun,
-            reply.LastScanMs, reply.MinScanMs, reply.MaxScanMs);
+            reply.LastScanMs, reply.MinScanMs, reply.MaxScanMs)
+        {
+            StopEnabled = reply.StopEnabled,
+        };
     }
 
     /// <summary>True when the PLC's CPU is not the one the project's addresses were checked against.</summary>

@@ -11,6 +11,7 @@ namespace OperatorPanel.ViewModels.Session;
 public sealed partial class StationStatusViewModel(ProjectStation station) : ObservableObject
 {
     private bool _hasAnswered;
+    private bool _handlerV1;
 
     public ProjectStation Station { get; } = station;
 
@@ -22,6 +23,7 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
 
     [ObservableProperty]
     [NotifyPropertyChangedFor(nameof(HealthText))]
+    [NotifyPropertyChangedFor(nameof(StopAvailable))]
     public partial StationHealth Health { get; private set; }
 
     /// <summary>The latest failure or refusal, kept after recovery so it can still be read.</summary>
@@ -35,6 +37,7 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
     /// <summary>The station's IDENTIFY reply; null until it answered one.</summary>
     [ObservableProperty]
     [NotifyPropertyChangedFor(nameof(CpuMismatch))]
+    [NotifyPropertyChangedFor(nameof(StopAvailable))]
     public partial StationIdentity? Identity { get; private set; }
 
     /// <summary>The PLC reports another CPU than the project's: addresses were checked against the wrong sizes.</summary>
@@ -47,15 +50,27 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
         StationHealth.Stopped => "no answer: PLC in STOP, mode switch at TERM, or off the bus",
         StationHealth.HandlerMismatch =>
             $"handler protocol version {Identity?.ProtocolVersion} is not the panel's {Core.Protocol.HandlerIdentity.ProtocolVersion}: generate and download the PLC code again",
+        StationHealth.StoppedByPanel => "stopped by the panel: the port speaks PPI until someone sets RUN",
+        StationHealth.HandlerV1 => "handler protocol v1: regenerate the PLC code (File > Generate PLC code) and download it",
         StationHealth.Unknown => "not connected",
     };
+
+    /// <summary>
+    /// Stop may be offered: the project allows STOP for this station and its IDENTIFY reported FEATURES bit 0, and it is
+    /// not already stopped. The session adds its own conditions (connected, not read-only).
+    /// </summary>
+    public bool StopAvailable => Station.AllowStop && Identity is { StopEnabled: true } && Health != StationHealth.StoppedByPanel;
 
     /// <summary>Why the last IDENTIFY brought no identity; null after one that did.</summary>
     [ObservableProperty]
     public partial string? IdentifyError { get; private set; }
 
-    internal void RecordIdentify(Core.Protocol.IdentifyResponse? reply, string? error)
+    /// <param name="reply">The IDENTIFY reply, or null when none came.</param>
+    /// <param name="error">Why none came.</param>
+    /// <param name="handlerV1">The station answered only the v1 probe (PlcErrorKind.HandlerProtocolV1).</param>
+    internal void RecordIdentify(Core.Protocol.IdentifyResponse? reply, string? error, bool handlerV1 = false)
     {
+        _handlerV1 = handlerV1;
         IdentifyError = reply is null ? error ?? "IDENTIFY: unexpected reply" : null;
         if (reply is not null)
         {
@@ -85,11 +100,17 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
             return StationHealth.HandlerMismatch;
         }
 
+        if (_handlerV1 && status.State != StationState.Online)
+        {
+            return StationHealth.HandlerV1;
+        }
+
         // StationTracker writes "{kind}: {message}"; a missing port is offline whatever the station did before.
         var portGone = status.LastError?.StartsWith(nameof(PlcErrorKind.PortUnavailable), StringComparison.Ordinal) == true;
         return status.State switch
         {
             StationState.Online => StationHealth.Online,
+            StationState.StoppedByPanel => StationHealth.StoppedByPanel,
             StationState.Offline when !portGone && _hasAnswered => StationHealth.Stopped,
             StationState.Offline => StationHealth.Offline,
             StationState.Unknown => StationHealth.Unknown,

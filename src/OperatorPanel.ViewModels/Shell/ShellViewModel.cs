@@ -42,7 +42,7 @@ public sealed partial class ShellViewModel : ObservableObject
         Inputs = new InputsViewModel(session);
         Outputs = new OutputsViewModel(session, services.Dialogs, options, logger);
         Memory = new MemoryViewModel(session, services.Dialogs, options, logger);
-        Diagnostics = new DiagnosticsViewModel(session);
+        Diagnostics = new DiagnosticsViewModel(session, services.Dialogs);
         AlarmsPane = new AlarmsPaneViewModel(CreateAlarms(session.Project, path: null));
         Panes = [Inputs, Outputs, Memory, AlarmsPane, Diagnostics];
         GenerateCodeCommand = new RelayCommand(OpenGenerateCode, () => HasProject);

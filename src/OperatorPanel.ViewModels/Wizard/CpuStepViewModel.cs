@@ -11,13 +11,15 @@ public sealed class CpuStepViewModel : WizardStepViewModel
     private CpuProfile _cpu;
     private string _stationName;
     private string _stationAddress;
+    private bool _allowStop;
 
-    internal CpuStepViewModel(string projectName, CpuProfile cpu, string stationName, Station station)
+    internal CpuStepViewModel(string projectName, CpuProfile cpu, string stationName, Station station, bool allowStop = false)
     {
         _projectName = projectName;
         _cpu = cpu;
         _stationName = stationName;
         _stationAddress = station.Address.ToString(CultureInfo.InvariantCulture);
+        _allowStop = allowStop;
     }
 
     public override int Number => 1;
@@ -35,6 +37,12 @@ public sealed class CpuStepViewModel : WizardStepViewModel
 
     /// <summary>The RS-485 station address as typed, 1-126 (S7-200 ports default to 2).</summary>
     public string StationAddress { get => _stationAddress; set => Edit(ref _stationAddress, value ?? string.Empty); }
+
+    /// <summary>
+    /// The project's "allowStop": the generated handler carries STOP and the panel offers Stop PLC for this station.
+    /// Off unless chosen: a remote STOP halts the line.
+    /// </summary>
+    public bool AllowStop { get => _allowStop; set => Edit(ref _allowStop, value); }
 
     /// <summary>The typed station address when valid.</summary>
     internal Station? Station =>

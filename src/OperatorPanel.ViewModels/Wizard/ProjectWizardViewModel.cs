@@ -40,7 +40,7 @@ public sealed partial class ProjectWizardViewModel : ObservableObject
         ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(stationIndex, project.Stations.Length);
         (_original, _stationIndex, IsEditing) = (project, stationIndex, isEditing);
         var station = project.Stations[stationIndex];
-        CpuStep = new CpuStepViewModel(project.Name, station.Cpu, station.Name, station.Address);
+        CpuStep = new CpuStepViewModel(project.Name, station.Cpu, station.Name, station.Address, station.AllowStop);
         IoStep = new IoSymbolsStepViewModel(station.Inputs, station.Outputs, () => CpuStep.Cpu);
         MemoryStep = new MemoryCellsStepViewModel(station.Tags);
         AlarmStep = new AlarmTextsStepViewModel(station.Alarms);
@@ -149,7 +149,10 @@ public sealed partial class ProjectWizardViewModel : ObservableObject
 
         var station = new ProjectStation(
             CpuStep.StationName.Trim(), CpuStep.Station!.Value, CpuStep.Cpu, LinkStep.Build(),
-            IoStep.BuildInputs(), IoStep.BuildOutputs(), MemoryStep.Build(), AlarmStep.Build());
+            IoStep.BuildInputs(), IoStep.BuildOutputs(), MemoryStep.Build(), AlarmStep.Build())
+        {
+            AllowStop = CpuStep.AllowStop,
+        };
         var project = _original with { Name = CpuStep.ProjectName.Trim(), Stations = _original.Stations.SetItem(_stationIndex, station) };
         var problems = ProjectFile.Check(project);
         if (!problems.IsEmpty)

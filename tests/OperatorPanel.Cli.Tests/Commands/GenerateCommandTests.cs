@@ -25,6 +25,24 @@ public sealed class GenerateCommandTests : IDisposable
         File.ReadAllText(Path.Combine(Out, "PLC_2-symbols.txt")).Should().StartWith("OP_BUF\tVB7764\t");
     }
 
+    [Theory]
+    [InlineData(false, false)]
+    [InlineData(true, true)]
+    public void Generate_ProjectAllowStop_IncludesTheStopCodeOnlyWhenSet(bool allowStop, bool stopCode)
+    {
+        var project = NewProject("224", "2");
+        var root = JsonNode.Parse(File.ReadAllText(project))!;
+        root["stations"]![0]!["allowStop"] = allowStop;
+        File.WriteAllText(project, root.ToJsonString());
+
+        var run = CliRunner.Run("generate", project, "-o", Out);
+
+        run.ExitCode.Should().Be(0, run.Error);
+        var awl = File.ReadAllText(Path.Combine(Out, "PLC_2-handler.awl"));
+        awl.Contains("\r\nSTOP\r\n", StringComparison.Ordinal).Should().Be(stopCode, "the STOP instruction is in the handler only when the project allows it");
+        awl.Contains("command 07 STOP", StringComparison.Ordinal).Should().Be(stopCode);
+    }
+
     [Fact]
     public void Generate_Stats_PrintsTheHandlersFigures()
     {

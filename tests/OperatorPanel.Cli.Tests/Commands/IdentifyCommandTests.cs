@@ -18,6 +18,7 @@ public sealed class IdentifyCommandTests
             .And.Contain("mode switch   RUN")
             .And.Contain("write mask    16#3C: Q M V SM")
             .And.Contain("reply delay   5 ms")
+            .And.Contain("STOP          in the handler (FEATURES bit 0): opanel stop can put it into STOP")
             .And.Contain("cpu check     ok: matches CPU 224");
         run.Out.Should().MatchRegex(@"scan          last \d ms, min \d ms, max \d ms");
     }

@@ -2,6 +2,7 @@ using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
@@ -36,6 +37,23 @@ public sealed class SimulatedLineTests
         stations.Should().HaveCount(2);
         line.WarmUp(TimeSpan.FromMilliseconds(20));
         stations.Should().OnlyContain(s => s.Port.IsFreeport && s.Port.Line.Baud == 19200 && s.Port.IsReceiving);
+    }
+
+    [Theory]
+    [InlineData(true, OperatingMode.Stop)]
+    [InlineData(false, OperatingMode.Run)]
+    public void TryCreate_StlHandlerWithStopAsConfigured_GoesToStopOnlyWhenGeneratedWithIt(bool allowStop, OperatingMode expected)
+    {
+        SimulatedLine.TryCreate([new HandlerConfig(new Station(2), Cpu226, allowStop: allowStop)], SimulationModel.Stl, Serial(9600), runProcess: true, out var line, out var error)
+            .Should().BeTrue(error);
+        line!.WarmUp(TimeSpan.FromMilliseconds(50));
+
+        line.Line.Deliver(RequestCodec.Encode(new StopRequest(new Station(2), 1)));
+        line.WarmUp(TimeSpan.FromMilliseconds(200));
+
+        var reply = System.Text.Encoding.ASCII.GetString(line.Line.TakeTransmitted());
+        reply.Substring(5, 4).Should().Be(allowStop ? "8700" : "8705", "STATUS 00 with STOP generated, 05 unknown command without");
+        line.Line.Should().BeOfType<StlLine>().Which.Stations[0].Mode.Should().Be(expected);
     }
 
     [Fact]

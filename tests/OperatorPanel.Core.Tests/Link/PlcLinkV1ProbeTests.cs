@@ -29,7 +29,7 @@ public sealed class PlcLinkV1ProbeTests
 
         thrown.Which.Message.Should().Be("station 2 runs Operator Panel handler protocol v1: regenerate the PLC code (opanel generate) and download it");
         thrown.Which.Message.Should().Be(HandlerV1.Message(Station2));
-        thrown.Which.Kind.Should().Be(PlcErrorKind.NoAnswer);
+        thrown.Which.Kind.Should().Be(PlcErrorKind.HandlerProtocolV1);
         link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 2, Replies = 1, Timeouts = 1 });
         transport.AssertComplete();
     }

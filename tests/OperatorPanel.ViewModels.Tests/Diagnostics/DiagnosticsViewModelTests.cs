@@ -10,7 +10,7 @@ public sealed class DiagnosticsViewModelTests : IAsyncDisposable
     private readonly PanelFixture _panel = new();
     private readonly DiagnosticsViewModel _diagnostics;
 
-    public DiagnosticsViewModelTests() => _diagnostics = new DiagnosticsViewModel(_panel.Session);
+    public DiagnosticsViewModelTests() => _diagnostics = new DiagnosticsViewModel(_panel.Session, _panel.Dialogs);
 
     [Fact]
     public async Task Identify_AfterScans_ShowsCpuRunScanTimesAndStatistics()

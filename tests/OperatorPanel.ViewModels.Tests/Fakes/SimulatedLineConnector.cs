@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
@@ -26,6 +27,9 @@ internal sealed class SimulatedLineConnector(ManualTimeProvider clock) : ILineCo
 
     public ReferencePlc Plc(int station) => _plcs[station];
 
+    /// <summary>Before the first connect: a station that runs a protocol v1 handler (<see cref="SimulatedTransport.V1Handler"/>).</summary>
+    public Station? V1Handler { get; set; }
+
     /// <summary>Before the first connect: the handler a station runs (another CPU, another write mask).</summary>
     public void Configure(HandlerConfig config) => _configs[config.Station.Address] = config;
 
@@ -44,7 +48,10 @@ internal sealed class SimulatedLineConnector(ManualTimeProvider clock) : ILineCo
                     simulator.Attach(plc);
                 }
 
-                _transports[bus.Serial.PortName] = new SimulatedTransport(bus.Serial.PortName, simulator, clock);
+                _transports[bus.Serial.PortName] = new SimulatedTransport(bus.Serial.PortName, simulator, clock)
+                {
+                    V1Handler = bus.Stations.Any(s => s.Address == V1Handler) ? V1Handler : null,
+                };
             }
         }
 

@@ -1,3 +1,6 @@
+using System.Text;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Protocol.V1;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Reference;
 using OperatorPanel.TestKit;
@@ -23,6 +26,12 @@ internal sealed class SimulatedTransport(string name, BusSimulator bus, ManualTi
 
     /// <summary>The port is gone (USB adapter pulled): open, write and read throw PortUnavailable.</summary>
     public bool Vanished { get; set; }
+
+    /// <summary>
+    /// This station runs a protocol v1 handler instead of its simulated PLC: it ignores every v2 frame and answers only
+    /// the v1 IDENTIFY probe, with a v1 reply (PROTOCOL_VERSION 01).
+    /// </summary>
+    public Station? V1Handler { get; set; }
 
     /// <summary>Replaces a reply frame before the panel sees it (e.g. a read-back the PLC program changed).</summary>
     public Func<byte[], byte[]>? RewriteReply { get; set; }
@@ -62,7 +71,7 @@ internal sealed class SimulatedTransport(string name, BusSimulator bus, ManualTi
     public Task WriteAsync(ReadOnlyMemory<byte> data, CancellationToken cancellationToken)
     {
         ThrowIfVanished();
-        var replies = bus.Feed(data.Span);
+        var replies = V1Handler is { } v1 && IsFor(data.Span, v1) ? V1Answer(data.Span, v1) : bus.Feed(data.Span);
         lock (_lock)
         {
             _sent.Add(data.ToArray());
@@ -126,6 +135,18 @@ internal sealed class SimulatedTransport(string name, BusSimulator bus, ManualTi
     {
         IsOpen = false;
         return ValueTask.CompletedTask;
+    }
+
+    private static bool IsFor(ReadOnlySpan<byte> frame, Station station) =>
+        frame.Length > 3 && Convert.ToByte(Encoding.ASCII.GetString(frame[1..3]), 16) == station.Address;
+
+    /// <summary>The v1 reply to the v1 probe (its sequence echoed), nothing for any v2 frame: a v1 handler's check rejects them.</summary>
+    private static IReadOnlyList<byte[]> V1Answer(ReadOnlySpan<byte> frame, Station station)
+    {
+        var sequence = Convert.ToByte(Encoding.ASCII.GetString(frame[3..5]), 16);
+        return frame.SequenceEqual(V1IdentifyProbe.Encode(station, sequence))
+            ? [V1IdentifyProbe.Frame([(byte)station.Address, sequence, 0x81, 0x00, 0x01, 0x01, 0x03, 0x01, 0x0E, 0x77, 0x05, 0x20, 0x01, 0x00, 0x05, 0x00, 0x03, 0x00, 0x09])]
+            : [];
     }
 
     private void ThrowIfVanished()

@@ -100,6 +100,22 @@ public sealed class GenerateCodeViewModelTests : IDisposable
         generate.Message.Should().Be($"Saved Filler-handler.awl, Filler-symbols.txt, Filler-README.txt in {_folder.Path}.");
     }
 
+    [Theory]
+    [InlineData(true)]
+    [InlineData(false)]
+    public void Generate_StationAllowStop_TheHandlerCarriesStopAsTheProjectSays(bool allowStop)
+    {
+        var cpu = CpuProfiles.For(CpuModel.Cpu224);
+        var project = PanelFixture.Project(cpu: cpu);
+        var generate = new GenerateCodeViewModel(project with { Stations = [project.Stations[0] with { AllowStop = allowStop }] }, 0, _files);
+
+        generate.GenerateCommand.Execute(null);
+
+        generate.Preview.Should().Be(HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu, Station = 2, AllowStop = allowStop }).AwlText);
+        generate.Preview.Contains("command 07 STOP", StringComparison.Ordinal).Should().Be(allowStop);
+        generate.StopText.Should().StartWith(allowStop ? "included" : "not included");
+    }
+
     [Fact]
     public void Save_SettingChangedAfterGenerate_DisabledUntilGeneratedAgain()
     {

@@ -121,6 +121,36 @@ public sealed class LinkStepViewModelTests
         transport.AssertComplete();
     }
 
+    [Fact]
+    public async Task TestConnection_StationRunsAV1Handler_SaysRegenerateThePlcCode()
+    {
+        var clock = new ManualTimeProvider();
+        var request = Encoding.ASCII.GetString(RequestCodec.Encode(new IdentifyRequest(new Station(2), 1)));
+        var v1Reply = Encoding.ASCII.GetString(Core.Protocol.V1.V1IdentifyProbe.Frame(
+            [0x02, 0x02, 0x81, 0x00, 0x01, 0x01, 0x03, 0x01, 0x0E, 0x77, 0x05, 0x20, 0x01, 0x00, 0x05, 0x00, 0x03, 0x00, 0x09]));
+        var transport = new ScriptedTransport($"""
+            > "{request}"   // IDENTIFY station 2: a v1 handler ignores it
+            < no response
+            > "{request}"
+            < no response
+            > "<02020101>"   // the v1 IDENTIFY probe
+            < "{v1Reply}"    // answered: PROTOCOL_VERSION 01
+            """, clock, "COM3");
+        var link = Wizard(new LinkConnectionTester(_ => transport, clock)).LinkStep;
+
+        var test = link.TestConnectionCommand.ExecuteAsync(null);
+        for (var step = 0; step < 1000 && !test.IsCompleted; step++)
+        {
+            clock.Advance(TimeSpan.FromMilliseconds(5));
+            await Task.Yield();
+        }
+
+        await test;
+        link.TestSucceeded.Should().BeFalse();
+        link.TestResult.Should().Be($"{Where}: station 2 runs Operator Panel handler protocol v1: regenerate the PLC code (opanel generate) and download it.");
+        transport.AssertComplete();
+    }
+
     private ProjectWizardViewModel Wizard(IConnectionTester? tester = null) => new(tester ?? _tester, new FakePortCatalog());
 
     private static IdentifyResponse Identify(CpuModel model, byte smb6) =>

@@ -120,6 +120,27 @@ public sealed class ProjectWizardViewModelTests
             .Should().Be(ProjectFile.Format(original));
     }
 
+    [Theory]
+    [InlineData(true)]
+    [InlineData(false)]
+    public void Edit_StationAllowStop_IsPrefilledAndKeptOrChanged(bool allowStop)
+    {
+        var original = AlarmProject.Create();
+        original = original with { Stations = [original.Stations[0] with { AllowStop = allowStop }] };
+        var wizard = new ProjectWizardViewModel(original, 0, new FakeConnectionTester(), new FakePortCatalog());
+
+        var prefilled = wizard.CpuStep.AllowStop;
+        wizard.FinishCommand.Execute(null);
+        var kept = wizard.Result!.Stations[0].AllowStop;
+        var again = new ProjectWizardViewModel(original, 0, new FakeConnectionTester(), new FakePortCatalog());
+        again.CpuStep.AllowStop = !allowStop;
+        again.FinishCommand.Execute(null);
+
+        prefilled.Should().Be(allowStop);
+        kept.Should().Be(allowStop, "editing a project never drops its STOP setting");
+        again.Result!.Stations[0].AllowStop.Should().Be(!allowStop);
+    }
+
     [Fact]
     public void Finish_EarlierStepBrokenAfterLeavingIt_GoesBackThereWithAMessage()
     {

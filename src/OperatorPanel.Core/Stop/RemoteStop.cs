@@ -1,0 +1,124 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
+using Serilog;
+using Serilog.Core;
+
+namespace OperatorPanel.Core.Stop;
+
+/// <summary>
+/// Puts a station into STOP (docs/protocol.md, "07 STOP"), the way the CLI and the panel both do it: IDENTIFY first
+/// (nothing is sent unless FEATURES bit 0 says the handler carries STOP), then 07 once, never repeated, then IDENTIFY
+/// again. A CPU in STOP speaks PPI and answers no Freeport frame, so silence after STOP is the confirmation and an
+/// answer means it still runs; a lost reply is settled the same way, as a lost write reply is settled by reading back.
+/// Every attempt is logged like a write: "Station 2 RUN -> STOP by operator" with its outcome.
+/// </summary>
+public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
+{
+    private readonly IPlcLink _link = link ?? throw new ArgumentNullException(nameof(link));
+    private readonly ILogger _log = (logger ?? Logger.None).ForContext<RemoteStop>();
+
+    public async Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default)
+    {
+        var outcome = await CheckAsync(station, cancellationToken).ConfigureAwait(false);
+        if (outcome is null)
+        {
+            _log.Information("Station {Station} RUN -> STOP by operator: sending STOP", station.Address);
+            var sent = await _link.ExchangeOnceAsync(new StopRequest(station), cancellationToken).ConfigureAwait(false);
+            outcome = await JudgeAsync(station, sent, cancellationToken).ConfigureAwait(false);
+        }
+
+        if (outcome.IsStopped)
+        {
+            _log.Information("Station {Station} RUN -> STOP by operator: {Outcome:l}", station.Address, outcome.Text);
+        }
+        else
+        {
+            _log.Warning("Station {Station} RUN -> STOP by operator: {Outcome:l}", station.Address, outcome.Text);
+        }
+
+        return outcome;
+    }
+
+    /// <summary>Null when the station answers IDENTIFY and its handler carries STOP; else why nothing may be sent.</summary>
+    private async Task<StopOutcome?> CheckAsync(Station station, CancellationToken cancellationToken)
+    {
+        try
+        {
+            return await _link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false) switch
+            {
+                IdentifyResponse { StopEnabled: true } => null,
+                IdentifyResponse => new StopOutcome.NotInHandler(station),
+                ErrorResponse refused => new StopOutcome.NotSent(station, $"IDENTIFY refused: {ProtocolErrorText.Describe(refused.Error)}"),
+                var other => new StopOutcome.NotSent(station, $"IDENTIFY answered with a {other.Command} reply"),
+            };
+        }
+        catch (PlcCommunicationException failure)
+        {
+            return new StopOutcome.NotSent(station, failure.Message);
+        }
+    }
+
+    private async Task<StopOutcome> JudgeAsync(Station station, OnceReply sent, CancellationToken cancellationToken)
+    {
+        switch (sent)
+        {
+            case OnceReply.Answered { Response: StopResponse }:
+                var check = await CheckSilenceAsync(station, cancellationToken).ConfigureAwait(false);
+                return check.Answers switch
+                {
+                    true => new StopOutcome.NotExecuted(station),
+                    false => new StopOutcome.Stopped(station),
+                    null => new StopOutcome.Unknown(station, "the STOP reply came but the IDENTIFY after it failed", check.Failure),
+                };
+            case OnceReply.Answered { Response: ErrorResponse refused }:
+                return new StopOutcome.Refused(station, ProtocolErrorText.Describe(refused.Error));
+            case OnceReply.Answered answered:
+                return await SettleLostAsync(station, $"a {answered.Response.Command} reply came instead", cancellationToken).ConfigureAwait(false);
+            case OnceReply.NotSent notSent:
+                return new StopOutcome.NotSent(station, notSent.Failure.Message);
+            case OnceReply.ReplyLost lost:
+                return await SettleLostAsync(station, lost.Cause, cancellationToken).ConfigureAwait(false);
+            default:
+                throw new ArgumentOutOfRangeException(nameof(sent), sent, null);
+        }
+    }
+
+    private async Task<StopOutcome> SettleLostAsync(Station station, string cause, CancellationToken cancellationToken)
+    {
+        var check = await CheckSilenceAsync(station, cancellationToken).ConfigureAwait(false);
+        return check.Answers switch
+        {
+            true => new StopOutcome.NotStopped(station, cause),
+            false => new StopOutcome.StoppedReplyLost(station, cause),
+            null => new StopOutcome.Unknown(station, cause, check.Failure),
+        };
+    }
+
+    /// <summary>
+    /// One IDENTIFY, with the link's retries so that one lost reply is not taken for a STOP. Answers is true when
+    /// anything answered it, false when the station stayed silent, null when the link failed otherwise (the port gone,
+    /// garbled replies), with the failure.
+    /// </summary>
+    private async Task<SilenceCheck> CheckSilenceAsync(Station station, CancellationToken cancellationToken)
+    {
+        try
+        {
+            await _link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
+            return new SilenceCheck(true, string.Empty);
+        }
+        catch (PlcCommunicationException failure)
+        {
+            bool? answers = failure.Kind switch
+            {
+                PlcErrorKind.NoAnswer or PlcErrorKind.Timeout => false,
+                PlcErrorKind.HandlerProtocolV1 or PlcErrorKind.NegativeReply => true,
+                PlcErrorKind.PortUnavailable or PlcErrorKind.FrameCorrupt => null,
+            };
+            return new SilenceCheck(answers, failure.Message);
+        }
+    }
+
+    private readonly record struct SilenceCheck(bool? Answers, string Failure);
+}
