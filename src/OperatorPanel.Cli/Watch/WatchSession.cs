@@ -15,6 +15,12 @@ namespace OperatorPanel.Cli.Watch;
 /// </summary>
 internal sealed class WatchSession : IAsyncDisposable
 {
+    /// <summary>IDENTIFY attempts per station on opening (each with the link's own retries).</summary>
+    private const int IdentifyAttempts = 3;
+
+    private readonly CancellationTokenSource _closing = new();
+    private Task _identifying = Task.CompletedTask;
+
     private WatchSession(ProjectLine line) => Line = line;
 
     public ProjectLine Line { get; }
@@ -41,31 +47,9 @@ internal sealed class WatchSession : IAsyncDisposable
             return (null, ex.Message);
         }
 
-        await IdentifyEveryStationAsync(line, log);
-        return (new WatchSession(line), null);
-    }
-
-    /// <summary>
-    /// IDENTIFY each station once, as the panel does on connecting: the engine learns what the handler has (READ
-    /// CHANGES copies, 09 READ CHANGES OF LISTS) and polls accordingly. A station that does not answer is polled as
-    /// before and shows up offline; a v1 handler's message is logged.
-    /// </summary>
-    private static async Task IdentifyEveryStationAsync(ProjectLine line, ILogger log)
-    {
-        foreach (var station in line.Project.Stations)
-        {
-            try
-            {
-                if (await line.IdentifyAsync(station.Address) is ErrorResponse refused)
-                {
-                    log.Warning("{Station}: IDENTIFY refused: {Error}", station.Address, refused.Error);
-                }
-            }
-            catch (PlcCommunicationException failure)
-            {
-                log.Warning("{Station}: IDENTIFY failed: {Reason}", station.Address, failure.Message);
-            }
-        }
+        var session = new WatchSession(line);
+        session._identifying = IdentifyEveryStationAsync(line, log, session._closing.Token);
+        return (session, null);
     }
 
     /// <summary>
@@ -73,5 +57,58 @@ internal sealed class WatchSession : IAsyncDisposable
     /// </summary>
     public Task RefreshAsync(CancellationToken cancellationToken) => Line.RefreshAsync(cancellationToken);
 
-    public ValueTask DisposeAsync() => Line.DisposeAsync();
+    public async ValueTask DisposeAsync()
+    {
+        await _closing.CancelAsync();
+        try
+        {
+            await _identifying;
+        }
+        catch (OperationCanceledException)
+        {
+            // Closed while a station was still being identified: nothing to keep.
+        }
+
+        _closing.Dispose();
+        await Line.DisposeAsync();
+    }
+
+    /// <summary>
+    /// IDENTIFY each station beside the polling, as the panel does on connecting: the engine learns what the handler has
+    /// (READ CHANGES copies, 09 READ CHANGES OF LISTS) and polls accordingly from then on. Not awaited on opening, so
+    /// a silent station does not hold up the view; it is polled as before and shows up offline. A v1 handler's message
+    /// is logged.
+    /// </summary>
+    private static async Task IdentifyEveryStationAsync(ProjectLine line, ILogger log, CancellationToken cancellationToken)
+    {
+        foreach (var station in line.Project.Stations)
+        {
+            for (var attempt = 1; attempt <= IdentifyAttempts; attempt++)
+            {
+                try
+                {
+                    if (await line.IdentifyAsync(station.Address, cancellationToken) is ErrorResponse refused)
+                    {
+                        log.Warning("{Station}: IDENTIFY refused: {Error}", station.Address, refused.Error);
+                    }
+
+                    break;
+                }
+                catch (PlcCommunicationException failure) when (failure.Kind == PlcErrorKind.HandlerProtocolV1 || attempt == IdentifyAttempts)
+                {
+                    log.Warning("{Station}: IDENTIFY failed: {Reason}", station.Address, failure.Message);
+                    break;
+                }
+                catch (InvalidOperationException notConnected)
+                {
+                    log.Warning("{Station}: not identified: {Reason}", station.Address, notConnected.Message);
+                    break;
+                }
+                catch (PlcCommunicationException failure)
+                {
+                    log.Debug("{Station}: IDENTIFY attempt {Attempt} failed: {Reason}", station.Address, attempt, failure.Message);
+                }
+            }
+        }
+    }
 }
