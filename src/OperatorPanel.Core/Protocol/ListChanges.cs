@@ -20,24 +20,7 @@ public sealed record ListChanges(int List, bool Reread, ImmutableArray<ChangedBy
     public bool TryApply(ReadOnlySpan<byte> previous, out ImmutableArray<byte> current)
     {
         current = default;
-        if (Reread)
-        {
-            return false;
-        }
-
-        var bytes = previous.ToArray();
-        foreach (var change in Changes)
-        {
-            if (change.Index >= bytes.Length)
-            {
-                return false;
-            }
-
-            bytes[change.Index] = change.Value;
-        }
-
-        current = [.. bytes];
-        return true;
+        return !Reread && ChangedByte.TryApply(previous, Changes, out current);
     }
 
     public bool Equals(ListChanges? other) =>

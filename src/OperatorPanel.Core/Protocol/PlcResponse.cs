@@ -122,20 +122,7 @@ public sealed record ReadChangesResponse(Station Station, byte Sequence, bool Fu
             return true;
         }
 
-        var bytes = previous.ToArray();
-        current = default;
-        foreach (var change in Changes)
-        {
-            if (change.Index >= bytes.Length)
-            {
-                return false;
-            }
-
-            bytes[change.Index] = change.Value;
-        }
-
-        current = [.. bytes];
-        return true;
+        return ChangedByte.TryApply(previous, Changes, out current);
     }
 
     public bool Equals(ReadChangesResponse? other) =>
