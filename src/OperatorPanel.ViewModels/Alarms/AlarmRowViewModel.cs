@@ -28,8 +28,17 @@ public sealed class AlarmRowViewModel : ObservableObject
 
     public AlarmState State => _status.State;
 
-    /// <summary>"active unacknowledged", as the operator reads it.</summary>
-    public string StateText => AlarmCsv.Words(_status.State.ToString());
+    /// <summary>
+    /// "active unacknowledged", as the operator reads it. An alarm that needs no acknowledgement reads "active" (not
+    /// "active acknowledged": nobody acknowledged it), and one never raised (in this session or the loaded history) reads
+    /// "not raised".
+    /// </summary>
+    public string StateText => _status switch
+    {
+        { RaisedAt: null, State: AlarmState.Cleared } => "not raised",
+        { Definition.AcknowledgementRequired: false, State: AlarmState.ActiveAcknowledged } => "active",
+        _ => AlarmCsv.Words(_status.State.ToString()),
+    };
 
     public DateTimeOffset? RaisedAt => Local(_status.RaisedAt);
 

@@ -49,6 +49,22 @@ public sealed class AlarmsViewModelTests : IDisposable
     }
 
     [Fact]
+    public void StateText_NeverRaisedAndAlarmWithoutAcknowledgement_ReadAsTheOperatorSeesThem()
+    {
+        using var alarms = Create();
+        var jam = alarms.Rows.Single(r => r.Flag == "M0.0");
+        var lowLevel = alarms.Rows.Single(r => r.Flag == "V10.1");
+
+        jam.StateText.Should().Be("not raised");
+        _values.Publish([.. Bit(Jam, on: true), .. Bit(LowLevel, on: true)]);
+        jam.StateText.Should().Be("active unacknowledged");
+        lowLevel.StateText.Should().Be("active", "nobody acknowledged an alarm that needs no acknowledgement");
+        _values.Publish([.. Bit(Jam, on: false), .. Bit(LowLevel, on: false)]);
+        jam.StateText.Should().Be("cleared unacknowledged");
+        lowLevel.StateText.Should().Be("cleared");
+    }
+
+    [Fact]
     public void AcknowledgeAll_OneActiveOneCleared_AcknowledgesBothAndCountsFollow()
     {
         using var alarms = Create();
