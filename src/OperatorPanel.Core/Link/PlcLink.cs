@@ -160,7 +160,9 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
                 if (response is ErrorResponse negative)
                 {
                     statistics.NegativeReply();
-                    _log.Warning("{Station}: {Command} refused: {Error}", request.Station, request.Command, negative.Error);
+                    // Debug only: the caller says what the refusal means (a READ's station status, a write's outcome),
+                    // and some are expected (the engine's clearing DEFINE LIST).
+                    _log.Debug("{Station}: {Command} refused: {Error}", request.Station, request.Command, negative.Error);
                 }
 
                 _online[request.Station] = true;

@@ -19,7 +19,13 @@ namespace OperatorPanel.Core.Polling;
 public sealed partial class PollingEngine
 {
     private readonly ImmutableDictionary<int, int> _listIds;
+    /// <summary>V 65535: past the end of V on every CPU, so a DEFINE LIST carrying it is always refused (02).</summary>
+    private static readonly ReadItem ClearingItem = new(ProtocolArea.V, ushort.MaxValue, 1);
+
     private readonly HashSet<int> _definedFrames = [];
+
+    /// <summary>Stations sent a DEFINE LIST since the engine started: they may hold any of their lists.</summary>
+    private readonly HashSet<Station> _stationsSentDefine = [];
     private readonly HashSet<int> _plainFrames = [];
     private readonly Dictionary<int, ListCopy> _copies = [];
     private readonly HashSet<Station> _stationsWithoutCopies = [];
@@ -177,12 +183,23 @@ public sealed partial class PollingEngine
 
     /// <summary>
     /// Defines every not yet defined list of the station, in id order, then says whether the frame at
-    /// <paramref name="index"/> is defined. A refused DEFINE (logged once) sends that frame back to plain READ.
+    /// <paramref name="index"/> is defined. Once the station has been sent a DEFINE, it may hold any of its lists (a
+    /// DEFINE whose reply was lost and that the link sent again cleared the others), and a list defined below those
+    /// may not fit: such a round clears the tail first and defines all of the station's lists again, in id order from
+    /// an empty tail (docs/protocol.md, Lists, "The PC's part"). A refused DEFINE (logged once) sends that frame back
+    /// to plain READ.
     /// </summary>
     private async Task<bool> DefineListsAsync(Station station, int index, CancellationToken cancellationToken)
     {
         var frames = _listIds.Where(l => _plan.Frames[l.Key].Station == station && !_definedFrames.Contains(l.Key) && !_plainFrames.Contains(l.Key))
-            .OrderBy(l => l.Value);
+            .OrderBy(l => l.Value).ToList();
+        if (frames.Count > 0 && !_stationsSentDefine.Add(station))
+        {
+            frames = [.. _listIds.Where(l => _plan.Frames[l.Key].Station == station && !_plainFrames.Contains(l.Key)).OrderBy(l => l.Value)];
+            ForgetLists(station);
+            await ClearListsAsync(station, frames.Select(f => f.Value), cancellationToken).ConfigureAwait(false);
+        }
+
         foreach (var (frameIndex, list) in frames)
         {
             var frame = _plan.Frames[frameIndex];
@@ -200,6 +217,18 @@ public sealed partial class PollingEngine
         }
 
         return _definedFrames.Contains(index);
+    }
+
+    /// <summary>
+    /// Empties the station's list tail: a DEFINE LIST of each id with one item past the end of V. A stored id clears
+    /// every list before the item is refused (02); an id not stored is refused and changes nothing.
+    /// </summary>
+    private async Task ClearListsAsync(Station station, IEnumerable<int> lists, CancellationToken cancellationToken)
+    {
+        foreach (var list in lists)
+        {
+            await _link.ExchangeAsync(new DefineListRequest(station, list, [ClearingItem]), cancellationToken).ConfigureAwait(false);
+        }
     }
 
     /// <summary>The handler cleared all of the station's lists and dropped their copies.</summary>

@@ -249,6 +249,17 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
 
                 lock (_lock)
                 {
+                    // A redefinition clears every list of the station first, whatever the item checks say (docs/protocol.md).
+                    if (_lists.ContainsKey((define.Station, define.List)))
+                    {
+                        ClearLists(define.Station);
+                    }
+
+                    if (define.Items.Any(i => i.Offset + i.Length > AreaSize))
+                    {
+                        return Error(request, ProtocolError.AddressOutOfRange);
+                    }
+
                     _lists[(define.Station, define.List)] = define.Items;
                     _copies.Remove((define.Station, define.List));
                 }

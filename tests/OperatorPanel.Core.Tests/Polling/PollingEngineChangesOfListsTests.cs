@@ -249,7 +249,7 @@ public sealed class PollingEngineChangesOfListsTests
 
         var cycle = await CycleAsync(engine);
 
-        cycle.Requests.Should().Equal("09 1+2", "define 1", "define 2", "08 1 full", "08 2 full");
+        cycle.Requests.Should().Equal("09 1+2", "clear 1", "clear 2", "define 1", "define 2", "08 1 full", "08 2 full");
         cycle.Result.FramesFailed.Should().Be(0);
     }
 
@@ -293,6 +293,7 @@ public sealed class PollingEngineChangesOfListsTests
 
     private static string Describe(PlcRequest request) => request switch
     {
+        DefineListRequest define when define.Items[0].Offset == ushort.MaxValue => $"clear {define.List}",
         DefineListRequest define => $"define {define.List}",
         ReadChangesRequest changes => $"08 {changes.List}{(changes.Full ? " full" : string.Empty)}",
         ReadChangesOfListsRequest lists => $"09 {string.Join("+", lists.Lists)}",

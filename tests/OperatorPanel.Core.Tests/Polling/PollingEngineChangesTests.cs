@@ -146,10 +146,11 @@ public sealed class PollingEngineChangesTests
 
         _link.Requests.Skip(before).Select(r => r switch
         {
+            DefineListRequest d when d.Items[0].Offset == ushort.MaxValue => $"clear {d.List}",
             DefineListRequest d => $"define {d.List}",
             ReadChangesRequest c => $"changes {c.List}{(c.Full ? " full" : string.Empty)}",
             _ => r.Command.ToString(),
-        }).Should().Equal("changes 1", "define 1", "define 2", "changes 1 full", "changes 2 full");
+        }).Should().Equal("changes 1", "clear 1", "clear 2", "define 1", "define 2", "changes 1 full", "changes 2 full");
     }
 
     private static IdentifyResponse Identity(Station station, byte features, byte copyBytes) =>

@@ -44,10 +44,35 @@ public sealed class PollingEngineListTests
 
         var result = await engine.RunCycleAsync(CancellationToken.None);
 
-        _link.Requests.Skip(2).Select(r => r.Command).Should().Equal(CommandCode.ReadChanges, CommandCode.DefineList, CommandCode.ReadChanges);
+        _link.Requests.Skip(2).Select(r => r.Command).Should().Equal(CommandCode.ReadChanges, CommandCode.DefineList, CommandCode.DefineList, CommandCode.ReadChanges);
+        _link.Requests.OfType<DefineListRequest>().Skip(1).Select(d => d.Items[0].Offset).Should().Equal([ushort.MaxValue, 0], "the tail is cleared before the list is defined again");
         _link.Requests.OfType<ReadChangesRequest>().Last().Full.Should().BeTrue("a list defined again has no valid copy");
         result.Should().Match<PollResult>(r => r.FramesSent == 1 && r.FramesFailed == 0);
         Value(engine, One, "VB0").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x5A);
+    }
+
+    [Fact]
+    public async Task RunCycle_DefineRepeatedAfterALostReplyClearedTheOtherList_ClearsTheTailAndDefinesBothAgain()
+    {
+        var items = Enumerable.Range(0, 26).Select(i => Item(One, $"VB{i * 10}")).ToArray();
+        var engine = Engine(items);
+        engine.Plan.ListCount.Should().Be(2);
+        await engine.RunCycleAsync(CancellationToken.None);
+
+        // What the link's resend of a DEFINE 2 whose reply was lost leaves: list 2 defined again, list 1 cleared by it.
+        var list2 = _link.Requests.OfType<DefineListRequest>().Single(d => d.List == 2);
+        _link.ClearLists(One);
+        await _link.ExchangeAsync(list2, CancellationToken.None);
+        var before = _link.Requests.Count;
+
+        var result = await engine.RunCycleAsync(CancellationToken.None);
+
+        _link.Requests.Skip(before).OfType<DefineListRequest>().Select(d => d.Items[0].Offset == ushort.MaxValue ? $"clear {d.List}" : $"define {d.List}")
+            .Should().Equal("clear 1", "clear 2", "define 1", "define 2");
+        result.FramesFailed.Should().Be(0);
+        var after = _link.Requests.Count;
+        await engine.RunCycleAsync(CancellationToken.None);
+        _link.Requests.Skip(after).Should().NotContain(r => r is DefineListRequest || r is ReadRequest, "both lists are stored and polled again");
     }
 
     [Fact]
