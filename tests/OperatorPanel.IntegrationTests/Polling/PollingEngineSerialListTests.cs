@@ -46,7 +46,8 @@ public sealed partial class PollingEngineSerialListTests
         write.Should().BeOfType<WriteBlockResponse>();
         plc.Lists.Floor.Should().BeLessThan(256, "the lists were defined again");
         result.FramesFailed.Should().Be(0);
-        Commands(rig.Tap.Received).Skip(before).Take(3).Should().Equal(CommandCode.ReadChanges, CommandCode.DefineList, CommandCode.ReadChanges);
+        Commands(rig.Tap.Received).Skip(before).Take(4).Should().Equal(
+            [CommandCode.ReadChanges, CommandCode.DefineList, CommandCode.DefineList, CommandCode.ReadChanges], "07, the clearing DEFINE, the DEFINE, READ CHANGES FULL");
         rig.Value(plc, "VD100").Raw.Should().Equal(0x00, 0x74, 0xCB, 0xB1);
         rig.Value(plc, "VW2000").Raw.Should().Equal(0x12, 0x34);
     }
