@@ -108,14 +108,7 @@ public sealed class LinkStepViewModelTests
             """, clock, "COM3");
         var link = Wizard(new LinkConnectionTester(_ => transport, clock)).LinkStep;
 
-        var test = link.TestConnectionCommand.ExecuteAsync(null);
-        for (var step = 0; step < 1000 && !test.IsCompleted; step++)
-        {
-            clock.Advance(TimeSpan.FromMilliseconds(5));
-            await Task.Yield();
-        }
-
-        await test;
+        await RunOnTheClockAsync(link.TestConnectionCommand.ExecuteAsync(null), clock);
         link.TestSucceeded.Should().BeFalse();
         link.TestResult.Should().StartWith($"{Where}: no answer.").And.Contain("no valid reply to Identify after 2 attempts");
         transport.AssertComplete();
@@ -138,14 +131,7 @@ public sealed class LinkStepViewModelTests
             """, clock, "COM3");
         var link = Wizard(new LinkConnectionTester(_ => transport, clock)).LinkStep;
 
-        var test = link.TestConnectionCommand.ExecuteAsync(null);
-        for (var step = 0; step < 1000 && !test.IsCompleted; step++)
-        {
-            clock.Advance(TimeSpan.FromMilliseconds(5));
-            await Task.Yield();
-        }
-
-        await test;
+        await RunOnTheClockAsync(link.TestConnectionCommand.ExecuteAsync(null), clock);
         link.TestSucceeded.Should().BeFalse();
         link.TestResult.Should().Be($"{Where}: station 2 runs Operator Panel handler protocol v1: regenerate the PLC code (opanel generate) and download it.");
         transport.AssertComplete();
@@ -155,4 +141,16 @@ public sealed class LinkStepViewModelTests
 
     private static IdentifyResponse Identify(CpuModel model, byte smb6) =>
         new(new Station(2), 1, HandlerIdentity.ProtocolVersion, 1, HandlerIdentity.CpuModelCode(model), 1, 0x3C, HandlerIdentity.MaxReadData, 5, smb6, 0x01, 3, 2, 9, 0, 7764, 428, 0, 120);
+
+    /// <summary>Advances the manual clock in 5 ms steps until the test connection has waited out its timeouts.</summary>
+    private static async Task RunOnTheClockAsync(Task test, ManualTimeProvider clock)
+    {
+        for (var step = 0; step < 1000 && !test.IsCompleted; step++)
+        {
+            clock.Advance(TimeSpan.FromMilliseconds(5));
+            await Task.Yield();
+        }
+
+        await test;
+    }
 }
