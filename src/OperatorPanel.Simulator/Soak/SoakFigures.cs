@@ -70,7 +70,7 @@ public sealed record SoakFigures
     /// <summary>Lines run side by side (own pty pairs, PLC and seed each), counted together.</summary>
     public int Lines { get; init; } = 1;
 
-    /// <summary>Lines whose handler answered one of the first IDENTIFY attempts, so that their lists were polled with 09.</summary>
+    /// <summary>Lines whose handler answered one of the IDENTIFY attempts, so that from then on their lists were polled with 09.</summary>
     public int LinesIdentified { get; init; }
 
     public bool ZerosHold => WrongValuesShownGood == 0 && FalseConfirmations == 0 && WritesOutOfOrder == 0;

@@ -125,9 +125,13 @@ public static class SoakSession
     private sealed class SoakWork(SoakSetup setup, PollingEngine engine, PlcLink link, TimeProvider time)
     {
         /// <summary>IDENTIFY attempts before the run goes on without: at 1% flips its 62-character reply rarely survives.</summary>
-        private const int IdentifyAttempts = 5;
+        private const int IdentifyAttempts = 30;
+
+        /// <summary>Until identified, one step in this many is an IDENTIFY, so the attempts spread over the run.</summary>
+        private const int IdentifyEvery = 8;
 
         private int _identifyAttempts;
+        private int _steps;
 
         public List<SoakWrite> Writes { get; } = [];
 
@@ -150,7 +154,7 @@ public static class SoakSession
                 }
 
                 var stepStart = time.GetTimestamp();
-                if (!Identified && _identifyAttempts < IdentifyAttempts)
+                if (!Identified && _identifyAttempts < IdentifyAttempts && _steps++ % IdentifyEvery == 0)
                 {
                     await IdentifyAsync(cancellationToken).ConfigureAwait(false);
                 }
