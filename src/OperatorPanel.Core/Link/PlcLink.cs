@@ -3,6 +3,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 using Serilog;
+using Serilog.Events;
 
 namespace OperatorPanel.Core.Link;
 
@@ -181,6 +182,8 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             }
         }
 
+        // Warning once when a station falls silent; while it stays silent each further failure is Debug (callers report state).
+        var wasOnline = !_online.TryGetValue(request.Station, out var known) || known;
         _online[request.Station] = false;
         var kind = lastFailure!.Kind == PlcErrorKind.Timeout ? PlcErrorKind.NoAnswer : PlcErrorKind.FrameCorrupt;
         var attempts = ActsOnProcess(request.Command) ? "sent once, never repeated" : $"after {retries + 1} attempts";
@@ -190,7 +193,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             return new ExchangeResult(null, new PlcCommunicationException(PlcErrorKind.HandlerProtocolV1, request.Station, HandlerV1.Message(request.Station)), Sent: true, CorruptedCopy: false);
         }
 
-        _log.Warning("{Message}", message);
+        _log.Write(wasOnline ? LogEventLevel.Warning : LogEventLevel.Debug, "{Message}", message);
         return new ExchangeResult(null, new PlcCommunicationException(kind, request.Station, message), Sent: true, corruptedCopy);
     }
 

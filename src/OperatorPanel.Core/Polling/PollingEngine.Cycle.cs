@@ -24,7 +24,7 @@ public sealed partial class PollingEngine
         PollResult? result = null;
         try
         {
-            result = await PollAllAsync(++_cycleCount, started, cancellationToken).ConfigureAwait(false);
+            result = await PollAllAsync(++_cycleCount, started, asked: waiters.Count > 0, cancellationToken).ConfigureAwait(false);
             lock (_gate) { _lastResult = result; }
             waiters.ForEach(w => w.TrySetResult(result));
             return result;
@@ -38,7 +38,7 @@ public sealed partial class PollingEngine
         }
     }
 
-    private async Task<PollResult> PollAllAsync(long cycle, DateTimeOffset started, CancellationToken cancellationToken)
+    private async Task<PollResult> PollAllAsync(long cycle, DateTimeOffset started, bool asked, CancellationToken cancellationToken)
     {
         var reads = new FrameRead[_plan.Frames.Length];
         int sent = 0, failed = 0, writes = 0;
@@ -47,6 +47,13 @@ public sealed partial class PollingEngine
         {
             string? offlineError = null;
             writes += await ExecutePendingWritesAsync(cancellationToken).ConfigureAwait(false);
+            if (!asked && IsResting(station, started) is { } restingError)
+            {
+                MarkFramesOffline(station, reads, restingError);
+                changes.AddRange(ApplyReads(station, reads));
+                continue;
+            }
+
             var servedByChangesOfLists = await ReadChangesOfListsAsync(station, reads, cancellationToken).ConfigureAwait(false);
             sent += servedByChangesOfLists.Count;
             for (var i = 0; i < _plan.Frames.Length; i++)

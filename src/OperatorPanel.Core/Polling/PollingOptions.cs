@@ -1,6 +1,6 @@
 namespace OperatorPanel.Core.Polling;
 
-/// <summary>How the polling engine reads stored lists (docs/protocol.md, READ CHANGES, "PC rules").</summary>
+/// <summary>How the polling engine reads stored lists (docs/protocol.md, READ CHANGES, "PC rules") and how often it tries an offline station.</summary>
 public sealed record PollingOptions
 {
     /// <summary>
@@ -14,4 +14,13 @@ public sealed record PollingOptions
     /// copy (protocol rule 3: at least every 10 s).
     /// </summary>
     public TimeSpan FullReadInterval { get; init; } = TimeSpan.FromSeconds(10);
+
+    /// <summary>
+    /// In continuous refresh, an offline station (or one the panel stopped) on a bus where another station answers is
+    /// tried once per this interval instead of every cycle: each try costs the bus its reply time-outs, which would slow
+    /// every other station's refresh. When no station of the bus answers, each is tried every cycle (nobody waits,
+    /// and a returning cable shows at once); a refresh someone asked for (<see cref="PollingEngine.RequestRefreshAsync"/>,
+    /// F5) tries every station.
+    /// </summary>
+    public TimeSpan OfflineRetryInterval { get; init; } = TimeSpan.FromSeconds(5);
 }

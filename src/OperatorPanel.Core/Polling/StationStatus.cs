@@ -8,12 +8,14 @@ namespace OperatorPanel.Core.Polling;
 /// <param name="LastError">The latest failure or refusal, kept after recovery so the user can read it; null if none yet.</param>
 /// <param name="ConsecutiveFailures">Exchanges without a valid reply since the last one that had one.</param>
 /// <param name="LastReplyAt">Time of the last valid reply.</param>
+/// <param name="LastFailureAt">Time of the last exchange that brought no valid reply.</param>
 public sealed record StationStatus(
     Station Station,
     StationState State,
     string? LastError,
     int ConsecutiveFailures,
-    DateTimeOffset? LastReplyAt)
+    DateTimeOffset? LastReplyAt,
+    DateTimeOffset? LastFailureAt = null)
 {
     public static StationStatus Initial(Station station) => new(station, StationState.Unknown, null, 0, null);
 }

@@ -5,8 +5,9 @@ using Serilog;
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
-/// Per-station link state. Every failure is logged: at Warning when the station goes offline or the error text
-/// changes, at Debug when the same failure repeats cycle after cycle (an unplugged PLC must not flood the log).
+/// Per-station link state. Every failure is logged: at Warning when the station goes offline, or when the error text
+/// changes while it is not offline; at Debug while it stays offline (an unplugged PLC must not flood the log, whatever
+/// request each cycle happens to lose).
 /// </summary>
 internal sealed class StationTracker(TimeProvider time, ILogger logger)
 {
@@ -69,13 +70,14 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
             State = offline && !stopped ? StationState.Offline : before.State,
             LastError = stopped ? before.LastError : message,
             ConsecutiveFailures = before.ConsecutiveFailures + 1,
+            LastFailureAt = time.GetUtcNow(),
         };
         Store(after);
         if (exception is not PlcCommunicationException)
         {
             logger.Error(exception, "{Station}: unexpected link exception, polling continues", station.Address);
         }
-        else if (!stopped && (after.State != before.State || message != before.LastError))
+        else if (!stopped && (after.State != before.State || (after.State != StationState.Offline && message != before.LastError)))
         {
             logger.Warning("{Station}: {Error} ({State})", station.Address, message, after.State);
         }
@@ -91,7 +93,7 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
     public void RecordStoppedByPanel(Station station)
     {
         Store(Get(station) with { State = StationState.StoppedByPanel, LastError = "stopped by the panel" });
-        logger.Information("Station {Station} stopped by the panel: polled once per cycle until it answers again", station.Address);
+        logger.Information("Station {Station} stopped by the panel: tried until it answers again, less often while others on the bus answer", station.Address);
     }
 
     /// <summary>A reply came but did not fit the request; the station is answering, so it stays as it was.</summary>

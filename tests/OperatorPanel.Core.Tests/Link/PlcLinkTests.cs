@@ -5,6 +5,7 @@ using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Protocol.V1;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.TestKit;
+using Serilog.Events;
 
 namespace OperatorPanel.Core.Tests.Link;
 
@@ -82,6 +83,28 @@ public sealed class PlcLinkTests
         thrown.Which.Message.Should().Contain("station 2 on scripted: no valid reply to Read after 3 attempts");
         link.IsOnline(Station2).Should().BeFalse();
         link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 3, Replies = 0, Retries = 2, Timeouts = 3 });
+    }
+
+    [Fact]
+    public async Task Exchange_StationStaysSilent_WarnsWhenItFallsSilentThenLogsFurtherFailuresAtDebug()
+    {
+        var clock = new ManualTimeProvider();
+        var second = Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x02 }));
+        var transport = new ScriptedTransport(string.Join('\n', new[] { Request, second }.SelectMany(frame => Enumerable.Repeat($"""
+            > "{frame}"
+            < no response
+            """, 3))), clock);
+        var (log, sink) = CollectingSink.CreateLogger();
+        var link = new PlcLink(transport, LinkOptions.For(Some.SerialSettings()) with { Retries = 2, InterFrameGap = TimeSpan.Zero }, clock, log);
+
+        for (var i = 0; i < 2; i++)
+        {
+            var act = () => link.ExchangeAsync(ReadMb0, default);
+            await act.Should().ThrowAsync<PlcCommunicationException>();
+        }
+
+        var failures = sink.Events.Where(e => e.RenderMessage().Contains("no valid reply to Read")).Select(e => e.Level);
+        failures.Should().Equal(LogEventLevel.Warning, LogEventLevel.Debug);
     }
 
     [Fact]

@@ -128,6 +128,7 @@ public sealed class PollingEngineTests
         _log.Events.Should().Contain(e => e.Level == LogEventLevel.Error && e.Exception is InvalidOperationException);
 
         _link.Throw(One, null);
+        _clock.Advance(new PollingOptions().OfflineRetryInterval);
         await engine.RunCycleAsync(CancellationToken.None);
 
         engine.TryGetValue(One, PlcAddress.Parse("VB0"), out var recovered).Should().BeTrue();

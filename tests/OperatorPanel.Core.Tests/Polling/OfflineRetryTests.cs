@@ -1,0 +1,143 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
+using Serilog.Events;
+using static OperatorPanel.Core.Tests.Polling.PollingSome;
+
+namespace OperatorPanel.Core.Tests.Polling;
+
+/// <summary>A silent station on a bus where another answers is tried once per OfflineRetryInterval, not every cycle.</summary>
+public sealed class OfflineRetryTests
+{
+    private static readonly TimeSpan Interval = TimeSpan.FromSeconds(5);
+    private readonly PollingTestClock _clock = new();
+    private readonly PollingLogSink _log = new();
+    private readonly FakePlcLink _link;
+    private readonly PollingEngine _engine;
+
+    public OfflineRetryTests()
+    {
+        _link = new FakePlcLink(_clock);
+        _link.Set(Two, ProtocolArea.V, 0, 0x21);
+        _engine = new PollingEngine(_link, PollPlanner.Build([Item(One, "VB0"), Item(Two, "VB0")]), _clock, _log.CreateLogger())
+        {
+            UseReadLists = false,
+            Options = new PollingOptions { OfflineRetryInterval = Interval },
+        };
+    }
+
+    [Fact]
+    public async Task Cycle_SilentStationWhileAnotherAnswers_IsTriedOncePerIntervalAndTheOtherEveryCycle()
+    {
+        _link.Throw(One, NoAnswer(One));
+
+        await _engine.RunCycleAsync(CancellationToken.None);
+        for (var i = 0; i < 4; i++)
+        {
+            _clock.Advance(TimeSpan.FromSeconds(1));
+            await _engine.RunCycleAsync(CancellationToken.None);
+        }
+
+        _link.ExchangesWith(One).Should().Be(1, "four cycles within 5 s of its failure leave it resting");
+        _link.ExchangesWith(Two).Should().Be(5);
+        _engine.TryGetValue(One, PlcAddress.Parse("VB0"), out var resting).Should().BeTrue();
+        resting.Should().Match<PolledValue>(v => v.Quality == ValueQuality.Bad && v.Error == "NoAnswer: station 1 is silent");
+        _engine.GetStationStatus(One).Should().Match<StationStatus>(s => s.State == StationState.Offline && s.ConsecutiveFailures == 1);
+
+        _clock.Advance(TimeSpan.FromSeconds(1));
+        await _engine.RunCycleAsync(CancellationToken.None);
+
+        _link.ExchangesWith(One).Should().Be(2, "5 s after its failure it is tried again");
+        _engine.GetStationStatus(One).ConsecutiveFailures.Should().Be(2);
+    }
+
+    [Fact]
+    public async Task Cycle_RestingStationAnswersAtItsNextTry_IsOnlineAndPolledEveryCycle()
+    {
+        _link.Set(One, ProtocolArea.V, 0, 0x11);
+        await _engine.RunCycleAsync(CancellationToken.None);
+        _link.Throw(One, NoAnswer(One));
+        await _engine.RunCycleAsync(CancellationToken.None);
+        _link.Throw(One, null);
+        _link.Set(One, ProtocolArea.V, 0, 0x12);
+
+        await _engine.RunCycleAsync(CancellationToken.None);
+        _engine.TryGetValue(One, PlcAddress.Parse("VB0"), out var stale).Should().BeTrue();
+        stale.Should().Match<PolledValue>(v => v.Quality == ValueQuality.Stale && v.Raw[0] == 0x11);
+
+        _clock.Advance(Interval);
+        await _engine.RunCycleAsync(CancellationToken.None);
+        await _engine.RunCycleAsync(CancellationToken.None);
+
+        _engine.TryGetValue(One, PlcAddress.Parse("VB0"), out var back).Should().BeTrue();
+        back.Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x12);
+        _engine.GetStationStatus(One).State.Should().Be(StationState.Online);
+        _link.ExchangesWith(One).Should().Be(4, "cycles 1, 2, 4 and 5: only cycle 3 was rested");
+    }
+
+    [Fact]
+    public async Task Cycle_EveryStationSilent_EachIsTriedEveryCycle()
+    {
+        _link.Throw(One, NoAnswer(One));
+        _link.Throw(Two, NoAnswer(Two));
+
+        for (var i = 0; i < 3; i++)
+        {
+            await _engine.RunCycleAsync(CancellationToken.None);
+        }
+
+        _link.ExchangesWith(One).Should().Be(3, "nobody waits on a dead bus, and a returning cable should show at once");
+        _link.ExchangesWith(Two).Should().Be(3);
+    }
+
+    [Fact]
+    public async Task Cycle_RefreshSomeoneAskedFor_TriesTheSilentStationToo()
+    {
+        _link.Throw(One, NoAnswer(One));
+        await _engine.RunCycleAsync(CancellationToken.None);
+        var asked = _engine.RequestRefreshAsync();
+
+        await _engine.RunCycleAsync(CancellationToken.None);
+        await _engine.RunCycleAsync(CancellationToken.None);
+
+        asked.IsCompletedSuccessfully.Should().BeTrue();
+        _link.ExchangesWith(One).Should().Be(2, "the asked-for cycle tries it (F5 after replugging a cable), the next one rests it");
+    }
+
+    [Fact]
+    public async Task Cycle_StationStoppedByPanel_RestsLikeASilentStation()
+    {
+        await _engine.RunCycleAsync(CancellationToken.None);
+        _link.Throw(One, NoAnswer(One));
+        _engine.NoteStoppedByPanel(One);
+        await _engine.RunCycleAsync(CancellationToken.None);
+
+        await _engine.RunCycleAsync(CancellationToken.None);
+
+        _link.ExchangesWith(One).Should().Be(2);
+        _engine.GetStationStatus(One).State.Should().Be(StationState.StoppedByPanel);
+    }
+
+    [Fact]
+    public async Task Cycle_SilentStation_OneWarningWhenItFallsSilentAndOneNoteWhenItRests()
+    {
+        await _engine.RunCycleAsync(CancellationToken.None);
+        _link.Throw(One, NoAnswer(One));
+
+        for (var i = 0; i < 12; i++)
+        {
+            await _engine.RunCycleAsync(CancellationToken.None);
+            _clock.Advance(TimeSpan.FromSeconds(1));
+        }
+
+        _log.Events.Where(e => e.Level == LogEventLevel.Warning).Select(e => e.RenderMessage())
+            .Should().Equal("1: \"NoAnswer: station 1 is silent\" (Offline)");
+        _log.Events.Where(e => e.Level == LogEventLevel.Information).Select(e => e.RenderMessage()).Should().Equal(
+            "Station 1 is silent while others on the bus answer: tried every 5 s so it does not slow their refresh");
+        _link.ExchangesWith(One).Should().Be(4, "cycles 1 and 2, then one try each 5 s: at 6 s and 11 s");
+    }
+
+    private static PlcCommunicationException NoAnswer(Station station) =>
+        new(PlcErrorKind.NoAnswer, station, $"{station} is silent");
+}
