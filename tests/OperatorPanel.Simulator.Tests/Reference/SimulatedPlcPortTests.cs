@@ -48,6 +48,25 @@ public sealed class SimulatedPlcPortTests
     }
 
     [Fact]
+    public void Bus_LongReplyOfOneStation_ClearsTheListsOfAnotherLikeTheStlHandler()
+    {
+        var bus = new BusSimulator();
+        var two = bus.Attach(Plc(2));
+        bus.Attach(Plc(3));
+        // Station 2 stores one list of 2 items (tail 8 bytes: floor 248), then station 3 answers a 116-byte READ:
+        // 18 + 232 = 250 characters reach station 2's buffer past its floor.
+        var define = new DefineListRequest(new Station(2), 1, 1, [new ReadItem(ProtocolArea.V, 0, 1), new ReadItem(ProtocolArea.V, 10, 1)]);
+        Encoding.ASCII.GetString(bus.Feed(RequestCodec.Encode(define)).Single()).Should().StartWith("<02018500");
+
+        var replies = bus.Feed(RequestCodec.Encode(new ReadRequest(new Station(3), 2, [new ReadItem(ProtocolArea.V, 0, 116)])));
+
+        replies.Should().ContainSingle().Which.Length.Should().Be(250);
+        two.ReceivedFrames.Should().Be(3, "its DEFINE LIST, the READ for station 3 and station 3's reply");
+        var read = bus.Feed(RequestCodec.Encode(new ReadListRequest(new Station(2), 3, 1)));
+        Encoding.ASCII.GetString(read.Single()).Should().StartWith("<02038607", "the list was cleared: 07");
+    }
+
+    [Fact]
     public void Bus_TwoStations_OnlyTheAddressedOneAnswers()
     {
         var bus = new BusSimulator();
@@ -58,7 +77,7 @@ public sealed class SimulatedPlcPortTests
 
         replies.Should().ContainSingle();
         Encoding.ASCII.GetString(replies[0]).Should().StartWith("<020781");
-        bus.Ports.Should().OnlyContain(p => p.ReceivedFrames == 1);
+        bus.Ports.Select(p => p.ReceivedFrames).Should().Equal([2, 1], "station 1 received the request and station 2's reply");
     }
 
     [Fact]
