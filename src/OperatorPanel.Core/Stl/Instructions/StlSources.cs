@@ -55,7 +55,7 @@ internal static class StlSources
 
     public const string Bcd = "DE-SH p. 102";
 
-    public const string Decode = "unsourced";
+    public const string Decode = "C233 p. 9-131";
 
     public const string Segment = "unsourced";
 
