@@ -89,7 +89,11 @@ public sealed partial class StlPlc
         SetFlags(InvalidBcd, 0);
     }
 
-    /// <summary>ENCO: the number of the lowest set bit of IN; with no bit set OUT is left as it was (unconfirmed).</summary>
+    /// <summary>
+    /// ENCO: the number of the lowest set bit of IN (C233 p. 9-131 writes it "into the least significant nibble" of OUT;
+    /// whether the upper nibble is cleared, as here, or kept is not said); with no bit set OUT is left as it was
+    /// (unconfirmed).
+    /// </summary>
     private void Encode(StlOp op)
     {
         var value = Read(op.A!, 2);

@@ -39,7 +39,10 @@ public sealed partial class StlPlc
         StlLocKind.Indirect => TryPointer(loc, bytes, out var area, out var offset) ? ReadBytes(area, offset, bytes) : 0,
     };
 
-    /// <summary>A byte or word written to an accumulator replaces its low byte or word only (unconfirmed; the manual's tables allow AC as OUT).</summary>
+    /// <summary>
+    /// A byte or word written to an accumulator replaces its low byte or word (C233 p. 5-10: byte and word access uses
+    /// the least significant 8 or 16 bits); that the upper bytes are kept is unconfirmed, no page says.
+    /// </summary>
     private void Write(StlLoc loc, int bytes, uint value)
     {
         switch (loc.Kind)

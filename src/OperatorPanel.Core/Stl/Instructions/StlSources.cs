@@ -55,7 +55,7 @@ internal static class StlSources
 
     public const string Bcd = "DE-SH p. 102";
 
-    public const string Decode = "unsourced";
+    public const string Decode = "C233 p. 9-131";
 
     public const string Segment = "unsourced";
 
@@ -89,7 +89,7 @@ internal static class StlSources
 
     public const string End = "MWHELP s7-250fn.htm, s7-29khe.htm";
 
-    public const string Stop = "unsourced";
+    public const string Stop = "A5E02 p. 9-146 and MWHELP s7-27sz5.htm (WDR pages: STOP in an interrupt routine)";
 
     public const string Watchdog = "MWHELP s7-27sz5.htm; A5E02 p. 9-146";
 
