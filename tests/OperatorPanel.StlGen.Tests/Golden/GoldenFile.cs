@@ -10,10 +10,14 @@ namespace OperatorPanel.StlGen.Tests.Golden;
 /// </summary>
 internal static class GoldenFile
 {
-    public static void Match(string name, string actual, [CallerFilePath] string caller = "")
+    public static void Match(string name, string actual, [CallerFilePath] string caller = "") =>
+        MatchAt(Path.Combine(Path.GetDirectoryName(caller)!, name), actual);
+
+    /// <summary>The same for a golden file elsewhere in the repository, e.g. another test project's embedded copy.</summary>
+    public static void MatchAt(string path, string actual)
     {
-        var folder = Path.GetDirectoryName(caller)!;
-        var path = Path.Combine(folder, name);
+        var folder = Path.GetDirectoryName(path)!;
+        var name = Path.GetFileName(path);
         var bytes = Encoding.ASCII.GetBytes(actual);
         if (Environment.GetEnvironmentVariable("OPANEL_BLESS") == "1")
         {
