@@ -131,13 +131,17 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             // Counted once the attempt has ended, so a snapshot taken while a frame is in flight does not show a
             // request without its reply or timeout.
             statistics.Request();
-            _log.Verbose(
-                "{Station}: {Command} SEQ {Sequence}, {Characters} characters: {Outcome}",
-                request.Station,
-                request.Command,
-                request.Sequence,
-                frame.Length,
-                outcome.Response?.GetType().Name ?? outcome.Failure?.Message);
+            if (_log.IsEnabled(LogEventLevel.Verbose))
+            {
+                // Guarded: the five arguments would be boxed into an array on every exchange even with Verbose off.
+                _log.Verbose(
+                    "{Station}: {Command} SEQ {Sequence}, {Characters} characters: {Outcome}",
+                    request.Station,
+                    request.Command,
+                    request.Sequence,
+                    frame.Length,
+                    outcome.Response?.GetType().Name ?? outcome.Failure?.Message);
+            }
 
             if (outcome.CorruptedRefusal is { } refusal)
             {
