@@ -24,6 +24,9 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     private readonly byte[] _buffer = new byte[512];
     private readonly ConcurrentDictionary<Station, StationStatistics> _statistics = new();
     private readonly ConcurrentDictionary<Station, bool> _online = new();
+
+    /// <summary>Stations that gave a valid v2 reply on this link: their silence is never a v1 handler's.</summary>
+    private readonly ConcurrentDictionary<Station, bool> _spokeV2 = new();
     private long? _lastExchangeEnd;
     private byte _sequence;
 
@@ -171,6 +174,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
                 }
 
                 _online[request.Station] = true;
+                _spokeV2[request.Station] = true;
                 return new ExchangeResult(response, null, Sent: true, CorruptedCopy: false);
             }
 
@@ -192,7 +196,8 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         var kind = lastFailure!.Kind == PlcErrorKind.Timeout ? PlcErrorKind.NoAnswer : PlcErrorKind.FrameCorrupt;
         var attempts = ActsOnProcess(request.Command) ? "sent once, never repeated" : $"after {retries + 1} attempts";
         var message = $"{request.Station} on {_transport.Name}: no valid reply to {request.Command} {attempts} ({lastFailure.Message})";
-        if (kind == PlcErrorKind.NoAnswer && request is IdentifyRequest identify && await AnswersV1ProbeAsync(identify, statistics, cancellationToken).ConfigureAwait(false))
+        if (kind == PlcErrorKind.NoAnswer && request is IdentifyRequest identify && !_spokeV2.ContainsKey(identify.Station)
+            && await AnswersV1ProbeAsync(identify, statistics, cancellationToken).ConfigureAwait(false))
         {
             return new ExchangeResult(null, new PlcCommunicationException(PlcErrorKind.HandlerProtocolV1, request.Station, HandlerV1.Message(request.Station)), Sent: true, CorruptedCopy: false);
         }

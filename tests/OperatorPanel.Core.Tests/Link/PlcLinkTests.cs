@@ -239,11 +239,9 @@ public sealed class PlcLinkTests
             < no response
             > "{Ascii(RequestCodec.Encode(identify with { Sequence = 0x02 }))}"
             < no response
-            > "{Ascii(V1IdentifyProbe.Encode(Station2, 0x03))}"                   // v1 probe under SEQ 03: silent too
-            < no response
-            > "{Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x04 }))}"    // SEQ 04
+            > "{Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x03 }))}"    // SEQ 03 (no v1 probe: it answered v2)
             < "{Reply(0x99, 0x02)}"                                             // late answer to SEQ 02: skipped
-            < "{Reply(0x30, 0x04)}"
+            < "{Reply(0x30, 0x03)}"
             """, clock);
         var link = NewLink(transport, clock);
 
@@ -254,7 +252,7 @@ public sealed class PlcLinkTests
 
         first.Sequence.Should().Be(0x01);
         ((ReadResponse)third).Data.Should().Equal(0x30);
-        third.Sequence.Should().Be(0x04);
+        third.Sequence.Should().Be(0x03);
         transport.AssertComplete();
     }
 

@@ -52,6 +52,28 @@ public sealed class PlcLinkV1ProbeTests
     }
 
     [Fact]
+    public async Task Identify_SilenceOfAStationThatAnsweredV2Before_SendsNoProbe()
+    {
+        var clock = new ManualTimeProvider();
+        var read = new ReadRequest(Station2, [new ReadItem(ProtocolArea.M, 0, 1)]);
+        var identify = Ascii(RequestCodec.Encode(Identify with { Sequence = 0x02 }));
+        var transport = new ScriptedTransport($"""
+            > "{Ascii(RequestCodec.Encode(read with { Sequence = 0x01 }))}"
+            < "{Ascii(ResponseCodec.Encode(new ReadResponse(Station2, 0x01, [0x05]), read with { Sequence = 0x01 }))}"
+            > "{identify}"
+            < no response                                        // e.g. the IDENTIFY that confirms a STOP
+            """, clock);
+        var link = NewLink(transport, clock);
+        await link.ExchangeAsync(read, default);
+
+        var thrown = await link.Invoking(l => l.ExchangeAsync(Identify, default)).Should().ThrowAsync<PlcCommunicationException>();
+
+        thrown.Which.Kind.Should().Be(PlcErrorKind.NoAnswer);
+        transport.Written.Should().HaveCount(2, "no v1 probe after the IDENTIFY");
+        transport.AssertComplete();
+    }
+
+    [Fact]
     public async Task Read_NoAnswer_SendsNoProbe()
     {
         var clock = new ManualTimeProvider();
