@@ -70,6 +70,16 @@ public sealed class StlProgramLoaderTests
     }
 
     [Fact]
+    public void Run_SubroutineNamedWithCodePageCharacters_IsCalledByThatName()
+    {
+        const string blocks = "SUBROUTINE_BLOCK Z\u00e4hler:SBR0\r\nBEGIN\r\nNetwork 1 // Z\u00e4hlt\r\nLD     SM0.0\r\nINCW   VW0\r\nEND_SUBROUTINE_BLOCK\r\n";
+
+        var plc = StlTestPrograms.OneScan("LD     SM0.0\nCALL   Z\u00e4hler", blocks);
+
+        plc.Memory.V[1].Should().Be(1, "one scan called the subroutine once (INCW VW0 adds 1 to VB1)");
+    }
+
+    [Fact]
     public void Load_WhatMicroWinRefuses_IsReportedOnceWithItsId()
     {
         var result = Load("LD     SM0.0\nSHLW   VW0, 1");
