@@ -12,7 +12,8 @@ namespace OperatorPanel.StlGen;
 /// What Generate PLC code and <c>opanel generate</c> save for one station, decided once for both: the handler
 /// (<see cref="HandlerGenerator"/>), merged into the user's exported program when one is given (<see cref="HandlerMerger"/>),
 /// the file names (STEM-handler.awl, STEM-symbols.txt, STEM-README.txt, STEM-merged.awl), the size limit of the user's
-/// program and the writing (each file atomically, ASCII as Micro/WIN imports it).
+/// program and the writing (each file atomically, one byte per character: the generated text is ASCII, the user's lines
+/// in the merged file go back in the code page they came in).
 /// </summary>
 public sealed record HandlerPackage
 {
@@ -59,8 +60,8 @@ public sealed record HandlerPackage
     }
 
     /// <summary>
-    /// Reads a program exported from Micro/WIN. It is in the Windows code page; Latin-1 keeps one character per byte, and
-    /// the merger writes anything outside ASCII as '?' with a warning.
+    /// Reads a program exported from Micro/WIN. It is in the Windows code page; Latin-1 keeps one character per byte, so
+    /// the merged file can give every byte back unchanged (<see cref="TryWrite"/>).
     /// </summary>
     public static bool TryReadProgram(string path, [NotNullWhen(true)] out string? text, [NotNullWhen(false)] out string? error)
     {
@@ -100,7 +101,7 @@ public sealed record HandlerPackage
         foreach (var (name, text) in Files)
         {
             var path = Path.Combine(folder, name);
-            if (!AtomicFile.TryWrite(path, Encoding.ASCII.GetBytes(text), out var failed))
+            if (!AtomicFile.TryWrite(path, Encoding.Latin1.GetBytes(text), out var failed))
             {
                 (written, error) = ([.. paths], $"{path}: {failed}");
                 return false;

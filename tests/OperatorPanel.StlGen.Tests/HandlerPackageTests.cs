@@ -28,6 +28,20 @@ public sealed class HandlerPackageTests : IDisposable
     }
 
     [Fact]
+    public void TryWrite_UserProgramInTheWindowsCodePage_MergedFileKeepsItsBytes()
+    {
+        byte[] comment = [0x2F, 0x2F, 0x20, 0x46, 0xFC, 0x6C, 0x6C, 0x73, 0x74, 0x61, 0x6E, 0x64];
+        var user = UserProgram.Ob1("LD     SM0.0 " + Encoding.Latin1.GetString(comment), "=      Q0.0");
+        var package = HandlerPackage.Generate(UserProgram.Cpu224, "Filler", user);
+
+        package.TryWrite(_folder, out _, out var error).Should().BeTrue(error);
+
+        var merged = File.ReadAllBytes(Path.Combine(_folder, "Filler-merged.awl"));
+        byte[] line = [.. Encoding.ASCII.GetBytes("LD     SM0.0 "), .. comment, 0x0D, 0x0A];
+        merged.AsSpan().IndexOf(line).Should().BeGreaterThan(0, "the user's line is written back byte for byte (0xFC is u-umlaut in code page 1252)");
+    }
+
+    [Fact]
     public void Generate_ProgramCollides_NothingToWriteAndTheFolderIsNotCreated()
     {
         var package = HandlerPackage.Generate(UserProgram.Cpu224, "Filler", UserProgram.Ob1("LD     SM0.0", "MOVB   1, VB8000"));

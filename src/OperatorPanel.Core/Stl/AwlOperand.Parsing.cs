@@ -205,6 +205,12 @@ public sealed partial record AwlOperand
         (text.StartsWith("SBR", StringComparison.OrdinalIgnoreCase) || text.StartsWith("INT", StringComparison.OrdinalIgnoreCase))
         && text.Length > 3 && text.Length <= 6 && text[3..].All(char.IsAsciiDigit);
 
+    /// <summary>
+    /// Letters, digits and _, not starting with a digit. Letters include the code-page characters 128-255 (umlauts in
+    /// German exports): .awl files are read one character per byte (Latin-1), so each such byte is one char U+0080-U+00FF.
+    /// </summary>
     internal static bool IsIdentifier(string text) =>
-        text.Length > 0 && (char.IsAsciiLetter(text[0]) || text[0] == '_') && text.All(c => char.IsAsciiLetterOrDigit(c) || c == '_');
+        text.Length > 0 && IsNameLetter(text[0]) && text.All(c => IsNameLetter(c) || char.IsAsciiDigit(c));
+
+    private static bool IsNameLetter(char c) => char.IsAsciiLetter(c) || c == '_' || c is >= '\u0080' and <= '\u00FF';
 }

@@ -9,11 +9,21 @@ namespace OperatorPanel.Core.Stl;
 /// </summary>
 public static class AwlParser
 {
+    /// <summary>The UTF-8 byte order mark as read one character per byte (Latin-1), and as read as UTF-8.</summary>
+    private static readonly string[] ByteOrderMarks = ["\u00EF\u00BB\u00BF", "\uFEFF"];
+
     public static AwlParseResult Parse(string text)
     {
         ArgumentNullException.ThrowIfNull(text);
         var reader = new AwlReader();
         var lines = text.Split('\n');
+        if (ByteOrderMarks.FirstOrDefault(mark => lines[0].StartsWith(mark, StringComparison.Ordinal)) is { } mark)
+        {
+            // Notepad's "UTF-8" adds one; the rest of the file is still read, so its other problems are reported too.
+            reader.Diagnostics.Add(new AwlDiagnostic(1, "the file starts with a UTF-8 byte order mark (EF BB BF); Micro/WIN exports in the Windows code page without one: save the file as ANSI"));
+            lines[0] = lines[0][mark.Length..];
+        }
+
         for (var i = 0; i < lines.Length; i++)
         {
             reader.Read(lines[i].TrimEnd('\r'), i + 1);

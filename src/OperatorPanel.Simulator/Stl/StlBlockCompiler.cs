@@ -202,7 +202,7 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
                 if (operand is { Kind: AwlOperandKind.Constant, ConstantKind: AwlConstantKind.Integer } && operand.Integer >= 0 && operand.Integer <= max)
                 {
                     op.N = (int)operand.Integer;
-                    return true;
+                    return op.Code != StlOpCode.Atch || IsRaised(op);
                 }
 
                 Report(line, $"{op.Mnemonic}: '{text}' is not a {type.ToString().ToLowerInvariant()} number 0-{max}{(type == StlOperandType.Port ? $" on the {cpu.Name}" : string.Empty)}");
@@ -217,6 +217,21 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
                 Report(line, $"{op.Mnemonic}: {error}");
                 return false;
         }
+    }
+
+    /// <summary>
+    /// An attached routine must be able to run: the simulator raises the Freeport events and the timed interrupts only,
+    /// so a program waiting on an input edge, a high-speed counter or a pulse output would silently never see it.
+    /// </summary>
+    private bool IsRaised(StlOp op)
+    {
+        if (op.N is 8 or 9 or 10 or 11 or (>= 23 and <= 26))
+        {
+            return true;
+        }
+
+        Report(op.Line, $"ATCH: the simulator never raises event {op.N}: it raises the Freeport events (8, 9, 23-26) and the timed interrupts (10, 11) only");
+        return false;
     }
 
     private bool TryBlock(StlOp op, AwlOperand operand)

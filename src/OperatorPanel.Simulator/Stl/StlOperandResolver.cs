@@ -173,6 +173,11 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
         {
             value = (uint)operand.Integer;
         }
+        else if (operand.ConstantKind == AwlConstantKind.Ascii && operand.Name.Length <= bytes)
+        {
+            // 'A', 'OK', 'STOP': one byte per character, the first character the most significant (the parser's value).
+            value = (uint)operand.Integer;
+        }
         else
         {
             error = $"'{operand.Text}' is not a {WidthName(bytes)} constant";

@@ -84,9 +84,6 @@ public static class StlDiagnostics
     /// <summary>Merge warning: a symbolic operand (a name from the symbol table) whose address is not in the exported text.</summary>
     public const string SymbolUnchecked = "STL027";
 
-    /// <summary>Merge warning: characters outside ASCII in the user's file (umlauts in comments) were written as '?'.</summary>
-    public const string NonAsciiReplaced = "STL028";
-
     /// <summary>Merge: the user's program holds what Micro/WIN refuses for this CPU (Core AwlProgramCheck: AWL001-AWL011, named in the message); nothing is written.</summary>
     public const string UserProgramRefused = "STL029";
 

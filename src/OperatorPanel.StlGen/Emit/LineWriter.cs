@@ -24,5 +24,19 @@ internal sealed class LineWriter
         _text.Append(line).Append(LineEnd);
     }
 
+    /// <summary>
+    /// A line of the user's exported program, copied as it is: its characters stand for the bytes of the user's Windows
+    /// code page (read as Latin-1) and are written back as the same bytes, so names and comments with umlauts survive.
+    /// </summary>
+    public void Copied(string line)
+    {
+        if (line.AsSpan().IndexOfAny('\r', '\n') >= 0)
+        {
+            throw new ArgumentException("a copied line holds no line end", nameof(line));
+        }
+
+        _text.Append(line).Append(LineEnd);
+    }
+
     public override string ToString() => _text.ToString();
 }

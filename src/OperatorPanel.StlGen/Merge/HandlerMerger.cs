@@ -44,7 +44,6 @@ public static class HandlerMerger
         found.AddRange(BlockCollisions.Find(user, handler, cpu.Subroutines, cpu.InterruptRoutines));
         found.AddRange(new InstructionCollisions(user, handler, cpu.CommunicationPorts, HandlerDefaults.VBytes(cpu)).Find());
         var lines = MergedProgramWriter.SplitLines(userText);
-        found.AddRange(NonAscii(lines));
         var ordered = found.OrderBy(d => d.Line).ThenBy(d => d.Id, StringComparer.Ordinal).ToImmutableArray();
         if (ordered.Any(d => d.Severity == MergeSeverity.Error))
         {
@@ -53,19 +52,6 @@ public static class HandlerMerger
 
         var generated = HandlerGenerator.Generate(options);
         return new MergeResult(ordered, MergedProgramWriter.Write(lines, user, generated.AwlText));
-    }
-
-    private static IEnumerable<MergeDiagnostic> NonAscii(IReadOnlyList<string> lines)
-    {
-        for (var i = 0; i < lines.Count; i++)
-        {
-            if (lines[i].Any(MergedProgramWriter.IsNotAscii))
-            {
-                yield return new MergeDiagnostic(
-                    StlDiagnostics.NonAsciiReplaced, MergeSeverity.Warning, i + 1,
-                    "characters outside ASCII are written as '?' (Micro/WIN imports ASCII); retype them in Micro/WIN after the import if they matter");
-            }
-        }
     }
 
     private static MergeResult Failed(IEnumerable<MergeDiagnostic> diagnostics) => new([.. diagnostics], string.Empty);

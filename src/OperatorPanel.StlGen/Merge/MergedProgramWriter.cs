@@ -5,15 +5,13 @@ namespace OperatorPanel.StlGen.Merge;
 
 /// <summary>
 /// Splices the generated handler into the user's program text: the user's lines are copied as they are (only the line
-/// ends become CRLF and non-ASCII characters '?'); the handler's network goes first in OB1, its SBR and INTs go
+/// ends become CRLF; code-page characters stay, see <see cref="LineWriter.Copied"/>); the handler's network goes first in OB1, its SBR and INTs go
 /// among the user's blocks in number order. The handler's lines are taken from its own generated .awl, so the merged
 /// file carries exactly what <see cref="HandlerGenerator"/> writes. The added network keeps the number 1: the user's
 /// networks are not renumbered (Micro/WIN numbers networks by position when it imports).
 /// </summary>
 internal static class MergedProgramWriter
 {
-    public static bool IsNotAscii(char c) => c is > '~' || (c < ' ' && c != '\t');
-
     /// <summary>The file's lines without their line ends; a final line end does not make an extra empty line.</summary>
     public static IReadOnlyList<string> SplitLines(string text)
     {
@@ -54,7 +52,7 @@ internal static class MergedProgramWriter
 
             if (line <= userLines.Count)
             {
-                w.Line(new string([.. userLines[line - 1].Select(c => IsNotAscii(c) ? '?' : c)]));
+                w.Copied(userLines[line - 1]);
             }
         }
 

@@ -59,6 +59,18 @@ public sealed class AwlOperandTests
     }
 
     [Theory]
+    [InlineData("Z\u00e4hler", AwlOperandKind.Symbol, "Z\u00e4hler")]
+    [InlineData("F\u00fcllstand_1", AwlOperandKind.Symbol, "F\u00fcllstand_1")]
+    [InlineData("\u00c4nderung", AwlOperandKind.Symbol, "\u00c4nderung")]
+    [InlineData("#Z\u00e4hler", AwlOperandKind.Local, "Z\u00e4hler")]
+    public void TryParse_NameWithCodePageCharacters_IsANameNotABadAddress(string text, AwlOperandKind kind, string name)
+    {
+        AwlOperand.TryParse(text, out var operand, out var error).Should().BeTrue(error);
+
+        (operand!.Kind, operand.Name).Should().Be((kind, name));
+    }
+
+    [Theory]
     [InlineData("M10.8", "outside 0-7")]
     [InlineData("*AC0", "AC1-AC3")]
     [InlineData("*VW10", "VD, LD or AC1-AC3")]

@@ -67,6 +67,18 @@ public sealed class AwlParserTests
         result.Program.Find("op_rx").Should().BeSameAs(blocks[2]);
     }
 
+    [Theory]
+    [InlineData("\u00EF\u00BB\u00BF")]
+    [InlineData("\uFEFF")]
+    public void Parse_FileSavedAsUtf8WithByteOrderMark_IsNamedAsSuchAtLineOne(string byteOrderMark)
+    {
+        var result = AwlParser.Parse(byteOrderMark + Export);
+
+        result.Diagnostics.Should().ContainSingle().Which.ToString().Should().Be(
+            "line 1: the file starts with a UTF-8 byte order mark (EF BB BF); Micro/WIN exports in the Windows code page without one: save the file as ANSI");
+        result.Program.Blocks.Should().HaveCount(3);
+    }
+
     [Fact]
     public void Parse_BadText_ReportsEachProblemWithItsLine()
     {

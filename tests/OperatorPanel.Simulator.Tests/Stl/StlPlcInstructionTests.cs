@@ -82,6 +82,14 @@ public sealed class StlPlcInstructionTests
     }
 
     [Fact]
+    public void Moves_AsciiConstants_GiveOneBytePerCharacter()
+    {
+        var plc = OneScan("LD     SM0.0\nMOVB   'A', VB0\nMOVW   'OK', VW2\nMOVD   'STOP', VD4");
+
+        plc.Memory.V.AsSpan(0, 8).ToArray().Should().Equal(0x41, 0, 0x4F, 0x4B, 0x53, 0x54, 0x4F, 0x50);
+    }
+
+    [Fact]
     public void Ath_IllegalCharacterAndOddLength_FollowTheManual()
     {
         // C233-01 example: ATH VB30, VB40, 3 with 33 45 41 gives 3E, A(unchanged nibble).

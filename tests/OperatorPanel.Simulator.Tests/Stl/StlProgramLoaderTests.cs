@@ -70,6 +70,47 @@ public sealed class StlProgramLoaderTests
     }
 
     [Fact]
+    public void Run_SubroutineNamedWithCodePageCharacters_IsCalledByThatName()
+    {
+        const string blocks = "SUBROUTINE_BLOCK Z\u00e4hler:SBR0\r\nBEGIN\r\nNetwork 1 // Z\u00e4hlt\r\nLD     SM0.0\r\nINCW   VW0\r\nEND_SUBROUTINE_BLOCK\r\n";
+
+        var plc = StlTestPrograms.OneScan("LD     SM0.0\nCALL   Z\u00e4hler", blocks);
+
+        plc.Memory.V[1].Should().Be(1, "one scan called the subroutine once (INCW VW0 adds 1 to VB1)");
+    }
+
+    [Theory]
+    [InlineData(0)]
+    [InlineData(7)]
+    [InlineData(12)]
+    [InlineData(19)]
+    [InlineData(21)]
+    [InlineData(33)]
+    public void Load_AttachToAnEventTheSimulatorNeverRaises_IsRefusedNamingTheEvent(int eventNumber)
+    {
+        const string routine = "INTERRUPT_BLOCK EDGE:INT0\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\nINCW   VW0\r\nEND_INTERRUPT_BLOCK\r\n";
+
+        var result = Load($"LD     SM0.1\nATCH   EDGE, {eventNumber}\nENI", routine, CpuModel.Cpu226);
+
+        result.Succeeded.Should().BeFalse();
+        result.Diagnostics.Should().ContainSingle().Which.ToString().Should().Be(
+            $"line 5: ATCH: the simulator never raises event {eventNumber}: it raises the Freeport events (8, 9, 23-26) and the timed interrupts (10, 11) only");
+    }
+
+    [Theory]
+    [InlineData(9)]
+    [InlineData(10)]
+    [InlineData(26)]
+    public void Load_AttachToAnEventTheSimulatorRaises_IsAccepted(int eventNumber)
+    {
+        const string routine = "INTERRUPT_BLOCK EDGE:INT0\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\nINCW   VW0\r\nEND_INTERRUPT_BLOCK\r\n";
+
+        var result = Load($"LD     SM0.1\nATCH   EDGE, {eventNumber}\nDTCH   0\nENI", routine, CpuModel.Cpu226);
+
+        result.Diagnostics.Should().BeEmpty();
+    }
+
+    [Fact]
     public void Load_WhatMicroWinRefuses_IsReportedOnceWithItsId()
     {
         var result = Load("LD     SM0.0\nSHLW   VW0, 1");

@@ -208,12 +208,15 @@ public sealed class HandlerMergerCollisionTests
     }
 
     [Fact]
-    public void Merge_NonAsciiComment_WarnsAndWritesQuestionMark()
+    public void Merge_CodePageCharactersInNamesAndComments_AreKeptAsTheyAre()
     {
-        var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.0 // Füllstand"), UserProgram.Cpu224);
+        string[] subroutine = ["SUBROUTINE_BLOCK Z\u00e4hler:SBR0", "TITLE=Z\u00e4hlt die Flaschen", "BEGIN", "Network 1 // F\u00fcllstand", "LD     SM0.0", "INCW   VW0", "END_SUBROUTINE_BLOCK"];
 
-        result.Warnings.Should().ContainSingle().Which.Should().Match<MergeDiagnostic>(d => d.Id == StlDiagnostics.NonAsciiReplaced && d.Line == Line);
-        result.MergedText.Should().Contain("LD     SM0.0 // F?llstand\r\n");
+        var result = HandlerMerger.Merge(UserProgram.WithBlocks(["LD     SM0.0 // F\u00fcllstand \u00b0C", "CALL   Z\u00e4hler"], subroutine), UserProgram.Cpu224);
+
+        result.Diagnostics.Should().BeEmpty();
+        result.MergedText.Should().Contain("LD     SM0.0 // F\u00fcllstand \u00b0C\r\nCALL   Z\u00e4hler\r\n")
+            .And.Contain("SUBROUTINE_BLOCK Z\u00e4hler:SBR0\r\nTITLE=Z\u00e4hlt die Flaschen\r\n");
     }
 
     [Fact]
