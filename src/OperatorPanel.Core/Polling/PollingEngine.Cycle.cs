@@ -24,7 +24,7 @@ public sealed partial class PollingEngine
         PollResult? result = null;
         try
         {
-            result = await PollAllAsync(++_cycleCount, started, asked: waiters.Count > 0, cancellationToken).ConfigureAwait(false);
+            result = await PollAllAsync(++_cycleCount, started, cancellationToken).ConfigureAwait(false);
             lock (_gate) { _lastResult = result; }
             waiters.ForEach(w => w.TrySetResult(result));
             return result;
@@ -38,22 +38,24 @@ public sealed partial class PollingEngine
         }
     }
 
-    private async Task<PollResult> PollAllAsync(long cycle, DateTimeOffset started, bool asked, CancellationToken cancellationToken)
+    private async Task<PollResult> PollAllAsync(long cycle, DateTimeOffset started, CancellationToken cancellationToken)
     {
         var reads = new FrameRead[_plan.Frames.Length];
         int sent = 0, failed = 0, writes = 0;
         var changes = new List<ValueChange>();
+        var tried = new List<Station>();
         foreach (var station in _plan.Stations)
         {
             string? offlineError = null;
             writes += await ExecutePendingWritesAsync(cancellationToken).ConfigureAwait(false);
-            if (!asked && IsResting(station, started) is { } restingError)
+            if (IsResting(station, started) is { } restingError)
             {
                 MarkFramesOffline(station, reads, restingError);
                 changes.AddRange(ApplyReads(station, reads));
                 continue;
             }
 
+            tried.Add(station);
             var servedByChangesOfLists = await ReadChangesOfListsAsync(station, reads, cancellationToken).ConfigureAwait(false);
             sent += servedByChangesOfLists.Count;
             for (var i = 0; i < _plan.Frames.Length; i++)
@@ -79,6 +81,7 @@ public sealed partial class PollingEngine
             changes.AddRange(ApplyReads(station, reads));
         }
 
+        NoteSilences(tried);
         Publish(changes);
         return new PollResult(cycle, started, _time.GetUtcNow(), sent, failed, writes, changes.Count);
     }

@@ -3,34 +3,47 @@ using OperatorPanel.Core.Addressing;
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
-/// An offline station on a bus where another station answers rests between tries (<see cref="PollingOptions.OfflineRetryInterval"/>):
-/// every try of a silent station costs the bus its reply time-outs and retries, about a second per cycle, which would
-/// slow the refresh of every station that does answer. A refresh someone asked for tries every station.
+/// A station that stayed silent in a cycle in which another station of the bus answered rests between tries
+/// (<see cref="PollingOptions.OfflineRetryInterval"/>): every try of a silent station costs the bus its reply time-outs
+/// and retries, about a second per cycle, which would slow the refresh of every station that does answer. Silence in a
+/// cycle where nobody answered (the port or cable gone) never rests, so every station is good again as soon as the line
+/// is back. In triggered refresh (<see cref="RefreshMode.OnDemand"/>) every refresh tries every station: someone asked.
 /// </summary>
 public sealed partial class PollingEngine
 {
-    private readonly HashSet<Station> _resting = [];
+    private readonly HashSet<Station> _silentWhileOthersAnswer = [];
 
     /// <summary>The station's last error when it sits this cycle out; null when it is to be polled.</summary>
     private string? IsResting(Station station, DateTimeOffset now)
     {
         var status = _stations.Get(station);
-        var silentAmongOthers = status.State is StationState.Offline or StationState.StoppedByPanel
-            && _plan.Stations.Any(other => other != station && _stations.Get(other).State == StationState.Online);
-        if (!silentAmongOthers)
-        {
-            _resting.Remove(station);
-            return null;
-        }
+        return Mode == RefreshMode.Continuous
+            && _silentWhileOthersAnswer.Contains(station)
+            && status.State is StationState.Offline or StationState.StoppedByPanel
+            && status.LastFailureAt is { } failedAt
+            && now - failedAt < Options.OfflineRetryInterval
+                ? status.LastError ?? "offline"
+                : null;
+    }
 
-        if (_resting.Add(station))
+    /// <summary>After a cycle: which of the stations it tried were silent while another station answered.</summary>
+    private void NoteSilences(IReadOnlyCollection<Station> tried)
+    {
+        var answering = _plan.Stations.Where(s => _stations.Get(s).State == StationState.Online).ToHashSet();
+        _silentWhileOthersAnswer.ExceptWith(answering);
+        foreach (var station in tried.Where(s => !answering.Contains(s)))
         {
-            _logger.Information(
-                "Station {Station} is silent while others on the bus answer: tried every {Interval} s so it does not slow their refresh",
-                station.Address, Options.OfflineRetryInterval.TotalSeconds);
+            if (!answering.Any(other => other != station))
+            {
+                _silentWhileOthersAnswer.Remove(station);
+            }
+            else if (_silentWhileOthersAnswer.Add(station))
+            {
+                _logger.Information(
+                    "Station {Station} is silent while others on the bus answer: tried every {Interval} s so it does not slow their refresh",
+                    station.Address, Options.OfflineRetryInterval.TotalSeconds);
+            }
         }
-
-        return status.LastFailureAt is { } failedAt && now - failedAt < Options.OfflineRetryInterval ? status.LastError ?? "offline" : null;
     }
 
     private void MarkFramesOffline(Station station, FrameRead[] reads, string error)

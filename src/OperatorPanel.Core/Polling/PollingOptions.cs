@@ -16,11 +16,11 @@ public sealed record PollingOptions
     public TimeSpan FullReadInterval { get; init; } = TimeSpan.FromSeconds(10);
 
     /// <summary>
-    /// In continuous refresh, an offline station (or one the panel stopped) on a bus where another station answers is
-    /// tried once per this interval instead of every cycle: each try costs the bus its reply time-outs, which would slow
-    /// every other station's refresh. When no station of the bus answers, each is tried every cycle (nobody waits,
-    /// and a returning cable shows at once); a refresh someone asked for (<see cref="PollingEngine.RequestRefreshAsync"/>,
-    /// F5) tries every station.
+    /// In continuous refresh, a station that stayed silent (offline, or stopped by the panel) in a cycle in which another
+    /// station of the bus answered is tried once per this interval instead of every cycle: each try costs the bus its
+    /// reply time-outs, which would slow every other station's refresh. Silence while no station of the bus answers
+    /// never rests (nobody waits, and a returning cable shows at once). In triggered refresh every refresh tries every
+    /// station.
     /// </summary>
     public TimeSpan OfflineRetryInterval { get; init; } = TimeSpan.FromSeconds(5);
 }

@@ -92,17 +92,39 @@ public sealed class OfflineRetryTests
     }
 
     [Fact]
-    public async Task Cycle_RefreshSomeoneAskedFor_TriesTheSilentStationToo()
+    public async Task Cycle_LineBackAfterEveryStationWasSilent_EveryStationIsReadInTheFirstCycleBack()
+    {
+        _link.Set(One, ProtocolArea.V, 0, 0x11);
+        await _engine.RunCycleAsync(CancellationToken.None);
+        _link.Throw(One, new PlcCommunicationException(PlcErrorKind.PortUnavailable, One, "COM3 is gone"));
+        _link.Throw(Two, new PlcCommunicationException(PlcErrorKind.PortUnavailable, Two, "COM3 is gone"));
+        _clock.Advance(TimeSpan.FromSeconds(1));
+        await _engine.RunCycleAsync(CancellationToken.None);
+        _link.Throw(One, null);
+        _link.Throw(Two, null);
+        _link.Set(One, ProtocolArea.V, 0, 0x12);
+        _clock.Advance(TimeSpan.FromSeconds(1));
+
+        await _engine.RunCycleAsync(CancellationToken.None);
+
+        _engine.TryGetValue(One, PlcAddress.Parse("VB0"), out var one).Should().BeTrue();
+        one.Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x12, "silence while nobody answered is the line's, not the station's");
+        _engine.TryGetValue(Two, PlcAddress.Parse("VB0"), out var two).Should().BeTrue();
+        two.Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x21, "station 2 is tried after station 1 answered");
+        _link.ExchangesWith(Two).Should().Be(3);
+    }
+
+    [Fact]
+    public async Task Cycle_TriggeredRefresh_TriesTheSilentStationEveryTime()
     {
         _link.Throw(One, NoAnswer(One));
         await _engine.RunCycleAsync(CancellationToken.None);
-        var asked = _engine.RequestRefreshAsync();
+        _engine.Mode = RefreshMode.OnDemand;
 
         await _engine.RunCycleAsync(CancellationToken.None);
         await _engine.RunCycleAsync(CancellationToken.None);
 
-        asked.IsCompletedSuccessfully.Should().BeTrue();
-        _link.ExchangesWith(One).Should().Be(2, "the asked-for cycle tries it (F5 after replugging a cable), the next one rests it");
+        _link.ExchangesWith(One).Should().Be(3, "in triggered refresh someone asked for each refresh, of every station");
     }
 
     [Fact]
