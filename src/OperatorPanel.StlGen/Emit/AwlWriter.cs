@@ -1,4 +1,5 @@
 using System.Globalization;
+using OperatorPanel.Core.Stl.Instructions;
 using OperatorPanel.StlGen.Model;
 
 namespace OperatorPanel.StlGen.Emit;
@@ -61,8 +62,38 @@ public static class AwlWriter
         foreach (var instruction in network.Instructions)
         {
             EmittedInstructionCheck.Ensure(instruction, block);
-            w.Line(FormatInstruction(instruction));
+            w.Line(FormatInstruction(SignedAsExported(instruction)));
         }
+    }
+
+    /// <summary>
+    /// Decimal constants of word and double-word operands with their sign, as Micro/WIN writes them in its exports
+    /// (<c>MOVW +100, VW100</c>, <c>TON T37, +50</c>, <c>MOVD +0, VD140</c>; byte constants stay unsigned: docs/awl-exports.md).
+    /// No page says whether Micro/WIN's import also takes them unsigned, so the generator writes the form Micro/WIN
+    /// itself produces.
+    /// </summary>
+    internal static StlInstruction SignedAsExported(StlInstruction instruction)
+    {
+        if (!StlInstructionTable.TryGet(instruction.Mnemonic, out var spec))
+        {
+            return instruction;
+        }
+
+        var operands = instruction.Operands.ToBuilder();
+        for (var i = 0; i < Math.Min(operands.Count, spec.Operands.Length); i++)
+        {
+            var type = spec.Operands[i].Type;
+            long? limit = type is StlDataType.Word or StlDataType.Int ? short.MaxValue
+                : type is StlDataType.DWord or StlDataType.DInt ? int.MaxValue
+                : null;
+            if (limit is not null && operands[i].Length is > 0 and <= 10 && operands[i].All(char.IsAsciiDigit)
+                && long.Parse(operands[i], CultureInfo.InvariantCulture) <= limit)
+            {
+                operands[i] = "+" + operands[i];
+            }
+        }
+
+        return instruction with { Operands = operands.ToImmutable() };
     }
 
     private static string Keyword(StlBlockKind kind) => kind switch

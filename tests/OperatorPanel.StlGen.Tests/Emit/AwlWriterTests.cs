@@ -16,6 +16,22 @@ public sealed class AwlWriterTests
         AwlWriter.FormatInstruction(StlInstruction.Of(mnemonic, operands)).Should().Be(expected);
 
     [Theory]
+    [InlineData("MOVW", new[] { "0", "SMW90" }, "MOVW   +0, SMW90")]
+    [InlineData("MOVD", new[] { "0", "VD140" }, "MOVD   +0, VD140")]
+    [InlineData("-I", new[] { "6", "AC3" }, "-I     +6, AC3")]
+    [InlineData("LDW>", new[] { "AC3", "0" }, "LDW>   AC3, +0")]
+    [InlineData("FOR", new[] { "AC0", "1", "VW10" }, "FOR    AC0, +1, VW10")]
+    [InlineData("MOVB", new[] { "0", "VB0" }, "MOVB   0, VB0")]
+    [InlineData("LDB=", new[] { "VB10", "7" }, "LDB=   VB10, 7")]
+    [InlineData("SLW", new[] { "VW20", "3" }, "SLW    VW20, 3")]
+    [InlineData("MOVW", new[] { "16#FFFF", "VW0" }, "MOVW   16#FFFF, VW0")]
+    [InlineData("MOVW", new[] { "-1", "VW0" }, "MOVW   -1, VW0")]
+    [InlineData("MOVW", new[] { "40000", "VW0" }, "MOVW   40000, VW0")]
+    [InlineData("MOVD", new[] { "&VB100", "AC1" }, "MOVD   &VB100, AC1")]
+    public void SignedAsExported_WordAndDoubleWordDecimals_GetTheirSignAsMicroWinExportsThem(string mnemonic, string[] operands, string expected) =>
+        AwlWriter.FormatInstruction(AwlWriter.SignedAsExported(StlInstruction.Of(mnemonic, operands))).Should().Be(expected);
+
+    [Theory]
     [MemberData(nameof(HandlerGoldenTests.Cases), MemberType = typeof(HandlerGoldenTests))]
     public void Write_Handler_IsAsciiWithCrlfAfterEveryLineAndNoBom(string name)
     {
