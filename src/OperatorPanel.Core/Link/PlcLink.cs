@@ -173,7 +173,8 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
                     _log.Debug("{Station}: {Command} refused: {Error}", request.Station, request.Command, negative.Error);
                 }
 
-                _online[request.Station] = true;
+                // A CPU that acknowledged STOP goes to STOP and answers no more: its silence from here on is expected, not news.
+                _online[request.Station] = response is not StopResponse;
                 _spokeV2[request.Station] = true;
                 return new ExchangeResult(response, null, Sent: true, CorruptedCopy: false);
             }

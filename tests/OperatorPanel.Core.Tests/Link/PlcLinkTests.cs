@@ -108,6 +108,32 @@ public sealed class PlcLinkTests
     }
 
     [Fact]
+    public async Task Exchange_SilenceAfterTheStationAcknowledgedStop_IsLoggedAtDebugNotAsNews()
+    {
+        var clock = new ManualTimeProvider();
+        var stop = new StopRequest(Station2, 0x01);
+        var identify = Ascii(RequestCodec.Encode(new IdentifyRequest(Station2, 0x02)));
+        var transport = new ScriptedTransport($"""
+            > "{Ascii(RequestCodec.Encode(stop))}"
+            < "{Ascii(ResponseCodec.Encode(new StopResponse(Station2, 0x01), stop))}"
+            > "{identify}"
+            < no response
+            > "{identify}"
+            < no response
+            > "{identify}"
+            < no response
+            """, clock);
+        var (log, sink) = CollectingSink.CreateLogger();
+        var link = new PlcLink(transport, LinkOptions.For(Some.SerialSettings()) with { Retries = 2, InterFrameGap = TimeSpan.Zero }, clock, log);
+
+        (await link.ExchangeOnceAsync(stop, default)).Should().BeOfType<OnceReply.Answered>();
+        await link.Invoking(l => l.ExchangeAsync(new IdentifyRequest(Station2), default)).Should().ThrowAsync<PlcCommunicationException>();
+
+        sink.Events.Where(e => e.RenderMessage().Contains("no valid reply to Identify")).Select(e => e.Level).Should().Equal(LogEventLevel.Debug);
+        transport.AssertComplete();
+    }
+
+    [Fact]
     public async Task Exchange_ReplyWithBadChecksum_CountsCorruptAndRetries()
     {
         var clock = new ManualTimeProvider();
