@@ -19,7 +19,7 @@ public static class AlarmCsv
             string[] fields =
             [
                 AlarmTime.Format(e.At), e.StationName, e.Station.Address.ToString(System.Globalization.CultureInfo.InvariantCulture),
-                e.Flag.ToString(), Words(e.Transition.ToString()), Words(e.State.ToString()), Words(e.Class.ToString()), e.Text,
+                e.Flag.ToString(), e.TransitionText, e.StateText, Words(e.Class.ToString()), e.Text,
             ];
             csv.AppendJoin(',', fields.Select(Quote)).Append("\r\n");
         }

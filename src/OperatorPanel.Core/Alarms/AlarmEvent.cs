@@ -19,4 +19,11 @@ public sealed record AlarmEvent(
     AlarmTransition Transition,
     AlarmState State,
     AlarmClass Class,
-    string Text);
+    string Text)
+{
+    /// <summary>The transition as the history window and the CSV say it: "raised", "acknowledged", "cleared".</summary>
+    public string TransitionText => AlarmCsv.Words(Transition.ToString());
+
+    /// <summary>The state after it as the operator reads it: "active unacknowledged", not "ActiveUnacknowledged".</summary>
+    public string StateText => AlarmCsv.Words(State.ToString());
+}
