@@ -16,12 +16,12 @@ internal static class SnapshotBuilder
             ? $"continuous, at least {refresh.MinimumPeriod.TotalMilliseconds:0} ms apart"
             : "triggered, one refresh a second";
         var stations = ProjectBus.Of(session.Project)
-            .SelectMany(b => b.Stations.Select(s => Station(s, session.Line)))
+            .SelectMany(b => b.Stations.Select(s => Station(s, session.Line, time)))
             .ToList();
         return new WatchSnapshot(session.Project.Name, refreshText, cycle, time, stations);
     }
 
-    private static StationSnapshot Station(ProjectStation station, ProjectLine line)
+    private static StationSnapshot Station(ProjectStation station, ProjectLine line, DateTimeOffset now)
     {
         var status = line.StatusOf(station.Address) ?? StationStatus.Initial(station.Address);
         var statistics = line.StatisticsFor(station.Address);
@@ -33,6 +33,7 @@ internal static class SnapshotBuilder
             $"{line.PortOf(station.Address)} {station.Link.LineText}",
             status.State.ToString().ToLowerInvariant(),
             status.LastError,
+            status.NextTryAt is { } next ? Math.Max(0, (int)Math.Ceiling((next - now).TotalSeconds)) : null,
             new LinkView(statistics.Requests, statistics.Replies, statistics.Retries, statistics.Timeouts, statistics.RoundTripAverage?.TotalMilliseconds),
             Lamps(station.Inputs, Value),
             Lamps(station.Outputs, Value),

@@ -30,7 +30,8 @@ internal static class SnapshotRenderer
     {
         var l = s.Link;
         var rtt = l.RoundTripAverageMs is { } ms ? ms.ToString("0.0", CultureInfo.InvariantCulture) + " ms" : "-";
-        o.AppendLine(CultureInfo.InvariantCulture, $"{s.Name}  station {s.Station}  {s.Cpu}  {s.Port}  {s.State}");
+        var resting = s.NextTryInSeconds is { } n ? $" (next try in {n} s: others on the bus answer)" : string.Empty;
+        o.AppendLine(CultureInfo.InvariantCulture, $"{s.Name}  station {s.Station}  {s.Cpu}  {s.Port}  {s.State}{resting}");
         o.AppendLine(CultureInfo.InvariantCulture, $"  link     requests {l.Requests}  replies {l.Replies}  retries {l.Retries}  timeouts {l.Timeouts}  rtt avg {rtt}");
         if (s.LastError is not null)
         {

@@ -8,6 +8,7 @@ internal sealed record StationSnapshot(
     string Port,
     string State,
     string? LastError,
+    int? NextTryInSeconds,
     LinkView Link,
     IReadOnlyList<LampByte> Inputs,
     IReadOnlyList<LampByte> Outputs,

@@ -1,3 +1,4 @@
+using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 
 namespace OperatorPanel.Core.Polling;
@@ -11,39 +12,46 @@ namespace OperatorPanel.Core.Polling;
 /// </summary>
 public sealed partial class PollingEngine
 {
-    private readonly HashSet<Station> _silentWhileOthersAnswer = [];
+    /// <summary>Replaced whole by the polling loop, so <see cref="GetStationStatus"/> may read it from any thread.</summary>
+    private ImmutableHashSet<Station> _silentWhileOthersAnswer = [];
 
     /// <summary>The station's last error when it sits this cycle out; null when it is to be polled.</summary>
     private string? IsResting(Station station, DateTimeOffset now)
     {
         var status = _stations.Get(station);
-        return Mode == RefreshMode.Continuous
-            && _silentWhileOthersAnswer.Contains(station)
-            && status.State is StationState.Offline or StationState.StoppedByPanel
-            && status.LastFailureAt is { } failedAt
-            && now - failedAt < Options.OfflineRetryInterval
-                ? status.LastError ?? "offline"
-                : null;
+        return NextTry(station, status) is { } next && now < next ? status.LastError ?? "offline" : null;
     }
+
+    /// <summary>When a resting station is tried next; null when it is polled every cycle.</summary>
+    private DateTimeOffset? NextTry(Station station, StationStatus status) =>
+        Mode == RefreshMode.Continuous
+        && Volatile.Read(ref _silentWhileOthersAnswer).Contains(station)
+        && status.State is StationState.Offline or StationState.StoppedByPanel
+        && status.LastFailureAt is { } failedAt
+            ? failedAt + Options.OfflineRetryInterval
+            : null;
 
     /// <summary>After a cycle: which of the stations it tried were silent while another station answered.</summary>
     private void NoteSilences(IReadOnlyCollection<Station> tried)
     {
         var answering = _plan.Stations.Where(s => _stations.Get(s).State == StationState.Online).ToHashSet();
-        _silentWhileOthersAnswer.ExceptWith(answering);
+        var silent = _silentWhileOthersAnswer.Except(answering);
         foreach (var station in tried.Where(s => !answering.Contains(s)))
         {
             if (!answering.Any(other => other != station))
             {
-                _silentWhileOthersAnswer.Remove(station);
+                silent = silent.Remove(station);
             }
-            else if (_silentWhileOthersAnswer.Add(station))
+            else if (!silent.Contains(station))
             {
+                silent = silent.Add(station);
                 _logger.Information(
                     "Station {Station} is silent while others on the bus answer: tried every {Interval} s so it does not slow their refresh",
                     station.Address, Options.OfflineRetryInterval.TotalSeconds);
             }
         }
+
+        Volatile.Write(ref _silentWhileOthersAnswer, silent);
     }
 
     private void MarkFramesOffline(Station station, FrameRead[] reads, string error)

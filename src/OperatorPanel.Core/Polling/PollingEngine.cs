@@ -88,7 +88,12 @@ public sealed partial class PollingEngine
     public bool TryGetValue(Station station, PlcAddress address, out PolledValue value) =>
         _values.TryGet(new WatchedItem(station, address), out value);
 
-    public StationStatus GetStationStatus(Station station) => _stations.Get(station);
+    /// <summary>The station's link state; for a silent station resting between tries, when it is tried next.</summary>
+    public StationStatus GetStationStatus(Station station)
+    {
+        var status = _stations.Get(station);
+        return NextTry(station, status) is { } next ? status with { NextTryAt = next } : status;
+    }
 
     /// <summary>The panel stopped the station (Stop/RemoteStop confirmed it): its silence is no longer news.</summary>
     public void NoteStoppedByPanel(Station station) => _stations.RecordStoppedByPanel(station);

@@ -9,13 +9,15 @@ namespace OperatorPanel.Core.Polling;
 /// <param name="ConsecutiveFailures">Exchanges without a valid reply since the last one that had one.</param>
 /// <param name="LastReplyAt">Time of the last valid reply.</param>
 /// <param name="LastFailureAt">Time of the last exchange that brought no valid reply.</param>
+/// <param name="NextTryAt">For a silent station resting between tries (PollingOptions.OfflineRetryInterval), when it is tried next; else null.</param>
 public sealed record StationStatus(
     Station Station,
     StationState State,
     string? LastError,
     int ConsecutiveFailures,
     DateTimeOffset? LastReplyAt,
-    DateTimeOffset? LastFailureAt = null)
+    DateTimeOffset? LastFailureAt = null,
+    DateTimeOffset? NextTryAt = null)
 {
     public static StationStatus Initial(Station station) => new(station, StationState.Unknown, null, 0, null);
 }

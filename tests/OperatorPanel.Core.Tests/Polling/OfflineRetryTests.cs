@@ -43,7 +43,9 @@ public sealed class OfflineRetryTests
         _link.ExchangesWith(Two).Should().Be(5);
         _engine.TryGetValue(One, PlcAddress.Parse("VB0"), out var resting).Should().BeTrue();
         resting.Should().Match<PolledValue>(v => v.Quality == ValueQuality.Bad && v.Error == "NoAnswer: station 1 is silent");
-        _engine.GetStationStatus(One).Should().Match<StationStatus>(s => s.State == StationState.Offline && s.ConsecutiveFailures == 1);
+        _engine.GetStationStatus(One).Should().Match<StationStatus>(s =>
+            s.State == StationState.Offline && s.ConsecutiveFailures == 1 && s.NextTryAt == PollingTestClock.Start + Interval);
+        _engine.GetStationStatus(Two).NextTryAt.Should().BeNull();
 
         _clock.Advance(TimeSpan.FromSeconds(1));
         await _engine.RunCycleAsync(CancellationToken.None);
