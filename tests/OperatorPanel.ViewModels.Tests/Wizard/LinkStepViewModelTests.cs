@@ -142,15 +142,20 @@ public sealed class LinkStepViewModelTests
     private static IdentifyResponse Identify(CpuModel model, byte smb6) =>
         new(new Station(2), 1, HandlerIdentity.ProtocolVersion, 1, HandlerIdentity.CpuModelCode(model), 1, 0x3C, HandlerIdentity.MaxReadData, 5, smb6, 0x01, 3, 2, 9, 0, 7764, 428, 0, 120);
 
-    /// <summary>Advances the manual clock in 5 ms steps until the test connection has waited out its timeouts.</summary>
+    /// <summary>
+    /// Advances the manual clock in 5 ms steps until the test connection has waited out its timeouts, however slow the
+    /// machine: a fixed number of steps let a busy machine use them all up before the link armed its time-out, and the
+    /// test then waited forever (a 3-minute hang in a full run). The wall-clock guard fails it instead.
+    /// </summary>
     private static async Task RunOnTheClockAsync(Task test, ManualTimeProvider clock)
     {
-        for (var step = 0; step < 1000 && !test.IsCompleted; step++)
+        var guard = System.Diagnostics.Stopwatch.StartNew();
+        while (!test.IsCompleted && guard.Elapsed < TimeSpan.FromSeconds(30))
         {
             clock.Advance(TimeSpan.FromMilliseconds(5));
             await Task.Yield();
         }
 
-        await test;
+        await test.WaitAsync(TimeSpan.FromSeconds(5));
     }
 }
