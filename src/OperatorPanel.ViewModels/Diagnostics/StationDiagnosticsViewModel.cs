@@ -43,6 +43,11 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
         ? $"The PLC reports {Status.Identity!.CpuText}, the project is set up for {ProjectCpuText}: addresses were checked against the wrong CPU."
         : string.Empty;
 
+    /// <summary>Why a silent station is not tried every cycle, and when it is tried next (local time); empty otherwise.</summary>
+    public string RetryText => Status.NextTryAt is { } next
+        ? $"Silent while other stations on its bus answer: tried again at {next.ToLocalTime():HH:mm:ss}, not every cycle, so it does not slow their refresh."
+        : string.Empty;
+
     /// <summary>SMB6 as the manual writes it, e.g. 16#20.</summary>
     public string Smb6Text => Status.Identity is { } id ? "16#" + id.Smb6.ToString("X2", CultureInfo.InvariantCulture) : "-";
 

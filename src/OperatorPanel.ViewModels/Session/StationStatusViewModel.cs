@@ -34,6 +34,10 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
     [ObservableProperty]
     public partial LinkStatistics Statistics { get; private set; } = LinkStatistics.Empty;
 
+    /// <summary>For a silent station resting while others on its bus answer, when the panel tries it next; else null.</summary>
+    [ObservableProperty]
+    public partial DateTimeOffset? NextTryAt { get; private set; }
+
     /// <summary>The station's IDENTIFY reply; null until it answered one.</summary>
     [ObservableProperty]
     [NotifyPropertyChangedFor(nameof(CpuMismatch))]
@@ -82,6 +86,7 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
     internal void Update(StationStatus? status, LinkStatistics statistics)
     {
         Statistics = statistics;
+        NextTryAt = status?.NextTryAt;
         if (status is null)
         {
             Health = StationHealth.Unknown;

@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Simulator.Reference;
 using OperatorPanel.ViewModels.Diagnostics;
@@ -43,6 +44,22 @@ public sealed class DiagnosticsViewModelTests : IAsyncDisposable
         await _panel.RefreshAsync();
 
         _diagnostics.Stations.Single().RunStopText.Should().Be("STOP or TERM (no Freeport reply)");
+    }
+
+    [Fact]
+    public void Station_RestingBetweenTries_SaysWhyAndWhenItIsTriedNext()
+    {
+        var station = _diagnostics.Stations.Single();
+        var next = new DateTimeOffset(2026, 11, 25, 8, 30, 15, TimeSpan.Zero);
+
+        station.Status.Update(
+            new StationStatus(station.Status.Address, StationState.Offline, "NoAnswer: silent", 3, null, next.AddSeconds(-5), next),
+            Core.Link.LinkStatistics.Empty);
+
+        station.RetryText.Should().Be(
+            $"Silent while other stations on its bus answer: tried again at {next.ToLocalTime():HH:mm:ss}, not every cycle, so it does not slow their refresh.");
+        station.Status.Update(new StationStatus(station.Status.Address, StationState.Online, null, 0, next), Core.Link.LinkStatistics.Empty);
+        station.RetryText.Should().BeEmpty();
     }
 
     [Fact]
