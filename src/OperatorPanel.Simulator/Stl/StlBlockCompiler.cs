@@ -221,7 +221,9 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
 
     /// <summary>
     /// An attached routine must be able to run: the simulator raises the Freeport events and the timed interrupts only,
-    /// so a program waiting on an input edge, a high-speed counter or a pulse output would silently never see it.
+    /// so a program waiting on an input edge, a high-speed counter or a pulse output would silently never see it. Event
+    /// numbers: ML801761 p. 172, Table 6-50 (docs/sources/s7200-facts.md section 5): 8/25 receive character, 9/26
+    /// transmit complete, 23/24 receive message complete (ports 0/1), 10/11 timed interrupts 0/1.
     /// </summary>
     private bool IsRaised(StlOp op)
     {
