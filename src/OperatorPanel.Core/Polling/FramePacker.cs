@@ -15,9 +15,7 @@ internal static class FramePacker
     {
         var frames = new List<OpenFrame>();
         var open = new List<OpenFrame>();
-        var sorted = blocks.ToArray();
-        Array.Sort(sorted, (a, b) => b.Length != a.Length ? b.Length.CompareTo(a.Length) : a.Area != b.Area ? a.Area.CompareTo(b.Area) : a.Offset.CompareTo(b.Offset));
-        foreach (var block in sorted)
+        foreach (var block in BlockOrder.Sorted(blocks, BlockOrder.LongestFirst))
         {
             var index = open.FindIndex(f => capacity.Fits(f.Items.Count + 1, f.DataBytes + block.Length));
             var frame = index >= 0 ? open[index] : new OpenFrame();
@@ -38,10 +36,9 @@ internal static class FramePacker
             }
         }
 
-        return frames
-            .Select(f => f.Items.OrderBy(i => i.Area).ThenBy(i => i.Offset).ToImmutableArray())
-            .OrderBy(f => f[0].Area).ThenBy(f => f[0].Offset)
-            .ToList();
+        var packed = frames.Select(f => ImmutableArray.Create(BlockOrder.Sorted(f.Items, BlockOrder.ByAddress))).ToList();
+        packed.Sort((a, b) => BlockOrder.ByAddress(a[0], b[0]));
+        return packed;
     }
 
     private sealed class OpenFrame

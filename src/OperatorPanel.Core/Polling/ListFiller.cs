@@ -56,7 +56,7 @@ internal static class ListFiller
             ordered = [.. ordered.Where(l => l.Items.Count > 0).OrderByDescending(l => l.Items.Count)];
         }
 
-        return ([.. ordered.Select(l => l.Items.OrderBy(i => i.Area).ThenBy(i => i.Offset).ToImmutableArray())], rest);
+        return ([.. ordered.Select(l => ImmutableArray.Create(BlockOrder.Sorted(l.Items, BlockOrder.ByAddress)))], rest);
 
         bool Accepts(OpenList list, ReadItem block)
         {

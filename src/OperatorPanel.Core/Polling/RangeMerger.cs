@@ -45,7 +45,7 @@ internal static class RangeMerger
     public static List<ReadItem> Coalesce(IEnumerable<ReadItem> spans)
     {
         var result = new List<ReadItem>();
-        foreach (var span in spans.OrderBy(s => s.Area).ThenBy(s => s.Offset))
+        foreach (var span in BlockOrder.Sorted(spans, BlockOrder.ByAddress))
         {
             if (result.Count > 0 && result[^1].Area == span.Area && span.Offset <= End(result[^1]))
             {

@@ -39,8 +39,7 @@ internal sealed class StationBlocks
     {
         if (!_split.TryGetValue((bridged, maxLength), out var blocks))
         {
-            blocks = [.. RangeMerger.Split(bridged ? _bridged : _ranges, maxLength)
-                .OrderByDescending(b => b.Length).ThenBy(b => b.Area).ThenBy(b => b.Offset)];
+            blocks = [.. BlockOrder.Sorted(RangeMerger.Split(bridged ? _bridged : _ranges, maxLength), BlockOrder.LongestFirst)];
             _split[(bridged, maxLength)] = blocks;
         }
 
