@@ -47,6 +47,8 @@ public partial class MainWindow : Window
         BindingOperations.SetBinding(ZoomTransform, ScaleTransform.ScaleYProperty, new Binding(nameof(DockingViewModel.Zoom)) { Source = docking });
         LargeDisplayItem.SetBinding(MenuItem.InputGestureTextProperty, new Binding(nameof(DockingViewModel.ZoomText)) { Source = docking });
         SizeChanged += (_, _) => FitZoom();
+        // Shown or hidden as alarms come and go; one line high, so its height does not depend on the zoom.
+        AlarmBanner.SizeChanged += (_, _) => FitZoom();
         shell.Options.PropertyChanged += (_, e) => FitZoom();
         foreach (var pane in docking.Panes)
         {
@@ -83,7 +85,7 @@ public partial class MainWindow : Window
 
     /// <summary>
     /// The client area (the zoomed root's parent) and the unzoomed height of menu, banner and status bar go to the view
-    /// model; not on every banner change, which would let the zoom and the banner's wrapping chase each other.
+    /// model.
     /// </summary>
     private void FitZoom()
     {

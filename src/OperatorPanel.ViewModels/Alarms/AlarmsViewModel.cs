@@ -76,6 +76,17 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     [ObservableProperty]
     public partial string? HiddenPendingText { get; private set; }
 
+    /// <summary>
+    /// The banner's one line (an HMI's alarm line): the first pending alarm in <see cref="AlarmOrder"/>; null when none is
+    /// pending. One line whatever the number of alarms, so the banner never pushes the panes off a small screen.
+    /// </summary>
+    [ObservableProperty]
+    public partial AlarmRowViewModel? MostUrgent { get; private set; }
+
+    /// <summary>Beside <see cref="MostUrgent"/>: "and 4 more", the other pending alarms; null when there are none.</summary>
+    [ObservableProperty]
+    public partial string? MorePendingText { get; private set; }
+
     /// <summary>The first pending alarm out of view (the view scrolls it into view on request); null when none is hidden.</summary>
     [ObservableProperty]
     public partial AlarmRowViewModel? FirstHiddenPending { get; private set; }
@@ -202,6 +213,9 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     {
         ActiveCount = _tracker.ActiveCount;
         UnacknowledgedCount = _tracker.UnacknowledgedCount;
+        var pending = Rows.Count(r => r.IsPending);
+        MostUrgent = pending > 0 ? Rows[0] : null;
+        MorePendingText = pending > 1 ? $"and {pending - 1} more" : null;
         UpdateHiddenPending();
         AcknowledgeCommand.NotifyCanExecuteChanged();
         ExportCsvCommand.NotifyCanExecuteChanged();

@@ -275,6 +275,27 @@ public sealed class AlarmsViewModelTests : IDisposable
         alarms.HiddenPendingText.Should().BeNull("the alarm is no longer pending");
     }
 
+    [Fact]
+    public void MostUrgent_SeveralPending_IsTheFirstInOrderAndTheRestAreCounted()
+    {
+        using var alarms = Create();
+        alarms.MostUrgent.Should().BeNull();
+        alarms.MorePendingText.Should().BeNull();
+
+        _values.Publish([.. Bit(DoorOpen, on: true), .. Bit(LowLevel, on: true)]);
+        alarms.MostUrgent.Should().BeSameAs(Row(alarms, DoorOpen), "active unacknowledged before active acknowledged");
+        alarms.MorePendingText.Should().Be("and 1 more");
+
+        _values.Publish(Bit(Jam, on: true));
+        alarms.MostUrgent.Should().BeSameAs(Row(alarms, Jam), "a fault before a warning");
+        alarms.MorePendingText.Should().Be("and 2 more");
+
+        alarms.AcknowledgeAllCommand.Execute(null);
+        _values.Publish([.. Bit(Jam, on: false), .. Bit(DoorOpen, on: false)]);
+        alarms.MostUrgent.Should().BeSameAs(Row(alarms, LowLevel));
+        alarms.MorePendingText.Should().BeNull();
+    }
+
     private static AlarmRowViewModel Row(AlarmsViewModel alarms, Core.Addressing.PlcAddress flag) => alarms.Rows.Single(r => r.Flag == flag.ToString());
 
     private static List<string> Flags(AlarmsViewModel alarms) => [.. alarms.Rows.Select(r => r.Flag)];
