@@ -3,6 +3,7 @@ using System.Windows;
 using System.Windows.Automation;
 using System.Windows.Controls;
 using System.Windows.Data;
+using System.Windows.Media;
 using OperatorPanel.App.Generate;
 using OperatorPanel.App.Views;
 using OperatorPanel.ViewModels.Docking;
@@ -12,8 +13,8 @@ namespace OperatorPanel.App;
 
 /// <summary>
 /// The shell window. Code-behind is visual only: it places the pane views in the docking host, fills the View menu
-/// from the panes, shows Generate PLC code while the shell has one open, and turns the window's Closing into the
-/// shell's "save changes?" question.
+/// from the panes, zooms the window for Large display as DockingViewModel.FitZoom says, shows Generate PLC code while
+/// the shell has one open, and turns the window's Closing into the shell's "save changes?" question.
 /// </summary>
 public partial class MainWindow : Window
 {
@@ -41,6 +42,24 @@ public partial class MainWindow : Window
 
         Docking.Initialize(docking, CreateView, this);
         shell.PropertyChanged += OnShellChanged;
+
+        BindingOperations.SetBinding(ZoomTransform, ScaleTransform.ScaleXProperty, new Binding(nameof(DockingViewModel.Zoom)) { Source = docking });
+        BindingOperations.SetBinding(ZoomTransform, ScaleTransform.ScaleYProperty, new Binding(nameof(DockingViewModel.Zoom)) { Source = docking });
+        LargeDisplayItem.SetBinding(MenuItem.InputGestureTextProperty, new Binding(nameof(DockingViewModel.ZoomText)) { Source = docking });
+        SizeChanged += (_, _) => FitZoom();
+        // Shown or hidden as alarms come and go; one line high, so its height does not depend on the zoom.
+        AlarmBanner.SizeChanged += (_, _) => FitZoom();
+        shell.Options.PropertyChanged += (_, e) => FitZoom();
+        foreach (var pane in docking.Panes)
+        {
+            pane.PropertyChanged += (_, e) =>
+            {
+                if (e.PropertyName is nameof(DockPaneViewModel.IsVisible) or nameof(DockPaneViewModel.Placement))
+                {
+                    FitZoom();
+                }
+            };
+        }
     }
 
     protected override async void OnClosing(CancelEventArgs e)
@@ -61,6 +80,19 @@ public partial class MainWindow : Window
             // Closed again after this Closing has returned: when the shell answers at once (no line to disconnect), the
             // await does not yield and WPF refuses Close() from inside Closing.
             _ = Dispatcher.InvokeAsync(Close);
+        }
+    }
+
+    /// <summary>
+    /// The client area (the zoomed root's parent) and the unzoomed height of menu, banner and status bar go to the view
+    /// model.
+    /// </summary>
+    private void FitZoom()
+    {
+        if (VisualTreeHelper.GetParent(Root) is FrameworkElement client)
+        {
+            var chrome = MainMenu.ActualHeight + AlarmBanner.ActualHeight + StatusBar.ActualHeight;
+            _docking.FitZoom(client.ActualWidth, client.ActualHeight, chrome, _shell.Options.LargeDisplay);
         }
     }
 

@@ -13,8 +13,6 @@ namespace OperatorPanel.App.Docking;
 /// </summary>
 public sealed class DockHost : ContentControl
 {
-    private const double SplitterSize = 5;
-
     private readonly Grid _grid = new();
     private readonly Dictionary<DockPlacement, TabControl> _regions = [];
     private readonly Dictionary<DockPaneId, TabItem> _tabs = [];
@@ -33,6 +31,8 @@ public sealed class DockHost : ContentControl
 
         BuildGrid();
         Content = _grid;
+        // The window (or the Large display zoom) changed the room: the regions share it anew (DockFit).
+        SizeChanged += (_, _) => SizeRegions();
     }
 
     /// <summary>Shows the panes of <paramref name="docking"/>, each with the view <paramref name="createView"/> makes for it once.</summary>
@@ -131,22 +131,30 @@ public sealed class DockHost : ContentControl
         window.Close();
     }
 
+    /// <summary>Docked sizes as the panes ask, shrunk in proportion when the room leaves the centre less than its minimum (DockFit).</summary>
     private void SizeRegions()
     {
+        if (_docking is null)
+        {
+            return;
+        }
+
         var columns = _grid.ColumnDefinitions;
         var rows = _grid.RowDefinitions;
-        columns[0].Width = new GridLength(RegionSize(DockPlacement.Left));
-        columns[1].Width = new GridLength(_regions[DockPlacement.Left].Items.Count > 0 ? SplitterSize : 0);
-        columns[3].Width = new GridLength(_regions[DockPlacement.Right].Items.Count > 0 ? SplitterSize : 0);
-        columns[4].Width = new GridLength(RegionSize(DockPlacement.Right));
-        rows[1].Height = new GridLength(_regions[DockPlacement.Bottom].Items.Count > 0 ? SplitterSize : 0);
-        rows[2].Height = new GridLength(RegionSize(DockPlacement.Bottom));
+        var (left, right, bottom) = (Shown(DockPlacement.Left), Shown(DockPlacement.Right), Shown(DockPlacement.Bottom));
+        var splitters = (left > 0 ? DockFit.SplitterSize : 0) + (right > 0 ? DockFit.SplitterSize : 0);
+        var sides = DockFit.Regions(ActualWidth - splitters, DockFit.CentreMinimumWidth, DockFit.SideMinimum, left, right);
+        var below = DockFit.Regions(ActualHeight - (bottom > 0 ? DockFit.SplitterSize : 0), DockFit.CentreMinimumHeight, DockFit.BottomMinimum, bottom);
+        columns[0].Width = new GridLength(sides[0]);
+        columns[1].Width = new GridLength(left > 0 ? DockFit.SplitterSize : 0);
+        columns[3].Width = new GridLength(right > 0 ? DockFit.SplitterSize : 0);
+        columns[4].Width = new GridLength(sides[1]);
+        rows[1].Height = new GridLength(bottom > 0 ? DockFit.SplitterSize : 0);
+        rows[2].Height = new GridLength(below[0]);
     }
 
-    private double RegionSize(DockPlacement placement) =>
-        _regions[placement].Items.Count == 0
-            ? 0
-            : _regions[placement].Items.Cast<TabItem>().Select(t => ((DockPaneViewModel)t.DataContext).DockedSize).Max();
+    /// <summary>The size a docked region's panes ask for; 0 when no pane is docked there.</summary>
+    private double Shown(DockPlacement placement) => _regions[placement].Items.Count == 0 ? 0 : _docking!.RegionSize(placement);
 
     private void BuildGrid()
     {

@@ -14,6 +14,8 @@ namespace OperatorPanel.ViewModels.Alarms;
 /// all, the history of every transition (kept in <see cref="AlarmHistoryFile"/> when the project has a path) and its CSV
 /// export. <see cref="ActiveCount"/> and <see cref="UnacknowledgedCount"/> feed the shell's status bar, window shown or not.
 /// Each alarm's flag is subscribed on the line like any other value, so a flag change arrives on the UI thread.
+/// The list is kept in <see cref="AlarmOrder"/>, pending alarms first; the view reports which rows it shows
+/// (<see cref="ShowVisibleRows"/>) and <see cref="HiddenPendingText"/> counts the pending ones out of view.
 /// </summary>
 public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 {
@@ -22,6 +24,8 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     private readonly IFileDialogService _files;
     private readonly string _projectName;
     private readonly List<IDisposable> _subscriptions = [];
+    private readonly AlarmRowViewModel[] _projectRows;
+    private (int First, int Count)? _visibleRows;
 
     /// <param name="project">The project whose alarms are tracked.</param>
     /// <param name="projectPath">The project file, or null for a project not saved yet (history kept in memory only).</param>
@@ -49,7 +53,8 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
             History = [];
         }
 
-        Rows = new ObservableCollection<AlarmRowViewModel>(_tracker.Alarms.Select(a => new AlarmRowViewModel(a, time.LocalTimeZone)));
+        _projectRows = [.. _tracker.Alarms.Select(a => new AlarmRowViewModel(a, time.LocalTimeZone))];
+        Rows = new ObservableCollection<AlarmRowViewModel>(Ordered());
         UpdateCounts();
         foreach (var alarm in _tracker.Alarms)
         {
@@ -58,8 +63,33 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         }
     }
 
-    /// <summary>Every alarm of the project, in project order; the view filters on <see cref="AlarmRowViewModel.IsPending"/>.</summary>
+    /// <summary>
+    /// Every alarm of the project in <see cref="AlarmOrder"/>: pending (active or unacknowledged) alarms first. Rows move
+    /// (ObservableCollection.Move) as their state changes; the banner filters on <see cref="AlarmRowViewModel.IsPending"/>.
+    /// </summary>
     public ObservableCollection<AlarmRowViewModel> Rows { get; }
+
+    /// <summary>
+    /// "3 more pending alarms below", "1 pending alarm above", "2 pending alarms above, 1 below" when pending alarms are
+    /// out of the rows the view shows; null when every pending alarm is in view (or the view has not said what it shows).
+    /// </summary>
+    [ObservableProperty]
+    public partial string? HiddenPendingText { get; private set; }
+
+    /// <summary>
+    /// The banner's one line (an HMI's alarm line): the first pending alarm in <see cref="AlarmOrder"/>; null when none is
+    /// pending. One line whatever the number of alarms, so the banner never pushes the panes off a small screen.
+    /// </summary>
+    [ObservableProperty]
+    public partial AlarmRowViewModel? MostUrgent { get; private set; }
+
+    /// <summary>Beside <see cref="MostUrgent"/>: "and 4 more", the other pending alarms; null when there are none.</summary>
+    [ObservableProperty]
+    public partial string? MorePendingText { get; private set; }
+
+    /// <summary>The first pending alarm out of view (the view scrolls it into view on request); null when none is hidden.</summary>
+    [ObservableProperty]
+    public partial AlarmRowViewModel? FirstHiddenPending { get; private set; }
 
     /// <summary>Every transition, oldest first, including those loaded from the history file.</summary>
     public ObservableCollection<AlarmEvent> History { get; }
@@ -84,6 +114,58 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 
     public void Dispose() => _subscriptions.ForEach(s => s.Dispose());
 
+    /// <summary>
+    /// The view shows the rows <paramref name="first"/> to <paramref name="first"/> + <paramref name="count"/> - 1 of
+    /// <see cref="Rows"/> whole (scrolled, or a pane too low for all); the hidden pending alarms are counted from them.
+    /// </summary>
+    public void ShowVisibleRows(int first, int count)
+    {
+        _visibleRows = (Math.Max(first, 0), Math.Max(count, 0));
+        UpdateHiddenPending();
+    }
+
+    private void UpdateHiddenPending()
+    {
+        if (_visibleRows is not var (first, count))
+        {
+            (HiddenPendingText, FirstHiddenPending) = (null, null);
+            return;
+        }
+
+        var pending = Rows.Select((row, index) => (row, index)).Where(p => p.row.IsPending).ToList();
+        var above = pending.Where(p => p.index < first).ToList();
+        var below = pending.Where(p => p.index >= first + count).ToList();
+        FirstHiddenPending = above.Concat(below).Select(p => p.row).FirstOrDefault();
+        HiddenPendingText = (above.Count, below.Count) switch
+        {
+            (0, 0) => null,
+            (0, var b) => $"{b} more pending alarm{Plural(b)} below",
+            (var a, 0) => $"{a} pending alarm{Plural(a)} above",
+            (var a, var b) => $"{a} pending alarm{Plural(a)} above, {b} below",
+        };
+    }
+
+    private static string Plural(int count) => count == 1 ? string.Empty : "s";
+
+    private IEnumerable<AlarmRowViewModel> Ordered() =>
+        _projectRows.Select((row, index) => (Row: row, Index: index))
+            .Order(Comparer<(AlarmRowViewModel Row, int Index)>.Create((a, b) => AlarmOrder.Compare(a.Row.Status, a.Index, b.Row.Status, b.Index)))
+            .Select(p => p.Row);
+
+    /// <summary>Moves rows into <see cref="AlarmOrder"/>; a move, not a reset, keeps the grid's selection and scroll position.</summary>
+    private void Reorder()
+    {
+        var target = Ordered().ToList();
+        for (var i = 0; i < target.Count; i++)
+        {
+            var at = Rows.IndexOf(target[i]);
+            if (at != i)
+            {
+                Rows.Move(at, i);
+            }
+        }
+    }
+
     [RelayCommand(CanExecute = nameof(CanAcknowledge))]
     private void Acknowledge(AlarmRowViewModel row)
     {
@@ -107,10 +189,12 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
             return;
         }
 
-        for (var i = 0; i < Rows.Count; i++)
+        for (var i = 0; i < _projectRows.Length; i++)
         {
-            Rows[i].Update(_tracker.Alarms[i]);
+            _projectRows[i].Update(_tracker.Alarms[i]);
         }
+
+        Reorder();
 
         foreach (var entry in events)
         {
@@ -129,6 +213,10 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     {
         ActiveCount = _tracker.ActiveCount;
         UnacknowledgedCount = _tracker.UnacknowledgedCount;
+        var pending = Rows.Count(r => r.IsPending);
+        MostUrgent = pending > 0 ? Rows[0] : null;
+        MorePendingText = pending > 1 ? $"and {pending - 1} more" : null;
+        UpdateHiddenPending();
         AcknowledgeCommand.NotifyCanExecuteChanged();
         ExportCsvCommand.NotifyCanExecuteChanged();
     }

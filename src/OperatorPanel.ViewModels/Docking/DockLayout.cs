@@ -8,13 +8,17 @@ public sealed record DockLayout(ImmutableArray<PaneLayout> Panes)
     /// <summary>Smallest docked width/height kept from a layout file.</summary>
     public const double MinimumDockedSize = 80;
 
-    /// <summary>Inputs and Outputs side by side on the left and right, Memory in the centre, Alarms below, Diagnostics hidden.</summary>
+    /// <summary>
+    /// Inputs and Outputs side by side on the left and right, Memory in the centre, Alarms below, Diagnostics hidden. The
+    /// Alarms pane is tall enough for the sample project's eight alarms (tool bar, header and eight rows of 32 DIP, tab; 376 seen in the panel under Wine);
+    /// on a lower window <see cref="DockFit"/> shrinks it and the pending alarms stay on top.
+    /// </summary>
     public static DockLayout Default { get; } = new(
     [
         new PaneLayout(DockPaneId.Inputs, true, DockPlacement.Left, 260, FloatBounds.Default, 0),
         new PaneLayout(DockPaneId.Outputs, true, DockPlacement.Right, 260, FloatBounds.Default, 0),
         new PaneLayout(DockPaneId.Memory, true, DockPlacement.Center, 300, FloatBounds.Default, 0),
-        new PaneLayout(DockPaneId.Alarms, true, DockPlacement.Bottom, 200, FloatBounds.Default, 0),
+        new PaneLayout(DockPaneId.Alarms, true, DockPlacement.Bottom, 376, FloatBounds.Default, 0),
         new PaneLayout(DockPaneId.Diagnostics, false, DockPlacement.Center, 300, FloatBounds.Default, 1),
     ]);
 

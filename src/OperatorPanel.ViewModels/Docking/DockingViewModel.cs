@@ -19,6 +19,7 @@ public sealed partial class DockingViewModel : ObservableObject
         _layoutPath = layoutPath;
         Panes = new ReadOnlyCollection<DockPaneViewModel>(
             [.. DockLayout.Default.Panes.Select(p => new DockPaneViewModel(p, TitleOf(p.Id), $"{p.Id}Pane"))]);
+        Zoom = 1;
     }
 
     public IReadOnlyList<DockPaneViewModel> Panes { get; }
@@ -27,7 +28,29 @@ public sealed partial class DockingViewModel : ObservableObject
     [ObservableProperty]
     public partial string? Message { get; private set; }
 
+    /// <summary>The whole window's zoom: 1, or with View > Large display the largest that fits (<see cref="FitZoom"/>).</summary>
+    [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(ZoomText))]
+    public partial double Zoom { get; private set; }
+
+    /// <summary>For the View menu beside Large display: "1.35x"; empty at 1.</summary>
+    public string ZoomText => Zoom > 1 ? $"{Zoom:0.##}x" : string.Empty;
+
     public DockPaneViewModel this[DockPaneId id] => Panes.First(p => p.Id == id);
+
+    /// <summary>
+    /// Sets <see cref="Zoom"/> for a window client area of <paramref name="width"/> x <paramref name="height"/> DIP whose
+    /// menu, banner and status bar take <paramref name="chromeHeight"/> unzoomed: with Large display, the largest zoom up to
+    /// 1.6 at which the shown regions keep their minimum sizes (<see cref="DockFit.Zoom"/>); without, 1.
+    /// </summary>
+    public void FitZoom(double width, double height, double chromeHeight, bool largeDisplay) =>
+        Zoom = largeDisplay
+            ? DockFit.Zoom(width, height, chromeHeight, (RegionSize(DockPlacement.Left), RegionSize(DockPlacement.Right), RegionSize(DockPlacement.Bottom)))
+            : 1;
+
+    /// <summary>The size the docked panes ask of a side region: the largest of its shown panes; 0 when it has none.</summary>
+    public double RegionSize(DockPlacement placement) =>
+        Panes.Where(p => p.IsVisible && p.Placement == placement).Select(p => p.DockedSize).DefaultIfEmpty(0).Max();
 
     public static string TitleOf(DockPaneId id) => id switch
     {

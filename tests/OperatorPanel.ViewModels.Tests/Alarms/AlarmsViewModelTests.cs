@@ -21,7 +21,7 @@ public sealed class AlarmsViewModelTests : IDisposable
     public void Alarm_RaisedAcknowledgedCleared_LandsInHistoryAndCsv()
     {
         using var alarms = Create();
-        var jam = alarms.Rows[0];
+        var jam = Row(alarms, Jam);
 
         _values.Publish(Bit(Jam, on: true));
         jam.State.Should().Be(AlarmState.ActiveUnacknowledged);
@@ -52,8 +52,8 @@ public sealed class AlarmsViewModelTests : IDisposable
     public void StateText_NeverRaisedAndAlarmWithoutAcknowledgement_ReadAsTheOperatorSeesThem()
     {
         using var alarms = Create();
-        var jam = alarms.Rows.Single(r => r.Flag == "M0.0");
-        var lowLevel = alarms.Rows.Single(r => r.Flag == "V10.1");
+        var jam = Row(alarms, Jam);
+        var lowLevel = Row(alarms, LowLevel);
 
         jam.StateText.Should().Be("not raised");
         _values.Publish([.. Bit(Jam, on: true), .. Bit(LowLevel, on: true)]);
@@ -76,8 +76,8 @@ public sealed class AlarmsViewModelTests : IDisposable
 
         alarms.AcknowledgeAllCommand.Execute(null);
 
-        alarms.Rows[0].State.Should().Be(AlarmState.ActiveAcknowledged);
-        alarms.Rows[2].State.Should().Be(AlarmState.Cleared);
+        Row(alarms, Jam).State.Should().Be(AlarmState.ActiveAcknowledged);
+        Row(alarms, DoorOpen).State.Should().Be(AlarmState.Cleared);
         alarms.UnacknowledgedCount.Should().Be(0);
         alarms.AcknowledgeAllCommand.CanExecute(null).Should().BeFalse();
         alarms.History.Count(e => e.Transition == AlarmTransition.Acknowledged).Should().Be(2);
@@ -105,8 +105,8 @@ public sealed class AlarmsViewModelTests : IDisposable
         _values.Publish(Bit(Jam, on: true));
         _values.Publish(Bit(Jam, on: false, quality));
 
-        alarms.Rows[2].State.Should().Be(AlarmState.Cleared);
-        alarms.Rows[0].State.Should().Be(AlarmState.ActiveUnacknowledged);
+        Row(alarms, DoorOpen).State.Should().Be(AlarmState.Cleared);
+        Row(alarms, Jam).State.Should().Be(AlarmState.ActiveUnacknowledged);
         alarms.History.Should().ContainSingle();
     }
 
@@ -115,13 +115,13 @@ public sealed class AlarmsViewModelTests : IDisposable
     {
         using var alarms = Create();
         _values.Publish(Bit(LowLevel, on: true));
-        alarms.Rows[1].State.Should().Be(AlarmState.ActiveAcknowledged);
+        Row(alarms, LowLevel).State.Should().Be(AlarmState.ActiveAcknowledged);
         alarms.UnacknowledgedCount.Should().Be(0);
 
         _values.Publish(Bit(LowLevel, on: false));
 
-        alarms.Rows[1].State.Should().Be(AlarmState.Cleared);
-        alarms.AcknowledgeCommand.CanExecute(alarms.Rows[1]).Should().BeFalse();
+        Row(alarms, LowLevel).State.Should().Be(AlarmState.Cleared);
+        alarms.AcknowledgeCommand.CanExecute(Row(alarms, LowLevel)).Should().BeFalse();
     }
 
     [Fact]
@@ -134,9 +134,9 @@ public sealed class AlarmsViewModelTests : IDisposable
 
         _values.Publish(Bit(Jam, on: true));
 
-        alarms.Rows[0].State.Should().Be(AlarmState.ActiveUnacknowledged);
-        alarms.Rows[0].RaisedAt.Should().Be(_clock.GetUtcNow());
-        alarms.Rows[0].ClearedAt.Should().BeNull();
+        Row(alarms, Jam).State.Should().Be(AlarmState.ActiveUnacknowledged);
+        Row(alarms, Jam).RaisedAt.Should().Be(_clock.GetUtcNow());
+        Row(alarms, Jam).ClearedAt.Should().BeNull();
     }
 
     [Fact]
@@ -152,7 +152,7 @@ public sealed class AlarmsViewModelTests : IDisposable
 
         second.History.Should().ContainSingle().Which.Should().Be(new AlarmEvent(
             _clock.GetUtcNow(), "Filler", Station, Jam, AlarmTransition.Raised, AlarmState.ActiveUnacknowledged, AlarmClass.Fault, "Conveyor jam, \"infeed\", stop"));
-        second.Rows[0].State.Should().Be(AlarmState.ActiveUnacknowledged);
+        Row(second, Jam).State.Should().Be(AlarmState.ActiveUnacknowledged);
         second.UnacknowledgedCount.Should().Be(1);
         second.Message.Should().BeNull();
         File.Exists(_folder.File("line.alarms.jsonl")).Should().BeTrue();
@@ -197,6 +197,108 @@ public sealed class AlarmsViewModelTests : IDisposable
 
         alarms.ActiveCount.Should().Be(0);
     }
+
+    [Fact]
+    public void Rows_AlarmsChangeState_PendingComeFirstByStateThenClassThenLatestRaise()
+    {
+        using var alarms = Create();
+        Flags(alarms).Should().Equal("M0.0", "V10.1", "M0.1");
+
+        _values.Publish(Bit(DoorOpen, on: true));
+        _clock.Advance(TimeSpan.FromSeconds(1));
+        _values.Publish(Bit(LowLevel, on: true));
+        _clock.Advance(TimeSpan.FromSeconds(1));
+        _values.Publish(Bit(Jam, on: true));
+        Flags(alarms).Should().Equal(["M0.0", "M0.1", "V10.1"], "active unacknowledged (fault, then warning) before active acknowledged");
+
+        alarms.AcknowledgeCommand.Execute(Row(alarms, Jam));
+        alarms.AcknowledgeCommand.Execute(Row(alarms, DoorOpen));
+        Flags(alarms).Should().Equal(["M0.0", "V10.1", "M0.1"], "all active acknowledged: the fault, then the warning raised last");
+
+        _values.Publish([.. Bit(Jam, on: false), .. Bit(LowLevel, on: false)]);
+        _clock.Advance(TimeSpan.FromSeconds(1));
+        _values.Publish(Bit(Jam, on: true));
+        _values.Publish(Bit(Jam, on: false));
+        Flags(alarms).Should().Equal(["M0.1", "M0.0", "V10.1"], "active, then cleared unacknowledged, then cleared");
+    }
+
+    [Fact]
+    public void AlarmOrder_ClearedAlarms_RaisedBeforeComeBeforeNeverRaisedAndProjectOrderBreaksTies()
+    {
+        var project = AlarmProject.Create().Stations[0];
+        AlarmStatus Status(int i, DateTimeOffset? raisedAt) =>
+            new("Filler", Station, project.Alarms[i], AlarmState.Cleared, raisedAt, raisedAt, null);
+        var morning = new DateTimeOffset(2024, 1, 15, 8, 0, 0, TimeSpan.Zero);
+
+        AlarmOrder.Compare(Status(1, null), 1, Status(2, morning), 2).Should().BePositive();
+        AlarmOrder.Compare(Status(1, morning), 1, Status(2, morning), 2).Should().BeNegative();
+        AlarmOrder.Compare(Status(2, morning), 2, Status(0, null), 0).Should().BePositive("a fault comes before a warning whatever their times");
+    }
+
+    [Fact]
+    public void HiddenPendingText_PaneShowsFewerRowsThanPending_CountsThoseAboveAndBelow()
+    {
+        using var alarms = Create();
+        _values.Publish([.. Bit(Jam, on: true), .. Bit(DoorOpen, on: true), .. Bit(LowLevel, on: true)]);
+        alarms.HiddenPendingText.Should().BeNull("the view has not said what it shows");
+
+        alarms.ShowVisibleRows(0, 1);
+        alarms.HiddenPendingText.Should().Be("2 more pending alarms below");
+        alarms.FirstHiddenPending.Should().BeSameAs(Row(alarms, DoorOpen));
+
+        alarms.ShowVisibleRows(1, 1);
+        alarms.HiddenPendingText.Should().Be("1 pending alarm above, 1 below");
+        alarms.FirstHiddenPending.Should().BeSameAs(Row(alarms, Jam));
+
+        alarms.ShowVisibleRows(2, 1);
+        alarms.HiddenPendingText.Should().Be("2 pending alarms above");
+
+        alarms.ShowVisibleRows(0, 3);
+        alarms.HiddenPendingText.Should().BeNull();
+        alarms.FirstHiddenPending.Should().BeNull();
+    }
+
+    [Fact]
+    public void HiddenPendingText_AlarmRaisedWhileScrolledPastTheTop_CountsItAbove()
+    {
+        using var alarms = Create();
+        alarms.ShowVisibleRows(1, 2);
+        alarms.HiddenPendingText.Should().BeNull("nothing is pending");
+
+        _values.Publish(Bit(DoorOpen, on: true));
+
+        Flags(alarms)[0].Should().Be("M0.1");
+        alarms.HiddenPendingText.Should().Be("1 pending alarm above");
+
+        alarms.AcknowledgeCommand.Execute(Row(alarms, DoorOpen));
+        _values.Publish(Bit(DoorOpen, on: false));
+        alarms.HiddenPendingText.Should().BeNull("the alarm is no longer pending");
+    }
+
+    [Fact]
+    public void MostUrgent_SeveralPending_IsTheFirstInOrderAndTheRestAreCounted()
+    {
+        using var alarms = Create();
+        alarms.MostUrgent.Should().BeNull();
+        alarms.MorePendingText.Should().BeNull();
+
+        _values.Publish([.. Bit(DoorOpen, on: true), .. Bit(LowLevel, on: true)]);
+        alarms.MostUrgent.Should().BeSameAs(Row(alarms, DoorOpen), "active unacknowledged before active acknowledged");
+        alarms.MorePendingText.Should().Be("and 1 more");
+
+        _values.Publish(Bit(Jam, on: true));
+        alarms.MostUrgent.Should().BeSameAs(Row(alarms, Jam), "a fault before a warning");
+        alarms.MorePendingText.Should().Be("and 2 more");
+
+        alarms.AcknowledgeAllCommand.Execute(null);
+        _values.Publish([.. Bit(Jam, on: false), .. Bit(DoorOpen, on: false)]);
+        alarms.MostUrgent.Should().BeSameAs(Row(alarms, LowLevel));
+        alarms.MorePendingText.Should().BeNull();
+    }
+
+    private static AlarmRowViewModel Row(AlarmsViewModel alarms, Core.Addressing.PlcAddress flag) => alarms.Rows.Single(r => r.Flag == flag.ToString());
+
+    private static List<string> Flags(AlarmsViewModel alarms) => [.. alarms.Rows.Select(r => r.Flag)];
 
     private AlarmsViewModel Create(string? projectPath = null) =>
         new(AlarmProject.Create(), projectPath, _values, _clock, _files);

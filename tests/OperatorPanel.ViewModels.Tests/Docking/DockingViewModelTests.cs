@@ -127,4 +127,35 @@ public sealed class DockingViewModelTests : IDisposable
         pane.FloatCommand.CanExecute(null).Should().BeFalse();
         pane.DockCommand.CanExecute(DockPlacement.Left).Should().BeTrue();
     }
+
+    [Fact]
+    public void FitZoom_LargeDisplayOffOrOn_IsOneOrWhatTheWindowFits()
+    {
+        var docking = new DockingViewModel(LayoutPath);
+
+        docking.FitZoom(1272, 773, 92, largeDisplay: false);
+        docking.Zoom.Should().Be(1);
+        docking.ZoomText.Should().BeEmpty();
+
+        docking.FitZoom(1272, 773, 92, largeDisplay: true);
+        docking.Zoom.Should().BeApproximately(1.35, 1e-9);
+        docking.ZoomText.Should().Be($"{1.35:0.##}x");
+
+        docking.FitZoom(1920, 1050, 92, largeDisplay: true);
+        docking.Zoom.Should().Be(1.6);
+    }
+
+    [Fact]
+    public void FitZoom_AlarmsPaneHidden_TheLowWindowZoomsFurther()
+    {
+        var docking = new DockingViewModel(LayoutPath);
+        docking[DockPaneId.Alarms].IsVisible = false;
+
+        // Without the bottom region the width decides: 1272 / (205 + 205 + 420) = 1.53.
+        docking.FitZoom(1272, 773, 92, largeDisplay: true);
+
+        docking.Zoom.Should().BeApproximately(1.5, 1e-9);
+        docking.RegionSize(DockPlacement.Bottom).Should().Be(0);
+        docking.RegionSize(DockPlacement.Left).Should().Be(260);
+    }
 }
