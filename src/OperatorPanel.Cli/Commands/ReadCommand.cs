@@ -62,7 +62,7 @@ internal static class ReadCommand
         var status = run.Engine.GetStationStatus(target.Station);
         if (status.State != StationState.Online)
         {
-            return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: {status.LastError}");
+            return LinkFailure.From(target, status.LastError, status.LastErrorKind).Report(cli);
         }
 
         var views = addresses.Distinct().Select(a => ReadValueView.From(a, run.Engine.TryGetValue(target.Station, a, out var v) ? v : null)).ToList();

@@ -95,7 +95,7 @@ internal static class SimulateCommand
         }
         catch (PlcCommunicationException ex)
         {
-            return cli.Fail(ExitCodes.LinkFailure, $"{settings.PortName}: {ex.Kind}: {ex.Message}");
+            return cli.Fail(ExitCodes.LinkFailure, $"{ex.Message}; the simulated PLCs stopped");
         }
 
         serving.WriteSummary(cli, host.Replies, line.Line.FramesReceived);

@@ -81,7 +81,8 @@ internal static class StopCommand
         var loaded = ProjectFile.Load(projectPath);
         if (!loaded.Ok)
         {
-            error = $"{projectPath}: {string.Join("; ", loaded.Errors.Select(e => $"{e.Location}: {e.Message}"))}";
+            error = $"{projectPath} has {loaded.Errors.Length} problem{(loaded.Errors.Length == 1 ? string.Empty : "s")}; nothing sent:"
+                + string.Concat(loaded.Errors.Select(e => $"{Environment.NewLine}{projectPath}: {e.Location}: {e.Message}"));
             return false;
         }
 

@@ -33,6 +33,11 @@ internal static class SnapshotRenderer
         var resting = s.NextTryInSeconds is { } n ? $" (next try in {n} s: others on the bus answer)" : string.Empty;
         o.AppendLine(CultureInfo.InvariantCulture, $"{s.Name}  station {s.Station}  {s.Cpu}  {s.Port}  {s.State}{resting}");
         o.AppendLine(CultureInfo.InvariantCulture, $"  link     requests {l.Requests}  replies {l.Replies}  retries {l.Retries}  timeouts {l.Timeouts}  rtt avg {rtt}");
+        if (s.Handler is not null)
+        {
+            o.AppendLine(CultureInfo.InvariantCulture, $"  handler  {s.Handler}");
+        }
+
         if (s.LastError is not null)
         {
             o.AppendLine(CultureInfo.InvariantCulture, $"  last error: {s.LastError}");

@@ -44,14 +44,34 @@ public sealed class ReadCommandTests
     }
 
     [Fact]
-    public void Read_MissingDevice_ExitsTwoNamingStationPortAndKind()
+    public void Read_MissingDevice_ExitsTwoNamingThePortAndWhatToCheck()
     {
         var device = Path.Combine(Path.GetTempPath(), "opanel-no-such-port-" + Guid.NewGuid().ToString("N"));
 
         var run = CliRunner.Run("read", "VB0", "--device", device, "--station", "5");
 
         run.ExitCode.Should().Be(2);
-        run.Error.Should().Contain($"station 5 on {device}").And.Contain("PortUnavailable");
+        var lines = run.Error.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries);
+        lines.Should().HaveCount(2, "what happened, then what to check; the log's warnings are not echoed again");
+        lines[0].Should().StartWith($"opanel: station 5: serial port {device}: open failed");
+        lines[1].Should().Be($"opanel: check the port name ({device}), that the cable or USB adapter is plugged in, and that no other "
+            + "program (Micro/WIN, another opanel) has the port open");
+        run.Error.Should().NotContain("PortUnavailable", "the kind is for scripts (--json), not for the technician");
+    }
+
+    [Fact]
+    public void Read_MissingDeviceJson_GivesErrorKindAndHint()
+    {
+        var device = Path.Combine(Path.GetTempPath(), "opanel-no-such-port-" + Guid.NewGuid().ToString("N"));
+
+        var run = CliRunner.Run("read", "VB0", "--device", device, "--json");
+
+        run.ExitCode.Should().Be(2);
+        using var json = JsonDocument.Parse(run.Out);
+        json.RootElement.GetProperty("ok").GetBoolean().Should().BeFalse();
+        json.RootElement.GetProperty("error").GetString().Should().StartWith($"station 2: serial port {device}: open failed");
+        json.RootElement.GetProperty("kind").GetString().Should().Be("portUnavailable");
+        json.RootElement.GetProperty("hint").GetString().Should().StartWith($"check the port name ({device})");
     }
 
     [Theory]

@@ -43,7 +43,9 @@ public sealed class SimulateCommandTests
             "SMB6     144         16#90        good",
             "Q1.1     1                        good"); // the panel owns Q1.1 now; the demo process leaves it alone
         silent.ExitCode.Should().Be(2);
-        silent.Error.Should().Contain($"station 9 on {pty.PathB}: NoAnswer");
+        silent.Error.Should().StartWith($"opanel: station 9 on {pty.PathB}: no valid reply to Read after ")
+            .And.Contain("opanel: nothing answers as station 9: check that the PLC is in RUN with its mode switch at RUN")
+            .And.Contain("handler was generated for station 9 at 19200 8N1");
 
         (await simulator).Should().Be(0);
         var summary = Text(output, simulatorOut);
@@ -57,7 +59,8 @@ public sealed class SimulateCommandTests
         var run = CliRunner.Run("simulate", "--cpu", "224", "--station", "2", "--device", "/dev/opanel-no-such-port", "--duration", "1");
 
         run.ExitCode.Should().Be(2);
-        run.Error.Should().Contain("/dev/opanel-no-such-port").And.Contain("PortUnavailable");
+        run.Error.Should().StartWith("opanel: serial port /dev/opanel-no-such-port: open failed").And.Contain("the simulated PLCs stopped")
+            .And.NotContain("PortUnavailable");
     }
 
     [Theory]
