@@ -74,6 +74,74 @@ public sealed class SimulateCommandTests
         CliRunner.Run("simulate", "--cpu", "224", "--device", "/dev/null", option1, value1, option2, value2).ExitCode.Should().Be(1);
     }
 
+    [Fact]
+    public async Task Simulate_ProjectWithTwoCpus_ServesEachStationWithItsOwnCpuOnOneDevice()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        var project = TwoCpuProject(pty.PathB);
+        using var simulatorOut = new StringWriter();
+        var output = TextWriter.Synchronized(simulatorOut);
+        string[] args = ["simulate", "--project", project, "--device", pty.PathA, "--duration", "4", "--no-process", "--log-dir", LogDir];
+        var simulator = Task.Run(() => OpanelApp.Run(args, output, TextWriter.Null));
+        await WaitForAsync(() => Text(output, simulatorOut).Contains("simulating", StringComparison.Ordinal));
+        string[] line = ["--device", pty.PathB, "--scan-ms", "1000"];
+
+        var filler = CliRunner.Run(["identify", "--station", "2", "--cpu", "224", .. line]);
+        var capper = CliRunner.Run(["identify", "--station", "3", "--cpu", "226", .. line]);
+
+        filler.ExitCode.Should().Be(0, filler.Error);
+        filler.Out.Should().Contain("generated for CPU 224 (Current)").And.Contain("STOP          in the handler");
+        capper.ExitCode.Should().Be(0, capper.Error);
+        capper.Out.Should().Contain("generated for CPU 226 (Current)").And.Contain("STOP          not in the handler");
+        (await simulator).Should().Be(0);
+        Text(output, simulatorOut).Should().StartWith(
+            $"simulating station 2 (CPU 224), station 3 (CPU 226) on {pty.PathA} 9600 8N1, reply delay 5 ms, model stl, demo process off");
+        File.Delete(project);
+    }
+
+    [Theory]
+    [InlineData("--cpu", "224", "with --project each station's CPU and the bus's line settings come from the project; leave out --cpu")]
+    [InlineData("--baud", "19200", "with --project each station's CPU and the bus's line settings come from the project; leave out --baud")]
+    [InlineData("--station", "7", "station 7 is not in {0} (it has 2 Filler, 3 Capper)")]
+    public void Simulate_ProjectWithAConflictingOption_SaysWhichAndExitsOne(string option, string value, string message)
+    {
+        var project = TwoCpuProject("COM3");
+
+        var run = CliRunner.Run("simulate", "--project", project, "--device", "/dev/null", option, value);
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be($"opanel: {string.Format(System.Globalization.CultureInfo.InvariantCulture, message, project)}{Environment.NewLine}");
+        File.Delete(project);
+    }
+
+    [Fact]
+    public void Simulate_NeitherCpuNorProject_SaysWhatToGive()
+    {
+        var run = CliRunner.Run("simulate", "--device", "/dev/null");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be("opanel: give the simulated PLCs with --cpu and --station (e.g. --cpu 224 --station 2), or a project's bus with --project"
+            + Environment.NewLine);
+    }
+
+    /// <summary>Filler: CPU 224 station 2 with STOP; Capper: CPU 226 station 3; both on <paramref name="port"/>.</summary>
+    private static string TwoCpuProject(string port)
+    {
+        var file = Path.Combine(Path.GetTempPath(), $"opanel-simulate-{Guid.NewGuid():N}.opproj");
+        File.WriteAllText(file, $$"""
+            {
+              "schemaVersion": 1,
+              "name": "Packing line",
+              "refresh": { "mode": "continuous", "minimumPeriodMs": 100 },
+              "stations": [
+                { "name": "Filler", "address": 2, "cpu": { "model": "224" }, "link": { "port": "{{port}}" }, "allowStop": true },
+                { "name": "Capper", "address": 3, "cpu": { "model": "226" }, "link": { "port": "{{port}}" } }
+              ]
+            }
+            """);
+        return file;
+    }
+
     private static string LogDir => Path.Combine(Path.GetTempPath(), "opanel-tests-logs");
 
     private static string Text(TextWriter synchronized, StringWriter inner)
