@@ -40,7 +40,9 @@ internal static class SnapshotRenderer
 
         if (s.LastError is not null)
         {
-            o.AppendLine(CultureInfo.InvariantCulture, $"  last error: {s.LastError}");
+            // Kept after the station answers again (the cause stays readable); then it is history, not the present state.
+            var label = s.State == "online" ? "earlier error (it answers now)" : "last error";
+            o.AppendLine(CultureInfo.InvariantCulture, $"  {label}: {s.LastError}");
         }
 
         Lamps(o, "inputs", s.Inputs);
