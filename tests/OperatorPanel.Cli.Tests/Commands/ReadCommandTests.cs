@@ -74,6 +74,42 @@ public sealed class ReadCommandTests
         json.RootElement.GetProperty("hint").GetString().Should().StartWith($"check the port name ({device})");
     }
 
+    [Fact]
+    public void Read_ProjectStationByName_TakesItsCpuAndAddressFromTheProject()
+    {
+        var project = Path.Combine(Path.GetTempPath(), $"opanel-read-{Guid.NewGuid():N}.opproj");
+        File.WriteAllText(project, """
+            {
+              "schemaVersion": 1, "name": "Packing line", "refresh": { "mode": "continuous", "minimumPeriodMs": 100 },
+              "stations": [
+                { "name": "Filler", "address": 2, "cpu": { "model": "224" }, "link": { "port": "COM3" } },
+                { "name": "Capper", "address": 3, "cpu": { "model": "226" }, "link": { "port": "COM3" } }
+              ]
+            }
+            """);
+
+        var capper = CliRunner.Run("read", "SMB6", "--project", project, "--station", "capper", "--demo");
+        var filler = CliRunner.Run("read", "VB9000", "--project", project, "--station", "Filler", "--demo");
+        var neither = CliRunner.Run("read", "SMB6", "--project", project, "--demo");
+        File.Delete(project);
+
+        capper.ExitCode.Should().Be(0, capper.Error);
+        capper.Out.Should().Be($"SMB6     144         16#90        good{Environment.NewLine}", "the demo simulates the project's CPU 226");
+        filler.ExitCode.Should().Be(1);
+        filler.Error.Should().Be($"opanel: VB9000 is past the last V byte VB8191 of CPU 224{Environment.NewLine}");
+        neither.ExitCode.Should().Be(1);
+        neither.Error.Should().Contain("the project has 2 stations (Filler (2), Capper (3)); choose one with --station");
+    }
+
+    [Fact]
+    public void Read_StationNameWithoutProject_SaysAddressesAreNumbers()
+    {
+        var run = CliRunner.Run("read", "VB0", "--demo", "--station", "Filler");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be($"opanel: --station 'Filler': a station address is a number 1-126 (a station's name works with --project){Environment.NewLine}");
+    }
+
     [Theory]
     [InlineData("--station", "0")]
     [InlineData("--baud", "9601")]
