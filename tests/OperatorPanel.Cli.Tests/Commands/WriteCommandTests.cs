@@ -77,6 +77,15 @@ public sealed class WriteCommandTests
     }
 
     [Fact]
+    public void Write_BadInputJson_KeepsTheMessagesApostrophesReadable()
+    {
+        var run = CliRunner.Run("write", "I0.0=1", "--demo", "--json");
+
+        run.ExitCode.Should().Be(1);
+        run.Out.Should().Contain("\"error\": \"I0.0: inputs are the field's; the panel link writes only Q, M, V and SM; nothing written\"");
+    }
+
+    [Fact]
     public void Write_MissingDevice_ExitsTwoAndWritesNothing()
     {
         var device = Path.Combine(Path.GetTempPath(), "opanel-no-such-port-" + Guid.NewGuid().ToString("N"));
