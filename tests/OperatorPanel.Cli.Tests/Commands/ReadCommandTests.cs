@@ -102,6 +102,33 @@ public sealed class ReadCommandTests
     }
 
     [Fact]
+    public void Read_AddressWithFormat_ShowsTheValueSoInTextAndJson()
+    {
+        var text = CliRunner.Run("read", "SMB6:binary", "VD120:real", "--demo");
+        var json = CliRunner.Run("read", "VD120:real", "--demo", "--json");
+
+        text.ExitCode.Should().Be(0, text.Error);
+        text.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            "SMB6     2#0010_0000 16#20        good",
+            "VD120    500         16#43FA0000  good"); // the demo's fill setpoint, a REAL of 500 ml
+        using var doc = JsonDocument.Parse(json.Out);
+        doc.RootElement[0].GetProperty("value").GetUInt64().Should().Be(0x43FA0000, "the unsigned value stays for scripts");
+        doc.RootElement[0].GetProperty("shown").GetString().Should().Be("500");
+    }
+
+    [Theory]
+    [InlineData("VW200:real", "opanel: 'VW200:real': a REAL needs a double word such as VD100")]
+    [InlineData("M0.0:hex", "opanel: 'M0.0:hex': a bit is shown as 0/1; formats are for bytes, words and double words")]
+    [InlineData("VD0:bogus", "opanel: 'VD0:bogus': unknown format 'bogus'; use real, signed, unsigned, hex, binary or ascii")]
+    public void Read_FormatThatDoesNotFit_ExitsOneNamingIt(string address, string message)
+    {
+        var run = CliRunner.Run("read", address, "--demo");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be(message + Environment.NewLine);
+    }
+
+    [Fact]
     public void Read_StationNameWithoutProject_SaysAddressesAreNumbers()
     {
         var run = CliRunner.Run("read", "VB0", "--demo", "--station", "Filler");
