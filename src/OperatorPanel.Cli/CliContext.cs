@@ -18,6 +18,8 @@ internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, I
 
     private static readonly JsonSerializerOptions JsonOptions = new()
     {
+        // Messages quote addresses ('M10.8') and use apostrophes: kept as typed, not as \u0027; never embedded in HTML.
+        Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping,
         WriteIndented = true,
         PropertyNamingPolicy = JsonNamingPolicy.CamelCase,
         Converters = { new JsonStringEnumConverter() },

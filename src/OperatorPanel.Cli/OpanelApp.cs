@@ -51,15 +51,17 @@ internal sealed class GlobalOptions
 
     private readonly Option<LogEventLevel> _logLevel = new("--log-level")
     {
-        Description = "Level written to the log file (Verbose, Debug, Information, Warning, Error)",
+        Description = "Level written to the log file",
         DefaultValueFactory = _ => LogEventLevel.Information,
         Recursive = true,
     };
 
     private readonly Option<LogEventLevel> _consoleLevel = new("--console-level")
     {
-        Description = "Level echoed to stderr",
-        DefaultValueFactory = _ => LogEventLevel.Warning,
+        // Error, not Warning: every warning of a verb (a write's read-back, a silent station) is in its own output already;
+        // echoed too, each fact came out two or three times and scribbled over watch's live view.
+        Description = "Level echoed to stderr (default Error: what a verb prints says the rest; Warning adds the log's warnings)",
+        DefaultValueFactory = _ => LogEventLevel.Error,
         Recursive = true,
     };
 

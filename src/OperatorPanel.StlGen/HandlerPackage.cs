@@ -87,6 +87,13 @@ public sealed record HandlerPackage
             return false;
         }
 
+        if (File.Exists(folder))
+        {
+            // Directory.CreateDirectory says only "already exists", which reads as if the folder were fine.
+            error = $"{folder} is a file, not a folder: give the folder for the generated files";
+            return false;
+        }
+
         try
         {
             Directory.CreateDirectory(folder);

@@ -118,6 +118,41 @@ public sealed class ProjectCommandTests : IDisposable
             $"{file}: 2 problems");
     }
 
+    [Theory]
+    [InlineData("generate", "nothing generated")]
+    [InlineData("watch", "nothing watched")]
+    public void VerbNeedingAProject_BadFile_ListsEveryProblemLikeCheckOneALine(string verb, string notDone)
+    {
+        var file = FileIn("bad.opproj");
+        File.WriteAllText(file, BadSample());
+        string[] args = verb == "generate" ? ["generate", file, "-o", FileIn("plc"), "--station", "2"] : ["watch", file, "--once"];
+
+        var run = Run(args);
+
+        run.Code.Should().Be(1);
+        run.Out.Should().BeEmpty();
+        run.Error.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            $"{file}: $.stations[0].link.stopBits: 2 stop bits: S7-200 Freeport always sends one stop bit; use 1",
+            $"{file}: $.stations[0].tags[3].address: VW8191 ends at VB8192, past the last V byte VB8191 of CPU 224",
+            $"opanel: {file}: 2 problems; {notDone}");
+    }
+
+    [Fact]
+    public void Check_OneAlarmOneTag_SummaryCountsInTheSingular()
+    {
+        var file = FileIn("line.opproj");
+        Run("project", "new", "--cpu", "221", "-o", file).Code.Should().Be(0);
+        var json = System.Text.Json.Nodes.JsonNode.Parse(File.ReadAllText(file))!;
+        json["stations"]![0]!["tags"] = System.Text.Json.Nodes.JsonNode.Parse("""[{"symbol":"Count","address":"VW0"}]""");
+        json["stations"]![0]!["alarms"] = System.Text.Json.Nodes.JsonNode.Parse("""[{"flag":"M0.0","text":"Jam"}]""");
+        File.WriteAllText(file, json.ToJsonString());
+
+        var run = Run("project", "check", file);
+
+        run.Code.Should().Be(0, run.Out);
+        run.Out.Should().Contain("; 6 inputs, 4 outputs, 1 tag, 1 alarm\n");
+    }
+
     [Fact]
     public void Check_BadFileJson_ListsProblems()
     {

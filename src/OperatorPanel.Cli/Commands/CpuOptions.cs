@@ -7,10 +7,10 @@ namespace OperatorPanel.Cli.Commands;
 /// <summary>The --cpu and --revision options shared by verbs that need a CPU.</summary>
 internal static class CpuOptions
 {
-    public static Option<string> Model() => new("--cpu")
+    public static Option<string> Model(bool required = true) => new("--cpu")
     {
         Description = "CPU model: 221, 222, 224, 224XP or 226",
-        Required = true,
+        Required = required,
     };
 
     public static Option<string?> Revision() => new("--revision")

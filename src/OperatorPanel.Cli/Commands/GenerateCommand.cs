@@ -44,7 +44,7 @@ internal static class GenerateCommand
             var loaded = ProjectFile.Load(path);
             if (!loaded.Ok)
             {
-                return cli.Fail(ExitCodes.BadInput, $"{path}: {string.Join("; ", loaded.Errors.Select(e => $"{e.Location}: {e.Message}"))}");
+                return ProjectProblemsView.Report(cli, path, loaded.Errors, "nothing generated");
             }
 
             if (!GenerateSettings.TrySelectStation(loaded.Project, parse.GetValue(station), out var chosen, out var error)

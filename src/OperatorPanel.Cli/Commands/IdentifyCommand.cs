@@ -38,7 +38,7 @@ internal static class IdentifyCommand
             }
             catch (PlcCommunicationException ex)
             {
-                return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: {ex.Kind}: {ex.Message}");
+                return LinkFailure.From(target, ex).Report(cli);
             }
 
             if (response is not IdentifyResponse identity)

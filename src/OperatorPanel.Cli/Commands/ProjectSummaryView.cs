@@ -16,13 +16,15 @@ internal sealed record ProjectSummaryView(string Name, string Refresh, int Minim
     public void WriteText(TextWriter o)
     {
         var refresh = Refresh == "continuous" ? $"continuous refresh, at least {MinimumPeriodMs} ms apart" : "triggered refresh";
-        o.WriteLine($"project   \"{Name}\", {Stations.Count} station{(Stations.Count == 1 ? string.Empty : "s")}, {refresh}");
+        o.WriteLine($"project   \"{Name}\", {Count(Stations.Count, "station")}, {refresh}");
         foreach (var s in Stations)
         {
             o.WriteLine($"station   {s.Address} \"{s.Name}\": {s.Cpu} on {s.Port} {s.Line}; "
-                + $"{s.Inputs} inputs, {s.Outputs} outputs, {s.Tags} tags, {s.Alarms} alarms");
+                + $"{Count(s.Inputs, "input")}, {Count(s.Outputs, "output")}, {Count(s.Tags, "tag")}, {Count(s.Alarms, "alarm")}");
         }
     }
+
+    private static string Count(int n, string noun) => n == 1 ? $"1 {noun}" : $"{n} {noun}s";
 }
 
 internal sealed record StationSummaryView(string Name, int Address, string Cpu, string Port, string Line, int Inputs, int Outputs, int Tags, int Alarms)

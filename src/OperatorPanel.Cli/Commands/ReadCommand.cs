@@ -3,6 +3,7 @@ using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.Cli.Commands;
 
@@ -13,7 +14,7 @@ internal static class ReadCommand
     {
         var addresses = new Argument<string[]>("address")
         {
-            Description = "Addresses to read: I0.0, QB0, MW10, VD100, SMB28 ...",
+            Description = "Addresses to read: I0.0, QB0, MW10, VD100, SMB28 ...; ADDR:real, :signed, :hex, :binary or :ascii shows the value so (VD16:real, MW2:signed)",
             Arity = ArgumentArity.OneOrMore,
         };
         var link = new LinkOptionSet();
@@ -33,15 +34,17 @@ internal static class ReadCommand
                 return cli.Fail(ExitCodes.BadInput, error);
             }
 
-            var parsed = new List<PlcAddress>();
+            var parsed = new List<(PlcAddress Address, DisplayFormat? Format)>();
             foreach (var text in parse.GetValue(addresses) ?? [])
             {
-                if (!AddressArguments.TryParse(text, target.Cpu, AddressUse.Read, out var address, out error))
+                if (!ReadFormats.TrySplit(text, out var addressText, out var format, out error)
+                    || !AddressArguments.TryParse(addressText, target.Cpu, AddressUse.Read, out var address, out error)
+                    || !ReadFormats.TryCheck(address, format, text, out error))
                 {
                     return cli.Fail(ExitCodes.BadInput, error);
                 }
 
-                parsed.Add(address);
+                parsed.Add((address, format));
             }
 
             return await ReadAsync(cli, target, parsed, cancellationToken);
@@ -49,7 +52,7 @@ internal static class ReadCommand
         return command;
     }
 
-    private static async Task<int> ReadAsync(CliContext cli, LinkTarget target, List<PlcAddress> addresses, CancellationToken cancellationToken)
+    private static async Task<int> ReadAsync(CliContext cli, LinkTarget target, List<(PlcAddress Address, DisplayFormat? Format)> addresses, CancellationToken cancellationToken)
     {
         if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
         {
@@ -57,15 +60,15 @@ internal static class ReadCommand
         }
 
         await using var session = opened;
-        await using var run = BusLine.OnDemand(session.Link, PlanFor(target, addresses), TimeProvider.System, cli.Log);
+        await using var run = BusLine.OnDemand(session.Link, PlanFor(target, addresses.Select(a => a.Address)), TimeProvider.System, cli.Log);
         await run.Engine.RequestRefreshAsync(cancellationToken);
         var status = run.Engine.GetStationStatus(target.Station);
         if (status.State != StationState.Online)
         {
-            return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: {status.LastError}");
+            return LinkFailure.From(target, status.LastError, status.LastErrorKind).Report(cli);
         }
 
-        var views = addresses.Distinct().Select(a => ReadValueView.From(a, run.Engine.TryGetValue(target.Station, a, out var v) ? v : null)).ToList();
+        var views = addresses.Distinct().Select(a => ReadValueView.From(a.Address, run.Engine.TryGetValue(target.Station, a.Address, out var v) ? v : null, a.Format)).ToList();
         if (cli.Json)
         {
             cli.WriteJson(views);

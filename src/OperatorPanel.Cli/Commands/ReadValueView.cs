@@ -1,13 +1,17 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.Cli.Commands;
 
-/// <summary>One address as <c>opanel read</c> prints it (text and JSON share this shape).</summary>
-internal sealed record ReadValueView(string Address, ulong? Value, string? Hex, string Quality, string? Error)
+/// <summary>
+/// One address as <c>opanel read</c> prints it (text and JSON share this shape). Shown is the value in the format asked
+/// for with ADDR:FORMAT (VD16:real -> 12.5), null without one; the text prints it in place of the unsigned value.
+/// </summary>
+internal sealed record ReadValueView(string Address, ulong? Value, string? Hex, string Quality, string? Error, string? Shown = null)
 {
-    public static ReadValueView From(PlcAddress address, PolledValue? value)
+    public static ReadValueView From(PlcAddress address, PolledValue? value, DisplayFormat? format = null)
     {
         if (value is not { HasValue: true })
         {
@@ -16,12 +20,13 @@ internal sealed record ReadValueView(string Address, ulong? Value, string? Hex, 
 
         var raw = value.Raw.AsSpan();
         var hex = address.Width == AccessWidth.Bit ? null : ValueFormatter.Hex(raw);
-        return new ReadValueView(address.ToString(), ValueFormatter.Unsigned(raw), hex, value.Quality.ToString().ToLowerInvariant(), value.Error);
+        var shown = format is { } f ? ValueFormatter.Format(raw, address.Width, f) : null;
+        return new ReadValueView(address.ToString(), ValueFormatter.Unsigned(raw), hex, value.Quality.ToString().ToLowerInvariant(), value.Error, shown);
     }
 
     public void WriteText(TextWriter o)
     {
-        var value = Value?.ToString(System.Globalization.CultureInfo.InvariantCulture) ?? "-";
+        var value = Shown ?? Value?.ToString(System.Globalization.CultureInfo.InvariantCulture) ?? "-";
         var error = Error is null ? string.Empty : "  " + Error;
         o.WriteLine($"{Address,-8} {value,-11} {Hex ?? string.Empty,-12} {Quality}{error}");
     }

@@ -1,7 +1,7 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Hosting;
 using OperatorPanel.Cli.Link;
-using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
@@ -9,16 +9,21 @@ using OperatorPanel.Simulator.Reference;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel simulate --cpu M --station N [--station N2 ...] --device PATH</c>: simulated PLCs with the protocol handler on
-/// a real serial device (a USB-RS485 adapter, or one end of a socat pty pair), until Ctrl+C, SIGTERM or --duration.
+/// <c>opanel simulate --cpu M --station N [--station N2 ...] --device PATH</c>, or <c>opanel simulate --project FILE --device
+/// PATH</c> for a project's bus (each station with its own CPU): simulated PLCs with the protocol handler on a real serial
+/// device (a USB-RS485 adapter, or one end of a socat pty pair), until Ctrl+C, SIGTERM or --duration.
 /// </summary>
 internal static class SimulateCommand
 {
     public static Command Create(Func<ParseResult, CliContext> context)
     {
-        var cpu = CpuOptions.Model();
+        var cpu = CpuOptions.Model(required: false);
         var revision = CpuOptions.Revision();
-        var stations = new Option<int[]>("--station") { Description = "Station address to simulate, 1-126; repeat for several PLCs on the bus", Required = true };
+        var stations = new Option<int[]>("--station") { Description = "Station address to simulate, 1-126; repeat for several PLCs on the bus (with --project: which of its stations, default all)" };
+        var project = new Option<string?>("--project")
+        {
+            Description = "Simulate a project's bus: its stations (or those given with --station), each with its own CPU and \"allowStop\", at the bus's baud rate, parity and data bits",
+        };
         var serial = new SerialOptionSet(withRadio: false);
         var replyDelay = new Option<int>("--reply-delay") { Description = "Handler reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
         var noProcess = new Option<bool>("--no-process") { Description = "Do not run the demo bottling process: memory stays as the panel writes it" };
@@ -27,38 +32,36 @@ internal static class SimulateCommand
         var allowStop = new Option<bool>("--allow-stop") { Description = "The handler carries 07 STOP (opanel generate --allow-stop): the panel may put the simulated CPU in STOP" };
         var command = new Command("simulate", "Serve simulated S7-200 PLCs running the protocol handler on a serial device. Exit codes: 0 stopped, 1 bad input, 2 port failure")
         {
-            cpu, revision, stations, replyDelay, noProcess, duration, model, allowStop,
+            project, cpu, revision, stations, replyDelay, noProcess, duration, model, allowStop,
         };
         serial.AddTo(command);
         command.SetAction(async parse =>
         {
             var cli = context(parse);
-            if (!CpuOptions.TryResolve(parse.GetValue(cpu), parse.GetValue(revision), out var profile, out var error)
-                || !serial.TryBind(parse, null, out var settings, out error))
-            {
-                return cli.Fail(ExitCodes.BadInput, error);
-            }
-
             var delay = parse.GetValue(replyDelay);
             if (delay is < 1 or > 255)
             {
                 return cli.Fail(ExitCodes.BadInput, $"reply delay {delay} ms is outside 1-255 (SMB34, timed interrupt 0)");
             }
 
-            var configs = new List<HandlerConfig>();
-            foreach (var address in parse.GetValue(stations) ?? [])
+            List<ProjectStation>? fromProject = null;
+            if (parse.GetValue(project) is { } path)
             {
-                if (!Station.TryCreate(address, out var station, out error))
+                var loaded = ProjectFile.Load(path);
+                if (!loaded.Ok)
                 {
-                    return cli.Fail(ExitCodes.BadInput, error);
+                    return ProjectProblemsView.Report(cli, path, loaded.Errors, "nothing simulated");
                 }
 
-                if (configs.Any(c => c.Station == station))
+                if (!SimulatedStations.TrySelect(loaded.Project, path, parse.GetValue(stations) ?? [], out fromProject, out var notOneBus))
                 {
-                    return cli.Fail(ExitCodes.BadInput, $"{station} is given twice; stations on one bus need distinct addresses");
+                    return cli.Fail(ExitCodes.BadInput, notOneBus);
                 }
+            }
 
-                configs.Add(new HandlerConfig(station, profile, replyDelayMs: (byte)delay, allowStop: parse.GetValue(allowStop)));
+            if (!SimulatedStations.TryBuild(parse, fromProject, cpu, revision, stations, serial, (byte)delay, parse.GetValue(allowStop), out var configs, out var settings, out var error))
+            {
+                return cli.Fail(ExitCodes.BadInput, error);
             }
 
             var seconds = parse.GetValue(duration);
@@ -95,7 +98,7 @@ internal static class SimulateCommand
         }
         catch (PlcCommunicationException ex)
         {
-            return cli.Fail(ExitCodes.LinkFailure, $"{settings.PortName}: {ex.Kind}: {ex.Message}");
+            return cli.Fail(ExitCodes.LinkFailure, $"{ex.Message}; the simulated PLCs stopped");
         }
 
         serving.WriteSummary(cli, host.Replies, line.Line.FramesReceived);

@@ -3,12 +3,17 @@ using OperatorPanel.Simulator.Reference;
 
 namespace OperatorPanel.Cli.Commands;
 
-/// <summary>What <c>opanel simulate</c> says when it starts and when it stops (a JSON object each with --json).</summary>
+/// <summary>
+/// What <c>opanel simulate</c> says when it starts and when it stops (a JSON object each with --json). Cpu is the CPU
+/// simulated, or the distinct CPUs in station order ("CPU 224, CPU 226") when a project's stations differ.
+/// </summary>
 internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, string Port, string Line, int ReplyDelayMs, bool Process, string Model)
 {
+    private readonly IReadOnlyList<string> _cpus = [];
+
     public SimulationView(List<HandlerConfig> configs, SerialSettings settings, bool process, string model)
         : this(
-            configs[0].Cpu.DisplayName,
+            string.Join(", ", configs.Select(c => c.Cpu.DisplayName).Distinct()),
             configs.Select(c => c.Station.Address).ToList(),
             settings.PortName,
             settings.LineText,
@@ -16,6 +21,7 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
             process,
             model)
     {
+        _cpus = [.. configs.Select(c => c.Cpu.DisplayName)];
     }
 
     public void WriteStart(CliContext cli)
@@ -26,8 +32,10 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
             return;
         }
 
-        var stations = string.Join(", ", Stations);
-        cli.Out.WriteLine($"simulating {Cpu} at station{(Stations.Count == 1 ? string.Empty : "s")} {stations} on {Port} {Line}, "
+        var plcs = _cpus.Distinct().Count() > 1
+            ? string.Join(", ", Stations.Select((s, i) => $"station {s} ({_cpus[i]})"))
+            : $"{Cpu} at station{(Stations.Count == 1 ? string.Empty : "s")} {string.Join(", ", Stations)}";
+        cli.Out.WriteLine($"simulating {plcs} on {Port} {Line}, "
             + $"reply delay {ReplyDelayMs} ms, model {Model}, demo process {(Process ? "on" : "off")}; Ctrl+C to stop");
         cli.Out.Flush();
     }

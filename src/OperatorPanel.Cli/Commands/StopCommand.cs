@@ -1,8 +1,6 @@
 using System.CommandLine;
 using System.Diagnostics.CodeAnalysis;
-using System.Globalization;
 using OperatorPanel.Cli.Link;
-using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Stop;
 
 namespace OperatorPanel.Cli.Commands;
@@ -28,13 +26,12 @@ internal static class StopCommand
     {
         var link = new LinkOptionSet();
         var yes = new Option<bool>("--yes") { Description = "Confirm the STOP: without it opanel says what it would do and sends nothing" };
-        var project = new Option<string?>("--project") { Description = "The .opproj project: STOP only for a station with \"allowStop\": true; port, line and CPU from it" };
-        var command = new Command("stop", Description) { yes, project };
+        var command = new Command("stop", Description) { yes };
         link.AddTo(command);
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
-            if (!TryTarget(parse, link, parse.GetValue(project), out var target, out var error))
+            if (!TryTarget(parse, link, out var target, out var error))
             {
                 return cli.Fail(ExitCodes.BadInput, error);
             }
@@ -70,40 +67,21 @@ internal static class StopCommand
     }
 
     /// <summary>The target from the options alone, or from the project's station, refused when the project does not allow STOP for it.</summary>
-    private static bool TryTarget(ParseResult parse, LinkOptionSet link, string? projectPath, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error)
+    private static bool TryTarget(ParseResult parse, LinkOptionSet link, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error)
     {
-        target = null;
-        if (projectPath is null)
-        {
-            return link.TryBind(parse, out target, out error);
-        }
-
-        var loaded = ProjectFile.Load(projectPath);
-        if (!loaded.Ok)
-        {
-            error = $"{projectPath}: {string.Join("; ", loaded.Errors.Select(e => $"{e.Location}: {e.Message}"))}";
-            return false;
-        }
-
-        var wanted = parse.GetResult(link.Station) is { Implicit: false } ? parse.GetValue(link.Station).ToString(CultureInfo.InvariantCulture) : null;
-        if (!GenerateSettings.TrySelectStation(loaded.Project, wanted, out var station, out error))
+        if (!link.TryBind(parse, out target, out var station, out error))
         {
             return false;
         }
 
-        if (!station.AllowStop)
+        if (station is { AllowStop: false })
         {
-            error = $"the project does not allow STOP for {station.Name} ({station.Address}): set \"allowStop\": true for it in {projectPath}, "
+            target = null;
+            error = $"the project does not allow STOP for {station.Name} ({station.Address}): set \"allowStop\": true for it in {parse.GetValue(link.Project)}, "
                 + "generate the PLC code again and download it; nothing sent";
             return false;
         }
 
-        if (!link.TryBind(parse, station.Link, out target, out error))
-        {
-            return false;
-        }
-
-        target = target with { Station = station.Address, Cpu = parse.GetValue(link.Cpu) is null ? station.Cpu : target.Cpu };
         return true;
     }
 }

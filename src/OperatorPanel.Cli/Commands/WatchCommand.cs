@@ -39,7 +39,7 @@ internal static class WatchCommand
             var load = ProjectFile.Load(path);
             if (!load.Ok)
             {
-                return cli.Fail(ExitCodes.BadInput, $"{path} has problems:{Environment.NewLine}" + string.Join(Environment.NewLine, load.Errors.Select(e => $"{path}: {e}")));
+                return ProjectProblemsView.Report(cli, path, load.Errors, "nothing watched");
             }
 
             var limit = parse.GetValue(once) ? 1 : parse.GetValue(cycles);

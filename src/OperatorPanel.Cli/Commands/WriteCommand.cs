@@ -69,7 +69,7 @@ internal static class WriteCommand
         var status = run.Engine.GetStationStatus(target.Station);
         if (status.State != StationState.Online)
         {
-            return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: {status.LastError}; nothing written");
+            return LinkFailure.From(target, status.LastError, status.LastErrorKind).Report(cli, "nothing written");
         }
 
         var results = new List<WriteResultView>();

@@ -25,6 +25,13 @@ internal static class AddressArguments
             return false;
         }
 
+        if (use == AddressUse.Write && address.Area == MemoryArea.I)
+        {
+            // The handler's write mask never has I (docs/protocol.md): refused here, before anything is read or sent.
+            error = $"{address}: inputs are the field's; the panel link writes only Q, M, V and SM";
+            return false;
+        }
+
         error = cpu is null ? null : AddressRules.Check(address, cpu, use)?.Message;
         return error is null;
     }

@@ -1,25 +1,28 @@
 using System.CommandLine;
 using System.Diagnostics.CodeAnalysis;
+using System.Globalization;
 using OperatorPanel.Cli.Commands;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 
 namespace OperatorPanel.Cli.Link;
 
 /// <summary>
-/// The options every link verb (read, write, identify) shares: the serial line, the station, --demo, and --cpu, which
-/// checks addresses before anything is sent and, with --demo, picks the simulated CPU (default 224).
+/// The options every link verb (read, write, identify, stop) shares: the serial line, the station, --demo, and --cpu, which
+/// checks addresses before anything is sent and, with --demo, picks the simulated CPU (default 224); or --project, which
+/// gives the station's port, line settings and CPU from the project file.
 /// </summary>
 internal sealed class LinkOptionSet
 {
     private const string DemoPort = "demo";
     private readonly SerialOptionSet _serial = new(withRadio: true);
 
-    public Option<int> Station { get; } = new("--station")
+    public Option<string> Station { get; } = new("--station")
     {
-        Description = "RS-485 station address of the PLC, 1-126 (default 2, the S7-200 factory setting)",
-        DefaultValueFactory = _ => 2,
+        Description = "RS-485 station address of the PLC, 1-126 (default 2, the S7-200 factory setting); with --project also the station's name",
+        DefaultValueFactory = _ => "2",
     };
 
     public Option<bool> Demo { get; } = new("--demo")
@@ -36,6 +39,12 @@ internal sealed class LinkOptionSet
 
     public Option<SimulationModel> Model { get; } = ModelOption.Create();
 
+    public Option<string?> Project { get; } = new("--project")
+    {
+        Description = "The .opproj project: the station's port, line settings and CPU come from it (--station ADDRESS picks the station, "
+            + "needed when it has several; --device, --demo or --cpu override)",
+    };
+
     public Option<int> ScanMs { get; } = new("--scan-ms")
     {
         Description = "Longest PLC scan time in ms the reply timeout allows for (default 100); raise it for long programs",
@@ -51,16 +60,49 @@ internal sealed class LinkOptionSet
         command.Options.Add(Demo);
         command.Options.Add(Model);
         command.Options.Add(ScanMs);
+        command.Options.Add(Project);
     }
 
     public bool TryBind(ParseResult parse, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error) =>
-        TryBind(parse, projectLink: null, out target, out error);
+        TryBind(parse, out target, out _, out error);
 
     /// <summary>
-    /// The target; with <paramref name="projectLink"/> (a project's station) its port and line settings unless --device or
-    /// --demo is given.
+    /// The target from the options alone, or with --project from the project's station (<paramref name="fromProject"/>),
+    /// its port, line settings and CPU unless --device, --demo or --cpu say otherwise.
     /// </summary>
-    public bool TryBind(ParseResult parse, SerialSettings? projectLink, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error)
+    public bool TryBind(ParseResult parse, [NotNullWhen(true)] out LinkTarget? target, out ProjectStation? fromProject, [NotNullWhen(false)] out string? error)
+    {
+        fromProject = null;
+        target = null;
+        if (parse.GetValue(Project) is not { } path)
+        {
+            return TryBind(parse, projectStation: null, out target, out error);
+        }
+
+        var loaded = ProjectFile.Load(path);
+        if (!loaded.Ok)
+        {
+            var count = loaded.Errors.Length == 1 ? "1 problem" : $"{loaded.Errors.Length} problems";
+            error = $"{path} has {count}; nothing sent:" + string.Concat(loaded.Errors.Select(e => $"{Environment.NewLine}{path}: {e.Location}: {e.Message}"));
+            return false;
+        }
+
+        var wanted = parse.GetResult(Station) is { Implicit: false } ? parse.GetValue(Station) : null;
+        if (!GenerateSettings.TrySelectStation(loaded.Project, wanted, out var station, out error)
+            || !TryBind(parse, station, out target, out error))
+        {
+            return false;
+        }
+
+        fromProject = station;
+        return true;
+    }
+
+    /// <summary>
+    /// The target; with <paramref name="projectStation"/> its address, its port and line settings unless --device or --demo
+    /// is given, and its CPU unless --cpu is (also the CPU a --demo simulates).
+    /// </summary>
+    private bool TryBind(ParseResult parse, ProjectStation? projectStation, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error)
     {
         target = null;
         var demo = parse.GetValue(Demo);
@@ -71,12 +113,12 @@ internal sealed class LinkOptionSet
             return false;
         }
 
-        if (!Core.Addressing.Station.TryCreate(parse.GetValue(Station), out var station, out error))
+        if (!TryStation(parse, projectStation, out var station, out error))
         {
             return false;
         }
 
-        SerialSettings? serial = demo || device is not null ? null : projectLink;
+        SerialSettings? serial = demo || device is not null ? null : projectStation?.Link;
         if (serial is null && !_serial.TryBind(parse, demo ? DemoPort : null, out serial, out error))
         {
             return false;
@@ -90,14 +132,34 @@ internal sealed class LinkOptionSet
         }
 
         CpuProfile? cpu = null;
-        var model = parse.GetValue(Cpu) ?? (demo ? "224" : null);
+        var model = parse.GetValue(Cpu) ?? (demo && projectStation is null ? "224" : null);
         if (model is not null && !CpuOptions.TryResolve(model, parse.GetValue(Revision), out cpu, out error))
         {
             return false;
         }
 
+        cpu ??= projectStation?.Cpu;
+
         target = new LinkTarget(station, serial, cpu, demo, TimeSpan.FromMilliseconds(scanMs), parse.GetValue(Model));
         error = null;
         return true;
+    }
+
+    private bool TryStation(ParseResult parse, ProjectStation? projectStation, out Core.Addressing.Station station, [NotNullWhen(false)] out string? error)
+    {
+        if (projectStation is not null)
+        {
+            (station, error) = (projectStation.Address, null);
+            return true;
+        }
+
+        var text = parse.GetValue(Station) ?? "2";
+        if (!int.TryParse(text, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out var address))
+        {
+            (station, error) = (default, $"--station '{text}': a station address is a number 1-126 (a station's name works with --project)");
+            return false;
+        }
+
+        return Core.Addressing.Station.TryCreate(address, out station, out error);
     }
 }

@@ -2,6 +2,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.Cli.Watch;
@@ -16,13 +17,14 @@ internal static class SnapshotBuilder
             ? $"continuous, at least {refresh.MinimumPeriod.TotalMilliseconds:0} ms apart"
             : "triggered, one refresh a second";
         var stations = ProjectBus.Of(session.Project)
-            .SelectMany(b => b.Stations.Select(s => Station(s, session.Line, time)))
+            .SelectMany(b => b.Stations.Select(s => Station(s, session, time)))
             .ToList();
         return new WatchSnapshot(session.Project.Name, refreshText, cycle, time, stations);
     }
 
-    private static StationSnapshot Station(ProjectStation station, ProjectLine line, DateTimeOffset now)
+    private static StationSnapshot Station(ProjectStation station, WatchSession session, DateTimeOffset now)
     {
+        var line = session.Line;
         var status = line.StatusOf(station.Address) ?? StationStatus.Initial(station.Address);
         var statistics = line.StatisticsFor(station.Address);
         PolledValue? Value(PlcAddress address) => line.TryGetValue(station.Address, address, out var v) && v.HasValue ? v : null;
@@ -32,14 +34,19 @@ internal static class SnapshotBuilder
             station.Cpu.DisplayName,
             $"{line.PortOf(station.Address)} {station.Link.LineText}",
             status.State.ToString().ToLowerInvariant(),
-            status.LastError,
+            WithoutKind(status.LastError, status.LastErrorKind),
             status.NextTryAt is { } next ? Math.Max(0, (int)Math.Ceiling((next - now).TotalSeconds)) : null,
+            session.HandlerCheckOf(station.Address),
             new LinkView(statistics.Requests, statistics.Replies, statistics.Retries, statistics.Timeouts, statistics.RoundTripAverage?.TotalMilliseconds),
             Lamps(station.Inputs, Value),
             Lamps(station.Outputs, Value),
             [.. station.Tags.Select(t => Tag(t, Value(t.Address), line, station.Address))],
             [.. station.Alarms.Where(a => Value(a.Flag)?.AsBit == true).Select(a => new AlarmRow(a.Flag.ToString(), a.Text, a.Class.ToString().ToLowerInvariant()))]);
     }
+
+    /// <summary>"PortUnavailable: serial port COM3: ..." is shown without the kind's name: the words say it.</summary>
+    private static string? WithoutKind(string? error, PlcErrorKind? kind) =>
+        error is not null && kind is { } k && error.StartsWith($"{k}: ", StringComparison.Ordinal) ? error[($"{k}: ".Length)..] : error;
 
     private static List<LampByte> Lamps(IEnumerable<IoSymbol> symbols, Func<PlcAddress, PolledValue?> value) =>
         [.. symbols

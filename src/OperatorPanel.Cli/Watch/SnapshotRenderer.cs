@@ -33,9 +33,16 @@ internal static class SnapshotRenderer
         var resting = s.NextTryInSeconds is { } n ? $" (next try in {n} s: others on the bus answer)" : string.Empty;
         o.AppendLine(CultureInfo.InvariantCulture, $"{s.Name}  station {s.Station}  {s.Cpu}  {s.Port}  {s.State}{resting}");
         o.AppendLine(CultureInfo.InvariantCulture, $"  link     requests {l.Requests}  replies {l.Replies}  retries {l.Retries}  timeouts {l.Timeouts}  rtt avg {rtt}");
+        if (s.Handler is not null)
+        {
+            o.AppendLine(CultureInfo.InvariantCulture, $"  handler  {s.Handler}");
+        }
+
         if (s.LastError is not null)
         {
-            o.AppendLine(CultureInfo.InvariantCulture, $"  last error: {s.LastError}");
+            // Kept after the station answers again (the cause stays readable); then it is history, not the present state.
+            var label = s.State == "online" ? "earlier error (it answers now)" : "last error";
+            o.AppendLine(CultureInfo.InvariantCulture, $"  {label}: {s.LastError}");
         }
 
         Lamps(o, "inputs", s.Inputs);

@@ -9,6 +9,7 @@ internal sealed record StationSnapshot(
     string State,
     string? LastError,
     int? NextTryInSeconds,
+    string? Handler,
     LinkView Link,
     IReadOnlyList<LampByte> Inputs,
     IReadOnlyList<LampByte> Outputs,

@@ -1,4 +1,6 @@
+using System.Collections.Concurrent;
 using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
@@ -19,6 +21,7 @@ internal sealed class WatchSession : IAsyncDisposable
     private const int IdentifyAttempts = 3;
 
     private readonly CancellationTokenSource _closing = new();
+    private readonly ConcurrentDictionary<Station, string> _handlerChecks = new();
     private Task _identifying = Task.CompletedTask;
 
     private WatchSession(ProjectLine line) => Line = line;
@@ -26,6 +29,12 @@ internal sealed class WatchSession : IAsyncDisposable
     public ProjectLine Line { get; }
 
     public PanelProject Project => Line.Project;
+
+    /// <summary>
+    /// What IDENTIFY said of the station's handler against the project: "ok: ...", "MISMATCH ..." (a handler generated
+    /// for another CPU, or another CPU on the bus), or why it could not be asked; null until it has been asked.
+    /// </summary>
+    public string? HandlerCheckOf(Station station) => _handlerChecks.TryGetValue(station, out var check) ? check : null;
 
     /// <summary>Opens every bus; false with the reason (and nothing left running) when a demo line cannot start.</summary>
     public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(PanelProject project, bool demo, SimulationModel model, ILogger log)
@@ -48,7 +57,7 @@ internal sealed class WatchSession : IAsyncDisposable
         }
 
         var session = new WatchSession(line);
-        session._identifying = IdentifyEveryStationAsync(line, log, session._closing.Token);
+        session._identifying = session.IdentifyEveryStationAsync(log, session._closing.Token);
         return (session, null);
     }
 
@@ -77,17 +86,20 @@ internal sealed class WatchSession : IAsyncDisposable
     /// IDENTIFY each station beside the polling, as the panel does on connecting: the engine learns what the handler has
     /// (READ CHANGES copies, 09 READ CHANGES OF LISTS) and polls accordingly from then on. Not awaited on opening, so
     /// a silent station does not hold up the view; it is polled as before and shows up offline. A v1 handler's message
-    /// is logged.
+    /// is logged. What it found is kept for the view (<see cref="HandlerCheckOf"/>): the watch is where a technician sees
+    /// that the handler in a PLC was generated for another CPU than the project's.
     /// </summary>
-    private static async Task IdentifyEveryStationAsync(ProjectLine line, ILogger log, CancellationToken cancellationToken)
+    private async Task IdentifyEveryStationAsync(ILogger log, CancellationToken cancellationToken)
     {
-        foreach (var station in line.Project.Stations)
+        foreach (var station in Line.Project.Stations)
         {
             for (var attempt = 1; attempt <= IdentifyAttempts; attempt++)
             {
                 try
                 {
-                    if (await line.IdentifyAsync(station.Address, cancellationToken) is ErrorResponse refused)
+                    var reply = await Line.IdentifyAsync(station.Address, cancellationToken);
+                    _handlerChecks[station.Address] = HandlerCheck.Describe(station, reply);
+                    if (reply is ErrorResponse refused)
                     {
                         log.Warning("{Station}: IDENTIFY refused: {Error}", station.Address, refused.Error);
                     }
@@ -96,11 +108,13 @@ internal sealed class WatchSession : IAsyncDisposable
                 }
                 catch (PlcCommunicationException failure) when (failure.Kind == PlcErrorKind.HandlerProtocolV1 || attempt == IdentifyAttempts)
                 {
+                    _handlerChecks[station.Address] = $"not identified: {failure.Message}";
                     log.Warning("{Station}: IDENTIFY failed: {Reason}", station.Address, failure.Message);
                     break;
                 }
                 catch (InvalidOperationException notConnected)
                 {
+                    _handlerChecks[station.Address] = $"not identified: {notConnected.Message}";
                     log.Warning("{Station}: not identified: {Reason}", station.Address, notConnected.Message);
                     break;
                 }

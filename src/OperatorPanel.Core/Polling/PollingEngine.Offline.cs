@@ -35,6 +35,14 @@ public sealed partial class PollingEngine
     private void NoteSilences(IReadOnlyCollection<Station> tried)
     {
         var answering = _plan.Stations.Where(s => _stations.Get(s).State == StationState.Online).ToHashSet();
+        if (!tried.Any(answering.Contains))
+        {
+            // Nobody answered in this cycle: the port or cable is gone, so a station resting since another answered earlier
+            // (the port vanished mid-cycle) is tried every cycle again, and shows as soon as the line is back.
+            Volatile.Write(ref _silentWhileOthersAnswer, []);
+            return;
+        }
+
         var silent = _silentWhileOthersAnswer.Except(answering);
         foreach (var station in tried.Where(s => !answering.Contains(s)))
         {

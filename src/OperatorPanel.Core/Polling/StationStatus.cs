@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Polling;
 
@@ -10,6 +11,7 @@ namespace OperatorPanel.Core.Polling;
 /// <param name="LastReplyAt">Time of the last valid reply.</param>
 /// <param name="LastFailureAt">Time of the last exchange that brought no valid reply.</param>
 /// <param name="NextTryAt">For a silent station resting between tries (PollingOptions.OfflineRetryInterval), when it is tried next; else null.</param>
+/// <param name="LastErrorKind">The kind of the latest link failure, so a front end can say what to check; null for a refusal or none.</param>
 public sealed record StationStatus(
     Station Station,
     StationState State,
@@ -17,7 +19,8 @@ public sealed record StationStatus(
     int ConsecutiveFailures,
     DateTimeOffset? LastReplyAt,
     DateTimeOffset? LastFailureAt = null,
-    DateTimeOffset? NextTryAt = null)
+    DateTimeOffset? NextTryAt = null,
+    PlcErrorKind? LastErrorKind = null)
 {
     public static StationStatus Initial(Station station) => new(station, StationState.Unknown, null, 0, null);
 }

@@ -30,6 +30,7 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
         {
             State = StationState.Online,
             LastError = refusal ?? before.LastError,
+            LastErrorKind = refusal is null ? before.LastErrorKind : null,
             ConsecutiveFailures = 0,
             LastReplyAt = time.GetUtcNow(),
         };
@@ -69,6 +70,7 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
         {
             State = offline && !stopped ? StationState.Offline : before.State,
             LastError = stopped ? before.LastError : message,
+            LastErrorKind = stopped ? before.LastErrorKind : (exception as PlcCommunicationException)?.Kind,
             ConsecutiveFailures = before.ConsecutiveFailures + 1,
             LastFailureAt = time.GetUtcNow(),
         };
@@ -100,7 +102,7 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
     public void RecordBadReply(Station station, string message)
     {
         var before = Get(station);
-        Store(before with { LastError = message, ConsecutiveFailures = before.ConsecutiveFailures + 1 });
+        Store(before with { LastError = message, LastErrorKind = null, ConsecutiveFailures = before.ConsecutiveFailures + 1 });
         logger.Warning("{Station}: {Error}", station.Address, message);
     }
 

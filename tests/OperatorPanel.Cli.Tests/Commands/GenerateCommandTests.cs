@@ -168,6 +168,20 @@ public sealed class GenerateCommandTests : IDisposable
     }
 
     [Fact]
+    public void Generate_OutputIsAFile_SaysSoAndWritesNothing()
+    {
+        var project = NewProject("224", "2");
+        var file = Path.Combine(_folder, "plc");
+        File.WriteAllText(file, "not a folder");
+
+        var run = CliRunner.Run("generate", project, "-o", file);
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be($"opanel: {file} is a file, not a folder: give the folder for the generated files{Environment.NewLine}");
+        File.ReadAllText(file).Should().Be("not a folder");
+    }
+
+    [Fact]
     public void Generate_SeveralStations_NeedsStation()
     {
         var project = TwoStationProject();

@@ -60,6 +60,7 @@ public sealed class IdentifyCommandTests
         var run = CliRunner.Run("identify", "--device", "/dev/opanel-no-such-port");
 
         run.ExitCode.Should().Be(2);
-        run.Error.Should().Contain("station 2 on /dev/opanel-no-such-port: PortUnavailable");
+        run.Error.Should().StartWith("opanel: station 2: serial port /dev/opanel-no-such-port: open failed")
+            .And.Contain("opanel: check the port name (/dev/opanel-no-such-port)");
     }
 }

@@ -44,14 +44,97 @@ public sealed class ReadCommandTests
     }
 
     [Fact]
-    public void Read_MissingDevice_ExitsTwoNamingStationPortAndKind()
+    public void Read_MissingDevice_ExitsTwoNamingThePortAndWhatToCheck()
     {
         var device = Path.Combine(Path.GetTempPath(), "opanel-no-such-port-" + Guid.NewGuid().ToString("N"));
 
         var run = CliRunner.Run("read", "VB0", "--device", device, "--station", "5");
 
         run.ExitCode.Should().Be(2);
-        run.Error.Should().Contain($"station 5 on {device}").And.Contain("PortUnavailable");
+        var lines = run.Error.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries);
+        lines.Should().HaveCount(2, "what happened, then what to check; the log's warnings are not echoed again");
+        lines[0].Should().StartWith($"opanel: station 5: serial port {device}: open failed");
+        lines[1].Should().Be($"opanel: check the port name ({device}), that the cable or USB adapter is plugged in, and that no other "
+            + "program (Micro/WIN, another opanel) has the port open");
+        run.Error.Should().NotContain("PortUnavailable", "the kind is for scripts (--json), not for the technician");
+    }
+
+    [Fact]
+    public void Read_MissingDeviceJson_GivesErrorKindAndHint()
+    {
+        var device = Path.Combine(Path.GetTempPath(), "opanel-no-such-port-" + Guid.NewGuid().ToString("N"));
+
+        var run = CliRunner.Run("read", "VB0", "--device", device, "--json");
+
+        run.ExitCode.Should().Be(2);
+        using var json = JsonDocument.Parse(run.Out);
+        json.RootElement.GetProperty("ok").GetBoolean().Should().BeFalse();
+        json.RootElement.GetProperty("error").GetString().Should().StartWith($"station 2: serial port {device}: open failed");
+        json.RootElement.GetProperty("kind").GetString().Should().Be("portUnavailable");
+        json.RootElement.GetProperty("hint").GetString().Should().StartWith($"check the port name ({device})");
+    }
+
+    [Fact]
+    public void Read_ProjectStationByName_TakesItsCpuAndAddressFromTheProject()
+    {
+        var project = Path.Combine(Path.GetTempPath(), $"opanel-read-{Guid.NewGuid():N}.opproj");
+        File.WriteAllText(project, """
+            {
+              "schemaVersion": 1, "name": "Packing line", "refresh": { "mode": "continuous", "minimumPeriodMs": 100 },
+              "stations": [
+                { "name": "Filler", "address": 2, "cpu": { "model": "224" }, "link": { "port": "COM3" } },
+                { "name": "Capper", "address": 3, "cpu": { "model": "226" }, "link": { "port": "COM3" } }
+              ]
+            }
+            """);
+
+        var capper = CliRunner.Run("read", "SMB6", "--project", project, "--station", "capper", "--demo");
+        var filler = CliRunner.Run("read", "VB9000", "--project", project, "--station", "Filler", "--demo");
+        var neither = CliRunner.Run("read", "SMB6", "--project", project, "--demo");
+        File.Delete(project);
+
+        capper.ExitCode.Should().Be(0, capper.Error);
+        capper.Out.Should().Be($"SMB6     144         16#90        good{Environment.NewLine}", "the demo simulates the project's CPU 226");
+        filler.ExitCode.Should().Be(1);
+        filler.Error.Should().Be($"opanel: VB9000 is past the last V byte VB8191 of CPU 224{Environment.NewLine}");
+        neither.ExitCode.Should().Be(1);
+        neither.Error.Should().Contain("the project has 2 stations (Filler (2), Capper (3)); choose one with --station");
+    }
+
+    [Fact]
+    public void Read_AddressWithFormat_ShowsTheValueSoInTextAndJson()
+    {
+        var text = CliRunner.Run("read", "SMB6:binary", "VD120:real", "--demo");
+        var json = CliRunner.Run("read", "VD120:real", "--demo", "--json");
+
+        text.ExitCode.Should().Be(0, text.Error);
+        text.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            "SMB6     2#0010_0000 16#20        good",
+            "VD120    500         16#43FA0000  good"); // the demo's fill setpoint, a REAL of 500 ml
+        using var doc = JsonDocument.Parse(json.Out);
+        doc.RootElement[0].GetProperty("value").GetUInt64().Should().Be(0x43FA0000, "the unsigned value stays for scripts");
+        doc.RootElement[0].GetProperty("shown").GetString().Should().Be("500");
+    }
+
+    [Theory]
+    [InlineData("VW200:real", "opanel: 'VW200:real': a REAL needs a double word such as VD100")]
+    [InlineData("M0.0:hex", "opanel: 'M0.0:hex': a bit is shown as 0/1; formats are for bytes, words and double words")]
+    [InlineData("VD0:bogus", "opanel: 'VD0:bogus': unknown format 'bogus'; use real, signed, unsigned, hex, binary or ascii")]
+    public void Read_FormatThatDoesNotFit_ExitsOneNamingIt(string address, string message)
+    {
+        var run = CliRunner.Run("read", address, "--demo");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be(message + Environment.NewLine);
+    }
+
+    [Fact]
+    public void Read_StationNameWithoutProject_SaysAddressesAreNumbers()
+    {
+        var run = CliRunner.Run("read", "VB0", "--demo", "--station", "Filler");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be($"opanel: --station 'Filler': a station address is a number 1-126 (a station's name works with --project){Environment.NewLine}");
     }
 
     [Theory]

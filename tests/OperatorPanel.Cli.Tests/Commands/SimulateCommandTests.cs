@@ -43,7 +43,9 @@ public sealed class SimulateCommandTests
             "SMB6     144         16#90        good",
             "Q1.1     1                        good"); // the panel owns Q1.1 now; the demo process leaves it alone
         silent.ExitCode.Should().Be(2);
-        silent.Error.Should().Contain($"station 9 on {pty.PathB}: NoAnswer");
+        silent.Error.Should().StartWith($"opanel: station 9 on {pty.PathB}: no valid reply to Read after ")
+            .And.Contain("opanel: nothing answers as station 9: check that the PLC is in RUN with its mode switch at RUN")
+            .And.Contain("handler was generated for station 9 at 19200 8N1");
 
         (await simulator).Should().Be(0);
         var summary = Text(output, simulatorOut);
@@ -57,7 +59,8 @@ public sealed class SimulateCommandTests
         var run = CliRunner.Run("simulate", "--cpu", "224", "--station", "2", "--device", "/dev/opanel-no-such-port", "--duration", "1");
 
         run.ExitCode.Should().Be(2);
-        run.Error.Should().Contain("/dev/opanel-no-such-port").And.Contain("PortUnavailable");
+        run.Error.Should().StartWith("opanel: serial port /dev/opanel-no-such-port: open failed").And.Contain("the simulated PLCs stopped")
+            .And.NotContain("PortUnavailable");
     }
 
     [Theory]
@@ -69,6 +72,74 @@ public sealed class SimulateCommandTests
     public void Simulate_BadOption_ExitsOne(string option1, string value1, string option2, string value2)
     {
         CliRunner.Run("simulate", "--cpu", "224", "--device", "/dev/null", option1, value1, option2, value2).ExitCode.Should().Be(1);
+    }
+
+    [Fact]
+    public async Task Simulate_ProjectWithTwoCpus_ServesEachStationWithItsOwnCpuOnOneDevice()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        var project = TwoCpuProject(pty.PathB);
+        using var simulatorOut = new StringWriter();
+        var output = TextWriter.Synchronized(simulatorOut);
+        string[] args = ["simulate", "--project", project, "--device", pty.PathA, "--duration", "4", "--no-process", "--log-dir", LogDir];
+        var simulator = Task.Run(() => OpanelApp.Run(args, output, TextWriter.Null));
+        await WaitForAsync(() => Text(output, simulatorOut).Contains("simulating", StringComparison.Ordinal));
+        string[] line = ["--device", pty.PathB, "--scan-ms", "1000"];
+
+        var filler = CliRunner.Run(["identify", "--station", "2", "--cpu", "224", .. line]);
+        var capper = CliRunner.Run(["identify", "--station", "3", "--cpu", "226", .. line]);
+
+        filler.ExitCode.Should().Be(0, filler.Error);
+        filler.Out.Should().Contain("generated for CPU 224 (Current)").And.Contain("STOP          in the handler");
+        capper.ExitCode.Should().Be(0, capper.Error);
+        capper.Out.Should().Contain("generated for CPU 226 (Current)").And.Contain("STOP          not in the handler");
+        (await simulator).Should().Be(0);
+        Text(output, simulatorOut).Should().StartWith(
+            $"simulating station 2 (CPU 224), station 3 (CPU 226) on {pty.PathA} 9600 8N1, reply delay 5 ms, model stl, demo process off");
+        File.Delete(project);
+    }
+
+    [Theory]
+    [InlineData("--cpu", "224", "with --project each station's CPU and the bus's line settings come from the project; leave out --cpu")]
+    [InlineData("--baud", "19200", "with --project each station's CPU and the bus's line settings come from the project; leave out --baud")]
+    [InlineData("--station", "7", "station 7 is not in {0} (it has 2 Filler, 3 Capper)")]
+    public void Simulate_ProjectWithAConflictingOption_SaysWhichAndExitsOne(string option, string value, string message)
+    {
+        var project = TwoCpuProject("COM3");
+
+        var run = CliRunner.Run("simulate", "--project", project, "--device", "/dev/null", option, value);
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be($"opanel: {string.Format(System.Globalization.CultureInfo.InvariantCulture, message, project)}{Environment.NewLine}");
+        File.Delete(project);
+    }
+
+    [Fact]
+    public void Simulate_NeitherCpuNorProject_SaysWhatToGive()
+    {
+        var run = CliRunner.Run("simulate", "--device", "/dev/null");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be("opanel: give the simulated PLCs with --cpu and --station (e.g. --cpu 224 --station 2), or a project's bus with --project"
+            + Environment.NewLine);
+    }
+
+    /// <summary>Filler: CPU 224 station 2 with STOP; Capper: CPU 226 station 3; both on <paramref name="port"/>.</summary>
+    private static string TwoCpuProject(string port)
+    {
+        var file = Path.Combine(Path.GetTempPath(), $"opanel-simulate-{Guid.NewGuid():N}.opproj");
+        File.WriteAllText(file, $$"""
+            {
+              "schemaVersion": 1,
+              "name": "Packing line",
+              "refresh": { "mode": "continuous", "minimumPeriodMs": 100 },
+              "stations": [
+                { "name": "Filler", "address": 2, "cpu": { "model": "224" }, "link": { "port": "{{port}}" }, "allowStop": true },
+                { "name": "Capper", "address": 3, "cpu": { "model": "226" }, "link": { "port": "{{port}}" } }
+              ]
+            }
+            """);
+        return file;
     }
 
     private static string LogDir => Path.Combine(Path.GetTempPath(), "opanel-tests-logs");

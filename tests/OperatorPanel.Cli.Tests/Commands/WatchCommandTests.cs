@@ -100,7 +100,7 @@ public sealed class WatchCommandTests : IDisposable
         var run = CliRunner.Run("watch", file, "--once");
 
         run.ExitCode.Should().Be(2);
-        run.Out.Should().Contain("offline").And.Contain("last error: PortUnavailable");
+        run.Out.Should().Contain("offline").And.Contain($"last error: station 2: serial port {port}: open failed").And.NotContain("PortUnavailable");
         run.Out.Should().MatchRegex(@"IB0   \?{8}");
     }
 

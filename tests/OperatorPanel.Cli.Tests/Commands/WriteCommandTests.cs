@@ -68,6 +68,24 @@ public sealed class WriteCommandTests
     }
 
     [Fact]
+    public void Write_InputBitWithoutCpu_IsRefusedBeforeThePortIsOpened()
+    {
+        var run = CliRunner.Run("write", "I0.0=1", "--device", "/dev/opanel-no-such-port");
+
+        run.ExitCode.Should().Be(1, "bad input, found before anything is read or sent (a port failure would be 2)");
+        run.Error.Should().Be("opanel: I0.0: inputs are the field's; the panel link writes only Q, M, V and SM; nothing written" + Environment.NewLine);
+    }
+
+    [Fact]
+    public void Write_BadInputJson_KeepsTheMessagesApostrophesReadable()
+    {
+        var run = CliRunner.Run("write", "I0.0=1", "--demo", "--json");
+
+        run.ExitCode.Should().Be(1);
+        run.Out.Should().Contain("\"error\": \"I0.0: inputs are the field's; the panel link writes only Q, M, V and SM; nothing written\"");
+    }
+
+    [Fact]
     public void Write_MissingDevice_ExitsTwoAndWritesNothing()
     {
         var device = Path.Combine(Path.GetTempPath(), "opanel-no-such-port-" + Guid.NewGuid().ToString("N"));
@@ -75,6 +93,7 @@ public sealed class WriteCommandTests
         var run = CliRunner.Run("write", "VW200=1", "--device", device);
 
         run.ExitCode.Should().Be(2);
-        run.Error.Should().Contain("PortUnavailable").And.Contain("nothing written");
+        run.Error.Should().Contain($"serial port {device}: open failed").And.Contain("; nothing written")
+            .And.Contain($"check the port name ({device})");
     }
 }

@@ -117,6 +117,26 @@ public sealed class OfflineRetryTests
     }
 
     [Fact]
+    public async Task Cycle_PortGoneAfterOneStationAnswered_NoStationRestsOnceNobodyAnswers()
+    {
+        var gone = new PlcCommunicationException(PlcErrorKind.PortUnavailable, null, "/dev/ttyUSB0 vanished");
+        _link.Set(One, ProtocolArea.V, 0, 0x11);
+        await _engine.RunCycleAsync(CancellationToken.None);
+        _link.Throw(Two, gone);
+        await _engine.RunCycleAsync(CancellationToken.None);
+        _engine.GetStationStatus(Two).NextTryAt.Should().NotBeNull("station 1 answered in the cycle the port vanished in");
+        _link.Throw(One, gone);
+        _clock.Advance(TimeSpan.FromSeconds(1));
+
+        await _engine.RunCycleAsync(CancellationToken.None);
+
+        _engine.GetStationStatus(Two).NextTryAt.Should().BeNull("nobody on the bus answers: the line is gone, not the station");
+        _engine.GetStationStatus(One).NextTryAt.Should().BeNull();
+        await _engine.RunCycleAsync(CancellationToken.None);
+        _link.ExchangesWith(Two).Should().Be(3, "rested in the cycle nobody answered, tried in the next one");
+    }
+
+    [Fact]
     public async Task Cycle_TriggeredRefresh_TriesTheSilentStationEveryTime()
     {
         _link.Throw(One, NoAnswer(One));

@@ -1,0 +1,107 @@
+using System.CommandLine;
+using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Reference;
+
+namespace OperatorPanel.Cli.Commands;
+
+/// <summary>
+/// The PLCs <c>opanel simulate</c> serves: from --cpu and --station, or from a project's bus (--project), each station
+/// with its own CPU and "allowStop", on the bus's line settings, so a line of different CPUs shares one device.
+/// </summary>
+internal static class SimulatedStations
+{
+    /// <summary>
+    /// The handler configurations and the line: with <paramref name="fromProject"/> (already checked to share one port)
+    /// each station's CPU and "allowStop" and the bus's line settings, --device for the port; else --cpu and --station.
+    /// </summary>
+    public static bool TryBuild(
+        ParseResult parse, IReadOnlyList<ProjectStation>? fromProject, Option<string> cpu, Option<string?> revision, Option<int[]> stations,
+        SerialOptionSet serial, byte replyDelayMs, bool allowStop,
+        [NotNullWhen(true)] out List<HandlerConfig>? configs, [NotNullWhen(true)] out SerialSettings? settings, [NotNullWhen(false)] out string? error)
+    {
+        configs = null;
+        settings = null;
+        if (fromProject is not null)
+        {
+            if (new Option[] { cpu, revision, serial.Baud, serial.Parity, serial.DataBits }.FirstOrDefault(o => parse.GetResult(o) is { Implicit: false }) is { } given)
+            {
+                error = $"with --project each station's CPU and the bus's line settings come from the project; leave out {given.Name}";
+                return false;
+            }
+
+            if (!serial.TryBind(parse, null, out var device, out error))
+            {
+                return false;
+            }
+
+            var link = fromProject[0].Link;
+            settings = device with { BaudRate = link.BaudRate, Parity = link.Parity, DataBits = link.DataBits };
+            configs = [.. fromProject.Select(s => new HandlerConfig(s.Address, s.Cpu, replyDelayMs: replyDelayMs, allowStop: s.AllowStop || allowStop))];
+            return true;
+        }
+
+        if (parse.GetValue(cpu) is null || (parse.GetValue(stations) ?? []).Length == 0)
+        {
+            error = "give the simulated PLCs with --cpu and --station (e.g. --cpu 224 --station 2), or a project's bus with --project";
+            return false;
+        }
+
+        if (!CpuOptions.TryResolve(parse.GetValue(cpu), parse.GetValue(revision), out var profile, out error)
+            || !serial.TryBind(parse, null, out settings, out error))
+        {
+            return false;
+        }
+
+        configs = [];
+        foreach (var address in parse.GetValue(stations) ?? [])
+        {
+            if (!Station.TryCreate(address, out var station, out error))
+            {
+                return false;
+            }
+
+            if (configs.Any(c => c.Station == station))
+            {
+                error = $"{station} is given twice; stations on one bus need distinct addresses";
+                return false;
+            }
+
+            configs.Add(new HandlerConfig(station, profile, replyDelayMs: replyDelayMs, allowStop: allowStop));
+        }
+
+        return true;
+    }
+
+    /// <summary>
+    /// The project's stations to simulate: those given with --station (each must be in the project), or all; they must
+    /// share one port, since one simulate serves one bus.
+    /// </summary>
+    public static bool TrySelect(PanelProject project, string path, int[] wanted, [NotNullWhen(true)] out List<ProjectStation>? chosen, [NotNullWhen(false)] out string? error)
+    {
+        chosen = null;
+        var known = string.Join(", ", project.Stations.Select(s => $"{s.Address.Address} {s.Name}"));
+        var missing = wanted.FirstOrDefault(w => project.Stations.All(s => s.Address.Address != w), -1);
+        if (missing != -1)
+        {
+            error = $"station {missing} is not in {path} (it has {known})";
+            return false;
+        }
+
+        var selected = project.Stations.Where(s => wanted.Length == 0 || wanted.Contains(s.Address.Address)).ToList();
+        var ports = selected.GroupBy(s => s.Link.PortName).ToList();
+        if (ports.Count > 1)
+        {
+            var buses = string.Join("; ", ports.Select(g => $"{g.Key}: {string.Join(", ", g.Select(s => s.Address.Address))}"));
+            error = $"{path} has stations on {ports.Count} ports ({buses}); one simulate serves one bus: choose its stations with --station";
+            return false;
+        }
+
+        chosen = selected;
+        error = null;
+        return true;
+    }
+}

@@ -1,0 +1,46 @@
+using OperatorPanel.Cli.Watch;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Protocol;
+
+namespace OperatorPanel.Cli.Tests.Watch;
+
+/// <summary>The "handler" line of watch: a PLC whose handler was generated for another CPU than the project says is named.</summary>
+public sealed class HandlerCheckTests
+{
+    private static readonly Station Two = new(2);
+
+    [Fact]
+    public void Describe_Cpu224HandlerInAProjectSaying226_IsAMismatchNamingBothAndTheFix()
+    {
+        var station = StationOf(CpuModel.Cpu226);
+
+        var text = HandlerCheck.Describe(station, Identify(CpuModel.Cpu224, smb6: 0x20, modeSwitchRun: true));
+
+        text.Should().Be("MISMATCH with CPU 226: the PLC reports SMB6 16#20 (CPU 224 or CPU 224XP), CPU 226 has 16#90; "
+            + "the handler was generated for CPU 224, not CPU 226: regenerate it");
+    }
+
+    [Fact]
+    public void Describe_MatchingHandler_IsOkWithProtocolAndModeSwitch()
+    {
+        var text = HandlerCheck.Describe(StationOf(CpuModel.Cpu224), Identify(CpuModel.Cpu224, smb6: 0x20, modeSwitchRun: true));
+
+        text.Should().Be("ok: generated for CPU 224, protocol 2, mode switch RUN");
+    }
+
+    [Fact]
+    public void Describe_ErrorReplyToIdentify_SaysRegenerate()
+    {
+        var text = HandlerCheck.Describe(StationOf(CpuModel.Cpu224), new ErrorResponse(Two, 1, CommandCode.Identify, ProtocolError.UnknownCommand));
+
+        text.Should().Be("IDENTIFY refused (UnknownCommand): the handler is not ours or too old; regenerate it");
+    }
+
+    private static ProjectStation StationOf(CpuModel model) =>
+        StarterProject.Create("line", CpuProfiles.For(model), Two, "COM3").Stations[0];
+
+    private static IdentifyResponse Identify(CpuModel model, byte smb6, bool modeSwitchRun) =>
+        new(Two, 1, 2, 1, HandlerIdentity.CpuModelCode(model), 1, 0x3C, 116, 5, smb6, modeSwitchRun ? (byte)1 : (byte)0, 3, 2, 9, 0, 7764, 428, 1, 120);
+}
