@@ -10,7 +10,7 @@ namespace OperatorPanel.StlGen.Handler;
 /// <summary>
 /// 08 READ CHANGES (docs/protocol.md, "READ CHANGES"): binary payload LIST (buffer byte 8) and FLAGS (9). Reply K,
 /// then K pairs INDEX VALUE, or K = 16#FF and the whole list. Every part runs in OP_PANEL's slices: the comparison
-/// at most <see cref="ChunksPerScan"/> chunks of <see cref="ChunkBytes"/> bytes per scan, the whole list at most <see cref="SlicePart.PassesPerScan"/>
+/// at most <see cref="ChunksPerScan"/> chunks of <see cref="ChunkBytes"/> bytes per scan, the whole list at most <see cref="SlicePart.ItemsPerScan"/>
 /// items per scan; nothing runs in an interrupt routine. Whatever a reply reports is what the copy holds afterwards:
 /// a changed byte is moved into the copy and sent from there, and a whole list is moved into the copy item by item
 /// and sent from there, so a program changing the bytes between two slices never makes the copy and the reply differ.
@@ -23,15 +23,15 @@ internal static class ChangesPart
     public const int ChunksPerScan = 1, ChunkBytes = HandlerTurnaround.ChangeChunkBytes;
 
     /// <summary>STEP values of READ CHANGES.</summary>
-    public const int StepCompare = 20, StepCopyItems = 21, StepCopyToReply = 22;
+    public const int StepCompare = 12, StepCopyItems = 13, StepCopyToReply = 14;
 
     /// <summary>Labels: the comparison (its resume, loop, byte, next byte, done), the whole list into the copy.</summary>
     public const int CompareResume = 100, CompareLoop = 101, CompareChunk = 102, CompareDone = 104,
-        CopyToReply = 105, FullWithCopy = 106, CopyItem = 107;
+        CopyToReply = 105, FullWithCopy = 106, CopyItem = 107, CopyItemsResume = 108;
 
     /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes; none without copies).</summary>
     public static IEnumerable<(int Step, int Label)> Resumes(HandlerContext c) =>
-        c.Options.CopyBytes == 0 ? [] : [(StepCompare, CompareResume), (StepCopyItems, CopyItem), (StepCopyToReply, CopyToReply)];
+        c.Options.CopyBytes == 0 ? [] : [(StepCompare, CompareResume), (StepCopyItems, CopyItemsResume), (StepCopyToReply, CopyToReply)];
 
     /// <summary>The first payload character of a reply (after '&lt;', STATION, SEQ, CMD, STATUS, REQCHECK).</summary>
     private const int Payload = ReplyPart.PayloadStart;
@@ -216,7 +216,11 @@ internal static class ChangesPart
             "READ CHANGES: the copy is renewed", "CD bit 7 set: after this reply the copy holds what it reports. AC1 = the copy pointer (AC0 is no pointer).",
             Op("ORB", Hex(CopyValid), "*AC3"), Op("MOVD", "AC0", "AC1"));
         yield return SlicePart.Pause(c, "READ CHANGES: whole list ready", StepCopyItems);
-        yield return Label(CopyItem, "READ CHANGES: next item into the copy");
+        foreach (var network in SlicePart.ItemLoop(c, CopyItemsResume, CopyItem, SlicePart.ItemsPerScan, "READ CHANGES: next item into the copy"))
+        {
+            yield return network;
+        }
+
         foreach (var network in AreaStart("*AC2"))
         {
             yield return network;
@@ -230,8 +234,9 @@ internal static class ChangesPart
             Op("INCD", "AC2"), Op("DECB", l.B(I)), Op("DECB", l.B(Budget)));
         yield return JumpIf(
             "Whole list: scan's passes used", "Items left, no pass left in this scan: the next scan goes on.", SlicePart.Yield,
-            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"), Op("MOVB", Dec(StepCopyItems), l.B(Step)));
+            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"));
         yield return JumpIf("Whole list: more items", "Back while items are left.", CopyItem, Op("LDB<>", l.B(I), "0"));
+        yield return SlicePart.Pause(c, "READ CHANGES: the whole list is in the copy", StepCopyToReply);
         yield return Label(CopyToReply, "READ CHANGES: the copy as the reply");
         yield return Always(
             "Whole list: the copy as characters",
