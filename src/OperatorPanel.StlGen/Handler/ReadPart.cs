@@ -12,6 +12,9 @@ namespace OperatorPanel.StlGen.Handler;
 /// </summary>
 internal static class ReadPart
 {
+    /// <summary>Label after the area start of a reply item.</summary>
+    private const int BuildAreaFound = 42;
+
     public static IEnumerable<StlNetwork> Entry(HandlerContext c)
     {
         var l = c.Layout;
@@ -61,7 +64,7 @@ internal static class ReadPart
             yield return network;
         }
 
-        foreach (var network in AreaStart("*AC2"))
+        foreach (var network in AreaStart("*AC2", BuildAreaFound))
         {
             yield return network;
         }
