@@ -29,7 +29,7 @@ internal static class SlicePart
     public const string InterruptBoundMs = "0.5", ScanBoundMs = "10", IdleScanBoundMs = "0.3";
 
     /// <inheritdoc cref="InterruptBoundMs"/>
-    public const int FewestScans = 8, MostScans = 75;
+    public const int FewestScans = 7, MostScans = 60;
 
     /// <summary>STEP values: where the next scan goes on (0 = no request); all below 16 (see the class summary).</summary>
     public const int StepStart = 1, StepRequestCheck = 2, StepHeader = 3, StepCheckItems = 4, StepItemsChecked = 5,
