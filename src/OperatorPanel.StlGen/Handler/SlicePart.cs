@@ -26,10 +26,10 @@ internal static class SlicePart
     /// configuration against them: the longest interrupt routine, the most added to one scan while serving a request
     /// and without one, and the scans a reply takes (WRITE BIT the fewest, a 20-item READ after a cut-off frame the most).
     /// </summary>
-    public const string InterruptBoundMs = "0.5", ScanBoundMs = "10", IdleScanBoundMs = "0.3";
+    public const string InterruptBoundMs = "0.5", ScanBoundMs = "10", IdleScanBoundMs = "0.2";
 
     /// <inheritdoc cref="InterruptBoundMs"/>
-    public const int FewestScans = 7, MostScans = 60;
+    public const int FewestScans = 6, MostScans = 60;
 
     /// <summary>STEP values: where the next scan goes on (0 = no request); all below 16 (see the class summary).</summary>
     public const int StepStart = 1, StepRequestCheck = 2, StepHeader = 3, StepCheckItems = 4, StepItemsChecked = 5,
