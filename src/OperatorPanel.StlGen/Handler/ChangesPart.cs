@@ -197,6 +197,12 @@ internal static class ChangesPart
         yield return new NetworkBuilder(
                 "Comparison: at most what the budget holds", $"Run > left (never more than {ChunkBytes}): CLEFT = run - left, the rest of the item; run = left.")
             .Op("LDW>", run, left).Op("-I", left, run).Op("MOVB", l.B(Save + 7), l.B(CLeft)).Op("MOVW", left, run).Build();
+        yield return new NetworkBuilder(
+                "Comparison: 4 bytes unchanged",
+                $"A chunk of 4 bytes equal to the copy (a double word, the commonest item): both pointers and INDEX (the CRC word's high byte) on by 4,",
+                $"{ChunkUnits + 1} units of the budget, the next chunk. Else byte by byte.")
+            .Op("LDW=", run, "4").Op("AD=", "*AC3", "*AC2").Op("+D", "4", "AC3").Op("+D", "4", "AC2").Op("+I", Dec(4 * 256), l.W(PairIndex))
+            .Op("-I", Dec(ChunkUnits + 1), budget).Op("JMP", Dec(CompareLoop)).Build();
         yield return Always(
             "Comparison: the chunk's bytes", $"Budget - {ChunkUnits} - run; a FOR loop over run bytes.",
             Op("-I", run, budget), Op("-I", Dec(ChunkUnits), budget), Op("FOR", index, "1", run));
