@@ -4,10 +4,10 @@ namespace OperatorPanel.Core.Link;
 
 /// <summary>
 /// How many scans the generated handler may take to serve a request before it starts the reply (docs/protocol.md
-/// section 7). The handler does its work in bounded slices, one per scan (at most 2 loop passes: 10 characters of
-/// the CRC frame check, one item checked, or one item's reply data), so the scans grow with the request's and the
+/// section 7). The handler does its work in bounded slices, one per scan (12 characters of the request's CRC frame
+/// check, 14 of the reply's, 4 items checked, or 3 items' reply data), so the scans grow with the request's and the
 /// reply's length. The bound is 5 + one scan per 6 request characters + one per 6 reply characters (the CRC alone
-/// takes one per 10; the item loops of READ, DEFINE LIST and READ LIST the rest); StlGen's HandlerCostTests prove it
+/// takes one per 12; the item loops of READ, DEFINE LIST and READ LIST the rest); StlGen's HandlerCostTests prove it
 /// covers every worst-case request the handler is measured with, a request after a cut-off frame's remains included.
 /// </summary>
 public static class HandlerTurnaround
@@ -24,7 +24,7 @@ public static class HandlerTurnaround
     /// </summary>
     public const int ChangeComparisonScans = ProtocolLimits.MaxReadItems + ((ProtocolLimits.MaxReadData + ChangeChunkBytes - 1) / ChangeChunkBytes);
 
-    /// <summary>Bytes of one item the handler compares with the copy in one scan (StlGen ChangesPart).</summary>
+    /// <summary>Bytes of one item the handler compares with the copy in one scan at least (StlGen ChangesPart: more while its budget lasts).</summary>
     public const int ChangeChunkBytes = 8;
 
     /// <summary>

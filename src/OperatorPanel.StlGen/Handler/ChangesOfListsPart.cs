@@ -21,7 +21,7 @@ internal static class ChangesOfListsPart
     public const int NextList = 110, ListStart = 111, ListReread = 112, ListCompared = 113, ListsDone = 114;
 
     /// <summary>STEP after a REREAD entry: the next list in the next scan (four lists' starts in one scan would take too long).</summary>
-    public const int StepNextList = 23;
+    public const int StepNextList = 15;
 
     /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes).</summary>
     public static IEnumerable<(int Step, int Label)> Resumes => [(StepNextList, NextList)];

@@ -10,7 +10,7 @@ namespace OperatorPanel.StlGen.Handler;
 /// <summary>
 /// 08 READ CHANGES (docs/protocol.md, "READ CHANGES"): binary payload LIST (buffer byte 8) and FLAGS (9). Reply K,
 /// then K pairs INDEX VALUE, or K = 16#FF and the whole list. Every part runs in OP_PANEL's slices: the comparison
-/// at most <see cref="ChunksPerScan"/> chunks of <see cref="ChunkBytes"/> bytes per scan, the whole list at most <see cref="SlicePart.PassesPerScan"/>
+/// chunks of at most <see cref="ChunkBytes"/> bytes while a budget of <see cref="CompareBudget"/> lasts in a scan, the whole list at most <see cref="SlicePart.ItemsPerScan"/>
 /// items per scan; nothing runs in an interrupt routine. Whatever a reply reports is what the copy holds afterwards:
 /// a changed byte is moved into the copy and sent from there, and a whole list is moved into the copy item by item
 /// and sent from there, so a program changing the bytes between two slices never makes the copy and the reply differ.
@@ -19,19 +19,33 @@ namespace OperatorPanel.StlGen.Handler;
 /// </summary>
 internal static class ChangesPart
 {
-    /// <summary>Chunks the comparison handles per scan, and the most bytes of one item in a chunk.</summary>
-    public const int ChunksPerScan = 1, ChunkBytes = HandlerTurnaround.ChangeChunkBytes;
+    /// <summary>The most bytes of one item in a chunk of the comparison (the link's bound counts one chunk per scan).</summary>
+    public const int ChunkBytes = HandlerTurnaround.ChangeChunkBytes;
+
+    /// <summary>
+    /// The comparison's budget per scan and what a chunk costs of it besides its bytes: a unit stands for at most
+    /// 0.34 ms at the StlTiming figures (a chunk with its item's start 1.6 ms at most, an unchanged byte 0.27 ms, a
+    /// changed byte with its pair 0.68 ms), so a scan's chunks stay under 7.2 ms. The budget is exactly one chunk of
+    /// <see cref="ChunkBytes"/> changed bytes: the first chunk of a scan is always whole.
+    /// </summary>
+    public const int ChunkUnits = 5, CompareBudget = ChunkUnits + (2 * ChunkBytes);
+
+    /// <summary>
+    /// 09 goes on with its next list (up to 3.6 ms: the entry, the next list's start) only while at least this much of
+    /// the budget is left; else in the next scan.
+    /// </summary>
+    private const int NextListUnits = 12;
 
     /// <summary>STEP values of READ CHANGES.</summary>
-    public const int StepCompare = 20, StepCopyItems = 21, StepCopyToReply = 22;
+    public const int StepCompare = 12, StepCopyItems = 13, StepCopyToReply = 14;
 
     /// <summary>Labels: the comparison (its resume, loop, byte, next byte, done), the whole list into the copy.</summary>
     public const int CompareResume = 100, CompareLoop = 101, CompareChunk = 102, CompareDone = 104,
-        CopyToReply = 105, FullWithCopy = 106, CopyItem = 107;
+        CopyToReply = 105, FullWithCopy = 106, CopyItem = 107, CopyItemsResume = 108, CompareAreaFound = 103, CopyAreaFound = 109;
 
     /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes; none without copies).</summary>
     public static IEnumerable<(int Step, int Label)> Resumes(HandlerContext c) =>
-        c.Options.CopyBytes == 0 ? [] : [(StepCompare, CompareResume), (StepCopyItems, CopyItem), (StepCopyToReply, CopyToReply)];
+        c.Options.CopyBytes == 0 ? [] : [(StepCompare, CompareResume), (StepCopyItems, CopyItemsResume), (StepCopyToReply, CopyToReply)];
 
     /// <summary>The first payload character of a reply (after '&lt;', STATION, SEQ, CMD, STATUS, REQCHECK).</summary>
     private const int Payload = ReplyPart.PayloadStart;
@@ -143,55 +157,69 @@ internal static class ChangesPart
     }
 
     /// <summary>
-    /// AC0 = next descriptor, AC1 = next reply character, AC2 = copy byte, AC3 = the list's byte in its area. A scan
-    /// compares <see cref="ChunksPerScan"/> chunks of at most <see cref="ChunkBytes"/> bytes of one item (starting the
-    /// item when needed), each chunk one FOR loop (OP_AC1's words as its index and count: SAVE is free within a slice).
-    /// A changed byte goes into the copy; its pair is written while K &lt; N; at the end K &gt;= N means the whole list,
-    /// sent from the copy, which then holds every byte as compared.
+    /// AC0 = next descriptor (no pointer: AC3 reads it when an item starts), AC1 = next reply character, AC2 = copy
+    /// byte, AC3 = the list's byte in its area. A scan compares chunks of at most <see cref="ChunkBytes"/> bytes of
+    /// one item (starting the item when needed), each chunk one FOR loop (OP_AC1's words as its index and count: SAVE
+    /// is free within a slice), while CHUNK, the scan's budget (<see cref="CompareBudget"/> units), lasts: a chunk costs
+    /// <see cref="ChunkUnits"/> units and one per byte, a changed byte one more, and its run is cut to what the budget
+    /// holds were every byte changed, so the first chunk of a scan is always whole. A changed byte goes into the copy;
+    /// its pair is written while K &lt; N; at the end K &gt;= N means the whole list, sent from the copy, which then
+    /// holds every byte as compared.
     /// </summary>
     private static IEnumerable<StlNetwork> Compare(HandlerContext c)
     {
         var l = c.Layout;
-        string index = l.W(Save + 4), run = l.W(Save + 6), left = l.W(Save + 8);
+        string index = l.W(Save + 4), run = l.W(Save + 6), left = l.W(Save + 8), budget = l.W(Chunk);
         yield return Label(CompareResume, "READ CHANGES: comparison, this scan's chunks");
-        yield return Always("Comparison: chunks for this scan", $"{ChunksPerScan} chunks of at most {ChunkBytes} bytes.", Op("MOVB", Dec(ChunksPerScan), l.B(Budget)));
+        yield return Always("Comparison: budget for this scan", $"{CompareBudget} units: a whole chunk of {ChunkBytes} bytes even if all of them changed.",
+            Op("MOVW", Dec(CompareBudget), budget));
         yield return Label(CompareLoop, "READ CHANGES: next chunk");
         yield return JumpIf(
-            "Comparison: scan's chunks used", "The next scan goes on with the comparison.", SlicePart.Yield,
-            Op("LDB=", l.B(Budget), "0"), Op("MOVB", Dec(StepCompare), l.B(Step)));
+            "Comparison: scan's budget used", $"Less than a chunk of one changed byte ({ChunkUnits + 2} units) left: the next scan goes on.", SlicePart.Yield,
+            Op("LDW<", budget, Dec(ChunkUnits + 2)));
         yield return JumpIf("Comparison: bytes left in the item", "On to the chunk.", CompareChunk, Op("LDB<>", l.B(CLeft), "0"));
         yield return JumpIf("Comparison: all items compared", "No item left: the pairs are the reply.", CompareDone, Op("LDB=", l.B(I), "0"));
-        yield return Always("Comparison: the descriptor pointer", "AC2 = next descriptor for a moment, the copy pointer in OP_AC2 meanwhile.",
-            Op("MOVD", "AC2", l.Dw(Save + 8)), Op("MOVD", "AC0", "AC2"));
-        foreach (var network in AreaStart("*AC2"))
+        yield return Always(
+            "Comparison: the next item",
+            "AC3 reads the descriptor at AC0: AREA into OP_AC3's first byte, OFFSET into OP_AC0, CLEFT = LENGTH; AC0 to the next descriptor; one item fewer.",
+            Op("MOVD", "AC0", "AC3"), Op("MOVB", "*AC3", l.B(Save + 12)), Op("INCD", "AC3"), Op("ITD", "*AC3", l.Dw(Save)), Op("+D", "2", "AC3"),
+            Op("MOVB", "*AC3", l.B(CLeft)), Op("+D", "4", "AC0"), Op("DECB", l.B(I)));
+        foreach (var network in AreaStart(l.B(Save + 12), CompareAreaFound))
         {
             yield return network;
         }
 
-        yield return Always(
-            "Comparison: the next item",
-            "AC3 = area start + OFFSET (through OP_AC0 as scratch); CLEFT = LENGTH; AC0 to the next descriptor, AC2 back to the copy; one item fewer.",
-            Op("INCD", "AC2"), Op("ITD", "*AC2", l.Dw(Save)), Op("+D", l.Dw(Save), "AC3"), Op("INCD", "AC2"), Op("INCD", "AC2"),
-            Op("MOVB", "*AC2", l.B(CLeft)), Op("INCD", "AC2"), Op("MOVD", "AC2", "AC0"), Op("MOVD", l.Dw(Save + 8), "AC2"), Op("DECB", l.B(I)));
+        yield return Always("Comparison: the item's first byte", "AC3 = area start + OFFSET.", Op("+D", l.Dw(Save), "AC3"));
         yield return Label(CompareChunk, "READ CHANGES: one chunk");
-        yield return Always("Comparison: chunk length", "Run = CLEFT, at most the chunk size; one chunk of this scan used.",
-            Op("BTI", l.B(CLeft), run), Op("DECB", l.B(Budget)));
-        yield return new NetworkBuilder("Comparison: at most one chunk", $"Run = {ChunkBytes} when more bytes are left in the item.")
-            .Op("LDW>", run, Dec(ChunkBytes)).Op("MOVW", Dec(ChunkBytes), run).Build();
         yield return Always(
-            "Comparison: the chunk's bytes", "CLEFT = CLEFT - run; a FOR loop over run bytes.",
-            Op("BTI", l.B(CLeft), left), Op("-I", run, left), Op("MOVB", l.B(Save + 9), l.B(CLeft)), Op("FOR", index, "1", run));
+            "Comparison: chunk length", $"Run = CLEFT, CLEFT = 0 (the whole item); left = the bytes the budget holds were all of them changed: (budget - {ChunkUnits}) / 2.",
+            Op("BTI", l.B(CLeft), run), Op("MOVB", "0", l.B(CLeft)), Op("MOVW", budget, left), Op("-I", Dec(ChunkUnits), left), Op("SRW", left, "1"));
+        yield return new NetworkBuilder(
+                "Comparison: at most what the budget holds", $"Run > left (never more than {ChunkBytes}): CLEFT = run - left, the rest of the item; run = left.")
+            .Op("LDW>", run, left).Op("-I", left, run).Op("MOVB", l.B(Save + 7), l.B(CLeft)).Op("MOVW", left, run).Build();
+        yield return new NetworkBuilder(
+                "Comparison: 4 bytes unchanged",
+                $"A chunk of 4 bytes equal to the copy (a double word, the commonest item): both pointers and INDEX (the CRC word's high byte) on by 4,",
+                $"{ChunkUnits + 1} units of the budget, the next chunk. Else byte by byte.")
+            .Op("LDW=", run, "4").Op("AD=", "*AC3", "*AC2").Op("+D", "4", "AC3").Op("+D", "4", "AC2").Op("+I", Dec(4 * 256), l.W(PairIndex))
+            .Op("-I", Dec(ChunkUnits + 1), budget).Op("JMP", Dec(CompareLoop)).Build();
+        yield return Always(
+            "Comparison: the chunk's bytes", $"Budget - {ChunkUnits} - run; a FOR loop over run bytes.",
+            Op("-I", run, budget), Op("-I", Dec(ChunkUnits), budget), Op("FOR", index, "1", run));
         yield return new NetworkBuilder(
                 "Comparison: one byte",
-                "Changed: the copy takes the new value, VALUE = the copy's byte (what the pair reports), one change more;",
+                "Changed: the copy takes the new value, VALUE = the copy's byte (what the pair reports), one budget unit more, one change more;",
                 "while K < N (the pairs shorter than the whole list) INDEX and VALUE as 4 characters at AC1.")
-            .Op("LDB<>", "*AC3", "*AC2").Op("MOVB", "*AC3", "*AC2").Op("MOVB", "*AC2", l.B(PairValue)).Op("INCB", l.B(K))
+            .Op("LDB<>", "*AC3", "*AC2").Op("MOVB", "*AC3", "*AC2").Op("MOVB", "*AC2", l.B(PairValue)).Op("DECW", budget).Op("INCB", l.B(K))
             .Op("AB<", l.B(K), l.B(N)).Op("HTA", l.B(PairIndex), "*AC1", "4").Op("+D", "4", "AC1").Build();
         yield return Always("Comparison: next byte", "Byte and copy pointers on, INDEX + 1.",
             Op("INCD", "AC3"), Op("INCD", "AC2"), Op("INCB", l.B(PairIndex)));
         yield return new NetworkBuilder("Comparison: end of the chunk").Op("NEXT").Build();
         yield return JumpIf("Comparison: go on", "Next chunk or item.", CompareLoop, Op("LD", "SM0.0"));
         yield return Label(CompareDone, "READ CHANGES: comparison done");
+        yield return JumpIf(
+            "Comparison: 09 late in the scan", $"Less than {NextListUnits} units left: the entry and the next list in the next scan (it finds no item left).",
+            SlicePart.Yield, Op("LDW<", budget, Dec(NextListUnits)), Op("AB=", l.B(Cmd), Dec(CommandCode.ReadChangesOfLists)));
         yield return JumpIf(
             "Comparison: one list of 09", "READ CHANGES OF LISTS goes on with its entry for this list.", ChangesOfListsPart.ListCompared,
             Op("LDB=", l.B(Cmd), Dec(CommandCode.ReadChangesOfLists)));
@@ -216,8 +244,12 @@ internal static class ChangesPart
             "READ CHANGES: the copy is renewed", "CD bit 7 set: after this reply the copy holds what it reports. AC1 = the copy pointer (AC0 is no pointer).",
             Op("ORB", Hex(CopyValid), "*AC3"), Op("MOVD", "AC0", "AC1"));
         yield return SlicePart.Pause(c, "READ CHANGES: whole list ready", StepCopyItems);
-        yield return Label(CopyItem, "READ CHANGES: next item into the copy");
-        foreach (var network in AreaStart("*AC2"))
+        foreach (var network in SlicePart.ItemLoop(c, CopyItemsResume, CopyItem, SlicePart.ItemsPerScan, "READ CHANGES: next item into the copy"))
+        {
+            yield return network;
+        }
+
+        foreach (var network in AreaStart("*AC2", CopyAreaFound))
         {
             yield return network;
         }
@@ -230,8 +262,9 @@ internal static class ChangesPart
             Op("INCD", "AC2"), Op("DECB", l.B(I)), Op("DECB", l.B(Budget)));
         yield return JumpIf(
             "Whole list: scan's passes used", "Items left, no pass left in this scan: the next scan goes on.", SlicePart.Yield,
-            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"), Op("MOVB", Dec(StepCopyItems), l.B(Step)));
+            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"));
         yield return JumpIf("Whole list: more items", "Back while items are left.", CopyItem, Op("LDB<>", l.B(I), "0"));
+        yield return SlicePart.Pause(c, "READ CHANGES: the whole list is in the copy", StepCopyToReply);
         yield return Label(CopyToReply, "READ CHANGES: the copy as the reply");
         yield return Always(
             "Whole list: the copy as characters",

@@ -19,6 +19,9 @@ public sealed partial class HandlerLayout
     /// <summary>The work bytes READ CHANGES (08 and 09) and STOP use of their own.</summary>
     public const int ChangesBytes = 256 + WorkBytes - CommandsFirst;
 
+    /// <summary>OP_STOP bit 7: SM0.7 (mode switch at RUN) as the last scan saw it, for the switch's edges.</summary>
+    public const int RunSeenBit = 7;
+
     /// <summary>CD bit 7: the copy is valid.</summary>
     public const int CopyValid = 0x80;
 
@@ -33,7 +36,7 @@ public sealed partial class HandlerLayout
 
     private IEnumerable<(string Symbol, string Address, string Comment)> ChangesSymbols =>
     [
-        ("OP_STOP", B(StopState), "Panel handler: bit 0 = STOP reply built, bit 1 = STOP reply sent"),
+        ("OP_STOP", B(StopState), "Panel handler: bit 0 = STOP reply built, bit 1 = STOP reply sent, bit 7 = SM0.7 in the last scan"),
         ("OP_CFREE", B(CFree), "Panel handler: first free byte of the READ CHANGES copy area"),
         .. Enumerable.Range(1, 4).Select(n => ($"OP_CSTART{n}", B(CStart1 + n - 1), $"Panel handler: copy of list {n}: its first byte in the copy area (255 = no copy)")),
         .. Enumerable.Range(1, 4).Select(n => ($"OP_CD{n}", B(CD1 + n - 1), $"Panel handler: data bytes of list {n}; bit 7 = its copy holds what the last reply reported")),

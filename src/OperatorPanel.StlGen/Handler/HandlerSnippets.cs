@@ -7,9 +7,12 @@ namespace OperatorPanel.StlGen.Handler;
 /// <summary>Pieces several parts of the handler share.</summary>
 internal static class HandlerSnippets
 {
-    /// <summary>Protocol area codes 1-5 and the first byte of each area (docs/protocol.md, "Area codes").</summary>
+    /// <summary>
+    /// Protocol area codes 1-5 and the first byte of each area (docs/protocol.md, "Area codes"), tested in this order:
+    /// V and M hold most of a panel's values, and each test that matches ends the search with a jump.
+    /// </summary>
     private static readonly (int Code, string Pointer, string Name)[] Areas =
-        [(1, "&IB0", "I"), (2, "&QB0", "Q"), (3, "&MB0", "M"), (4, "&VB0", "V"), (5, "&SMB0", "SM")];
+        [(4, "&VB0", "V"), (3, "&MB0", "M"), (1, "&IB0", "I"), (2, "&QB0", "Q"), (5, "&SMB0", "SM")];
 
     /// <summary>Every READ list is forgotten: no list stored, floor back at 256 (docs/protocol.md, "Lists", invalidation).</summary>
     public static NetworkBuilder ClearLists(this NetworkBuilder net, HandlerLayout l) =>
@@ -43,14 +46,20 @@ internal static class HandlerSnippets
 
     public static (string, string[]) Op(string mnemonic, params string[] operands) => (mnemonic, operands);
 
-    /// <summary>AC3 = pointer to the first byte of the area whose protocol code is in <paramref name="code"/>.</summary>
-    public static IEnumerable<StlNetwork> AreaStart(string code)
+    /// <summary>
+    /// AC3 = pointer to the first byte of the area whose protocol code is in <paramref name="code"/> (checked before);
+    /// the code goes on at label <paramref name="found"/>, which ends these networks.
+    /// </summary>
+    public static IEnumerable<StlNetwork> AreaStart(string code, int found)
     {
         foreach (var (value, pointer, name) in Areas)
         {
-            yield return new NetworkBuilder($"Area code {value}: {name}", $"AC3 points at {pointer[1..]}, the first byte of {name}.")
-                .Op("LDB=", code, Dec(value)).Op("MOVD", pointer, "AC3").Build();
+            var net = new NetworkBuilder($"Area code {value}: {name}", $"AC3 points at {pointer[1..]}, the first byte of {name}.")
+                .Op("LDB=", code, Dec(value)).Op("MOVD", pointer, "AC3");
+            yield return (value == Areas[^1].Code ? net : net.Op("JMP", Dec(found))).Build();
         }
+
+        yield return Label(found, "area start found");
     }
 
     /// <summary>

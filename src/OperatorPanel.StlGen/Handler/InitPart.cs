@@ -27,7 +27,7 @@ internal static class InitPart
                     ? $"{c.SmB(87)} = 16#E0: no idle line, no timer."
                     : $"{c.SmB(87)} = 16#E4: a frame cut off ends after {c.Options.CharTimeoutMs} ms without a character ({c.SmW(92)}).",
                 $"Clear the READ lists, attach {c.Names.Receive} (event {c.ReceiveEvent}) and {c.Names.Transmit} (event {c.TransmitEvent}), enable interrupts, no request waiting, start receiving.")
-            .Op("LD", "SM0.7").Op("EU").Op("LD", "SM0.1").Op("A", "SM0.7").Op("OLD")
+            .Op("LD", "SM0.7").Op("AN", RunSeen(c)).Op("LD", "SM0.1").Op("A", "SM0.7").Op("OLD")
             .Op("MOVB", Hex(c.FreeportControl), c.SmB(30))
             .Op("MOVB", c.Options.CharTimeoutMs == 0 ? "16#E0" : "16#E4", c.SmB(87))
             .Op("MOVB", "16#3C", c.SmB(88)).Op("MOVB", "16#3E", c.SmB(89)).Op("MOVW", "0", c.SmW(90));
@@ -45,8 +45,17 @@ internal static class InitPart
                 "PPI again: first scan at TERM, or switch turned to TERM",
                 $"{c.SmB(30)} = 0 gives port {c.Port} back to PPI, so a programming device can connect without stopping the CPU.",
                 $"Detach the handler's events {c.ReceiveEvent}, {c.TransmitEvent} and {DelayEvent}; a request being served and the READ lists are forgotten.")
-            .Op("LD", "SM0.7").Op("ED").Op("LD", "SM0.1").Op("AN", "SM0.7").Op("OLD")
+            .Op("LDN", "SM0.7").Op("A", RunSeen(c)).Op("LD", "SM0.1").Op("AN", "SM0.7").Op("OLD")
             .Op("MOVB", "0", c.SmB(30)).Op("DTCH", Dec(c.ReceiveEvent)).Op("DTCH", Dec(c.TransmitEvent))
             .Op("DTCH", Dec(DelayEvent)).Op("MOVB", "0", l.B(HandlerLayout.Step)).ClearLists(l).Forget(c).Build();
+
+        yield return new NetworkBuilder(
+                "Mode switch as this scan saw it",
+                $"OP_STOP bit {HandlerLayout.RunSeenBit} = SM0.7, for the edges above in the next scan: a contact takes 0.37 us (System Manual",
+                "C233-01 Table A-2, Boolean); EU and ED have no published time and count as 46 us each, in every scan.")
+            .Op("LD", "SM0.7").Op("=", RunSeen(c)).Build();
     }
+
+    /// <summary>The bit that keeps SM0.7 from the last scan.</summary>
+    private static string RunSeen(HandlerContext c) => c.Layout.Bit(HandlerLayout.StopState, HandlerLayout.RunSeenBit);
 }

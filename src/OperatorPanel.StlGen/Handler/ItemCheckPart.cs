@@ -20,7 +20,11 @@ internal static class ItemCheckPart
         var l = c.Layout;
         var e02 = HandlerLabels.Error(ProtocolError.AddressOutOfRange);
         var e04 = HandlerLabels.Error(ProtocolError.BadLength);
-        yield return Label(HandlerLabels.CheckItems, "check the next item");
+        foreach (var network in SlicePart.ItemLoop(c, SlicePart.CheckItemsResume, HandlerLabels.CheckItems, SlicePart.ItemsPerScan, "check the next item"))
+        {
+            yield return network;
+        }
+
         yield return Always("Item: where its LENGTH is", "AC3 points at LENGTH, 3 bytes after AREA.", Op("MOVD", "AC2", "AC3"), Op("+D", "3", "AC3"));
         yield return JumpIf("Item: LENGTH 0", "Error 04.", e04, Op("LDB=", "*AC3", "0"));
         yield return JumpIf("Item: unknown area", "AREA not 1-5: error 02.", e02, Op("LDB=", "*AC2", "0"), Op("OB>", "*AC2", "5"));
@@ -44,7 +48,7 @@ internal static class ItemCheckPart
             Op("BTI", "*AC2", "AC0"), Op("+I", "AC0", "AC1"), Op("INCD", "AC2"), Op("DECB", l.B(I)), Op("DECB", l.B(Budget)));
         yield return JumpIf(
             "Item: scan's passes used", "Items left, no pass left in this scan: the next scan goes on at label 30.", SlicePart.Yield,
-            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"), Op("MOVB", Dec(SlicePart.StepCheckItems), l.B(Step)));
+            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"));
         yield return JumpIf("Item: more items", "Back to label 30 while items are left.", HandlerLabels.CheckItems, Op("LDB<>", l.B(I), "0"));
         yield return SlicePart.Pause(c, "Items checked", SlicePart.StepItemsChecked);
         yield return Label(SlicePart.ItemsChecked, "items checked");

@@ -12,6 +12,9 @@ namespace OperatorPanel.StlGen.Handler;
 /// </summary>
 internal static class ReadPart
 {
+    /// <summary>Label after the area start of a reply item.</summary>
+    private const int BuildAreaFound = 42;
+
     public static IEnumerable<StlNetwork> Entry(HandlerContext c)
     {
         var l = c.Layout;
@@ -56,8 +59,12 @@ internal static class ReadPart
     public static IEnumerable<StlNetwork> BuildLoop(HandlerContext c)
     {
         var l = c.Layout;
-        yield return Label(HandlerLabels.BuildItems, "reply data of the next item");
-        foreach (var network in AreaStart("*AC2"))
+        foreach (var network in SlicePart.ItemLoop(c, SlicePart.BuildItemsResume, HandlerLabels.BuildItems, SlicePart.ReplyItemsPerScan, "reply data of the next item"))
+        {
+            yield return network;
+        }
+
+        foreach (var network in AreaStart("*AC2", BuildAreaFound))
         {
             yield return network;
         }
@@ -70,7 +77,7 @@ internal static class ReadPart
             Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC1"), Op("INCD", "AC2"), Op("DECB", l.B(I)), Op("DECB", l.B(Budget)));
         yield return JumpIf(
             "Reply item: scan's passes used", "Items left, no pass left in this scan: the next scan goes on at label 40.", SlicePart.Yield,
-            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"), Op("MOVB", Dec(SlicePart.StepBuildItems), l.B(Step)));
+            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"));
         yield return JumpIf("Reply item: more items", "Back to label 40 while items are left.", HandlerLabels.BuildItems, Op("LDB<>", l.B(I), "0"));
         yield return Always("Reply items done", "STATUS 00; finish the reply.", Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
     }

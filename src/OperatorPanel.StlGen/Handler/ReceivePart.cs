@@ -67,7 +67,6 @@ internal static class ReceivePart
             yield return network;
         }
 
-        yield return SlicePart.Pause(c, "Request checked", SlicePart.StepHeader);
         yield return Label(SlicePart.Header, "header and payload to binary");
         yield return Always(
             "Step 2: header to binary", "ATH the characters of STATION, SEQ and CMD (buffer bytes 2-7) into N, I and CMD.",

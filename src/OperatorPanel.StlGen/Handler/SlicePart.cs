@@ -8,36 +8,47 @@ namespace OperatorPanel.StlGen.Handler;
 /// <summary>
 /// OP_PANEL serves a request in slices, one per scan, as the seed paper's cyclic code does (seed 000 section 8): the
 /// receive interrupt only sets STEP = 1; every scan OP_PANEL takes AC0-AC3 back from SAVE, goes on where STEP says,
-/// and at the end of its slice (a fixed point, or when BUDGET loop passes are used up) keeps AC0-AC3 in SAVE again.
-/// A slice is at most <see cref="PassesPerScan"/> passes of one loop, or one straight run between two fixed points.
+/// and at the end of its slice (a fixed point, or when its loop's budget is used up) keeps AC0-AC3 in SAVE again.
+/// A slice is one pass of a character loop, a loop's budget of items, or one straight run between two fixed points;
+/// each budget is sized so the slice stays under <see cref="ScanBoundMs"/> at the StlTiming figures. STEP values are
+/// 1-15, so a tree of bit tests finds the resume point with at most 4 jumps (a compare and a jump cost 46 us each).
 /// </summary>
 internal static class SlicePart
 {
-    /// <summary>Loop passes per scan: frame check passes of <see cref="FrameCheckPart.CharactersPerPass"/> characters, items checked or replied.</summary>
-    public const int PassesPerScan = 2;
+    /// <summary>Items checked (READ, DEFINE LIST, WRITE) or moved into a copy per scan: about 1.7 ms and 1.2 ms each.</summary>
+    public const int ItemsPerScan = 4;
+
+    /// <summary>Items of a reply built per scan: about 1.3 ms each plus 34 us per data byte (at most 116 in all).</summary>
+    public const int ReplyItemsPerScan = 3;
 
     /// <summary>
     /// What the technician notes promise, at the StlTiming figures; HandlerCostTests measures every golden
     /// configuration against them: the longest interrupt routine, the most added to one scan while serving a request
     /// and without one, and the scans a reply takes (WRITE BIT the fewest, a 20-item READ after a cut-off frame the most).
     /// </summary>
-    public const string InterruptBoundMs = "0.5", ScanBoundMs = "10", IdleScanBoundMs = "0.3";
+    public const string InterruptBoundMs = "0.5", ScanBoundMs = "10", IdleScanBoundMs = "0.2";
 
     /// <inheritdoc cref="InterruptBoundMs"/>
-    public const int FewestScans = 8, MostScans = 75;
+    public const int FewestScans = 6, MostScans = 60;
 
-    /// <summary>STEP values: where the next scan goes on (0 = no request).</summary>
+    /// <summary>STEP values: where the next scan goes on (0 = no request); all below 16 (see the class summary).</summary>
     public const int StepStart = 1, StepRequestCheck = 2, StepHeader = 3, StepCheckItems = 4, StepItemsChecked = 5,
         StepBuildItems = 6, StepReplyCheck = 7, StepReplyCheckPass = 8, StepWriteReadBack = 9, StepFrameChecked = 10, StepMovePass = 11;
 
-    /// <summary>The labels OP_PANEL goes on at; 30 and 40 are the item loops' own.</summary>
-    public const int RequestCheckPass = 71, Header = 72, ItemsChecked = 73, ReplyCheck = 74, ReplyCheckPass = 75,
-        WriteReadBack = 76, FrameChecked = 77, MovePass = 78, Yield = 90, EndOfSlice = 99;
+    /// <summary>The bits of STEP the resume tree tests: STEP values are 1 .. 2^StepBits - 1.</summary>
+    public const int StepBits = 4;
+
+    /// <summary>The labels OP_PANEL goes on at; 30 and 40 are the item loops' own, 29 and 39 set their budgets first.</summary>
+    public const int RequestStart = 70, RequestCheckPass = 71, Header = 72, ItemsChecked = 73, ReplyCheck = 74, ReplyCheckPass = 75,
+        WriteReadBack = 76, FrameChecked = 77, MovePass = 78, CheckItemsResume = 29, BuildItemsResume = 39, Yield = 90, EndOfSlice = 99;
+
+    /// <summary>Labels of the resume tree's inner nodes: 120 + the STEP bits tested so far.</summary>
+    private const int TreeLabels = 120;
 
     private static readonly (int Step, int Label)[] Resumes =
     [
-        (StepRequestCheck, RequestCheckPass), (StepHeader, Header), (StepCheckItems, HandlerLabels.CheckItems),
-        (StepItemsChecked, ItemsChecked), (StepBuildItems, HandlerLabels.BuildItems), (StepReplyCheck, ReplyCheck),
+        (StepStart, RequestStart), (StepRequestCheck, RequestCheckPass), (StepHeader, Header), (StepCheckItems, CheckItemsResume),
+        (StepItemsChecked, ItemsChecked), (StepBuildItems, BuildItemsResume), (StepReplyCheck, ReplyCheck),
         (StepReplyCheckPass, ReplyCheckPass), (StepWriteReadBack, WriteReadBack), (StepFrameChecked, FrameChecked),
         (StepMovePass, MovePass),
     ];
@@ -46,17 +57,83 @@ internal static class SlicePart
     public static IEnumerable<StlNetwork> Entry(HandlerContext c)
     {
         var l = c.Layout;
-        yield return JumpIf("No request waiting", "STEP = 0: the port is receiving or sending; nothing to do in this scan.",
-            EndOfSlice, Op("LDB=", l.B(Step), "0"));
+        var idle = new NetworkBuilder("No request waiting", "STEP = 0: the port is receiving or sending; nothing to do in this scan.")
+            .Op("LDN", l.Bit(Step, 0));
+        for (var bit = 1; bit < StepBits; bit++)
+        {
+            idle.Op("AN", l.Bit(Step, bit));
+        }
+
+        yield return idle.Op("JMP", Dec(EndOfSlice)).Build();
         yield return Always(
             "Go on with the request",
-            $"AC0-AC3 as the last slice left them (the program may have used them since); {PassesPerScan} loop passes in this scan.",
+            "AC0-AC3 as the last slice left them (the program may have used them since).",
             Op("MOVD", l.Dw(Save), "AC0"), Op("MOVD", l.Dw(Save + 4), "AC1"), Op("MOVD", l.Dw(Save + 8), "AC2"),
-            Op("MOVD", l.Dw(Save + 12), "AC3"), Op("MOVB", Dec(PassesPerScan), l.B(Budget)));
-        foreach (var (step, label) in Resumes.Concat(ChangesPart.Resumes(c)).Concat(ChangesOfListsPart.Resumes))
+            Op("MOVD", l.Dw(Save + 12), "AC3"));
+        var resumes = Resumes.Concat(ChangesPart.Resumes(c)).Concat(ChangesOfListsPart.Resumes).ToList();
+        var steps = resumes.Select(r => r.Step).ToList();
+        ArgumentOutOfRangeException.ThrowIfNotEqual(steps.Distinct().Count(), steps.Count, nameof(resumes));
+        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(steps.Max(), 1 << StepBits, nameof(resumes));
+        foreach (var network in ResumeTree(c, resumes, StepBits - 1, 0))
         {
-            yield return JumpIf($"STEP {step}", $"Go on at label {label}.", label, Op("LDB=", l.B(Step), Dec(step)));
+            yield return network;
         }
+    }
+
+    /// <summary>
+    /// The resume points whose STEP agrees with <paramref name="prefix"/> above <paramref name="bit"/>: a leaf jumps to
+    /// its label; a node jumps on STEP bit <paramref name="bit"/> set to its upper half (emitted after the lower half).
+    /// </summary>
+    private static IEnumerable<StlNetwork> ResumeTree(HandlerContext c, IReadOnlyList<(int Step, int Label)> resumes, int bit, int prefix)
+    {
+        var l = c.Layout;
+        if (resumes.Count == 1)
+        {
+            yield return JumpIf($"STEP {resumes[0].Step}", $"Go on at label {resumes[0].Label}.", resumes[0].Label, Op("LD", "SM0.0"));
+            yield break;
+        }
+
+        var upper = resumes.Where(r => (r.Step & (1 << bit)) != 0).ToList();
+        var lower = resumes.Where(r => (r.Step & (1 << bit)) == 0).ToList();
+        if (upper.Count == 0 || lower.Count == 0)
+        {
+            foreach (var network in ResumeTree(c, resumes, bit - 1, prefix))
+            {
+                yield return network;
+            }
+
+            yield break;
+        }
+
+        var upperPrefix = prefix | (1 << bit);
+        var target = upper.Count == 1 ? upper[0].Label : TreeLabels + upperPrefix;
+        yield return JumpIf(
+            $"STEP bit {bit}", upper.Count == 1 ? $"STEP {upper[0].Step}: go on at label {target}." : $"STEP {string.Join(", ", upper.Select(r => r.Step))}: label {target}.",
+            target, Op("LD", l.Bit(Step, bit)));
+        foreach (var network in ResumeTree(c, lower, bit - 1, prefix))
+        {
+            yield return network;
+        }
+
+        if (upper.Count > 1)
+        {
+            yield return Label(target, $"STEP {string.Join(", ", upper.Select(r => r.Step))}");
+            foreach (var network in ResumeTree(c, upper, bit - 1, upperPrefix))
+            {
+                yield return network;
+            }
+        }
+    }
+
+    /// <summary>
+    /// The resume point of an item loop: this scan's budget of <paramref name="items"/>, then the loop's own label
+    /// <paramref name="loop"/>, which its last item jumps back to.
+    /// </summary>
+    public static IEnumerable<StlNetwork> ItemLoop(HandlerContext c, int resume, int loop, int items, string what)
+    {
+        yield return Label(resume, $"{what}: this scan's items");
+        yield return Always($"{what}: items this scan", $"At most {items} items in this scan.", Op("MOVB", Dec(items), c.Layout.B(Budget)));
+        yield return Label(loop, what);
     }
 
     /// <summary>Ends this scan's slice; the next scan goes on at <paramref name="step"/>.</summary>
@@ -80,19 +157,18 @@ internal static class SlicePart
     }
 
     /// <summary>
-    /// A loop over characters in passes of at most <paramref name="perPass"/>, BUDGET passes per scan: AC3 counts the
-    /// characters left (the caller sets it), AC0 is the FOR index, <paramref name="perCharacter"/> the loop body. When
-    /// the scan's passes are used up the next scan goes on at <paramref name="passStep"/>.
+    /// A loop over characters, one pass of at most <paramref name="perPass"/> per scan: AC3 counts the characters left
+    /// (the caller sets it), AC0 is the FOR index, <paramref name="perCharacter"/> the loop body. With characters left
+    /// after the pass, the next scan goes on at <paramref name="passStep"/> (label <paramref name="passLabel"/>).
     /// </summary>
     public static IEnumerable<StlNetwork> Passes(
         HandlerContext c, string what, int perPass, int passLabel, int passStep, IEnumerable<StlNetwork> perCharacter)
     {
         var l = c.Layout;
         yield return Label(passLabel, $"one pass of the {what}");
-        yield return Always($"Pass of the {what}", $"CHUNK = characters left, at most {perPass}; one loop pass used.",
-            Op("MOVW", "AC3", l.W(Chunk)), Op("DECB", l.B(Budget)));
-        yield return new NetworkBuilder("At most one pass worth", $"CHUNK = {perPass} when more characters are left.")
-            .Op("LDW>", l.W(Chunk), Dec(perPass)).Op("MOVW", Dec(perPass), l.W(Chunk)).Build();
+        yield return Always($"Pass of the {what}", "CHUNK = characters left.", Op("MOVW", "AC3", l.W(Chunk)));
+        yield return new NetworkBuilder("At most one pass worth", $"CHUNK = {perPass} when more characters are left: one pass per scan.")
+            .Op("LDW>", "AC3", Dec(perPass)).Op("MOVW", Dec(perPass), l.W(Chunk)).Build();
         yield return Always($"{what}: CHUNK characters", "AC3 = characters left after this pass; AC0 counts the loop.",
             Op("-I", l.W(Chunk), "AC3"), Op("FOR", "AC0", "1", l.W(Chunk)));
         foreach (var network in perCharacter)
@@ -101,8 +177,7 @@ internal static class SlicePart
         }
 
         yield return new NetworkBuilder($"End of the {what} pass").Op("NEXT").Build();
-        yield return JumpIf($"{what}: scan's passes used", "Characters left, no pass left in this scan: the next scan goes on.",
-            Yield, Op("LDW>", "AC3", "0"), Op("AB=", l.B(Budget), "0"), Op("MOVB", Dec(passStep), l.B(Step)));
-        yield return JumpIf($"{what}: next pass", "Characters left: another pass.", passLabel, Op("LDW>", "AC3", "0"));
+        yield return JumpIf($"{what}: characters left", "The next scan goes on with another pass.",
+            Yield, Op("LDW>", "AC3", "0"), Op("MOVB", Dec(passStep), l.B(Step)));
     }
 }

@@ -49,8 +49,8 @@ internal static class StopPart
         yield return JumpIf("STOP: payload 'STOP'", "Bytes 53 54 4F 50, else error 06.", HandlerLabels.Error(ProtocolError.BadParameter),
             Op("LDD<>", l.Dw(8), StopWord));
         yield return Always(
-            "STOP: reply, then STOP", "OP_STOP = 1: the transmit-complete routine marks the reply sent; STATUS 00, no payload.",
-            Op("MOVB", "1", l.B(StopState)), Op("MOVD", l.Ptr(ReplyPart.PayloadStart), "AC1"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
+            "STOP: reply, then STOP", "OP_STOP bit 0: the transmit-complete routine marks the reply sent; STATUS 00, no payload.",
+            Op("ORB", "16#01", l.B(StopState)), Op("MOVD", l.Ptr(ReplyPart.PayloadStart), "AC1"), Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
     }
 
     /// <summary>In the transmit-complete routine: the reply that left was the STOP reply (bit 0) -> sent (bit 1).</summary>

@@ -12,6 +12,9 @@ namespace OperatorPanel.StlGen.Handler;
 /// </summary>
 internal static class WritePart
 {
+    /// <summary>Label after the area start of the written block.</summary>
+    private const int WriteAreaFound = 51;
+
     public static IEnumerable<StlNetwork> Entries(HandlerContext c)
     {
         var l = c.Layout;
@@ -43,7 +46,7 @@ internal static class WritePart
             yield return network;
         }
 
-        foreach (var network in AreaStart(l.B(8)))
+        foreach (var network in AreaStart(l.B(8), WriteAreaFound))
         {
             yield return network;
         }

@@ -14,8 +14,8 @@ namespace OperatorPanel.StlGen.Tests.Handler;
 
 /// <summary>
 /// The handler run in the interpreter at the StlTiming figures keeps what the technician notes promise
-/// (SlicePart's bounds): no interrupt routine longer than 0.3 ms (the limit is 10 ms), at most 10 ms added
-/// to a scan while serving, 0.3 ms without a request, and 3 to 30 scans per reply, for every worst-case request.
+/// (SlicePart's bounds): no interrupt routine longer than 0.5 ms (the limit is 10 ms), at most 10 ms added
+/// to a scan while serving, 0.2 ms without a request, and 6 to 60 scans per reply, for every worst-case request.
 /// The link's reply timeout (HandlerTurnaround) must cover the scans every measured request takes.
 /// </summary>
 public sealed class HandlerCostTests

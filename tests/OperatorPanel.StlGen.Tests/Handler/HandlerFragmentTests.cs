@@ -37,7 +37,8 @@ public sealed class HandlerFragmentTests
     {
         var program = HandlerGenerator.Generate(HandlerGoldenTests.Cpu224Port0Station2).Program!;
 
-        Instructions(program, StlBlockKind.Subroutine, 1).Take(5).Should().Equal("LD SM0.7", "ED", "LD SM0.1", "AN SM0.7", "OLD");
+        Instructions(program, StlBlockKind.Subroutine, 1).Take(5).Should().Equal("LDN SM0.7", "A V8059.7", "LD SM0.1", "AN SM0.7", "OLD");
+        Instructions(program, StlBlockKind.Subroutine, 2).Should().Equal("LD SM0.7", "= V8059.7");
     }
 
     [Fact]
