@@ -67,6 +67,16 @@ public sealed class AwlParserTests
         result.Program.Find("op_rx").Should().BeSameAs(blocks[2]);
     }
 
+    [Fact]
+    public void Parse_MegabyteLineOutsideABlock_QuotesTheLineShortened()
+    {
+        var result = AwlParser.Parse(new string('9', 1 << 20) + "\n" + Export);
+
+        var diagnostic = result.Diagnostics.Should().ContainSingle().Subject;
+        diagnostic.Line.Should().Be(1);
+        diagnostic.Message.Should().Be("'" + new string('9', 39) + "... is outside any block; expected ORGANIZATION_BLOCK, SUBROUTINE_BLOCK or INTERRUPT_BLOCK");
+    }
+
     [Theory]
     [InlineData("\u00EF\u00BB\u00BF")]
     [InlineData("\uFEFF")]
