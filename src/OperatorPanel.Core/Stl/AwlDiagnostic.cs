@@ -1,4 +1,4 @@
-using System.Text.RegularExpressions;
+using OperatorPanel.Core.Messages;
 
 namespace OperatorPanel.Core.Stl;
 
@@ -6,17 +6,12 @@ namespace OperatorPanel.Core.Stl;
 /// A problem found in .awl text, with its 1-based line: "line 57: ...". Refusals of <see cref="Checks.AwlProgramCheck"/>
 /// carry a stable <see cref="Id"/> (AWL001 ...); parse problems have none.
 /// </summary>
-public sealed partial record AwlDiagnostic(int Line, string Message)
+public sealed record AwlDiagnostic(int Line, string Message)
 {
-    /// <summary>Longer runs of text without a space are cut: a diagnostic quotes the file's text, which may be a megabyte of garbage.</summary>
-    private const int MaxWordChars = 40;
-
-    public string Message { get; init; } = LongWord().Replace(Message, m => m.Value[..MaxWordChars] + "...");
+    /// <summary>The message, its long words cut: it quotes the file's text, which may be a megabyte of garbage.</summary>
+    public string Message { get; init; } = QuotedText.CutLongWords(Message);
 
     public string Id { get; init; } = string.Empty;
 
     public override string ToString() => Id.Length == 0 ? $"line {Line}: {Message}" : $"line {Line}: {Id} {Message}";
-
-    [GeneratedRegex(@"\S{41,}")]
-    private static partial Regex LongWord();
 }
