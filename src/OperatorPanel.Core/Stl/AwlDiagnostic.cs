@@ -8,8 +8,8 @@ namespace OperatorPanel.Core.Stl;
 /// </summary>
 public sealed record AwlDiagnostic(int Line, string Message)
 {
-    /// <summary>The message, its long words cut: it quotes the file's text, which may be a megabyte of garbage.</summary>
-    public string Message { get; init; } = QuotedText.CutLongWords(Message);
+    /// <summary>The message, control characters shown and long words cut: it quotes the file's text, which may be a megabyte of garbage.</summary>
+    public string Message { get; init; } = QuotedText.Readable(Message);
 
     public string Id { get; init; } = string.Empty;
 

@@ -144,6 +144,14 @@ public sealed class PlcAddressTests
     }
 
     [Fact]
+    public void TryParse_ControlCharacter_ShowsItAsItsCode()
+    {
+        PlcAddress.TryParse("VB\u00001", out _, out var error).Should().BeFalse();
+
+        error!.Message.Should().StartWith("'VB<16#00>1'");
+    }
+
+    [Fact]
     public void Parse_BadText_ThrowsFormatExceptionWithTheReason()
     {
         var act = () => PlcAddress.Parse("M10.8");
