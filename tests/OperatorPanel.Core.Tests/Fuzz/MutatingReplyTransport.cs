@@ -9,6 +9,7 @@ namespace OperatorPanel.Core.Tests.Fuzz;
 /// A bus whose station answers each request frame with a true reply or a mutated one (<see cref="ReplyMutator"/>),
 /// sometimes after our own echo or a late reply to an older SEQ, handed out in random pieces. Silence advances the
 /// manual clock by the whole read timeout, so no real time passes. Every reply it put on the wire is kept for the test.
+/// Now and then the USB adapter vanishes in a write or a read, as SerialPortTransport reports it; the next open succeeds.
 /// </summary>
 internal sealed class MutatingReplyTransport(Random random, ManualTimeProvider clock) : ITransport
 {
@@ -36,6 +37,7 @@ internal sealed class MutatingReplyTransport(Random random, ManualTimeProvider c
     public Task WriteAsync(ReadOnlyMemory<byte> data, CancellationToken cancellationToken)
     {
         Writes++;
+        MaybeVanish("write");
         if (Current is null || !FrameCodec.TryDecode(data.Span, out var frame, out _))
         {
             return Task.CompletedTask; // a v1 probe: this bus has no v1 handler, so it stays silent
@@ -61,6 +63,7 @@ internal sealed class MutatingReplyTransport(Random random, ManualTimeProvider c
 
     public Task<int> ReadAsync(Memory<byte> buffer, TimeSpan timeout, CancellationToken cancellationToken)
     {
+        MaybeVanish("read");
         if (_pending.Count == 0)
         {
             clock.Advance(timeout);
@@ -80,6 +83,15 @@ internal sealed class MutatingReplyTransport(Random random, ManualTimeProvider c
     public void DiscardInput() => _pending.Clear();
 
     public ValueTask DisposeAsync() => ValueTask.CompletedTask;
+
+    private void MaybeVanish(string action)
+    {
+        if (random.Next(60) == 0)
+        {
+            IsOpen = false;
+            throw new PlcCommunicationException(PlcErrorKind.PortUnavailable, null, $"serial port {Name}: {action} failed: Input/output error (EIO) - the device vanished (unplugged?)");
+        }
+    }
 
     private void Enqueue(ReadOnlySpan<byte> chars)
     {

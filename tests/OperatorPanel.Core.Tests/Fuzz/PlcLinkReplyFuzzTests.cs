@@ -1,3 +1,4 @@
+using System.Diagnostics;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Tests.Protocol;
@@ -9,8 +10,8 @@ namespace OperatorPanel.Core.Tests.Fuzz;
 /// <summary>
 /// <see cref="PlcLink"/> over a bus that answers with true, mutated, echoed and late replies (<see cref="MutatingReplyTransport"/>),
 /// on the manual clock: an exchange returns only a reply that answers its request, or fails with a
-/// <see cref="PlcCommunicationException"/> naming the station and the command; every attempt is counted; nothing else
-/// escapes and nothing hangs.
+/// <see cref="PlcCommunicationException"/> naming the station and the command (or the vanished port); every attempt is
+/// counted; nothing else escapes and nothing hangs; after the port comes back the link answers again.
 /// </summary>
 public sealed class PlcLinkReplyFuzzTests
 {
@@ -34,8 +35,7 @@ public sealed class PlcLinkReplyFuzzTests
             string outcome;
             try
             {
-                // Wall-clock guard only against a hang: the transport answers at once and silence moves the manual clock.
-                var response = await link.ExchangeAsync(request, default).WaitAsync(TimeSpan.FromSeconds(10));
+                var response = await RunAsync(link.ExchangeAsync(request, default), clock);
                 var chars = ResponseCodec.Encode(response);
                 outcome = response is ErrorResponse ? "refusal" : "answer";
                 if (!transport.Replies.Any(r => r.MayBeAccepted && r.Chars.AsSpan().EndsWith(chars)) && !RepeatedCorruptedRefusal(response, transport.Replies))
@@ -46,13 +46,19 @@ public sealed class PlcLinkReplyFuzzTests
             catch (PlcCommunicationException ex)
             {
                 outcome = ex.Kind.ToString();
-                if (ex.Kind is not (PlcErrorKind.NoAnswer or PlcErrorKind.FrameCorrupt) || ex.Station != request.Station
+                if (ex.Kind == PlcErrorKind.PortUnavailable)
+                {
+                    if (ex.Station != request.Station || !ex.Message.Contains(transport.Name, StringComparison.Ordinal) || !ex.Message.Contains("vanished", StringComparison.Ordinal))
+                    {
+                        failures.Add($"{because}: a vanished port not named as such: {ex.Message}");
+                    }
+                }
+                else if (ex.Kind is not (PlcErrorKind.NoAnswer or PlcErrorKind.FrameCorrupt) || ex.Station != request.Station
                     || !ex.Message.Contains(request.Station.ToString(), StringComparison.Ordinal) || !ex.Message.Contains(request.Command.ToString(), StringComparison.Ordinal))
                 {
                     failures.Add($"{because}: failure does not name the station and command: {ex.Kind} {ex.Message}");
                 }
-
-                if (transport.Replies.FirstOrDefault() is { How: "untouched" } && request is not (WriteBlockRequest or WriteBitRequest or StopRequest))
+                else if (transport.Replies.FirstOrDefault() is { How: "untouched" } && request is not (WriteBlockRequest or WriteBitRequest or StopRequest))
                 {
                     failures.Add($"{because}: the first reply was true, yet the exchange failed: {ex.Message}");
                 }
@@ -65,14 +71,30 @@ public sealed class PlcLinkReplyFuzzTests
 
             outcomes[outcome] = outcomes.GetValueOrDefault(outcome) + 1;
             var after = link.StatisticsFor(request.Station);
-            if (request is not IdentifyRequest && after.Requests - before.Requests != transport.Writes)
+            if (request is not IdentifyRequest && outcome != nameof(PlcErrorKind.PortUnavailable) && after.Requests - before.Requests != transport.Writes)
             {
                 failures.Add($"{because}: {transport.Writes} frames sent, {after.Requests - before.Requests} requests counted");
             }
         }
 
         failures.Should().BeEmpty();
-        outcomes.Keys.Should().Contain(["answer", "refusal", nameof(PlcErrorKind.NoAnswer), nameof(PlcErrorKind.FrameCorrupt)], "the cases reach every outcome");
+        outcomes.Keys.Should().Contain(["answer", "refusal", nameof(PlcErrorKind.NoAnswer), nameof(PlcErrorKind.FrameCorrupt), nameof(PlcErrorKind.PortUnavailable)], "the cases reach every outcome");
+    }
+
+    /// <summary>
+    /// Runs the exchange, moving the manual clock while it waits on it (the link's reopen interval after a vanished
+    /// port); the wall-clock limit only catches a hang.
+    /// </summary>
+    private static async Task<PlcResponse> RunAsync(Task<PlcResponse> exchange, ManualTimeProvider clock)
+    {
+        var wallClock = Stopwatch.StartNew();
+        while (!exchange.IsCompleted && wallClock.Elapsed < TimeSpan.FromSeconds(10))
+        {
+            clock.Advance(TimeSpan.FromMilliseconds(50));
+            await Task.Yield();
+        }
+
+        return await exchange.WaitAsync(TimeSpan.FromSeconds(1));
     }
 
     /// <summary>
