@@ -156,6 +156,11 @@ internal sealed class JsonFields
         var complete = true;
         foreach (var (element, path) in elements)
         {
+            if (_problems.IsFull)
+            {
+                return null;
+            }
+
             var entry = Open(element, path, _problems);
             var value = entry is null ? null : read(entry);
             complete &= value is not null;

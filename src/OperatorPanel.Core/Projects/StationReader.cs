@@ -31,6 +31,11 @@ internal static class StationReader
         var buses = new Dictionary<string, Bus>(StringComparer.OrdinalIgnoreCase);
         foreach (var (element, path) in elements)
         {
+            if (problems.IsFull)
+            {
+                return null;
+            }
+
             var station = Read(element, path, problems, out var keys);
             if (keys is not null)
             {

@@ -1,3 +1,5 @@
+using OperatorPanel.Core.Messages;
+
 namespace OperatorPanel.Core.Stl;
 
 /// <summary>
@@ -6,6 +8,9 @@ namespace OperatorPanel.Core.Stl;
 /// </summary>
 public sealed record AwlDiagnostic(int Line, string Message)
 {
+    /// <summary>The message, control characters shown and long words cut: it quotes the file's text, which may be a megabyte of garbage.</summary>
+    public string Message { get; init; } = QuotedText.Readable(Message);
+
     public string Id { get; init; } = string.Empty;
 
     public override string ToString() => Id.Length == 0 ? $"line {Line}: {Message}" : $"line {Line}: {Id} {Message}";

@@ -26,7 +26,16 @@ public static class AwlParser
 
         for (var i = 0; i < lines.Length; i++)
         {
-            reader.Read(lines[i].TrimEnd('\r'), i + 1);
+            var line = lines[i].TrimEnd('\r');
+            if (line.Contains('\r', StringComparison.Ordinal))
+            {
+                // A lone CR (an old Mac line end, a bad copy) ends the line for some editors and not for others;
+                // reported rather than guessed, and read as a space so the rest of the file is still checked.
+                reader.Diagnostics.Add(new AwlDiagnostic(i + 1, "a carriage return (16#0D) inside the line; a line ends with CR LF or LF, and text after a lone CR would be misread"));
+                line = line.Replace('\r', ' ');
+            }
+
+            reader.Read(line, i + 1);
         }
 
         reader.Finish(lines.Length);

@@ -135,6 +135,23 @@ public sealed class PlcAddressTests
     }
 
     [Fact]
+    public void TryParse_TenThousandDigits_QuotesTheTextShortened()
+    {
+        PlcAddress.TryParse("VB" + new string('9', 10_000), out _, out var error).Should().BeFalse();
+
+        error!.Kind.Should().Be(AddressErrorKind.ByteNumberTooLarge);
+        error.Message.Should().Be($"'VB{new string('9', 37)}... byte number {new string('9', 40)}... is larger than 65535");
+    }
+
+    [Fact]
+    public void TryParse_ControlCharacter_ShowsItAsItsCode()
+    {
+        PlcAddress.TryParse("VB\u00001", out _, out var error).Should().BeFalse();
+
+        error!.Message.Should().StartWith("'VB<16#00>1'");
+    }
+
+    [Fact]
     public void Parse_BadText_ThrowsFormatExceptionWithTheReason()
     {
         var act = () => PlcAddress.Parse("M10.8");

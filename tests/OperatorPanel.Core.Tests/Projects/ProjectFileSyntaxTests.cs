@@ -144,4 +144,16 @@ public sealed class ProjectFileSyntaxTests
     {
         BadFile.SingleProblem(new string('[', 100_000)).Location.Should().StartWith("line 1, column ");
     }
+
+    [Fact]
+    public void Parse_MillionEmptyStations_ListsTheFirstHundredProblemsAndSaysThereAreMore()
+    {
+        var text = "{\"schemaVersion\":1,\"name\":\"x\",\"refresh\":{\"mode\":\"continuous\"},\"stations\":[" + string.Join(',', Enumerable.Repeat("{}", 1_000_000)) + "]}";
+
+        var result = ProjectFile.Parse(text);
+
+        result.Errors.Should().HaveCount(101);
+        result.Errors[0].Should().Be(new ProjectFileError("$.stations[0]", "missing required property 'name'"));
+        result.Errors[^1].Should().Be(new ProjectFileError("file", "more than 100 problems; the rest are not listed: correct these and load the file again"));
+    }
 }

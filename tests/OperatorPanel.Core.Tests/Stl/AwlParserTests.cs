@@ -67,6 +67,33 @@ public sealed class AwlParserTests
         result.Program.Find("op_rx").Should().BeSameAs(blocks[2]);
     }
 
+    [Fact]
+    public void Parse_MegabyteLineOutsideABlock_QuotesTheLineShortened()
+    {
+        var result = AwlParser.Parse(new string('9', 1 << 20) + "\n" + Export);
+
+        var diagnostic = result.Diagnostics.Should().ContainSingle().Subject;
+        diagnostic.Line.Should().Be(1);
+        diagnostic.Message.Should().Be("'" + new string('9', 39) + "... is outside any block; expected ORGANIZATION_BLOCK, SUBROUTINE_BLOCK or INTERRUPT_BLOCK");
+    }
+
+    [Fact]
+    public void Parse_CarriageReturnInsideALine_IsNamedWithItsLine()
+    {
+        var result = AwlParser.Parse(Export.Replace("// a comment between instructions", "// a comment\rLD I0.0", StringComparison.Ordinal));
+
+        result.Diagnostics.Should().ContainSingle().Which.ToString().Should().Be(
+            "line 10: a carriage return (16#0D) inside the line; a line ends with CR LF or LF, and text after a lone CR would be misread");
+    }
+
+    [Fact]
+    public void Parse_NulByteOutsideABlock_ShowsItAsItsCode()
+    {
+        var result = AwlParser.Parse("\01\n" + Export);
+
+        result.Diagnostics.Should().ContainSingle().Which.Message.Should().StartWith("'<16#00>1' is outside any block");
+    }
+
     [Theory]
     [InlineData("\u00EF\u00BB\u00BF")]
     [InlineData("\uFEFF")]

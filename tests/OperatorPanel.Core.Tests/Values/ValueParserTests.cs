@@ -89,6 +89,15 @@ public sealed class ValueParserTests
     }
 
     [Fact]
+    public void TryParse_TenThousandDigits_QuotesTheValueShortened()
+    {
+        ValueParser.TryParse(new string('1', 10_000), PlcAddress.Parse("VB0"), DisplayFormat.Unsigned, out _, out var error).Should().BeFalse();
+
+        error!.Message.Should().StartWith($"VB0: {new string('1', 40)}... ").And.NotContain(new string('1', 41));
+        error.Message.Length.Should().BeLessThan(200);
+    }
+
+    [Fact]
     public void TryParse_NullText_IsEmptyNotAnException()
     {
         ValueParser.TryParse(null, PlcAddress.Parse("VB0"), DisplayFormat.Unsigned, out _, out var error).Should().BeFalse();

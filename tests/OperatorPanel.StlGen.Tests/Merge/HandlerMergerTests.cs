@@ -98,4 +98,15 @@ public sealed class HandlerMergerTests
         text.Should().Be(HandlerMerger.Merge(Filler, UserProgram.Cpu224).MergedText);
         text.All(c => c is '\r' or '\n' or '\t' or (>= ' ' and <= '~')).Should().BeTrue();
     }
+
+    [Fact]
+    public void Merge_UserLineWithALoneCarriageReturn_IsRefusedNamingTheLineNotThrown()
+    {
+        var user = Filler.Replace("Micro/WIN 4.0 SP9\r\n", "Micro/WIN 4.0 SP9\r999\r\n", StringComparison.Ordinal);
+
+        var result = HandlerMerger.Merge(user, UserProgram.Cpu224);
+
+        result.MergedText.Should().BeEmpty();
+        result.Diagnostics.Should().ContainSingle().Which.Message.Should().Contain("a carriage return (16#0D) inside the line");
+    }
 }

@@ -1,0 +1,45 @@
+using System.Globalization;
+using System.Text;
+using System.Text.RegularExpressions;
+
+namespace OperatorPanel.Core.Messages;
+
+/// <summary>
+/// Keeps messages that quote user text readable (seen in the fuzz tests: .awl lines, addresses and values):
+/// a control character shows as its code ("VB&lt;16#00&gt;1"; a NUL printed as is is invisible and "VB1" looks right),
+/// and a run of more than <see cref="MaxWordChars"/> characters without a space keeps its first
+/// <see cref="MaxWordChars"/> and "..." (a pasted megabyte would otherwise become a megabyte of message).
+/// </summary>
+internal static partial class QuotedText
+{
+    public const int MaxWordChars = 40;
+
+    public static string Readable(string message)
+    {
+        if (message.Any(IsHidden))
+        {
+            var shown = new StringBuilder(message.Length + 16);
+            foreach (var c in message)
+            {
+                if (IsHidden(c))
+                {
+                    shown.Append(CultureInfo.InvariantCulture, $"<16#{(int)c:X2}>");
+                }
+                else
+                {
+                    shown.Append(c);
+                }
+            }
+
+            message = shown.ToString();
+        }
+
+        return LongWord().Replace(message, m => m.Value[..MaxWordChars] + "...");
+    }
+
+    /// <summary>Tab and line feed lay a message out; every other control character is data the reader cannot see.</summary>
+    private static bool IsHidden(char c) => char.IsControl(c) && c is not ('\t' or '\n');
+
+    [GeneratedRegex(@"\S{41,}")]
+    private static partial Regex LongWord();
+}
