@@ -1,6 +1,7 @@
 using System.Runtime.CompilerServices;
 using System.Text;
 using System.Text.RegularExpressions;
+using OperatorPanel.TestKit;
 
 namespace OperatorPanel.Cli.Tests.Fuzz;
 
@@ -11,8 +12,6 @@ namespace OperatorPanel.Cli.Tests.Fuzz;
 /// </summary>
 public sealed partial class AwlFileCommandFuzzTests : IDisposable
 {
-    private static readonly string[] Tokens = ["LD", "CALL", "END_SUBROUTINE_BLOCK", "BEGIN", "VB99999999999", "16#GG", "*AC9", "'", ",", "SBR_99", "\0", "99999999999999999999"];
-
     private readonly string _folder = Directory.CreateTempSubdirectory("opanel-awl-fuzz-").FullName;
 
     [Fact]
@@ -27,7 +26,7 @@ public sealed partial class AwlFileCommandFuzzTests : IDisposable
         for (var i = 0; i < 24; i++)
         {
             var source = sources[i % sources.Length];
-            var (text, how) = Mutate(File.ReadAllText(source, Encoding.Latin1), random);
+            var (text, how) = Mutate(File.ReadAllText(source, Encoding.Latin1), random, i);
             var path = Path.Combine(_folder, "prog.awl");
             File.WriteAllText(path, text, Encoding.Latin1);
             var because = $"{Path.GetFileName(source)}, {how}";
@@ -56,29 +55,19 @@ public sealed partial class AwlFileCommandFuzzTests : IDisposable
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);
 
-    private static (string Text, string How) Mutate(string text, Random random)
+    /// <summary>The shared .awl mutation, and every sixth program a megabyte line as well (a pasted blob).</summary>
+    private static (string Text, string How) Mutate(string text, Random random, int index)
     {
-        var lines = text.Split('\n').ToList();
-        var at = random.Next(lines.Count);
-        var token = Tokens[random.Next(Tokens.Length)];
-        switch (random.Next(5))
+        var (mutated, how) = AwlMutator.Mutate(text, random);
+        if (index % 6 != 5)
         {
-            case 0:
-                lines.RemoveAt(at);
-                return (string.Join('\n', lines), $"line {at + 1} cut");
-            case 1:
-                lines[at] = token + " " + lines[at];
-                return (string.Join('\n', lines), $"line {at + 1} got {token}");
-            case 2:
-                lines[at] += new string('9', 1 << 20);
-                return (string.Join('\n', lines), $"line {at + 1} got a megabyte");
-            case 3:
-                lines[at] = lines[at].Insert(random.Next(lines[at].Length + 1), "\0");
-                return (string.Join('\n', lines), $"NUL in line {at + 1}");
-            default:
-                var length = random.Next(text.Length);
-                return (text[..length], $"truncated to {length}");
+            return (mutated, how);
         }
+
+        var lines = mutated.Split('\n');
+        var at = random.Next(lines.Length);
+        lines[at] += new string('9', 1 << 20);
+        return (string.Join('\n', lines), $"{how}, line {at + 1} got a megabyte");
     }
 
     private static string CorpusFolder([CallerFilePath] string self = "") =>

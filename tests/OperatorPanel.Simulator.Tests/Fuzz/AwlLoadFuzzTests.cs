@@ -4,6 +4,7 @@ using OperatorPanel.Core.Cpu;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Run;
 using OperatorPanel.Simulator.Tests.Hosting;
+using OperatorPanel.TestKit;
 
 namespace OperatorPanel.Simulator.Tests.Fuzz;
 

@@ -1,7 +1,7 @@
-namespace OperatorPanel.Simulator.Tests.Fuzz;
+namespace OperatorPanel.TestKit;
 
 /// <summary>One random edit of .awl text, described so a failure can be reproduced by hand.</summary>
-internal static class AwlMutator
+public static class AwlMutator
 {
     /// <summary>Words of the dialect and operands that are wrong in every way a hand edit or a bad copy makes them.</summary>
     private static readonly string[] Tokens =
