@@ -48,11 +48,12 @@ internal static class GenerateView
         cli.Out.WriteLine($"interrupt events used:  {string.Join(", ", stats.InterruptEvents)}");
         cli.Out.WriteLine($"blocks used:            {string.Join(", ", stats.Blocks.Select(b => $"{b.Name} ({b.NumberText})"))}");
         cli.Out.WriteLine("measured in the interpreter at the manual's execution times (conservative where it has none):");
-        cli.Out.WriteLine("  request                  chars in -> out  instructions  total ms  worst interrupt ms  worst scan ms  scans");
+        var width = measured.Max(m => m.Name.Length);
+        cli.Out.WriteLine($"  {"request".PadRight(width)}  chars in -> out  instructions  total ms  worst interrupt ms  worst scan ms  scans");
         foreach (var m in measured)
         {
             cli.Out.WriteLine(FormattableString.Invariant(
-                $"  {m.Name,-24} {m.RequestChars,3} -> {m.ReplyChars,3}      {m.Instructions,6}  {Ms(m.ExecutionTime),8}  {Ms(m.WorstInterrupt),18}  {Ms(m.WorstScan),13}  {m.Scans,5}"));
+                $"  {m.Name.PadRight(width)}  {m.RequestChars,8} -> {m.ReplyChars,3}  {m.Instructions,12}  {Ms(m.ExecutionTime),8}  {Ms(m.WorstInterrupt),18}  {Ms(m.WorstScan),13}  {m.Scans,5}"));
         }
 
         var interrupt = measured.MaxBy(m => m.WorstInterrupt)!;
