@@ -1,3 +1,4 @@
+using System.Collections.Immutable;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Services;
@@ -53,6 +54,20 @@ public sealed partial class ShellViewModel
         }
     }
 
+    /// <summary>
+    /// The first problems, then how many are left out, then the last one: when the loader stopped at its limit, the
+    /// last line is the one saying so, and a count alone would read as the whole number.
+    /// </summary>
+    private static string ProblemLines(ImmutableArray<ProjectFileError> errors)
+    {
+        var lines = errors.Length <= ProblemsShown + 1
+            ? errors.Select(e => e.ToString())
+            : errors.Take(ProblemsShown).Select(e => e.ToString())
+                .Append($"(and {errors.Length - ProblemsShown - 1} more)")
+                .Append(errors[^1].ToString());
+        return string.Join(Environment.NewLine, lines);
+    }
+
     /// <summary>A file that does not load leaves the current project open (and connected) as it was.</summary>
     private async Task<bool> LoadAndReplaceAsync(string path, bool demo)
     {
@@ -60,11 +75,9 @@ public sealed partial class ShellViewModel
         if (!result.Ok)
         {
             _logger.Warning("Project {Path} not opened: {Problems}", path, string.Join("; ", result.Errors));
-            var problems = string.Join(Environment.NewLine, result.Errors.Take(ProblemsShown).Select(e => e.ToString()));
-            var more = result.Errors.Length > ProblemsShown ? $"{Environment.NewLine}(and {result.Errors.Length - ProblemsShown} more)" : string.Empty;
             await _services.Dialogs.ShowErrorAsync(
                 "Project not opened",
-                $"{path} is not a usable project file; the current project stays open.{Environment.NewLine}{problems}{more}");
+                $"{path} is not a usable project file; the current project stays open.{Environment.NewLine}{ProblemLines(result.Errors)}");
             StatusLine.ShowError($"{Path.GetFileName(path)} not opened: {result.Errors[0]}");
             return false;
         }

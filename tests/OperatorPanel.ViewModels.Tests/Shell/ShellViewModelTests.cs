@@ -115,6 +115,23 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task Open_FileBeyondTheProblemLimit_MessageShowsFirstProblemsHowManyLeftOutAndThatTheLoaderStopped()
+    {
+        var path = Path.Combine(_folder, "many-broken-stations.opproj");
+        await File.WriteAllTextAsync(
+            path, "{\"schemaVersion\":1,\"name\":\"x\",\"refresh\":{\"mode\":\"continuous\"},\"stations\":[" + string.Join(',', Enumerable.Repeat("{}", 300)) + "]}");
+        _panel.Files.FileToOpen = path;
+
+        await _shell.OpenCommand.ExecuteAsync(null).Guarded();
+
+        var lines = _panel.Dialogs.Errors.Should().ContainSingle().Subject.Message.Split(Environment.NewLine);
+        lines.Should().HaveCount(11);
+        lines[1].Should().Be("$.stations[0]: missing required property 'name'");
+        lines[9].Should().Be("(and 92 more)");
+        lines[10].Should().Be("file: more than 100 problems; the rest are not listed: correct these and load the file again");
+    }
+
+    [Fact]
     public async Task Open_UnsavedAnswerCancel_NoFileAskedAndProjectKept()
     {
         await MakeDirtyAsync();
