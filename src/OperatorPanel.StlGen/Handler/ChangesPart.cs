@@ -260,10 +260,11 @@ internal static class ChangesPart
             Op("INCD", "AC2"), Op("ITD", "*AC2", l.Dw(Save)), Op("+D", l.Dw(Save), "AC3"), Op("INCD", "AC2"), Op("INCD", "AC2"),
             Op("BMB", "*AC3", "*AC1", "*AC2"), Op("BTI", "*AC2", l.W(Save + 4)), Op("ITD", l.W(Save + 4), l.Dw(Save)), Op("+D", l.Dw(Save), "AC1"),
             Op("INCD", "AC2"), Op("DECB", l.B(I)), Op("DECB", l.B(Budget)));
-        yield return JumpIf(
-            "Whole list: scan's passes used", "Items left, no pass left in this scan: the next scan goes on.", SlicePart.Yield,
-            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"));
-        yield return JumpIf("Whole list: more items", "Back while items are left.", CopyItem, Op("LDB<>", l.B(I), "0"));
+        foreach (var network in SlicePart.ItemLoopEnd(c, CopyItemsResume, CopyItem, "Whole list"))
+        {
+            yield return network;
+        }
+
         yield return SlicePart.Pause(c, "READ CHANGES: the whole list is in the copy", StepCopyToReply);
         yield return Label(CopyToReply, "READ CHANGES: the copy as the reply");
         yield return Always(

@@ -46,10 +46,11 @@ internal static class ItemCheckPart
         yield return Always(
             "Item: add LENGTH, next item", "AC1 = AC1 + LENGTH; AC2 to the next AREA; one item fewer.",
             Op("BTI", "*AC2", "AC0"), Op("+I", "AC0", "AC1"), Op("INCD", "AC2"), Op("DECB", l.B(I)), Op("DECB", l.B(Budget)));
-        yield return JumpIf(
-            "Item: scan's passes used", "Items left, no pass left in this scan: the next scan goes on at label 30.", SlicePart.Yield,
-            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"));
-        yield return JumpIf("Item: more items", "Back to label 30 while items are left.", HandlerLabels.CheckItems, Op("LDB<>", l.B(I), "0"));
+        foreach (var network in SlicePart.ItemLoopEnd(c, SlicePart.CheckItemsResume, HandlerLabels.CheckItems, "Item"))
+        {
+            yield return network;
+        }
+
         yield return SlicePart.Pause(c, "Items checked", SlicePart.StepItemsChecked);
         yield return Label(SlicePart.ItemsChecked, "items checked");
         yield return JumpIf(

@@ -75,10 +75,11 @@ internal static class ReadPart
             Op("INCD", "AC2"), Op("MOVW", "*AC2", "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC3"), Op("INCD", "AC2"),
             Op("INCD", "AC2"), Op("BTI", "*AC2", "AC0"), Op("SLW", "AC0", "1"), Op("HTA", "*AC3", "*AC1", "AC0"),
             Op("ITD", "AC0", "AC0"), Op("+D", "AC0", "AC1"), Op("INCD", "AC2"), Op("DECB", l.B(I)), Op("DECB", l.B(Budget)));
-        yield return JumpIf(
-            "Reply item: scan's passes used", "Items left, no pass left in this scan: the next scan goes on at label 40.", SlicePart.Yield,
-            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"));
-        yield return JumpIf("Reply item: more items", "Back to label 40 while items are left.", HandlerLabels.BuildItems, Op("LDB<>", l.B(I), "0"));
+        foreach (var network in SlicePart.ItemLoopEnd(c, SlicePart.BuildItemsResume, HandlerLabels.BuildItems, "Reply item"))
+        {
+            yield return network;
+        }
+
         yield return Always("Reply items done", "STATUS 00; finish the reply.", Op("MOVB", "0", l.B(List)), Op("JMP", Dec(HandlerLabels.Finish)));
     }
 }

@@ -136,6 +136,19 @@ internal static class SlicePart
         yield return Label(loop, what);
     }
 
+    /// <summary>
+    /// The end of an item loop's body (which took one item off I and BUDGET): items left but none for this scan ends the
+    /// slice (STEP was set to the loop's before its first scan), items left go back to <paramref name="loop"/>.
+    /// </summary>
+    public static IEnumerable<StlNetwork> ItemLoopEnd(HandlerContext c, int resume, int loop, string what)
+    {
+        var l = c.Layout;
+        yield return JumpIf(
+            $"{what}: scan's items used", $"Items left, none more in this scan: the next scan goes on at label {resume}.", Yield,
+            Op("LDB<>", l.B(I), "0"), Op("AB=", l.B(Budget), "0"));
+        yield return JumpIf($"{what}: more items", $"Back to label {loop} while items are left.", loop, Op("LDB<>", l.B(I), "0"));
+    }
+
     /// <summary>Ends this scan's slice; the next scan goes on at <paramref name="step"/>.</summary>
     public static StlNetwork Pause(HandlerContext c, string title, int step) =>
         Always(title, $"Enough for one scan: the next scan goes on at STEP {step}.",
