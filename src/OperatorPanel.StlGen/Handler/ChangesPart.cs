@@ -39,9 +39,12 @@ internal static class ChangesPart
     /// <summary>STEP values of READ CHANGES.</summary>
     public const int StepCompare = 12, StepCopyItems = 13, StepCopyToReply = 14;
 
-    /// <summary>Labels: the comparison (its resume, loop, byte, next byte, done), the whole list into the copy.</summary>
-    public const int CompareResume = 100, CompareLoop = 101, CompareChunk = 102, CompareDone = 104,
-        CopyToReply = 105, FullWithCopy = 106, CopyItem = 107, CopyItemsResume = 108, CompareAreaFound = 103, CopyAreaFound = 109;
+    /// <summary>
+    /// Labels: the comparison (its resume, next chunk, one chunk, the item's area found, done), the whole list (the copy
+    /// as the reply, its start, the next item into the copy, that loop's resume, the item's area found).
+    /// </summary>
+    public const int CompareResume = 100, CompareLoop = 101, CompareChunk = 102, CompareAreaFound = 103, CompareDone = 104,
+        CopyToReply = 105, FullWithCopy = 106, CopyItem = 107, CopyItemsResume = 108, CopyAreaFound = 109;
 
     /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes; none without copies).</summary>
     public static IEnumerable<(int Step, int Label)> Resumes(HandlerContext c) =>

@@ -16,8 +16,8 @@ namespace OperatorPanel.StlGen.Handler;
 /// </summary>
 internal static class FrameCheckPart
 {
-    /// <summary>Characters per scan of a CRC walk: 12 keep a scan's slice under 10 ms at ~0.62 ms per character.</summary>
-    public const int CharactersPerPass = 12;
+    /// <summary>Characters per scan of the request's CRC walk: 12 keep a scan's slice under 10 ms at ~0.62 ms per character.</summary>
+    public const int RequestCharactersPerPass = 12;
 
     /// <summary>Character pairs per scan of the reply's CRC walk (~1.06 ms each, no '&lt;' to look for, one loop pass per pair).</summary>
     public const int ReplyPairsPerPass = 7;
@@ -61,7 +61,7 @@ internal static class FrameCheckPart
             new NetworkBuilder("A '<' starts the frame again", "The characters before it are a cut-off frame's: CRC from the start, AC2 here.")
                 .Op("LDB=", "*AC1", Hex(FrameStart)).Op("MOVW", "16#FFFF", l.W(Crc)).Op("MOVD", "AC1", "AC2").Build(),
         };
-        foreach (var network in SlicePart.Passes(c, "request check", CharactersPerPass, SlicePart.RequestCheckPass, SlicePart.StepRequestCheck, perCharacter))
+        foreach (var network in SlicePart.Passes(c, "request check", RequestCharactersPerPass, SlicePart.RequestCheckPass, SlicePart.StepRequestCheck, perCharacter))
         {
             yield return network;
         }

@@ -2,7 +2,10 @@ using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.StlGen.Handler;
 
-/// <summary>The jump labels of the receive routine (LBL 0-255, local to the block).</summary>
+/// <summary>
+/// Jump labels of OP_PANEL's checks and replies (LBL 0-255, local to the block; SlicePart, FrameCheckPart, ReadPart,
+/// WritePart, ChangesPart and ChangesOfListsPart keep theirs): all in the one subroutine, each number used once.
+/// </summary>
 internal static class HandlerLabels
 {
     public const int Silence = 1;
