@@ -7,8 +7,9 @@ namespace OperatorPanel.Core.Link;
 /// section 7). The handler does its work in bounded slices, one per scan (12 characters of the request's CRC frame
 /// check, 14 of the reply's, 4 items checked, or 3 items' reply data), so the scans grow with the request's and the
 /// reply's length. The bound is 5 + one scan per 6 request characters + one per 6 reply characters (the CRC alone
-/// takes one per 12; the item loops of READ, DEFINE LIST and READ LIST the rest); StlGen's HandlerCostTests prove it
-/// covers every worst-case request the handler is measured with, a request after a cut-off frame's remains included.
+/// takes one per 12 of the request and one per 14 of the reply; the item loops of READ, DEFINE LIST and READ LIST the
+/// rest); StlGen's HandlerCostTests prove it covers every worst-case request the handler is measured with, a request
+/// after a cut-off frame's remains included.
 /// </summary>
 public static class HandlerTurnaround
 {
