@@ -7,16 +7,18 @@ namespace OperatorPanel.Cli.Bench;
 /// <summary>
 /// The handler's cost for every exchange of <see cref="RefreshCycles"/>: measured by serving them in order to the
 /// generated handler (<see cref="HandlerProbe"/>), or, for an exchange the handler did not answer, Core's bound
-/// (<see cref="HandlerTurnaround"/> scans, each with the handler's largest slice), labelled as such.
+/// (<see cref="HandlerTurnaround"/> scans, each with the handler's largest slice and the user's program, then the reply
+/// delay and the reply without pauses), labelled as such.
 /// </summary>
 internal sealed record HandlerCosts(ImmutableArray<HandlerCost> Steady, ImmutableArray<HandlerCost> Idle, ImmutableArray<string> Problems)
 {
     /// <summary>The most one handler slice adds to a scan (docs/protocol.md section 7: "up to 10 ms of the handler").</summary>
     public const double SliceBoundMs = 10;
 
-    public static HandlerCosts Measure(RefreshCycles cycles, HandlerProbe? probe, string? probeError)
+    public static HandlerCosts Measure(RefreshCycles cycles, LinkTimeModel model, HandlerProbe? probe, string? probeError)
     {
         ArgumentNullException.ThrowIfNull(cycles);
+        ArgumentNullException.ThrowIfNull(model);
         var problems = ImmutableArray.CreateBuilder<string>();
         if (probe is null)
         {
@@ -27,7 +29,7 @@ internal sealed record HandlerCosts(ImmutableArray<HandlerCost> Steady, Immutabl
         {
             if (probe is null)
             {
-                return Bound(exchange);
+                return Bound(exchange, model);
             }
 
             if (probe.TryServe(exchange.Request, out var cost, out var replyChars, out var error))
@@ -48,7 +50,7 @@ internal sealed record HandlerCosts(ImmutableArray<HandlerCost> Steady, Immutabl
             }
 
             problems.Add($"{exchange.Name}: {error}; Core's bound used");
-            return Bound(exchange);
+            return Bound(exchange, model);
         }
 
         foreach (var exchange in cycles.Setup)
@@ -74,10 +76,15 @@ internal sealed record HandlerCosts(ImmutableArray<HandlerCost> Steady, Immutabl
             : HandlerTurnaround.ScansFor(exchange.RequestChars, exchange.ReplyChars);
     }
 
-    public static HandlerCost Bound(PlannedExchange exchange)
+    public static HandlerCost Bound(PlannedExchange exchange, LinkTimeModel model)
     {
         ArgumentNullException.ThrowIfNull(exchange);
+        ArgumentNullException.ThrowIfNull(model);
         var scans = HandlerTurnaround.ScansFor(exchange.RequestChars, exchange.ReplyChars);
-        return new HandlerCost(scans, TimeSpan.FromMilliseconds(scans * SliceBoundMs), "bound: Core HandlerTurnaround scans x 10 ms slice (handler not run)");
+        return new HandlerCost(
+            scans,
+            TimeSpan.FromMilliseconds((scans * (SliceBoundMs + model.ProgramScanMs)) + model.ReplyDelayMs),
+            TimeSpan.FromMilliseconds(exchange.ReplyChars * model.Line.CharacterMs),
+            "bound: Core HandlerTurnaround scans x (10 ms slice + user program), then the reply delay (handler not run)");
     }
 }

@@ -8,31 +8,46 @@ using OperatorPanel.StlGen.Options;
 namespace OperatorPanel.Cli.Bench;
 
 /// <summary>
-/// Runs the handler StlGen generates, as the whole program, in the STL interpreter at the published instruction times
-/// (Simulator StlTiming, docs/sources/s7200-facts.md section 6) and serves it the requests of a refresh one after the
-/// other, so each one finds the state the earlier ones left (lists defined, change copies filled). For each request it
-/// gives the scans and the time from the request's '&gt;' until the handler attached the reply delay.
+/// Runs the handler StlGen generates in the STL interpreter at the published instruction times (Simulator StlTiming,
+/// docs/sources/s7200-facts.md section 6), with the line's own program as <see cref="StlPlc.UserProgramTime"/> per scan,
+/// and serves it the requests of a refresh one after the other, so each one finds the state the earlier ones left
+/// (lists defined, change copies filled). For each request it takes the reply's times from the simulated port: its
+/// first character's start and its '&gt;''s end, measured from the request's '&gt;'. The user's program is a time and
+/// not STL: the interpreter spends it after OB1's handler call and serves interrupts in it, which is all the handler
+/// sees of a line's program, and the generated handler stays the whole loaded program.
 /// </summary>
 internal sealed class HandlerProbe
 {
     private static readonly TimeSpan Step = TimeSpan.FromMilliseconds(0.5);
     private static readonly TimeSpan GiveUp = TimeSpan.FromSeconds(2);
+    private static readonly TimeSpan IdleRun = TimeSpan.FromMilliseconds(50);
 
     private readonly StlPlc _plc;
     private readonly FreeportPort _port;
     private readonly LineSettings _line;
-    private readonly TimeSpan _replyDelay;
-    private readonly List<StlScan> _scans = [];
+    private readonly List<(StlScan Scan, long Instructions)> _scans = [];
+    private readonly List<StlInterruptRun> _runs = [];
+    private readonly long _idleInstructions;
+    private long _instructionsAtScanStart;
     private TimeSpan _now = TimeSpan.FromMilliseconds(50);
 
-    private HandlerProbe(StlPlc plc, FreeportPort port, LineSettings line, TimeSpan replyDelay)
+    private HandlerProbe(StlPlc plc, FreeportPort port, LineSettings line)
     {
-        (_plc, _port, _line, _replyDelay) = (plc, port, line, replyDelay);
-        _plc.ScanCompleted += (_, scan) => _scans.Add(scan);
+        (_plc, _port, _line) = (plc, port, line);
+        _plc.ScanCompleted += (_, scan) =>
+        {
+            _scans.Add((scan, _plc.InstructionsExecuted - _instructionsAtScanStart));
+            _instructionsAtScanStart = _plc.InstructionsExecuted;
+        };
+        _plc.InterruptServed += (_, run) => _runs.Add(run);
         _plc.RunUntil(_now);
+        _scans.Clear();
+        _now += IdleRun;
+        _plc.RunUntil(_now);
+        _idleInstructions = _scans.Count == 0 ? 0 : _scans.Max(s => s.Instructions);
     }
 
-    public static bool TryCreate(CpuProfile cpu, Station station, LineSettings line, int replyDelayMs, out HandlerProbe? probe, out string error)
+    public static bool TryCreate(CpuProfile cpu, Station station, LineSettings line, int replyDelayMs, TimeSpan userProgram, out HandlerProbe? probe, out string error)
     {
         ArgumentNullException.ThrowIfNull(cpu);
         probe = null;
@@ -59,10 +74,10 @@ internal sealed class HandlerProbe
             return false;
         }
 
-        var plc = new StlPlc(load.Program);
+        var plc = new StlPlc(load.Program) { UserProgramTime = userProgram };
         var port = new FreeportPort(options.Port, plc.Memory, cpu, line);
         plc.AttachPort(port);
-        probe = new HandlerProbe(plc, port, line, TimeSpan.FromMilliseconds(replyDelayMs));
+        probe = new HandlerProbe(plc, port, line);
         error = string.Empty;
         return true;
     }
@@ -76,11 +91,13 @@ internal sealed class HandlerProbe
     {
         ArgumentNullException.ThrowIfNull(frame);
         _scans.Clear();
+        _runs.Clear();
         _port.Deliver(frame, _now);
         var requestEnd = _now + (_line.CharacterTime * frame.Length);
         var giveUp = requestEnd + GiveUp;
         var t = _now;
         TimeSpan? replyStart = null;
+        var replyEnd = TimeSpan.Zero;
         var ended = false;
         replyChars = 0;
         while (_plc.Fault is null && t < giveUp && !(ended && !_port.IsTransmitting && _port.IsReceiving))
@@ -92,6 +109,7 @@ internal sealed class HandlerProbe
                 replyStart ??= c.At - _line.CharacterTime;
                 replyChars++;
                 ended |= c.Value == (byte)'>';
+                replyEnd = c.At;
             }
         }
 
@@ -110,11 +128,18 @@ internal sealed class HandlerProbe
             return false;
         }
 
-        // The reply delay's timed interrupt is attached when the work on the request is done; the reply starts one
-        // delay later, so the work ended one delay before the reply's first character.
-        var workDone = start - _replyDelay;
-        var scans = _scans.Count(s => s.EndedAt > requestEnd && s.StartedAt < workDone);
-        cost = new HandlerCost(scans, workDone > requestEnd ? workDone - requestEnd : TimeSpan.Zero, "measured: generated handler in the interpreter");
+        cost = new HandlerCost(WorkScans(requestEnd), start - requestEnd, replyEnd - start, "measured: generated handler in the interpreter");
         return true;
+    }
+
+    /// <summary>
+    /// The scans from the request's end to the last one in which the handler executed more than an idle scan (the
+    /// slice that ends the reply's check), as `opanel generate --stats` counts them.
+    /// </summary>
+    private int WorkScans(TimeSpan requestEnd)
+    {
+        var program = _scans.Where(s => s.Scan.EndedAt > requestEnd).Select(s =>
+            s.Instructions - _runs.Where(r => r.StartedAt >= s.Scan.StartedAt && r.StartedAt < s.Scan.EndedAt).Sum(r => r.Instructions)).ToList();
+        return program.FindLastIndex(instructions => instructions > _idleInstructions) + 1;
     }
 }

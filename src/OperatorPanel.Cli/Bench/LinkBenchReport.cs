@@ -22,8 +22,9 @@ internal sealed record LinkBenchReport(
         ArgumentNullException.ThrowIfNull(model);
         var plan = line.Plan();
         var cycles = RefreshCycles.For(plan);
-        HandlerProbe.TryCreate(line.Cpu, line.Station, model.Line.Settings, (int)model.ReplyDelayMs, out var probe, out var probeError);
-        var handler = HandlerCosts.Measure(cycles, probe, probeError);
+        HandlerProbe.TryCreate(
+            line.Cpu, line.Station, model.Line.Settings, (int)model.ReplyDelayMs, TimeSpan.FromMilliseconds(model.ProgramScanMs), out var probe, out var probeError);
+        var handler = HandlerCosts.Measure(cycles, model, probe, probeError);
         var medium = model.Radio is null ? "PC/PPI cable" : "radio modules";
         var time = LinkTimeReport.Create(medium, model, cycles, handler, line);
         var planned = TrafficModels.FromCycle(TrafficModels.Planned, cycles.Steady);

@@ -4,16 +4,19 @@ using System.Globalization;
 namespace OperatorPanel.Cli.Bench;
 
 /// <summary>
-/// The time of one exchange on a half-duplex line, part by part, with nothing invented: the characters at the line's
-/// character time, the handler's scans and work (<see cref="HandlerCost"/>), the reply delay or the cable's
-/// turnaround (whichever ends later), the PC's receive latency, and the link's gap before the next request. With
-/// <see cref="Radio"/> set, the radio module pair's store-and-forward hops, air time and FT232R latency timer too.
+/// The time of one exchange on a half-duplex line, part by part, with nothing invented: the request at the line's
+/// character time; the PLC's side as the handler in the interpreter ran it (<see cref="HandlerCost"/>: until the reply's
+/// first character, and the reply on the bus with its pauses), never starting before the cable has turned around; the
+/// PC's receive latency, and the link's gap before the next request. With <see cref="Radio"/> set, the radio module
+/// pair's store-and-forward hops, air time and FT232R latency timer too: the PLC-side module forwards the reply only
+/// once its '&gt;' has arrived.
 /// </summary>
 /// <param name="Line">Baud rate and character format of the bus (and of both radio module UARTs).</param>
-/// <param name="ReplyDelayMs">The handler's reply delay (timed interrupt 0, SMB34), counted from the end of its work.</param>
+/// <param name="ReplyDelayMs">The handler's reply delay (timed interrupt 0, SMB34), counted from the first pass of the reply's check.</param>
 /// <param name="ProgramScanMs">
-/// The user program's own time per scan: the handler serves a request one slice per scan, so each of its scans also
-/// runs the user's program. An assumption about the line (a real line reports it in SMW22-SMW26).
+/// The user program's own time per scan, run in the interpreter beside the handler (<see cref="HandlerProbe"/>): the
+/// handler serves a request one slice per scan, so each of its scans also runs the user's program. An assumption
+/// about the line (a real line reports it in SMW22-SMW26).
 /// </param>
 /// <param name="LinkGapMs">
 /// The gap the PC's link keeps after a reply before the next request (LinkOptions); the model never lets it be shorter
@@ -33,7 +36,6 @@ internal sealed record LinkTimeModel(LineSetting Line, double ReplyDelayMs, doub
     {
         ArgumentNullException.ThrowIfNull(handler);
         var c = Line.CharacterMs;
-        var handlerMs = handler.With(TimeSpan.FromMilliseconds(ProgramScanMs)).TotalMilliseconds;
         var parts = ImmutableArray.CreateBuilder<TimePart>();
         if (Radio is { } radio)
         {
@@ -43,12 +45,13 @@ internal sealed record LinkTimeModel(LineSetting Line, double ReplyDelayMs, doub
         }
 
         parts.Add(new("request on the bus", requestChars * c));
-        parts.Add(new(Invariant($"handler: {handler.Scans} scans x {ProgramScanMs:0.###} ms user program"), handler.Scans * ProgramScanMs));
-        parts.Add(new("handler's own work (interrupts, slices, housekeeping)", handler.HandlerAlone.TotalMilliseconds));
 
-        // The reply leaves one reply delay after the handler's work, but never before the cable has turned around.
-        parts.Add(new("reply delay, or the cable's turnaround if later", Math.Max(ReplyDelayMs, TurnaroundMs - handlerMs)));
-        parts.Add(new("reply on the bus", replyChars * c));
+        // The reply may not start before the cable has switched back to receive.
+        parts.Add(new(
+            Invariant($"until the first reply character: handler slices, {ProgramScanMs:0.###} ms user program per scan, reply delay (or the cable's turnaround if later); {handler.Scans} handler scans in all"),
+            Math.Max(handler.UntilFirstReply.TotalMilliseconds, TurnaroundMs)));
+        var pauses = handler.Pauses(replyChars, TimeSpan.FromMilliseconds(c)).TotalMilliseconds;
+        parts.Add(new(Invariant($"reply on the bus, {pauses:0.00} ms of it pauses while the handler computes its check"), handler.ReplyOnBus.TotalMilliseconds));
         if (Radio is { } back)
         {
             parts.Add(new("reply over the air (PLC module received it whole)", back.AirMs(replyChars)));

@@ -13,9 +13,11 @@ internal static class LinkTimeText
         var m = report.Model;
         o.WriteLine(Invariant($"Time model (MODELLED, not measured): {report.Medium}, {m.Line}, character {m.Line.CharacterMs:0.###} ms"));
         o.WriteLine("  handler       the generated handler run in the STL interpreter at the published instruction times");
-        o.WriteLine("                (StlTiming: System Manual tables, conservative where none), served this refresh's requests in order");
-        o.WriteLine(Invariant($"  user program  {m.ProgramScanMs:0.###} ms per scan (assumed; --scan-ms): every scan the handler needs also runs it"));
-        o.WriteLine(Invariant($"  reply delay   {m.ReplyDelayMs:0.###} ms after the handler's work (timed interrupt 0, the handler's setting)"));
+        o.WriteLine("                (StlTiming: System Manual tables, conservative where none), served this refresh's requests in order;");
+        o.WriteLine("                the reply's first character and its '>' timed on the simulated port (simulated time)");
+        o.WriteLine(Invariant($"  user program  {m.ProgramScanMs:0.###} ms per scan (assumed; --scan-ms), run in the interpreter after the handler's call"));
+        o.WriteLine(Invariant($"  reply delay   {m.ReplyDelayMs:0.###} ms after the first pass of the reply's check (timed interrupt 0); the reply leaves in chunks"));
+        o.WriteLine("                while the check goes on, so it may pause between characters");
         o.WriteLine(Invariant($"  turnaround    PC/PPI cable {m.TurnaroundMs:0.###} ms after the request (no primary source: the larger remembered figure, s7200-facts 7)"));
         o.WriteLine(Invariant($"  link gap      {m.GapMs:0.###} ms after each reply (the link's gap, at least 5 ms and 3 characters: docs/protocol.md)"));
         if (m.Radio is { } radio)

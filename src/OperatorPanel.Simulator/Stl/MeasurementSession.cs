@@ -7,6 +7,9 @@ namespace OperatorPanel.Simulator.Stl;
 /// records its interrupt runs (receive complete 23/24, transmit complete 9/26, timed interrupt 0 = event 10) and its
 /// scans until the reply's last character has left and RCV is armed again, or, for silence, for a second and 256
 /// character times (more than the longest request's work, the longest reply delay of 255 ms and the longest reply).
+/// The handler works on the request in the scans from the receive up to the last one in which OP_PANEL executed more
+/// than its idle scan does (the slice that ends the reply's check, or that receives again for silence); the reply's
+/// later chunks leave from the transmit-complete routine while OP_PANEL is idle again.
 /// </summary>
 internal sealed class MeasurementSession
 {
@@ -22,6 +25,7 @@ internal sealed class MeasurementSession
     private readonly List<(StlScan Scan, long Instructions)> _scans = [];
     private TimeSpan _now = TimeSpan.FromMilliseconds(50);
     private long _instructionsAtScanStart;
+    private long _idleInstructions;
 
     public MeasurementSession(StlPlc plc, FreeportPort port, LineSettings line, int portNumber)
     {
@@ -50,8 +54,9 @@ internal sealed class MeasurementSession
         _scans.Clear();
         _now += TimeSpan.FromMilliseconds(20);
         _plc.RunUntil(_now);
+        _idleInstructions = _scans.Count == 0 ? 0 : _scans.Max(s => s.Instructions);
         return new MeasuredRequest(
-            name, 0, 0, _scans.Count == 0 ? 0 : _scans.Max(s => s.Instructions), TimeSpan.Zero, TimeSpan.Zero,
+            name, 0, 0, _idleInstructions, TimeSpan.Zero, TimeSpan.Zero,
             _scans.Count == 0 ? TimeSpan.Zero : _scans.Max(s => s.Scan.Busy - Overhead), 0);
     }
 
@@ -64,12 +69,10 @@ internal sealed class MeasurementSession
         var deadline = t + Settle + (_line.CharacterTime * 256);
         var replyChars = 0;
         var ended = false;
-        TimeSpan? listening = null;
         while (_plc.Fault is null && t < deadline && !(ended && !_port.IsTransmitting && _port.IsReceiving))
         {
             t += TimeSpan.FromMilliseconds(1);
             _plc.RunUntil(t);
-            listening ??= _port.IsReceiving && _runs.Any(r => r.Event == _receiveEvent) ? t : null;
             foreach (var c in _port.TakeTransmitted())
             {
                 replyChars++;
@@ -79,26 +82,23 @@ internal sealed class MeasurementSession
 
         _now = t + TimeSpan.FromMilliseconds(1);
         _plc.RunUntil(_now);
-        return Measure(name, frame.Length, replyChars, listening ?? t);
+        return Measure(name, frame.Length, replyChars);
     }
 
-    private MeasuredRequest Measure(string name, int requestChars, int replyChars, TimeSpan listening)
+    private MeasuredRequest Measure(string name, int requestChars, int replyChars)
     {
         var received = _runs.FirstOrDefault(r => r.Event == _receiveEvent)?.EndedAt ?? TimeSpan.Zero;
-
-        // The reply delay's interval starts at its ATCH, the end of the work on the request (SMB34 = the delay in ms).
-        var delay = _runs.FirstOrDefault(r => r.Event == 10);
-        var done = delay is null ? listening : delay.RaisedAt - TimeSpan.FromMilliseconds(_plc.Memory.SM[34]);
-        var serving = _scans.Where(s => s.Scan.EndedAt > received && s.Scan.StartedAt < done).ToList();
-        var program = serving.Select(s =>
+        var program = _scans.Where(s => s.Scan.EndedAt > received).Select(s =>
         {
             var inside = _runs.Where(r => r.StartedAt >= s.Scan.StartedAt && r.StartedAt < s.Scan.EndedAt).ToList();
             return (Instructions: s.Instructions - inside.Sum(r => r.Instructions), Time: s.Scan.Busy - Overhead - Total(inside, Time));
         }).ToList();
+        var serving = program.FindLastIndex(p => p.Instructions > _idleInstructions) + 1;
+        var work = program.Take(serving).ToList();
         return new MeasuredRequest(
-            name, requestChars, replyChars, _runs.Sum(r => r.Instructions) + program.Sum(p => p.Instructions),
-            Total(_runs, Time) + Total(program, p => p.Time), _runs.Count == 0 ? TimeSpan.Zero : _runs.Max(Time),
-            _scans.Count == 0 ? TimeSpan.Zero : _scans.Max(s => s.Scan.Busy - Overhead), serving.Count);
+            name, requestChars, replyChars, _runs.Sum(r => r.Instructions) + work.Sum(p => p.Instructions),
+            Total(_runs, Time) + Total(work, p => p.Time), _runs.Count == 0 ? TimeSpan.Zero : _runs.Max(Time),
+            _scans.Count == 0 ? TimeSpan.Zero : _scans.Max(s => s.Scan.Busy - Overhead), serving);
     }
 
     private static TimeSpan Time(StlInterruptRun run) => run.EndedAt - run.StartedAt + InterruptOverhead;

@@ -21,6 +21,7 @@ public sealed partial class StlPlc
     private long _runningStart;
     private byte _interruptedSmb1;
     private long _runningInstructions;
+    private int _interruptedLine;
     private long _nextChange = long.MaxValue;
 
     private void InitialiseQueues()
@@ -113,6 +114,7 @@ public sealed partial class StlPlc
         _busy += StlTiming.InterruptOverhead;
         _runningStart = _now;
         _runningInstructions = InstructionsExecuted;
+        _interruptedLine = NextMainLine();
 
         // The CPU saves the accumulators and the instruction status bits (SMB1) around every interrupt routine, as it
         // saves the logic stack (System Manual, "System Support for Interrupts", Table 6-47); interrupts never nest.
@@ -137,6 +139,18 @@ public sealed partial class StlPlc
 
         InterruptServed?.Invoke(this, new StlInterruptRun(
             _program.Blocks[_running.Block].Name, _running.Event, TimeSpan.FromTicks(_running.At / 100),
-            TimeSpan.FromTicks(_runningStart / 100), TimeSpan.FromTicks(_now / 100), InstructionsExecuted - _runningInstructions));
+            TimeSpan.FromTicks(_runningStart / 100), TimeSpan.FromTicks(_now / 100), InstructionsExecuted - _runningInstructions, _interruptedLine));
+    }
+
+    /// <summary>The .awl line the main program goes on at; 0 outside OB1 and its subroutines.</summary>
+    private int NextMainLine()
+    {
+        if (_depth < 0)
+        {
+            return 0;
+        }
+
+        var frame = _frames[_depth];
+        return frame.Pc < frame.Block.Ops.Length ? frame.Block.Ops[frame.Pc].Line : 0;
     }
 }

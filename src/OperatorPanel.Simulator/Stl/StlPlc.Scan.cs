@@ -19,6 +19,7 @@ public sealed partial class StlPlc
     private long _scanStart;
     private long _scanBusyStart;
     private long _overheadUntil;
+    private long _userProgramLeft;
     private long _watchdogFrom;
 
     /// <summary>Set by STOP: the CPU finishes the scan, then goes to STOP (A5E00307987-04, "STOP" instruction).</summary>
@@ -27,6 +28,14 @@ public sealed partial class StlPlc
     private bool _scanClock;
     private int _minScan = int.MaxValue;
     private int _maxScan;
+
+    /// <summary>
+    /// A user's own program beside the loaded one, as time per scan: it runs after OB1's loaded instructions (the
+    /// generated handler asks to be network 1 of OB1), interrupts are served in it as between its instructions and
+    /// lengthen it, and it counts in the scan's time (SMW22) and busy time. Zero: only the loaded program. The bench
+    /// uses it for a line's program, which a real CPU reports in SMW22-SMW26.
+    /// </summary>
+    public TimeSpan UserProgramTime { get; set; }
 
     /// <summary>Raised at the start of each scan for the one before it (not for the first scan).</summary>
     public event EventHandler<StlScan>? ScanCompleted;
@@ -50,6 +59,10 @@ public sealed partial class StlPlc
             else if (_depth >= 0)
             {
                 Step();
+            }
+            else if (_userProgramLeft > 0)
+            {
+                RunUserProgram(end);
             }
             else if (_now < _overheadUntil)
             {
@@ -136,6 +149,28 @@ public sealed partial class StlPlc
             return;
         }
 
+        _userProgramLeft = UserProgramTime.Ticks * 100;
+        if (_userProgramLeft == 0)
+        {
+            BeginOverhead();
+        }
+    }
+
+    /// <summary>The user's program time up to the next port or timer event (an interrupt may be due then) or <paramref name="end"/>.</summary>
+    private void RunUserProgram(long end)
+    {
+        var step = Math.Min(_userProgramLeft, Math.Max(Math.Min(_nextChange, end) - _now, 0));
+        _now += step;
+        _busy += step;
+        _userProgramLeft -= step;
+        if (_userProgramLeft == 0)
+        {
+            BeginOverhead();
+        }
+    }
+
+    private void BeginOverhead()
+    {
         Array.Copy(Memory.Q, OutputImage, OutputImage.Length);
         _overheadUntil = _now + StlTiming.ScanOverhead;
         _busy += StlTiming.ScanOverhead;

@@ -125,6 +125,7 @@ public sealed partial class StlPlc
         Mode = OperatingMode.Run;
         _firstScan = true;
         _overheadUntil = _now;
+        _userProgramLeft = 0;
         _depth = -1;
         _scanStart = _now;
     }

@@ -105,8 +105,9 @@ public static class TechnicianNotes
         w.Line($"  (a CRC-16 over its characters) and builds the reply a part per scan: it adds at most {SlicePart.ScanBoundMs} ms to a scan while it");
         w.Line($"  works on a request, under {SlicePart.IdleScanBoundMs} ms to a scan without one. A reply takes {SlicePart.FewestScans} to {SlicePart.MostScans} scans");
         w.Line("  (WRITE BIT the fewest, a READ of 20 items the most), so a long scan of your program slows the panel.");
-        w.Line($"  The reply leaves {options.ReplyDelayMs} ms after the last of those scans (timed interrupt 0), so a");
-        w.Line("  PC/PPI or RS-232/RS-485 converter can turn the line around.");
+        w.Line($"  The reply starts {options.ReplyDelayMs} ms after the first scan of its check (timed interrupt 0), so a");
+        w.Line("  PC/PPI or RS-232/RS-485 converter can turn the line around, and leaves in parts while the check goes");
+        w.Line("  on: it may pause up to one scan of your program between two characters.");
         w.Line(options.CharTimeoutMs == 0
             ? "  A request cut off mid-way waits for the next '<' (no inter-character timeout)."
             : $"  A request cut off mid-way is dropped after {options.CharTimeoutMs} ms without a character (SMW{(options.Port == 0 ? 92 : 192)}).");

@@ -105,25 +105,29 @@ internal static class FrameCheckPart
     }
 
     /// <summary>
-    /// The reply's CRC over bytes 2 .. count-5 in passes, two characters per FOR loop pass (AC2 walks; AC1 stays at the
-    /// first check character), then the 4 check characters at AC1 and AC1 on to where '&gt;' goes.
+    /// The reply's CRC over bytes 2 .. count-5 in passes, two characters per FOR loop pass (AC2 walks, AC3 counts the
+    /// pairs left; SENT = buffer byte 0, the first chunk's XMT table), then the 4 check characters after AC2 and the
+    /// '&gt;', AC2 on it. Every pass ends at <see cref="ChunkPart.PassCovered"/> with AC2 at the last character covered.
     /// </summary>
     public static IEnumerable<StlNetwork> Reply(HandlerContext c)
     {
         var l = c.Layout;
-        yield return Always(
-            "Frame check of the reply",
-            $"CRC = {Hex(FrameCheck.Initial)}; AC2 walks buffer bytes 2 .. count-{CheckCharacters.Count + 1}: (count-6) / 2 pairs of characters (a reply's body is hex pairs).",
-            Op("MOVW", "16#FFFF", l.W(Crc)), Op("MOVD", l.Ptr(1), "AC2"), Op("BTI", l.B(0), "AC3"), Op("-I", Dec(FrameChars), "AC3"), Op("SRW", "AC3", "1"));
+        yield return new NetworkBuilder(
+                "Frame check of the reply",
+                $"CRC = {Hex(FrameCheck.Initial)}; AC2 walks buffer bytes 2 .. count-{CheckCharacters.Count + 1}: (count-6) / 2 pairs of characters (a reply's body is hex pairs).",
+                "SENT = buffer byte 0: the first chunk's XMT table.")
+            .Op("LD", "SM0.0").Op("MOVW", "16#FFFF", l.W(Crc)).Op("MOVD", l.Ptr(1), "AC2").Op("BTI", l.B(0), "AC3").Op("-I", Dec(FrameChars), "AC3")
+            .Op("SRW", "AC3", "1").Op("MOVD", l.Ptr(0), l.Dw(Sent)).Build();
         var pair = new[] { Character(c, "AC2", "reply"), Character(c, "AC2", "reply") };
-        foreach (var network in SlicePart.Passes(c, "reply check", ReplyPairsPerPass, SlicePart.ReplyCheckPass, SlicePart.StepReplyCheckPass, pair))
+        foreach (var network in SlicePart.Pass(c, "reply check", ReplyPairsPerPass, SlicePart.ReplyCheckPass, pair))
         {
             yield return network;
         }
 
+        yield return JumpIf("Reply check: pairs left", "This pass covers the body up to AC2.", ChunkPart.PassCovered, Op("LDW>", "AC3", "0"));
         yield return Expected(c, "reply");
-        yield return Always("Reply: check characters", "The 4 characters at AC1; AC1 on to the '>'.",
-            Op("MOVD", l.Dw(Scratch), "*AC1"), Op("+D", Dec(CheckCharacters.Count), "AC1"));
+        yield return Always("Reply: check characters and '>'", "The 4 characters after the body's last (AC2), then the '>', AC2 on it.",
+            Op("INCD", "AC2"), Op("MOVD", l.Dw(Scratch), "*AC2"), Op("+D", Dec(CheckCharacters.Count), "AC2"), Op("MOVB", "16#3E", "*AC2"));
     }
 
     /// <summary>One character into the CRC: the next character at <paramref name="walker"/> (moved on first).</summary>

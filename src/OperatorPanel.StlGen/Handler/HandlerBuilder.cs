@@ -49,10 +49,10 @@ internal static class HandlerBuilder
                 [$"Event {c.ReceiveEvent}: a frame ended by '>' for this station waits for {c.Names.Panel}; anything else: receive again."], [.. ReceivePart.Interrupt(c)]),
             new StlBlock(
                 StlBlockKind.Interrupt, c.Names.Delay, first + 1, "Operator panel: reply delay",
-                [$"Event {HandlerContext.DelayEvent}, timed interrupt 0 (SMB34): sends the reply."], [InterruptParts.Delay(c)]),
+                [$"Event {HandlerContext.DelayEvent}, timed interrupt 0 (SMB34): sends the reply's first chunk."], [InterruptParts.Delay(c)]),
             new StlBlock(
                 StlBlockKind.Interrupt, c.Names.Transmit, first + 2, "Operator panel: reply sent",
-                [$"Event {c.TransmitEvent}: receive the next request."], [InterruptParts.Transmit(c)]),
+                [$"Event {c.TransmitEvent}: the reply's next chunk, or after its last one receive the next request."], [.. InterruptParts.Transmit(c)]),
         ]);
     }
 }

@@ -22,6 +22,12 @@ public sealed partial class HandlerLayout
     /// <summary>OP_STOP bit 7: SM0.7 (mode switch at RUN) as the last scan saw it, for the switch's edges.</summary>
     public const int RunSeenBit = 7;
 
+    /// <summary>
+    /// OP_STOP bit 2: the reply is on its way, its reply delay or a chunk pending, so that routine's end sends what the
+    /// check has covered by then; clear while the transmitter waits for OP_PANEL (<see cref="ChunkPart"/>).
+    /// </summary>
+    public const int SendingBit = 2;
+
     /// <summary>CD bit 7: the copy is valid.</summary>
     public const int CopyValid = 0x80;
 
@@ -36,7 +42,7 @@ public sealed partial class HandlerLayout
 
     private IEnumerable<(string Symbol, string Address, string Comment)> ChangesSymbols =>
     [
-        ("OP_STOP", B(StopState), "Panel handler: bit 0 = STOP reply built, bit 1 = STOP reply sent, bit 7 = SM0.7 in the last scan"),
+        ("OP_STOP", B(StopState), "Panel handler: bit 0 = STOP reply built, bit 1 = STOP reply sent, bit 2 = reply chunk or delay pending, bit 7 = SM0.7 in the last scan"),
         ("OP_CFREE", B(CFree), "Panel handler: first free byte of the READ CHANGES copy area"),
         .. Enumerable.Range(1, 4).Select(n => ($"OP_CSTART{n}", B(CStart1 + n - 1), $"Panel handler: copy of list {n}: its first byte in the copy area (255 = no copy)")),
         .. Enumerable.Range(1, 4).Select(n => ($"OP_CD{n}", B(CD1 + n - 1), $"Panel handler: data bytes of list {n}; bit 7 = its copy holds what the last reply reported")),

@@ -32,6 +32,14 @@ public sealed partial class HandlerLayout(int bufferStart, int copyBytes)
     /// <summary>295 .. the last work byte: kept for 07 STOP and 08 READ CHANGES (stop request, copy starts and flags).</summary>
     public const int CommandsFirst = 295;
 
+    /// <summary>
+    /// While a reply is sent, from its check's start to its last chunk (<see cref="ChunkPart"/>): COVERED, a pointer to
+    /// the last reply character the check has covered (OP_PANEL writes it), and SENT, a pointer to the last character
+    /// handed to XMT (the next chunk's XMT table). They are SAVE's AC0 and AC1 double words: the reply's check keeps only
+    /// AC2 and AC3 between its slices, and no request is served until the reply is out.
+    /// </summary>
+    public const int Covered = Save, Sent = Save + 4;
+
     /// <summary>N .. LIST as one double word while a check is computed (see the class summary).</summary>
     public const int Scratch = N;
 
@@ -66,11 +74,18 @@ public sealed partial class HandlerLayout(int bufferStart, int copyBytes)
         ("OP_STEP", B(Step), "Panel handler: 0 = idle, else where OP_PANEL goes on with the request in the next scan"),
         ("OP_BUDGET", B(Budget), "Panel handler: loop passes left in this scan"),
         ("OP_CHUNK", W(Chunk), "Panel handler: characters of this pass over the frame"),
-        .. Enumerable.Range(0, 4).Select(n => ($"OP_AC{n}", Dw(Save + (4 * n)), $"Panel handler: AC{n} kept between scans")),
+        .. Enumerable.Range(0, 4).Select(n => ($"OP_AC{n}", Dw(Save + (4 * n)), $"Panel handler: AC{n} kept between scans{SaveWhileSending(n)}")),
         ("OP_CRC", W(Crc), "Panel handler: CRC-16 register of the frame check"),
         ("OP_D", B(D), "Panel handler: sum of the item lengths; bit mask of WRITE BIT"),
         .. ChangesSymbols,
     ];
+
+    private static string SaveWhileSending(int accumulator) => accumulator switch
+    {
+        0 => "; while a reply is sent: COVERED, pointer to its last character the check has covered",
+        1 => "; while a reply is sent: SENT, pointer to its last character handed to XMT",
+        _ => "",
+    };
 
     private string Abs(int offset) => (BufferStart + offset).ToString(CultureInfo.InvariantCulture);
 }

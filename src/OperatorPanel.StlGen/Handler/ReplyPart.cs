@@ -54,11 +54,11 @@ internal static class ReplyPart
             yield return network;
         }
 
-        yield return Always(
-            "Reply: '>', reply delay",
-            $"'>' at AC1. Timed interrupt 0 sends the reply in {c.Options.ReplyDelayMs} ms (SMB34).",
-            Op("MOVB", "16#3E", "*AC1"), Op("MOVB", Dec(c.Options.ReplyDelayMs), "SMB34"), Op("ATCH", c.Names.Delay, Dec(DelayEvent)),
-            SlicePart.Done(c), Op("JMP", Dec(SlicePart.EndOfSlice)));
+        foreach (var network in ChunkPart.AfterPass(c))
+        {
+            yield return network;
+        }
+
         yield return Label(HandlerLabels.Silence, "no reply");
         yield return Always(
             "No reply: receive again", "Silence: the port listens for the next frame at once.",

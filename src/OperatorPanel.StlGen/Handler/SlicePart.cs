@@ -40,7 +40,8 @@ internal static class SlicePart
 
     /// <summary>The labels OP_PANEL goes on at; 30 and 40 are the item loops' own, 29 and 39 set their budgets first.</summary>
     public const int RequestStart = 70, RequestCheckPass = 71, Header = 72, ItemsChecked = 73, ReplyCheck = 74, ReplyCheckPass = 75,
-        WriteReadBack = 76, FrameChecked = 77, MovePass = 78, CheckItemsResume = 29, BuildItemsResume = 39, Yield = 90, EndOfSlice = 99;
+        WriteReadBack = 76, FrameChecked = 77, MovePass = 78, CheckItemsResume = 29, BuildItemsResume = 39, Yield = 90, KeepWalkers = 91,
+        EndOfSlice = 99;
 
     /// <summary>Labels of the resume tree's inner nodes: 120 + the STEP bits tested so far.</summary>
     private const int TreeLabels = 120;
@@ -157,15 +158,20 @@ internal static class SlicePart
     /// <summary>The request is done (reply on its way, or silence): nothing left for the next scans.</summary>
     public static (string, string[]) Done(HandlerContext c) => Op("MOVB", "0", c.Layout.B(Step));
 
-    /// <summary>The last networks of OP_PANEL: keep the accumulators, then the end every slice jumps to.</summary>
+    /// <summary>
+    /// The last networks of OP_PANEL: keep the accumulators, then the end every slice jumps to. The reply's check jumps
+    /// to <see cref="KeepWalkers"/>: it keeps only AC2 and AC3, because SAVE's AC0 and AC1 double words then hold
+    /// COVERED and SENT, which the reply's chunks share with the interrupt routines (<see cref="ChunkPart"/>).
+    /// </summary>
     public static IEnumerable<StlNetwork> Exit(HandlerContext c)
     {
         var l = c.Layout;
         yield return Label(Yield, "end of this scan's slice");
         yield return Always(
-            "Keep the accumulators", "AC0-AC3 to SAVE: the next slice takes them back.",
-            Op("MOVD", "AC0", l.Dw(Save)), Op("MOVD", "AC1", l.Dw(Save + 4)), Op("MOVD", "AC2", l.Dw(Save + 8)),
-            Op("MOVD", "AC3", l.Dw(Save + 12)));
+            "Keep AC0 and AC1", "AC0, AC1 to SAVE: the next slice takes them back.", Op("MOVD", "AC0", l.Dw(Save)), Op("MOVD", "AC1", l.Dw(Save + 4)));
+        yield return Label(KeepWalkers, "end of a slice that keeps AC2 and AC3 only");
+        yield return Always(
+            "Keep AC2 and AC3", "AC2, AC3 to SAVE: the next slice takes them back.", Op("MOVD", "AC2", l.Dw(Save + 8)), Op("MOVD", "AC3", l.Dw(Save + 12)));
         yield return Label(EndOfSlice, "back to OB1");
     }
 
@@ -176,6 +182,18 @@ internal static class SlicePart
     /// </summary>
     public static IEnumerable<StlNetwork> Passes(
         HandlerContext c, string what, int perPass, int passLabel, int passStep, IEnumerable<StlNetwork> perCharacter)
+    {
+        foreach (var network in Pass(c, what, perPass, passLabel, perCharacter))
+        {
+            yield return network;
+        }
+
+        yield return JumpIf($"{what}: characters left", "The next scan goes on with another pass.",
+            Yield, Op("LDW>", "AC3", "0"), Op("MOVB", Dec(passStep), c.Layout.B(Step)));
+    }
+
+    /// <summary>One pass of <see cref="Passes"/> without its end: the caller decides what follows it.</summary>
+    public static IEnumerable<StlNetwork> Pass(HandlerContext c, string what, int perPass, int passLabel, IEnumerable<StlNetwork> perCharacter)
     {
         var l = c.Layout;
         yield return Label(passLabel, $"one pass of the {what}");
@@ -190,7 +208,5 @@ internal static class SlicePart
         }
 
         yield return new NetworkBuilder($"End of the {what} pass").Op("NEXT").Build();
-        yield return JumpIf($"{what}: characters left", "The next scan goes on with another pass.",
-            Yield, Op("LDW>", "AC3", "0"), Op("MOVB", Dec(passStep), l.B(Step)));
     }
 }

@@ -53,5 +53,5 @@ public sealed class BenchTargetsTests
     }
 
     private static CycleTime Cycle(int chars, double ms) =>
-        new("cycle", [new ExchangeTime("x", chars / 2, chars - (chars / 2), new HandlerCost(0, TimeSpan.Zero, "fixed"), [new TimePart("all", ms)])]);
+        new("cycle", [new ExchangeTime("x", chars / 2, chars - (chars / 2), new HandlerCost(0, TimeSpan.Zero, TimeSpan.Zero, "fixed"), [new TimePart("all", ms)])]);
 }

@@ -9,15 +9,34 @@ namespace OperatorPanel.Cli.Tests.Bench;
 
 public sealed class HandlerCostsTests
 {
+    private static readonly LinkTimeModel Cable9600 = new(new LineSetting(9600, "8N1", 10), ReplyDelayMs: 5, ProgramScanMs: 5, LinkGapMs: 5, Radio: null);
+
     [Fact]
-    public void Bound_SixteenAndTwentyCharacters_CoreScansTimesTheLargestSlice()
+    public void Bound_SixteenAndTwentyCharacters_CoreScansOfTheLargestSliceAndTheUserProgramThenTheDelay()
     {
-        // HandlerTurnaround: 5 + ceil(16 / 6) + ceil(20 / 6) = 12 scans, each with a 10 ms slice.
-        var cost = HandlerCosts.Bound(new PlannedExchange("x", new byte[16], 20));
+        // HandlerTurnaround: 5 + ceil(16 / 6) + ceil(20 / 6) = 12 scans, each a 10 ms slice and 5 ms of user program.
+        var cost = HandlerCosts.Bound(new PlannedExchange("x", new byte[16], 20), Cable9600);
 
         cost.Scans.Should().Be(12);
-        cost.HandlerAlone.Should().Be(TimeSpan.FromMilliseconds(120));
+        cost.UntilFirstReply.Should().Be(TimeSpan.FromMilliseconds((12 * 15) + 5));
+        cost.ReplyOnBus.TotalMilliseconds.Should().BeApproximately(20 * 1.0416667, 1e-4);
         cost.Source.Should().StartWith("bound");
+    }
+
+    [Fact]
+    public void Probe_ReferenceLineFullList_TheReplyStartsBeforeTheHandlerIsDoneAndTakesNoLessThanItsCharacters()
+    {
+        var line = ReferenceLine.Create();
+        var cycles = RefreshCycles.For(line.Plan());
+        HandlerProbe.TryCreate(line.Cpu, line.Station, Cable9600.Line.Settings, 5, TimeSpan.FromMilliseconds(5), out var probe, out var error).Should().BeTrue(error);
+
+        var costs = HandlerCosts.Measure(cycles, Cable9600, probe, error);
+
+        // READ CHANGES 1 FULL: 150 reply characters. Each of the handler's scans runs 5 ms of user program, so a first
+        // character sooner than scans x 5 ms after the request left while the handler still worked on the reply.
+        var full = costs.Steady[0];
+        full.UntilFirstReply.Should().BeLessThan(TimeSpan.FromMilliseconds(full.Scans * 5));
+        full.ReplyOnBus.Should().BeGreaterThanOrEqualTo(TimeSpan.FromMilliseconds(150 * 1.0416));
     }
 
     [Fact]
@@ -40,7 +59,7 @@ public sealed class HandlerCostsTests
     {
         var cycles = RefreshCycles.For(ReferenceLine.Create().Plan());
 
-        var costs = HandlerCosts.Measure(cycles, probe: null, probeError: "no handler");
+        var costs = HandlerCosts.Measure(cycles, Cable9600, probe: null, probeError: "no handler");
 
         costs.Steady.Should().HaveCount(cycles.Steady.Length).And.OnlyContain(c => c.Source.StartsWith("bound", StringComparison.Ordinal));
         costs.Problems.Should().Equal("handler not run: no handler");
@@ -51,9 +70,9 @@ public sealed class HandlerCostsTests
     {
         var line = ReferenceLine.Create();
         var cycles = RefreshCycles.For(line.Plan());
-        HandlerProbe.TryCreate(line.Cpu, line.Station, new LineSetting(9600, "8N1", 10).Settings, 5, out var probe, out var error).Should().BeTrue(error);
+        HandlerProbe.TryCreate(line.Cpu, line.Station, Cable9600.Line.Settings, 5, TimeSpan.FromMilliseconds(5), out var probe, out var error).Should().BeTrue(error);
 
-        var costs = HandlerCosts.Measure(cycles, probe, error);
+        var costs = HandlerCosts.Measure(cycles, Cable9600, probe, error);
 
         // Neither a reply length other than Core's nor more scans than the link's reply timeout allows.
         costs.Problems.Should().BeEmpty();
@@ -68,9 +87,9 @@ public sealed class HandlerCostsTests
             CpuProfiles.For(CpuModel.Cpu224),
             [new("inputs", PlcAddress.Parse("IB0")), new("memory", PlcAddress.Parse("VW100")), new("alarms", PlcAddress.Parse("M2.3"))]);
         var cycles = RefreshCycles.For(line.Plan());
-        HandlerProbe.TryCreate(line.Cpu, line.Station, new LineSetting(9600, "8N1", 10).Settings, 5, out var probe, out var error).Should().BeTrue(error);
+        HandlerProbe.TryCreate(line.Cpu, line.Station, Cable9600.Line.Settings, 5, TimeSpan.FromMilliseconds(5), out var probe, out var error).Should().BeTrue(error);
 
-        var costs = HandlerCosts.Measure(cycles, probe, error);
+        var costs = HandlerCosts.Measure(cycles, Cable9600, probe, error);
 
         cycles.Idle.Select(e => e.Name).Should().Equal("READ CHANGES OF LISTS 1");
         costs.Problems.Should().BeEmpty("the handler answers every exchange with the reply length Core computes, within the link's bound");

@@ -18,7 +18,7 @@ public sealed class LinkTimeReportTests
     public void Create_TwoExchanges_CycleSumsTheirCharactersAndTimes()
     {
         var model = new LinkTimeModel(new LineSetting(9600, "8N1", 10), 5, 0, 5, null);
-        var handler = new HandlerCost(0, TimeSpan.Zero, "fixed");
+        var handler = new HandlerCost(0, TimeSpan.FromMilliseconds(5), TimeSpan.FromMilliseconds(20 * 1.0416667), "fixed");
         PlannedExchange[] exchanges = [new("a", new byte[10], 20), new("b", new byte[16], 20)];
 
         var cycle = CycleTime.Of("steady", model, [.. exchanges], [handler, handler]);
@@ -29,5 +29,5 @@ public sealed class LinkTimeReportTests
     }
 
     private static CycleTime Cycle(int chars, double ms) =>
-        new("cycle", [new ExchangeTime("x", chars / 2, chars - (chars / 2), new HandlerCost(0, TimeSpan.Zero, "fixed"), [new TimePart("all", ms)])]);
+        new("cycle", [new ExchangeTime("x", chars / 2, chars - (chars / 2), new HandlerCost(0, TimeSpan.Zero, TimeSpan.Zero, "fixed"), [new TimePart("all", ms)])]);
 }

@@ -54,7 +54,7 @@ public sealed class GenerateCommandTests : IDisposable
         run.Out.Should().Contain("V bytes reserved:       VB7764-VB8191 (428 bytes)")
             .And.Contain("READ CHANGES copies:    VB8072-VB8191 (120 bytes; READ CHANGES and STOP work bytes: 13)")
             .And.Contain("STOP command:           not included (07 gets error 05)")
-            .And.Contain("instructions generated: 1141")
+            .And.Contain("instructions generated: 1175")
             .And.Contain("interrupt events used:  23, 10, 9")
             .And.Contain("blocks used:            OP_PANEL (SBR63), OP_RX (INT125), OP_DELAY (INT126), OP_TX (INT127)");
     }
@@ -68,19 +68,19 @@ public sealed class GenerateCommandTests : IDisposable
 
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Should().Contain("  no request (a scan)                                      0 ->   0            43     0.000               0.000          0.121      0")
-            .And.Contain("  IDENTIFY                                                12 ->  62          1421    44.459               0.388          8.913      7")
-            .And.Contain("  READ LIST 20 items                                      14 -> 172          4379   141.777               0.387          8.666     21")
-            .And.Contain("  READ CHANGES 77 bytes whole                             16 -> 174          4359   144.732               0.387          8.913     20")
-            .And.Contain("  READ CHANGES none changed                               16 ->  20          3073    80.902               0.387          9.085     13")
-            .And.Contain("  READ CHANGES 1 changed                                  16 ->  24          3199    84.452               0.387          8.666     14")
-            .And.Contain("  READ CHANGES 40 changed                                 16 -> 174          6446   202.258               0.387          8.913     28")
-            .And.Contain("  READ CHANGES list 1 of 2, none changed                  16 ->  20          3104    80.044               0.387          9.085     13")
-            .And.Contain("  READ CHANGES list 2 of 2, none changed                  16 ->  20          2334    60.060               0.387          9.085     10")
-            .And.Contain("  READ CHANGES OF LISTS 2 lists idle                      14 ->  22          4953   122.408               0.388          8.666     22")
-            .And.Contain("  READ CHANGES OF LISTS 4 lists, no valid copy            14 ->  26          1316    35.744               0.387          8.666      8")
-            .And.Contain("  READ CHANGES OF LISTS 4 lists, 9 changed in each        14 ->  62          6655   178.838               0.387          8.913     33")
+            .And.Contain("  IDENTIFY                                                12 ->  62          1519    46.408               0.429          9.503      7")
+            .And.Contain("  READ LIST 20 items                                      14 -> 172          4633   145.755               0.429          9.072     21")
+            .And.Contain("  READ CHANGES 77 bytes whole                             16 -> 174          4611   148.709               0.429          9.503     20")
+            .And.Contain("  READ CHANGES none changed                               16 ->  20          3129    81.595               0.429          9.460     13")
+            .And.Contain("  READ CHANGES 1 changed                                  16 ->  24          3271    85.294               0.429          9.018     14")
+            .And.Contain("  READ CHANGES 40 changed                                 16 -> 174          6714   206.238               0.429          9.503     28")
+            .And.Contain("  READ CHANGES list 1 of 2, none changed                  16 ->  20          3160    80.738               0.429          9.460     13")
+            .And.Contain("  READ CHANGES list 2 of 2, none changed                  16 ->  20          2384    60.753               0.429          9.460     10")
+            .And.Contain("  READ CHANGES OF LISTS 2 lists idle                      14 ->  22          4996   123.133               0.429          9.018     21")
+            .And.Contain("  READ CHANGES OF LISTS 4 lists, no valid copy            14 ->  26          1383    36.980               0.429          9.018      8")
+            .And.Contain("  READ CHANGES OF LISTS 4 lists, 9 changed in each        14 ->  62          6807   180.798               0.429          9.503     33")
             .And.Contain("worst interrupt routine: 0.498 ms (cut-off frame, then READ 20 items)")
-            .And.Contain("worst added to one scan: 9.103 ms (READ 20 items 77 bytes)")
+            .And.Contain("worst added to one scan: 9.503 ms (IDENTIFY)")
             .And.Contain("most scans per reply:    51");
     }
 
@@ -98,14 +98,14 @@ public sealed class GenerateCommandTests : IDisposable
         measured.Should().HaveCount(22);
         measured[1].GetProperty("request").GetString().Should().Be("IDENTIFY");
         measured[1].GetProperty("replyChars").GetInt32().Should().Be(62);
-        measured[1].GetProperty("instructions").GetInt64().Should().Be(1421);
-        measured[1].GetProperty("microseconds").GetInt64().Should().Be(44459);
-        measured[1].GetProperty("worstInterruptMicroseconds").GetInt64().Should().Be(388);
+        measured[1].GetProperty("instructions").GetInt64().Should().Be(1519);
+        measured[1].GetProperty("microseconds").GetInt64().Should().Be(46408);
+        measured[1].GetProperty("worstInterruptMicroseconds").GetInt64().Should().Be(429);
         measured[1].GetProperty("scans").GetInt32().Should().Be(7);
-        stats.GetProperty("worstInstructions").GetInt64().Should().Be(11883);
-        stats.GetProperty("worstMicroseconds").GetInt64().Should().Be(382270);
+        stats.GetProperty("worstInstructions").GetInt64().Should().Be(12197);
+        stats.GetProperty("worstMicroseconds").GetInt64().Should().Be(386260);
         stats.GetProperty("worstInterruptMicroseconds").GetInt64().Should().Be(498);
-        stats.GetProperty("worstScanMicroseconds").GetInt64().Should().Be(9102);
+        stats.GetProperty("worstScanMicroseconds").GetInt64().Should().Be(9503);
         stats.GetProperty("mostScansPerReply").GetInt32().Should().Be(51);
         (stats.GetProperty("copyBytes").GetInt32(), stats.GetProperty("stopEnabled").GetBoolean()).Should().Be((120, false));
     }

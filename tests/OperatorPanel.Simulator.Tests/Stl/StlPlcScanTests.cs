@@ -67,6 +67,43 @@ public sealed class StlPlcScanTests
     }
 
     [Fact]
+    public void UserProgramTime_LengthensEveryScanAndServesInterruptsInIt()
+    {
+        // OB1 is two instructions (well under 0.1 ms); 7 ms of user program after it, then the 0.25 ms housekeeping.
+        var plc = Plc("LD     SM0.1\nMOVB   2, SMB34\nATCH   TICK, 10\nENI", "INTERRUPT_BLOCK TICK:INT0\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\nINCB   VB0\r\nEND_INTERRUPT_BLOCK\r\n");
+        plc.UserProgramTime = TimeSpan.FromMilliseconds(7);
+        var scans = new List<StlScan>();
+        var runs = new List<StlInterruptRun>();
+        plc.ScanCompleted += (_, scan) => scans.Add(scan);
+        plc.InterruptServed += (_, run) => runs.Add(run);
+
+        plc.RunUntil(TimeSpan.FromMilliseconds(100));
+
+        scans.Should().NotBeEmpty().And.OnlyContain(s => s.EndedAt - s.StartedAt > TimeSpan.FromMilliseconds(7.25));
+        runs.Should().HaveCountGreaterThan(40).And.OnlyContain(r => r.StartedAt - r.RaisedAt < TimeSpan.FromMilliseconds(0.1));
+        runs.Should().Contain(r => r.InterruptedLine == 0, "most timed interrupts fall in the user's program, outside OB1's instructions");
+        plc.Memory.ReadWord(ProtocolArea.SM, 22).Should().BeInRange(7, 8);
+    }
+
+    [Fact]
+    public void InterruptedLine_TheMainProgramsNextInstruction()
+    {
+        // A 300-pass loop outlasts the 1 ms timed interrupt: the routine runs between two of the loop's instructions.
+        const string body = "LD     SM0.1\nMOVB   1, SMB34\nATCH   TICK, 10\nENI\nNetwork 2\nLD     SM0.0\nFOR    VW0, 1, 300\n" +
+            "Network 3\nLD     SM0.0\nINCD   AC0\nNetwork 4\nNEXT";
+        const string tick = "INTERRUPT_BLOCK TICK:INT0\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\nINCB   VB20\r\nEND_INTERRUPT_BLOCK\r\n";
+        var plc = Plc(body, tick);
+        var lines = Text(body, tick).Split('\n').Select(l => l.TrimEnd('\r')).ToList();
+        var runs = new List<StlInterruptRun>();
+        plc.InterruptServed += (_, run) => runs.Add(run);
+
+        plc.RunUntil(TimeSpan.FromMilliseconds(20));
+
+        var interrupted = runs.Select(r => r.InterruptedLine).Where(line => line > 0).Distinct().Select(line => lines[line - 1]).ToList();
+        interrupted.Should().NotBeEmpty().And.BeSubsetOf(["LD     SM0.0", "INCD   AC0", "NEXT"]);
+    }
+
+    [Fact]
     public void TimedInterrupt_InTheMiddleOfTheMainProgram_LeavesItsAccumulatorsAsTheyWere()
     {
         // OB1 counts to 300 in AC0 with a loop that outlasts the 1 ms timed interrupt; the routine tramples AC0-AC3.

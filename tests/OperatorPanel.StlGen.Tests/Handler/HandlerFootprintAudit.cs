@@ -88,7 +88,10 @@ internal sealed class HandlerFootprintAudit
         {
             case "RCV" or "XMT":
                 Expect(IsConstant(uses[1], _options.Port), $"{at}: not on port {_options.Port}");
-                Expect(uses[0].Operand is { Kind: AwlOperandKind.Address, Area: MemoryArea.V, Width: AccessWidth.Byte } table && table.ByteOffset == _stats.FirstVByte, $"{at}: table is not the buffer {_stats.FirstVByte}");
+                // XMT through a pointer sends one of the reply's chunks: its table is a buffer byte by construction
+                // (ChunkPart), which the interpreter's chunk tests check; the pointer's own bytes are checked below.
+                var chunk = instruction.Mnemonic == "XMT" && uses[0].Operand.Kind == AwlOperandKind.Indirect;
+                Expect(chunk || (uses[0].Operand is { Kind: AwlOperandKind.Address, Area: MemoryArea.V, Width: AccessWidth.Byte } table && table.ByteOffset == _stats.FirstVByte), $"{at}: table is not the buffer {_stats.FirstVByte}");
                 TouchV(_stats.FirstVByte, _stats.FirstVByte + BufferBytes - 1, at);
                 break;
             case "ATCH":
@@ -128,8 +131,11 @@ internal sealed class HandlerFootprintAudit
                 Expect(operand.Area == MemoryArea.V, $"{at}: a pointer outside V");
                 TouchV(operand.ByteOffset, operand.ByteOffset, at);
                 break;
+            case AwlOperandKind.Indirect when operand.Area == MemoryArea.V:
+                TouchV(operand.ByteOffset, operand.ByteOffset + 3, at);
+                break;
             case AwlOperandKind.Indirect:
-                Expect(operand.Area == MemoryArea.AC && operand.ByteOffset is >= 1 and <= 3, $"{at}: indirect through other than AC1-AC3");
+                Expect(operand.Area == MemoryArea.AC && operand.ByteOffset is >= 1 and <= 3, $"{at}: indirect through other than AC1-AC3 or a handler's VD");
                 break;
             case AwlOperandKind.Local:
                 _problems.Add($"{at}: the handler keeps nothing in L memory");

@@ -49,7 +49,7 @@ public sealed class HandlerFootprintTests
     [InlineData("MOVB   5, SMB34", "MOVB   5, SMB35", "SMB35, not a byte the handler reserves")]
     [InlineData("MOVB   5, SMB34", "MOVB   5, SMB550", "SMB550 is past the last SM byte SMB549")]
     [InlineData("MOVB   16#E0, SMB87", "MOVB   16#E0, SMB29", "read-only system status bytes")]
-    [InlineData("XMT    VB7764, 0", "XMT    VB7764, 1", "not on port 0")]
+    [InlineData("XMT    *AC1, 0", "XMT    *AC1, 1", "not on port 0")]
     [InlineData("DTCH   9\r\n", "DTCH   26\r\n", "events")]
     [InlineData("MOVD   &VB8027, AC3", "MOVD   &VB7763, AC3", "VB7763-VB7763 outside VB7764-VB8191")]
     [InlineData("MOVD   &VB8027, AC3", "MOVD   &IB4, AC3", "a pointer outside V")]

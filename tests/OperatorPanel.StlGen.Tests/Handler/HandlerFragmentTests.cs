@@ -50,11 +50,25 @@ public sealed class HandlerFragmentTests
     }
 
     [Fact]
-    public void Delay_Interrupt_DetachesEvent10ThenTransmits()
+    public void Delay_Interrupt_DetachesEvent10ThenTransmitsTheCoveredCharactersFromSent()
     {
         var program = HandlerGenerator.Generate(HandlerGoldenTests.Cpu224Port0Station2).Program!;
 
-        program.Blocks[3].Networks.Single().Instructions.Select(AwlText).Should().Equal("LD SM0.0", "DTCH 10", "XMT VB7764, 0");
+        // COVERED = VD8040, SENT = VD8044 (SAVE's AC0 and AC1 double words); SENT is buffer byte 0 for the first chunk.
+        program.Blocks[3].Networks.Single().Instructions.Select(AwlText).Should().Equal(
+            "LD SM0.0", "DTCH 10", "MOVD VD8040, AC0", "-D VD8044, AC0", "MOVB AC0, *VD8044", "XMT *VD8044, 0", "MOVD VD8040, VD8044");
+    }
+
+    [Fact]
+    public void Transmit_Interrupt_SendsWhatIsCoveredElseWaitsElseReceivesAfterTheGreaterThan()
+    {
+        var program = HandlerGenerator.Generate(HandlerGoldenTests.Cpu224Port0Station2).Program!;
+
+        program.Blocks[4].Networks.Select(n => n.Instructions.Select(AwlText)).Should().SatisfyRespectively(
+            more => more.Should().Equal(
+                "LDD<> VD8040, VD8044", "MOVD VD8040, AC0", "-D VD8044, AC0", "MOVB AC0, *VD8044", "XMT *VD8044, 0", "MOVD VD8040, VD8044", "CRETI"),
+            wait => wait.Should().Equal("LDB<> *VD8044, 16#3E", "R V8059.2, 1", "CRETI"),
+            done => done.Should().Equal("LD SM0.0", "RCV VB7764, 0"));
     }
 
     [Fact]

@@ -113,7 +113,7 @@ internal static class StlSources
 
     public const string ClearEvent = "unsourced";
 
-    public const string Freeport = "ML801761 p. 101";
+    public const string Freeport = "ML801761 p. 101; MWHELP s7-27fw0.htm (TBL through *VD, *AC, *LD)";
 
     public const string Network = "unsourced";
 
