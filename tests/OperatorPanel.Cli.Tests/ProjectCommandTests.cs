@@ -138,6 +138,33 @@ public sealed class ProjectCommandTests : IDisposable
     }
 
     [Fact]
+    public void Check_FileBeyondTheProblemLimit_CountsMoreThanAHundredNotTheLinesListed()
+    {
+        var file = FileIn("many.opproj");
+        File.WriteAllText(file, ManyBrokenStations());
+
+        var run = Run("project", "check", file);
+
+        run.Code.Should().Be(1);
+        var lines = run.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        lines.Should().HaveCount(102);
+        lines[^2].Should().Be($"{file}: file: more than 100 problems; the rest are not listed: correct these and load the file again");
+        lines[^1].Should().Be($"{file}: more than 100 problems");
+    }
+
+    [Fact]
+    public void VerbNeedingAProject_FileBeyondTheProblemLimit_CountsMoreThanAHundred()
+    {
+        var file = FileIn("many.opproj");
+        File.WriteAllText(file, ManyBrokenStations());
+
+        var run = Run("generate", file, "-o", FileIn("plc"));
+
+        run.Code.Should().Be(1);
+        run.Error.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries)[^1].Should().Be($"opanel: {file}: more than 100 problems; nothing generated");
+    }
+
+    [Fact]
     public void Check_OneAlarmOneTag_SummaryCountsInTheSingular()
     {
         var file = FileIn("line.opproj");
@@ -213,6 +240,9 @@ public sealed class ProjectCommandTests : IDisposable
     private static string BadSample() => File.ReadAllText(SamplePath())
         .Replace("\"VD120\"", "\"VW8191\"", StringComparison.Ordinal)
         .Replace("\"stopBits\": 1", "\"stopBits\": 2", StringComparison.Ordinal);
+
+    private static string ManyBrokenStations() =>
+        "{\"schemaVersion\":1,\"name\":\"x\",\"refresh\":{\"mode\":\"continuous\"},\"stations\":[" + string.Join(',', Enumerable.Repeat("{}", 300)) + "]}";
 
     private string FileIn(string name) => Path.Combine(_folder, name);
 

@@ -8,12 +8,12 @@ namespace OperatorPanel.Cli.Commands;
 /// </summary>
 internal static class ProjectProblemsView
 {
-    public static int Report(CliContext cli, string path, IReadOnlyList<ProjectFileError> errors, string notDone)
+    public static int Report(CliContext cli, string path, ProjectLoadResult loaded, string notDone)
     {
-        var problems = errors.Select(e => new ProblemView(e.Location, e.Message)).ToList();
+        var problems = loaded.Errors.Select(e => new ProblemView(e.Location, e.Message)).ToList();
         if (cli.Json)
         {
-            cli.WriteJson(new { ok = false, file = path, problems, error = $"{path}: {Count(problems.Count)}; {notDone}" });
+            cli.WriteJson(new { ok = false, file = path, problems, error = $"{path}: {Count(loaded)}; {notDone}" });
             return ExitCodes.BadInput;
         }
 
@@ -22,9 +22,14 @@ internal static class ProjectProblemsView
             cli.Error.WriteLine($"{path}: {problem.Location}: {problem.Message}");
         }
 
-        cli.Error.WriteLine($"opanel: {path}: {Count(problems.Count)}; {notDone}");
+        cli.Error.WriteLine($"opanel: {path}: {Count(loaded)}; {notDone}");
         return ExitCodes.BadInput;
     }
 
-    private static string Count(int n) => n == 1 ? "1 problem" : $"{n} problems";
+    /// <summary>"1 problem", "7 problems", or "more than 100 problems" when the loader stopped listing them (not the lines listed).</summary>
+    public static string Count(ProjectLoadResult loaded)
+    {
+        var n = loaded.Errors.Length;
+        return loaded.ProblemsCut ? $"more than {ProjectLoadResult.ProblemLimit} problems" : n == 1 ? "1 problem" : $"{n} problems";
+    }
 }

@@ -50,7 +50,7 @@ internal static class SimulateCommand
                 var loaded = ProjectFile.Load(path);
                 if (!loaded.Ok)
                 {
-                    return ProjectProblemsView.Report(cli, path, loaded.Errors, "nothing simulated");
+                    return ProjectProblemsView.Report(cli, path, loaded, "nothing simulated");
                 }
 
                 if (!SimulatedStations.TrySelect(loaded.Project, path, parse.GetValue(stations) ?? [], out fromProject, out var notOneBus))
