@@ -121,11 +121,23 @@ public sealed class ProjectCommandTests : IDisposable
     [Theory]
     [InlineData("generate", "nothing generated")]
     [InlineData("watch", "nothing watched")]
+    [InlineData("read", "nothing sent")]
+    [InlineData("write", "nothing sent")]
+    [InlineData("identify", "nothing sent")]
+    [InlineData("stop", "nothing sent")]
     public void VerbNeedingAProject_BadFile_ListsEveryProblemLikeCheckOneALine(string verb, string notDone)
     {
         var file = FileIn("bad.opproj");
         File.WriteAllText(file, BadSample());
-        string[] args = verb == "generate" ? ["generate", file, "-o", FileIn("plc"), "--station", "2"] : ["watch", file, "--once"];
+        string[] args = verb switch
+        {
+            "generate" => ["generate", file, "-o", FileIn("plc"), "--station", "2"],
+            "watch" => ["watch", file, "--once"],
+            "read" => ["read", "VB0", "--project", file, "--demo"],
+            "write" => ["write", "VB0=1", "--project", file, "--demo"],
+            "identify" => ["identify", "--project", file, "--demo"],
+            _ => ["stop", "--project", file, "--demo", "--yes"],
+        };
 
         var run = Run(args);
 
@@ -162,6 +174,21 @@ public sealed class ProjectCommandTests : IDisposable
 
         run.Code.Should().Be(1);
         run.Error.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries)[^1].Should().Be($"opanel: {file}: more than 100 problems; nothing generated");
+    }
+
+    [Fact]
+    public void LinkVerb_BadProjectFileJson_GivesTheFileAndItsProblemsLikeGenerate()
+    {
+        var file = FileIn("bad.opproj");
+        File.WriteAllText(file, BadSample());
+
+        var run = Run("read", "VB0", "--project", file, "--demo", "--json");
+
+        run.Code.Should().Be(1);
+        using var json = JsonDocument.Parse(run.Out);
+        json.RootElement.GetProperty("file").GetString().Should().Be(file);
+        json.RootElement.GetProperty("problems").GetArrayLength().Should().Be(2);
+        json.RootElement.GetProperty("error").GetString().Should().Be($"{file}: 2 problems; nothing sent");
     }
 
     [Fact]

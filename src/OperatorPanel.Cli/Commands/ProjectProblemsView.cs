@@ -3,8 +3,9 @@ using OperatorPanel.Core.Projects;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// A project file that did not load, as the verbs that need one (generate, watch, stop) report it: one problem per line
-/// in <c>project check</c>'s form (FILE: LOCATION: message), then what was not done; JSON as <c>project check</c> writes it.
+/// A project file that did not load, as every verb that needs one (generate, watch, simulate, read, write, identify, stop)
+/// reports it: one problem per line in <c>project check</c>'s form (FILE: LOCATION: message), then what was not done;
+/// JSON as <c>project check</c> writes it.
 /// </summary>
 internal static class ProjectProblemsView
 {

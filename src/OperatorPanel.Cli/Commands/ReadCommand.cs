@@ -29,15 +29,15 @@ internal static class ReadCommand
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
-            if (!link.TryBind(parse, out var target, out var error))
+            if (!link.TryBind(parse, cli, out var target, out _))
             {
-                return cli.Fail(ExitCodes.BadInput, error);
+                return ExitCodes.BadInput;
             }
 
             var parsed = new List<(PlcAddress Address, DisplayFormat? Format)>();
             foreach (var text in parse.GetValue(addresses) ?? [])
             {
-                if (!ReadFormats.TrySplit(text, out var addressText, out var format, out error)
+                if (!ReadFormats.TrySplit(text, out var addressText, out var format, out var error)
                     || !AddressArguments.TryParse(addressText, target.Cpu, AddressUse.Read, out var address, out error)
                     || !ReadFormats.TryCheck(address, format, text, out error))
                 {
