@@ -17,7 +17,7 @@ namespace OperatorPanel.Cli.Link;
 internal sealed class LinkOptionSet
 {
     private const string DemoPort = "demo";
-    private readonly SerialOptionSet _serial = new(withRadio: true);
+    private readonly SerialOptionSet _serial = new(panelSide: true);
 
     public Option<string> Station { get; } = new("--station")
     {
