@@ -16,17 +16,12 @@ internal sealed record LinkFailure(string Error, PlcErrorKind? Kind, string? Hin
         new(failure.Message, failure.Kind, HintFor(target, failure.Kind));
 
     /// <summary>From a station's last error as the polling engine keeps it ("NoAnswer: station 5 on COM3: ...").</summary>
-    public static LinkFailure From(LinkTarget target, string? lastError, PlcErrorKind? kind)
-    {
-        var text = lastError ?? "no reply";
-        var prefix = kind is { } k ? $"{k}: " : null;
-        if (prefix is not null && text.StartsWith(prefix, StringComparison.Ordinal))
-        {
-            text = text[prefix.Length..];
-        }
+    public static LinkFailure From(LinkTarget target, string? lastError, PlcErrorKind? kind) =>
+        new(WithoutKind(lastError, kind) ?? "no reply", kind, HintFor(target, kind));
 
-        return new LinkFailure(text, kind, HintFor(target, kind));
-    }
+    /// <summary>"PortUnavailable: serial port COM3: ..." without the kind's name: the words say it (the kind is for --json).</summary>
+    public static string? WithoutKind(string? error, PlcErrorKind? kind) =>
+        error is not null && kind is { } k && error.StartsWith($"{k}: ", StringComparison.Ordinal) ? error[$"{k}: ".Length..] : error;
 
     public static string? HintFor(LinkTarget target, PlcErrorKind? kind)
     {
