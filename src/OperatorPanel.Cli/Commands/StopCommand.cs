@@ -13,7 +13,7 @@ internal static class StopCommand
 {
     private const string Description =
         "Put a PLC into STOP: the line stops and the port returns to PPI until someone sets RUN (mode switch or Micro/WIN). "
-        + "Needs --yes; without it nothing is sent. With --project the station (--station ADDRESS, or the only one) must have \"allowStop\": true, "
+        + "Needs --yes; without it nothing is sent. With --project the station (--station ADDRESS or NAME, or the only one) must have \"allowStop\": true, "
         + "and its port, line settings and CPU come from the project unless --device, --demo or --cpu say otherwise. The station's handler must be generated with STOP (\"allowStop\": true in the "
         + "project, or opanel generate --allow-stop): IDENTIFY is asked first, and without FEATURES bit 0 nothing is sent. "
         + "STOP is sent once, never repeated, and logged (\"station N RUN -> STOP by operator\"); an IDENTIFY afterwards must get no "

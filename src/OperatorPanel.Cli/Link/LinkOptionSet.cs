@@ -41,7 +41,7 @@ internal sealed class LinkOptionSet
 
     public Option<string?> Project { get; } = new("--project")
     {
-        Description = "The .opproj project: the station's port, line settings and CPU come from it (--station ADDRESS picks the station, "
+        Description = "The .opproj project: the station's port, line settings and CPU come from it (--station ADDRESS or NAME picks the station, "
             + "needed when it has several; --device, --demo or --cpu override)",
     };
 
