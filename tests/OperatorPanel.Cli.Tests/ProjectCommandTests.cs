@@ -121,11 +121,23 @@ public sealed class ProjectCommandTests : IDisposable
     [Theory]
     [InlineData("generate", "nothing generated")]
     [InlineData("watch", "nothing watched")]
+    [InlineData("read", "nothing sent")]
+    [InlineData("write", "nothing sent")]
+    [InlineData("identify", "nothing sent")]
+    [InlineData("stop", "nothing sent")]
     public void VerbNeedingAProject_BadFile_ListsEveryProblemLikeCheckOneALine(string verb, string notDone)
     {
         var file = FileIn("bad.opproj");
         File.WriteAllText(file, BadSample());
-        string[] args = verb == "generate" ? ["generate", file, "-o", FileIn("plc"), "--station", "2"] : ["watch", file, "--once"];
+        string[] args = verb switch
+        {
+            "generate" => ["generate", file, "-o", FileIn("plc"), "--station", "2"],
+            "watch" => ["watch", file, "--once"],
+            "read" => ["read", "VB0", "--project", file, "--demo"],
+            "write" => ["write", "VB0=1", "--project", file, "--demo"],
+            "identify" => ["identify", "--project", file, "--demo"],
+            _ => ["stop", "--project", file, "--demo", "--yes"],
+        };
 
         var run = Run(args);
 
@@ -135,6 +147,48 @@ public sealed class ProjectCommandTests : IDisposable
             $"{file}: $.stations[0].link.stopBits: 2 stop bits: S7-200 Freeport always sends one stop bit; use 1",
             $"{file}: $.stations[0].tags[3].address: VW8191 ends at VB8192, past the last V byte VB8191 of CPU 224",
             $"opanel: {file}: 2 problems; {notDone}");
+    }
+
+    [Fact]
+    public void Check_FileBeyondTheProblemLimit_CountsMoreThanAHundredNotTheLinesListed()
+    {
+        var file = FileIn("many.opproj");
+        File.WriteAllText(file, ManyBrokenStations());
+
+        var run = Run("project", "check", file);
+
+        run.Code.Should().Be(1);
+        var lines = run.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        lines.Should().HaveCount(102);
+        lines[^2].Should().Be($"{file}: file: more than 100 problems; the rest are not listed: correct these and load the file again");
+        lines[^1].Should().Be($"{file}: more than 100 problems");
+    }
+
+    [Fact]
+    public void VerbNeedingAProject_FileBeyondTheProblemLimit_CountsMoreThanAHundred()
+    {
+        var file = FileIn("many.opproj");
+        File.WriteAllText(file, ManyBrokenStations());
+
+        var run = Run("generate", file, "-o", FileIn("plc"));
+
+        run.Code.Should().Be(1);
+        run.Error.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries)[^1].Should().Be($"opanel: {file}: more than 100 problems; nothing generated");
+    }
+
+    [Fact]
+    public void LinkVerb_BadProjectFileJson_GivesTheFileAndItsProblemsLikeGenerate()
+    {
+        var file = FileIn("bad.opproj");
+        File.WriteAllText(file, BadSample());
+
+        var run = Run("read", "VB0", "--project", file, "--demo", "--json");
+
+        run.Code.Should().Be(1);
+        using var json = JsonDocument.Parse(run.Out);
+        json.RootElement.GetProperty("file").GetString().Should().Be(file);
+        json.RootElement.GetProperty("problems").GetArrayLength().Should().Be(2);
+        json.RootElement.GetProperty("error").GetString().Should().Be($"{file}: 2 problems; nothing sent");
     }
 
     [Fact]
@@ -213,6 +267,9 @@ public sealed class ProjectCommandTests : IDisposable
     private static string BadSample() => File.ReadAllText(SamplePath())
         .Replace("\"VD120\"", "\"VW8191\"", StringComparison.Ordinal)
         .Replace("\"stopBits\": 1", "\"stopBits\": 2", StringComparison.Ordinal);
+
+    private static string ManyBrokenStations() =>
+        "{\"schemaVersion\":1,\"name\":\"x\",\"refresh\":{\"mode\":\"continuous\"},\"stations\":[" + string.Join(',', Enumerable.Repeat("{}", 300)) + "]}";
 
     private string FileIn(string name) => Path.Combine(_folder, name);
 

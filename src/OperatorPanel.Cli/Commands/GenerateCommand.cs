@@ -44,7 +44,7 @@ internal static class GenerateCommand
             var loaded = ProjectFile.Load(path);
             if (!loaded.Ok)
             {
-                return ProjectProblemsView.Report(cli, path, loaded.Errors, "nothing generated");
+                return ProjectProblemsView.Report(cli, path, loaded, "nothing generated");
             }
 
             if (!GenerateSettings.TrySelectStation(loaded.Project, parse.GetValue(station), out var chosen, out var error)

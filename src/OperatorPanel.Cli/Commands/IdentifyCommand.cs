@@ -20,9 +20,9 @@ internal static class IdentifyCommand
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
-            if (!link.TryBind(parse, out var target, out var error))
+            if (!link.TryBind(parse, cli, out var target, out _))
             {
-                return cli.Fail(ExitCodes.BadInput, error);
+                return ExitCodes.BadInput;
             }
 
             if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))

@@ -16,17 +16,12 @@ internal sealed record LinkFailure(string Error, PlcErrorKind? Kind, string? Hin
         new(failure.Message, failure.Kind, HintFor(target, failure.Kind));
 
     /// <summary>From a station's last error as the polling engine keeps it ("NoAnswer: station 5 on COM3: ...").</summary>
-    public static LinkFailure From(LinkTarget target, string? lastError, PlcErrorKind? kind)
-    {
-        var text = lastError ?? "no reply";
-        var prefix = kind is { } k ? $"{k}: " : null;
-        if (prefix is not null && text.StartsWith(prefix, StringComparison.Ordinal))
-        {
-            text = text[prefix.Length..];
-        }
+    public static LinkFailure From(LinkTarget target, string? lastError, PlcErrorKind? kind) =>
+        new(WithoutKind(lastError, kind) ?? "no reply", kind, HintFor(target, kind));
 
-        return new LinkFailure(text, kind, HintFor(target, kind));
-    }
+    /// <summary>"PortUnavailable: serial port COM3: ..." without the kind's name: the words say it (the kind is for --json).</summary>
+    public static string? WithoutKind(string? error, PlcErrorKind? kind) =>
+        error is not null && kind is { } k && error.StartsWith($"{k}: ", StringComparison.Ordinal) ? error[$"{k}: ".Length..] : error;
 
     public static string? HintFor(LinkTarget target, PlcErrorKind? kind)
     {
@@ -37,7 +32,7 @@ internal sealed record LinkFailure(string Error, PlcErrorKind? Kind, string? Hin
             PlcErrorKind.NoAnswer or PlcErrorKind.Timeout =>
                 $"nothing answers as station {station}: check that the PLC is in RUN with its mode switch at RUN (at TERM or in STOP "
                 + $"its port speaks PPI to Micro/WIN, not to the panel), that its handler was generated for station {station} at {line} "
-                + "(the first line of the NAME-README.txt that opanel generate wrote), that OB1 calls OP_PANEL every scan, and the cable or radio module",
+                + "(the top of the STATION-README.txt that opanel generate wrote), that OB1 calls OP_PANEL every scan, and the cable or radio module",
             PlcErrorKind.PortUnavailable =>
                 $"check the port name ({target.Serial.PortName}), that the cable or USB adapter is plugged in, and that no other "
                 + "program (Micro/WIN, another opanel) has the port open",

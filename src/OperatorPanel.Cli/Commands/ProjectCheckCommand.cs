@@ -26,7 +26,7 @@ internal static class ProjectCheckCommand
             }
             else
             {
-                WriteText(cli.Out, path, problems, summary);
+                WriteText(cli.Out, path, result, summary);
             }
 
             cli.Log.Information("Checked {File}: {Count} problems", path, problems.Count);
@@ -35,16 +35,16 @@ internal static class ProjectCheckCommand
         return command;
     }
 
-    private static void WriteText(TextWriter o, string path, List<ProblemView> problems, ProjectSummaryView? summary)
+    private static void WriteText(TextWriter o, string path, ProjectLoadResult result, ProjectSummaryView? summary)
     {
-        foreach (var problem in problems)
+        foreach (var problem in result.Errors)
         {
             o.WriteLine($"{path}: {problem.Location}: {problem.Message}");
         }
 
         if (summary is null)
         {
-            o.WriteLine($"{path}: {problems.Count} problem{(problems.Count == 1 ? string.Empty : "s")}");
+            o.WriteLine($"{path}: {ProjectProblemsView.Count(result)}");
             return;
         }
 

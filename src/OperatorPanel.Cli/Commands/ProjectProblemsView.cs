@@ -3,17 +3,18 @@ using OperatorPanel.Core.Projects;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// A project file that did not load, as the verbs that need one (generate, watch, stop) report it: one problem per line
-/// in <c>project check</c>'s form (FILE: LOCATION: message), then what was not done; JSON as <c>project check</c> writes it.
+/// A project file that did not load, as every verb that needs one (generate, watch, simulate, read, write, identify, stop)
+/// reports it: one problem per line in <c>project check</c>'s form (FILE: LOCATION: message), then what was not done;
+/// JSON as <c>project check</c> writes it.
 /// </summary>
 internal static class ProjectProblemsView
 {
-    public static int Report(CliContext cli, string path, IReadOnlyList<ProjectFileError> errors, string notDone)
+    public static int Report(CliContext cli, string path, ProjectLoadResult loaded, string notDone)
     {
-        var problems = errors.Select(e => new ProblemView(e.Location, e.Message)).ToList();
+        var problems = loaded.Errors.Select(e => new ProblemView(e.Location, e.Message)).ToList();
         if (cli.Json)
         {
-            cli.WriteJson(new { ok = false, file = path, problems, error = $"{path}: {Count(problems.Count)}; {notDone}" });
+            cli.WriteJson(new { ok = false, file = path, problems, error = $"{path}: {Count(loaded)}; {notDone}" });
             return ExitCodes.BadInput;
         }
 
@@ -22,9 +23,14 @@ internal static class ProjectProblemsView
             cli.Error.WriteLine($"{path}: {problem.Location}: {problem.Message}");
         }
 
-        cli.Error.WriteLine($"opanel: {path}: {Count(problems.Count)}; {notDone}");
+        cli.Error.WriteLine($"opanel: {path}: {Count(loaded)}; {notDone}");
         return ExitCodes.BadInput;
     }
 
-    private static string Count(int n) => n == 1 ? "1 problem" : $"{n} problems";
+    /// <summary>"1 problem", "7 problems", or "more than 100 problems" when the loader stopped listing them (not the lines listed).</summary>
+    public static string Count(ProjectLoadResult loaded)
+    {
+        var n = loaded.Errors.Length;
+        return loaded.ProblemsCut ? $"more than {ProjectLoadResult.ProblemLimit} problems" : n == 1 ? "1 problem" : $"{n} problems";
+    }
 }

@@ -10,6 +10,9 @@ namespace OperatorPanel.Cli.Commands;
 /// <summary><c>opanel read ADDR... --device DEV --station N</c>: one refresh of the given addresses, one line each.</summary>
 internal static class ReadCommand
 {
+    /// <summary>Room for a double word in decimal (4294967295), so plain reads line up as they always did.</summary>
+    private const int MinimumValueWidth = 11;
+
     public static Command Create(Func<ParseResult, CliContext> context)
     {
         var addresses = new Argument<string[]>("address")
@@ -29,15 +32,15 @@ internal static class ReadCommand
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
-            if (!link.TryBind(parse, out var target, out var error))
+            if (!link.TryBind(parse, cli, out var target, out _))
             {
-                return cli.Fail(ExitCodes.BadInput, error);
+                return ExitCodes.BadInput;
             }
 
             var parsed = new List<(PlcAddress Address, DisplayFormat? Format)>();
             foreach (var text in parse.GetValue(addresses) ?? [])
             {
-                if (!ReadFormats.TrySplit(text, out var addressText, out var format, out error)
+                if (!ReadFormats.TrySplit(text, out var addressText, out var format, out var error)
                     || !AddressArguments.TryParse(addressText, target.Cpu, AddressUse.Read, out var address, out error)
                     || !ReadFormats.TryCheck(address, format, text, out error))
                 {
@@ -75,7 +78,8 @@ internal static class ReadCommand
         }
         else
         {
-            views.ForEach(v => v.WriteText(cli.Out));
+            var width = Math.Max(MinimumValueWidth, views.Max(v => v.ValueText().Length));
+            views.ForEach(v => v.WriteText(cli.Out, width));
         }
 
         return views.All(v => v.Quality == "good") ? ExitCodes.Ok : ExitCodes.BadInput;

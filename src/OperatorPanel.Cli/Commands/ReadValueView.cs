@@ -24,10 +24,17 @@ internal sealed record ReadValueView(string Address, ulong? Value, string? Hex, 
         return new ReadValueView(address.ToString(), ValueFormatter.Unsigned(raw), hex, value.Quality.ToString().ToLowerInvariant(), value.Error, shown);
     }
 
-    public void WriteText(TextWriter o)
+    /// <summary>The value as the text shows it: in the format asked for, else unsigned; "-" when not read.</summary>
+    public string ValueText() => Shown ?? Value?.ToString(System.Globalization.CultureInfo.InvariantCulture) ?? "-";
+
+    /// <param name="o">Where the line goes.</param>
+    /// <param name="valueWidth">
+    /// The value column's width: the widest value of the read (a double word in binary takes 41), so hex and quality
+    /// stay in their columns.
+    /// </param>
+    public void WriteText(TextWriter o, int valueWidth)
     {
-        var value = Shown ?? Value?.ToString(System.Globalization.CultureInfo.InvariantCulture) ?? "-";
         var error = Error is null ? string.Empty : "  " + Error;
-        o.WriteLine($"{Address,-8} {value,-11} {Hex ?? string.Empty,-12} {Quality}{error}");
+        o.WriteLine($"{Address,-8} {ValueText().PadRight(valueWidth)} {Hex ?? string.Empty,-12} {Quality}{error}");
     }
 }

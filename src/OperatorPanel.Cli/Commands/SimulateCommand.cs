@@ -24,7 +24,7 @@ internal static class SimulateCommand
         {
             Description = "Simulate a project's bus: its stations (or those given with --station), each with its own CPU and \"allowStop\", at the bus's baud rate, parity and data bits",
         };
-        var serial = new SerialOptionSet(withRadio: false);
+        var serial = new SerialOptionSet(panelSide: false);
         var replyDelay = new Option<int>("--reply-delay") { Description = "Handler reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
         var noProcess = new Option<bool>("--no-process") { Description = "Do not run the demo bottling process: memory stays as the panel writes it" };
         var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
@@ -50,7 +50,7 @@ internal static class SimulateCommand
                 var loaded = ProjectFile.Load(path);
                 if (!loaded.Ok)
                 {
-                    return ProjectProblemsView.Report(cli, path, loaded.Errors, "nothing simulated");
+                    return ProjectProblemsView.Report(cli, path, loaded, "nothing simulated");
                 }
 
                 if (!SimulatedStations.TrySelect(loaded.Project, path, parse.GetValue(stations) ?? [], out fromProject, out var notOneBus))

@@ -1,5 +1,4 @@
 using System.CommandLine;
-using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Stop;
 
@@ -14,7 +13,7 @@ internal static class StopCommand
 {
     private const string Description =
         "Put a PLC into STOP: the line stops and the port returns to PPI until someone sets RUN (mode switch or Micro/WIN). "
-        + "Needs --yes; without it nothing is sent. With --project the station (--station ADDRESS, or the only one) must have \"allowStop\": true, "
+        + "Needs --yes; without it nothing is sent. With --project the station (--station ADDRESS or NAME, or the only one) must have \"allowStop\": true, "
         + "and its port, line settings and CPU come from the project unless --device, --demo or --cpu say otherwise. The station's handler must be generated with STOP (\"allowStop\": true in the "
         + "project, or opanel generate --allow-stop): IDENTIFY is asked first, and without FEATURES bit 0 nothing is sent. "
         + "STOP is sent once, never repeated, and logged (\"station N RUN -> STOP by operator\"); an IDENTIFY afterwards must get no "
@@ -31,9 +30,17 @@ internal static class StopCommand
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
-            if (!TryTarget(parse, link, out var target, out var error))
+            if (!link.TryBind(parse, cli, out var target, out var station))
             {
-                return cli.Fail(ExitCodes.BadInput, error);
+                return ExitCodes.BadInput;
+            }
+
+            if (station is { AllowStop: false })
+            {
+                return cli.Fail(
+                    ExitCodes.BadInput,
+                    $"the project does not allow STOP for {station.Name} ({station.Address}): set \"allowStop\": true for it in {parse.GetValue(link.Project)}, "
+                    + "generate the PLC code again and download it; nothing sent");
             }
 
             if (!parse.GetValue(yes))
@@ -64,24 +71,5 @@ internal static class StopCommand
             return view.ExitCode;
         });
         return command;
-    }
-
-    /// <summary>The target from the options alone, or from the project's station, refused when the project does not allow STOP for it.</summary>
-    private static bool TryTarget(ParseResult parse, LinkOptionSet link, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error)
-    {
-        if (!link.TryBind(parse, out target, out var station, out error))
-        {
-            return false;
-        }
-
-        if (station is { AllowStop: false })
-        {
-            target = null;
-            error = $"the project does not allow STOP for {station.Name} ({station.Address}): set \"allowStop\": true for it in {parse.GetValue(link.Project)}, "
-                + "generate the PLC code again and download it; nothing sent";
-            return false;
-        }
-
-        return true;
     }
 }

@@ -39,7 +39,7 @@ internal static class WatchCommand
             var load = ProjectFile.Load(path);
             if (!load.Ok)
             {
-                return ProjectProblemsView.Report(cli, path, load.Errors, "nothing watched");
+                return ProjectProblemsView.Report(cli, path, load, "nothing watched");
             }
 
             var limit = parse.GetValue(once) ? 1 : parse.GetValue(cycles);

@@ -35,15 +35,15 @@ internal static class WriteCommand
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
-            if (!link.TryBind(parse, out var target, out var error))
+            if (!link.TryBind(parse, cli, out var target, out _))
             {
-                return cli.Fail(ExitCodes.BadInput, error);
+                return ExitCodes.BadInput;
             }
 
             var items = new List<WriteItem>();
             foreach (var text in parse.GetValue(assignments) ?? [])
             {
-                if (!WriteItem.TryParse(text, target, out var item, out error))
+                if (!WriteItem.TryParse(text, target, out var item, out var error))
                 {
                     return cli.Fail(ExitCodes.BadInput, error + "; nothing written");
                 }

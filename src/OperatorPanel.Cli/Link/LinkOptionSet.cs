@@ -17,7 +17,7 @@ namespace OperatorPanel.Cli.Link;
 internal sealed class LinkOptionSet
 {
     private const string DemoPort = "demo";
-    private readonly SerialOptionSet _serial = new(withRadio: true);
+    private readonly SerialOptionSet _serial = new(panelSide: true);
 
     public Option<string> Station { get; } = new("--station")
     {
@@ -41,7 +41,7 @@ internal sealed class LinkOptionSet
 
     public Option<string?> Project { get; } = new("--project")
     {
-        Description = "The .opproj project: the station's port, line settings and CPU come from it (--station ADDRESS picks the station, "
+        Description = "The .opproj project: the station's port, line settings and CPU come from it (--station ADDRESS or NAME picks the station, "
             + "needed when it has several; --device, --demo or --cpu override)",
     };
 
@@ -63,27 +63,25 @@ internal sealed class LinkOptionSet
         command.Options.Add(Project);
     }
 
-    public bool TryBind(ParseResult parse, [NotNullWhen(true)] out LinkTarget? target, [NotNullWhen(false)] out string? error) =>
-        TryBind(parse, out target, out _, out error);
-
     /// <summary>
     /// The target from the options alone, or with --project from the project's station (<paramref name="fromProject"/>),
-    /// its port, line settings and CPU unless --device, --demo or --cpu say otherwise.
+    /// its port, line settings and CPU unless --device, --demo or --cpu say otherwise. False when the options are wrong,
+    /// reported on <paramref name="cli"/>: a project file's problems one a line, as generate and watch list them.
     /// </summary>
-    public bool TryBind(ParseResult parse, [NotNullWhen(true)] out LinkTarget? target, out ProjectStation? fromProject, [NotNullWhen(false)] out string? error)
+    public bool TryBind(ParseResult parse, CliContext cli, [NotNullWhen(true)] out LinkTarget? target, out ProjectStation? fromProject)
     {
         fromProject = null;
         target = null;
+        string? error;
         if (parse.GetValue(Project) is not { } path)
         {
-            return TryBind(parse, projectStation: null, out target, out error);
+            return TryBind(parse, projectStation: null, out target, out error) || Refuse(cli, error);
         }
 
         var loaded = ProjectFile.Load(path);
         if (!loaded.Ok)
         {
-            var count = loaded.Errors.Length == 1 ? "1 problem" : $"{loaded.Errors.Length} problems";
-            error = $"{path} has {count}; nothing sent:" + string.Concat(loaded.Errors.Select(e => $"{Environment.NewLine}{path}: {e.Location}: {e.Message}"));
+            ProjectProblemsView.Report(cli, path, loaded, "nothing sent");
             return false;
         }
 
@@ -91,11 +89,17 @@ internal sealed class LinkOptionSet
         if (!GenerateSettings.TrySelectStation(loaded.Project, wanted, out var station, out error)
             || !TryBind(parse, station, out target, out error))
         {
-            return false;
+            return Refuse(cli, error);
         }
 
         fromProject = station;
         return true;
+    }
+
+    private static bool Refuse(CliContext cli, string error)
+    {
+        cli.Fail(ExitCodes.BadInput, error);
+        return false;
     }
 
     /// <summary>

@@ -4,15 +4,19 @@ using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Cli.Link;
 
-/// <summary>--device, --baud, --parity, --data-bits (and --radio for the panel side): one serial line's settings.</summary>
+/// <summary>--device, --baud, --parity, --data-bits (and --radio for the panel's side): one serial line's settings.</summary>
 internal sealed class SerialOptionSet
 {
     /// <summary>S7-200 Freeport rates (SMB30 bits 4-2; 57600 and 115200 need a Current CPU; docs/cpu-profiles.md).</summary>
     private static readonly int[] FreeportRates = [1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200];
 
-    private readonly bool _withRadio;
+    private readonly bool _panelSide;
 
-    public SerialOptionSet(bool withRadio) => _withRadio = withRadio;
+    /// <param name="panelSide">
+    /// The panel's end of the line (read, write, identify, stop): --radio is offered, and --demo stands in for --device;
+    /// false for the end simulate serves, which has neither.
+    /// </param>
+    public SerialOptionSet(bool panelSide) => _panelSide = panelSide;
 
     public Option<string?> Device { get; } = new("--device")
     {
@@ -33,7 +37,7 @@ internal sealed class SerialOptionSet
         command.Options.Add(Baud);
         command.Options.Add(Parity);
         command.Options.Add(DataBits);
-        if (_withRadio)
+        if (_panelSide)
         {
             command.Options.Add(Radio);
         }
@@ -47,7 +51,9 @@ internal sealed class SerialOptionSet
         var port = string.IsNullOrWhiteSpace(device) ? fallbackPort : device.Trim();
         if (port is null)
         {
-            error = "give the serial port with --device (e.g. --device COM3 or --device /dev/ttyUSB0), or --demo for the simulated PLC";
+            error = _panelSide
+                ? "give the serial port with --device (e.g. --device COM3 or --device /dev/ttyUSB0), or --demo for the simulated PLC"
+                : "give the serial device to serve on with --device (e.g. --device /dev/pts/N, one end of a socat pair, or --device COM4)";
             return false;
         }
 
@@ -71,7 +77,7 @@ internal sealed class SerialOptionSet
             BaudRate = baud,
             Parity = parse.GetValue(Parity),
             DataBits = dataBits,
-            Kind = _withRadio && parse.GetValue(Radio) ? LinkKind.RadioModule : LinkKind.Cable,
+            Kind = _panelSide && parse.GetValue(Radio) ? LinkKind.RadioModule : LinkKind.Cable,
         };
         error = null;
         return true;

@@ -1,8 +1,8 @@
+using OperatorPanel.Cli.Commands;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.Core.Transport;
 using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.Cli.Watch;
@@ -34,7 +34,7 @@ internal static class SnapshotBuilder
             station.Cpu.DisplayName,
             $"{line.PortOf(station.Address)} {station.Link.LineText}",
             status.State.ToString().ToLowerInvariant(),
-            WithoutKind(status.LastError, status.LastErrorKind),
+            LinkFailure.WithoutKind(status.LastError, status.LastErrorKind),
             status.NextTryAt is { } next ? Math.Max(0, (int)Math.Ceiling((next - now).TotalSeconds)) : null,
             session.HandlerCheckOf(station.Address),
             new LinkView(statistics.Requests, statistics.Replies, statistics.Retries, statistics.Timeouts, statistics.RoundTripAverage?.TotalMilliseconds),
@@ -43,10 +43,6 @@ internal static class SnapshotBuilder
             [.. station.Tags.Select(t => Tag(t, Value(t.Address), line, station.Address))],
             [.. station.Alarms.Where(a => Value(a.Flag)?.AsBit == true).Select(a => new AlarmRow(a.Flag.ToString(), a.Text, a.Class.ToString().ToLowerInvariant()))]);
     }
-
-    /// <summary>"PortUnavailable: serial port COM3: ..." is shown without the kind's name: the words say it.</summary>
-    private static string? WithoutKind(string? error, PlcErrorKind? kind) =>
-        error is not null && kind is { } k && error.StartsWith($"{k}: ", StringComparison.Ordinal) ? error[($"{k}: ".Length)..] : error;
 
     private static List<LampByte> Lamps(IEnumerable<IoSymbol> symbols, Func<PlcAddress, PolledValue?> value) =>
         [.. symbols

@@ -14,6 +14,9 @@ internal static partial class QuotedText
 {
     public const int MaxWordChars = 40;
 
+    /// <summary>A quote and a colon or comma end a quoted word; a longer run of them is text like any other.</summary>
+    private const int MaxClosingChars = 2;
+
     public static string Readable(string message)
     {
         if (message.Any(IsHidden))
@@ -34,7 +37,22 @@ internal static partial class QuotedText
             message = shown.ToString();
         }
 
-        return LongWord().Replace(message, m => m.Value[..MaxWordChars] + "...");
+        return LongWord().Replace(message, m => Cut(m.Value));
+    }
+
+    /// <summary>
+    /// The word's first <see cref="MaxWordChars"/> characters and "...", then the quote and colon that close it: the word
+    /// runs on into them ("'VB999...9':"), and without them the message no longer reads as quote, then reason.
+    /// </summary>
+    private static string Cut(string word)
+    {
+        var end = word.Length;
+        while (end > MaxWordChars && word.Length - end < MaxClosingChars && word[end - 1] is '\'' or '"' or ':' or ',' or ';' or ')')
+        {
+            end--;
+        }
+
+        return end <= MaxWordChars ? word : word[..MaxWordChars] + "..." + word[end..];
     }
 
     /// <summary>Tab and line feed lay a message out; every other control character is data the reader cannot see.</summary>

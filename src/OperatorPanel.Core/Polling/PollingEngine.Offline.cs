@@ -46,11 +46,7 @@ public sealed partial class PollingEngine
         var silent = _silentWhileOthersAnswer.Except(answering);
         foreach (var station in tried.Where(s => !answering.Contains(s)))
         {
-            if (!answering.Any(other => other != station))
-            {
-                silent = silent.Remove(station);
-            }
-            else if (!silent.Contains(station))
+            if (!silent.Contains(station))
             {
                 silent = silent.Add(station);
                 _logger.Information(

@@ -6,6 +6,9 @@ namespace OperatorPanel.Core.Projects;
 /// <summary>What loading a project file gave: the project, or every problem found (never both).</summary>
 public sealed record ProjectLoadResult
 {
+    /// <summary>At most this many problems are listed; a file with more gets one last entry saying so.</summary>
+    public const int ProblemLimit = 100;
+
     private ProjectLoadResult(PanelProject? project, ImmutableArray<ProjectFileError> errors)
     {
         Project = project;
@@ -15,6 +18,9 @@ public sealed record ProjectLoadResult
     public PanelProject? Project { get; }
 
     public ImmutableArray<ProjectFileError> Errors { get; }
+
+    /// <summary>The loader stopped at <see cref="ProblemLimit"/>: the file has more problems than <see cref="Errors"/> lists.</summary>
+    public bool ProblemsCut => Errors.Length > ProblemLimit;
 
     [MemberNotNullWhen(true, nameof(Project))]
     public bool Ok => Project is not null;

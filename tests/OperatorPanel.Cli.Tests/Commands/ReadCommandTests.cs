@@ -102,6 +102,17 @@ public sealed class ReadCommandTests
     }
 
     [Fact]
+    public void Read_WideFormattedValue_KeepsTheHexColumnOfEveryLineUnderOneAnother()
+    {
+        var run = CliRunner.Run("read", "VD120:binary", "VB0", "--demo");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            "VD120    2#0100_0011_1111_1010_0000_0000_0000_0000 16#43FA0000  good",
+            "VB0      0                                         16#00        good");
+    }
+
+    [Fact]
     public void Read_AddressWithFormat_ShowsTheValueSoInTextAndJson()
     {
         var text = CliRunner.Run("read", "SMB6:binary", "VD120:real", "--demo");

@@ -124,6 +124,16 @@ public sealed class SimulateCommandTests
             + Environment.NewLine);
     }
 
+    [Fact]
+    public void Simulate_NoDevice_AsksForTheDeviceToServeOnWithoutOfferingDemo()
+    {
+        var run = CliRunner.Run("simulate", "--cpu", "224", "--station", "2");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be("opanel: give the serial device to serve on with --device (e.g. --device /dev/pts/N, one end of a socat pair, or --device COM4)"
+            + Environment.NewLine);
+    }
+
     /// <summary>Filler: CPU 224 station 2 with STOP; Capper: CPU 226 station 3; both on <paramref name="port"/>.</summary>
     private static string TwoCpuProject(string port)
     {

@@ -140,7 +140,7 @@ public sealed class PlcAddressTests
         PlcAddress.TryParse("VB" + new string('9', 10_000), out _, out var error).Should().BeFalse();
 
         error!.Kind.Should().Be(AddressErrorKind.ByteNumberTooLarge);
-        error.Message.Should().Be($"'VB{new string('9', 37)}... byte number {new string('9', 40)}... is larger than 65535");
+        error.Message.Should().Be($"'VB{new string('9', 37)}...': byte number {new string('9', 40)}... is larger than 65535");
     }
 
     [Fact]

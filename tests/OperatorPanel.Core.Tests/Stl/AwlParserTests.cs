@@ -74,7 +74,7 @@ public sealed class AwlParserTests
 
         var diagnostic = result.Diagnostics.Should().ContainSingle().Subject;
         diagnostic.Line.Should().Be(1);
-        diagnostic.Message.Should().Be("'" + new string('9', 39) + "... is outside any block; expected ORGANIZATION_BLOCK, SUBROUTINE_BLOCK or INTERRUPT_BLOCK");
+        diagnostic.Message.Should().Be("'" + new string('9', 39) + "...' is outside any block; expected ORGANIZATION_BLOCK, SUBROUTINE_BLOCK or INTERRUPT_BLOCK");
     }
 
     [Fact]
