@@ -82,15 +82,21 @@ public sealed class PlcLinkReplyFuzzTests
     }
 
     /// <summary>
-    /// Runs the exchange, moving the manual clock while it waits on it (the link's reopen interval after a vanished
-    /// port); the wall-clock limit only catches a hang.
+    /// Runs the exchange, moving the manual clock only while the link waits on a timer (its reopen interval after a
+    /// vanished port): the transport moves the clock itself for a read that gets nothing, and a clock moved while the
+    /// link was between its write and its read could time out a reply that is waiting. The wall-clock limit only
+    /// catches a hang.
     /// </summary>
     private static async Task<PlcResponse> RunAsync(Task<PlcResponse> exchange, ManualTimeProvider clock)
     {
         var wallClock = Stopwatch.StartNew();
         while (!exchange.IsCompleted && wallClock.Elapsed < TimeSpan.FromSeconds(10))
         {
-            clock.Advance(TimeSpan.FromMilliseconds(50));
+            if (clock.ActiveTimers > 0)
+            {
+                clock.Advance(TimeSpan.FromMilliseconds(50));
+            }
+
             await Task.Yield();
         }
 
