@@ -73,11 +73,27 @@ public sealed partial class ArchitectureTests
     [Theory]
     [InlineData("OperatorPanel.StlGen")]
     [InlineData("OperatorPanel.Simulator")]
-    public void StlGenAndSimulator_DependOnCoreOnly(string assembly)
+    public void StlGenAndSimulator_DependOnCoreAndStlOnly(string assembly)
     {
         var projects = ReferencedNames(Assembly.Load(assembly)).Where(r => r.StartsWith("OperatorPanel.", StringComparison.Ordinal));
 
-        projects.Should().BeSubsetOf(["OperatorPanel.Core"]);
+        projects.Should().BeSubsetOf(["OperatorPanel.Core", "OperatorPanel.Stl"]);
+    }
+
+    [Fact]
+    public void Stl_DependsOnCoreOnly()
+    {
+        var projects = ReferencedNames(Assembly.Load("OperatorPanel.Stl")).Where(r => r.StartsWith("OperatorPanel.", StringComparison.Ordinal));
+
+        projects.Should().Equal("OperatorPanel.Core");
+    }
+
+    [Fact]
+    public void Core_HasNoStlFolder()
+    {
+        // The STL language (reader, parser, instruction table, checks) is its own project, used by StlGen and the
+        // Simulator only; the panel's Core never reads .awl text.
+        Directory.Exists(Path.Combine(RepositoryRoot(), "src", "OperatorPanel.Core", "Stl")).Should().BeFalse();
     }
 
     [Fact]

@@ -10,7 +10,7 @@ namespace OperatorPanel.Core.Messages;
 /// and a run of more than <see cref="MaxWordChars"/> characters without a space keeps its first
 /// <see cref="MaxWordChars"/> and "..." (a pasted megabyte would otherwise become a megabyte of message).
 /// </summary>
-internal static partial class QuotedText
+public static partial class QuotedText
 {
     public const int MaxWordChars = 40;
 

@@ -1,6 +1,6 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Stl;
+using OperatorPanel.Stl;
 
 namespace OperatorPanel.Simulator.Stl;
 

@@ -1,5 +1,5 @@
 using System.Collections.Frozen;
-using OperatorPanel.Core.Stl.Instructions;
+using OperatorPanel.Stl.Instructions;
 
 namespace OperatorPanel.Simulator.Stl;
 

@@ -1,6 +1,6 @@
 using System.Collections.Immutable;
 using System.Diagnostics.CodeAnalysis;
-using OperatorPanel.Core.Stl;
+using OperatorPanel.Stl;
 
 namespace OperatorPanel.Simulator.Stl;
 

@@ -1,4 +1,4 @@
-using OperatorPanel.Core.Stl;
+using OperatorPanel.Stl;
 
 namespace OperatorPanel.Simulator.Stl;
 

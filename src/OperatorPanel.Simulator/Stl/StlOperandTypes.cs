@@ -1,4 +1,4 @@
-using OperatorPanel.Core.Stl.Instructions;
+using OperatorPanel.Stl.Instructions;
 
 namespace OperatorPanel.Simulator.Stl;
 

@@ -1,6 +1,6 @@
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Stl;
-using OperatorPanel.Core.Stl.Checks;
+using OperatorPanel.Stl;
+using OperatorPanel.Stl.Checks;
 
 namespace OperatorPanel.Simulator.Stl;
 

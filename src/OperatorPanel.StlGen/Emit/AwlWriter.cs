@@ -1,5 +1,5 @@
 using System.Globalization;
-using OperatorPanel.Core.Stl.Instructions;
+using OperatorPanel.Stl.Instructions;
 using OperatorPanel.StlGen.Model;
 
 namespace OperatorPanel.StlGen.Emit;

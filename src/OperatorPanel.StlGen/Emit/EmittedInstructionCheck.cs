@@ -1,5 +1,5 @@
-using OperatorPanel.Core.Stl;
-using OperatorPanel.Core.Stl.Instructions;
+using OperatorPanel.Stl;
+using OperatorPanel.Stl.Instructions;
 using OperatorPanel.StlGen.Model;
 
 namespace OperatorPanel.StlGen.Emit;

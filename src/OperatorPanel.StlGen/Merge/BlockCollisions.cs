@@ -1,4 +1,4 @@
-using OperatorPanel.Core.Stl;
+using OperatorPanel.Stl;
 using OperatorPanel.StlGen.Diagnostics;
 
 namespace OperatorPanel.StlGen.Merge;

@@ -1,6 +1,6 @@
 using System.Collections.Immutable;
-using OperatorPanel.Core.Stl;
-using OperatorPanel.Core.Stl.Checks;
+using OperatorPanel.Stl;
+using OperatorPanel.Stl.Checks;
 using OperatorPanel.StlGen.Diagnostics;
 using OperatorPanel.StlGen.Options;
 

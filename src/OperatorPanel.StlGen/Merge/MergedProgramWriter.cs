@@ -1,4 +1,4 @@
-using OperatorPanel.Core.Stl;
+using OperatorPanel.Stl;
 using OperatorPanel.StlGen.Emit;
 
 namespace OperatorPanel.StlGen.Merge;

@@ -1,5 +1,5 @@
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Stl;
+using OperatorPanel.Stl;
 
 namespace OperatorPanel.StlGen.Merge;
 

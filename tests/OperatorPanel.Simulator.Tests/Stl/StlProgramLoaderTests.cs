@@ -41,7 +41,7 @@ public sealed class StlProgramLoaderTests
         var result = Load("LD     SM0.0\n" + instruction, model: CpuModel.Cpu221);
 
         result.Succeeded.Should().BeFalse();
-        result.Diagnostics.Should().ContainSingle().Which.Should().Match<Core.Stl.AwlDiagnostic>(d => d.Line == 5 && d.Message.Contains(reason));
+        result.Diagnostics.Should().ContainSingle().Which.Should().Match<OperatorPanel.Stl.AwlDiagnostic>(d => d.Line == 5 && d.Message.Contains(reason));
     }
 
     [Fact]

@@ -1,5 +1,5 @@
 using OperatorPanel.Core.Protocol;
-using OperatorPanel.Core.Stl;
+using OperatorPanel.Stl;
 using OperatorPanel.StlGen.Merge;
 
 namespace OperatorPanel.StlGen.Tests.Differential;

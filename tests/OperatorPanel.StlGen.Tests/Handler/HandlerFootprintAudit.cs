@@ -1,7 +1,7 @@
 using System.Globalization;
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Stl;
-using OperatorPanel.Core.Stl.Checks;
+using OperatorPanel.Stl;
+using OperatorPanel.Stl.Checks;
 using OperatorPanel.StlGen.Handler;
 using OperatorPanel.StlGen.Merge;
 using OperatorPanel.StlGen.Options;

@@ -1,5 +1,5 @@
-using OperatorPanel.Core.Stl;
 using OperatorPanel.Simulator.Stl;
+using OperatorPanel.Stl;
 using OperatorPanel.StlGen.Diagnostics;
 using OperatorPanel.StlGen.Merge;
 using OperatorPanel.StlGen.Tests.Golden;

@@ -2,7 +2,7 @@ using System.Diagnostics.CodeAnalysis;
 using System.Globalization;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Stl;
+using OperatorPanel.Stl;
 
 namespace OperatorPanel.Simulator.Stl.Run;
 

@@ -1,7 +1,7 @@
 using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Stl;
+using OperatorPanel.Stl;
 
 namespace OperatorPanel.Simulator.Stl.Run;
 

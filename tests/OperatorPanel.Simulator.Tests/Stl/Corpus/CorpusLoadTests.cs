@@ -1,5 +1,5 @@
-using OperatorPanel.Core.Stl;
 using OperatorPanel.Simulator.Stl;
+using OperatorPanel.Stl;
 
 namespace OperatorPanel.Simulator.Tests.Stl.Corpus;
 
