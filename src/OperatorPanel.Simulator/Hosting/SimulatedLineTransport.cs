@@ -11,7 +11,7 @@ namespace OperatorPanel.Simulator.Hosting;
 public sealed class SimulatedLineTransport : ITransport
 {
     private readonly ISimulatedLine _line;
-    private readonly Queue<byte> _received = new();
+    private readonly Queue<(byte Value, TimeSpan ReadyAt)> _received = new();
 
     public SimulatedLineTransport(ISimulatedLine line, TimeSpan? step = null)
     {
@@ -34,6 +34,19 @@ public sealed class SimulatedLineTransport : ITransport
     /// <summary>When the last character the PC received ended on the line (exact on an <see cref="StlLine"/>, else to a step).</summary>
     public TimeSpan LastReceivedAt { get; private set; }
 
+    /// <summary>How long after its stop bit a character reaches the reader (a UART's FIFO time-out, a USB adapter's latency timer).</summary>
+    public TimeSpan ReceiveLatency { get; init; }
+
+    /// <summary>How long a write takes to reach the line (a USB adapter's next USB frame).</summary>
+    public TimeSpan WriteLatency { get; init; }
+
+    /// <summary>Idle time the line must have had since the last character received before a write starts (PROFIBUS's 33-bit SYN pause).</summary>
+    public TimeSpan IdleBeforeWrite { get; init; }
+
+    public long BytesWritten { get; private set; }
+
+    public long BytesReceived { get; private set; }
+
     public Task OpenAsync(CancellationToken cancellationToken)
     {
         IsOpen = true;
@@ -42,30 +55,40 @@ public sealed class SimulatedLineTransport : ITransport
 
     public Task WriteAsync(ReadOnlyMemory<byte> data, CancellationToken cancellationToken)
     {
+        var at = Later(_line.Now + WriteLatency, LastReceivedAt + IdleBeforeWrite);
+        if (at > _line.Now)
+        {
+            _line.RunUntil(at);
+        }
+
         _line.Deliver(data.Span);
+        BytesWritten += data.Length;
         return Task.CompletedTask;
     }
 
     public Task<int> ReadAsync(Memory<byte> buffer, TimeSpan timeout, CancellationToken cancellationToken)
     {
         var until = _line.Now + timeout;
-        while (_received.Count == 0)
+        while (true)
         {
             Collect();
-            if (_received.Count > 0 || _line.Now >= until)
+            if ((_received.Count > 0 && _received.Peek().ReadyAt <= _line.Now) || _line.Now >= until)
             {
                 break;
             }
 
-            _line.RunUntil(_line.Now + Step < until ? _line.Now + Step : until);
+            // A character already arrived waits only for its latency; otherwise look again one step on.
+            var next = _received.Count > 0 ? _received.Peek().ReadyAt : _line.Now + Step;
+            _line.RunUntil(next < until ? next : until);
         }
 
         var count = 0;
-        while (count < buffer.Length && _received.TryDequeue(out var b))
+        while (count < buffer.Length && _received.Count > 0 && _received.Peek().ReadyAt <= _line.Now)
         {
-            buffer.Span[count++] = b;
+            buffer.Span[count++] = _received.Dequeue().Value;
         }
 
+        BytesReceived += count;
         return Task.FromResult(count);
     }
 
@@ -87,7 +110,7 @@ public sealed class SimulatedLineTransport : ITransport
         {
             foreach (var character in stl.TakeCharacters())
             {
-                _received.Enqueue(character.Value);
+                _received.Enqueue((character.Value, character.At + ReceiveLatency));
                 LastReceivedAt = character.At;
             }
 
@@ -96,10 +119,12 @@ public sealed class SimulatedLineTransport : ITransport
 
         foreach (var b in _line.TakeTransmitted())
         {
-            _received.Enqueue(b);
+            _received.Enqueue((b, _line.Now + ReceiveLatency));
             LastReceivedAt = _line.Now;
         }
     }
+
+    private static TimeSpan Later(TimeSpan a, TimeSpan b) => a > b ? a : b;
 
     private sealed class LineClock(ISimulatedLine line) : TimeProvider
     {

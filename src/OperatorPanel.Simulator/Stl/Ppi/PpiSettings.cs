@@ -10,6 +10,8 @@ namespace OperatorPanel.Simulator.Stl.Ppi;
 /// </summary>
 public sealed record PpiSettings
 {
+    private readonly TimeSpan? _stationDelay;
+
     /// <summary>The PPI baud rates of the S7-200 CPUs (seed 002, Tables: "PPI/MPI baud rates 9.6, 19.2, and 187.5 kbaud").</summary>
     public static readonly IReadOnlyList<int> BaudRates = [9600, 19200, 187500];
 
@@ -34,10 +36,15 @@ public sealed record PpiSettings
     public LineSettings Line => new(Baud, Parity.Even, 8);
 
     /// <summary>
-    /// Time from the end of a master's frame to the start of the CPU's answer: 11 bit times, PROFIBUS's usual minimum
-    /// station delay. No S7-200 figure is published (unconfirmed).
+    /// Time from the end of a master's frame to the start of the CPU's answer: by default 11 bit times, PROFIBUS's
+    /// default minimum station delay (min TSDR, felser.ch "Telegram sequences and time ratios"). No S7-200 figure is
+    /// published (unconfirmed); the bench raises it to the PC/PPI cable's turnaround.
     /// </summary>
-    public TimeSpan StationDelay => Line.Bits(11);
+    public TimeSpan StationDelay
+    {
+        get => _stationDelay ?? Line.Bits(11);
+        init => _stationDelay = value;
+    }
 
     /// <summary>The PDU size the CPU agrees to and takes (unconfirmed for the S7-200: 240, PpiLimits.DefaultPduSize).</summary>
     public int PduSize { get; init; } = PpiLimits.DefaultPduSize;
