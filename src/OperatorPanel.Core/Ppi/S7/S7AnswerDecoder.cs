@@ -39,13 +39,7 @@ public static class S7AnswerDecoder
             }
 
             var size = (S7DataSize)data[at + 1];
-            var length = BinaryPrimitives.ReadUInt16BigEndian(data[(at + 2)..]);
-            var bytes = size switch
-            {
-                S7DataSize.Bits => (length + 7) / 8,
-                S7DataSize.Bit or S7DataSize.OctetString => length,
-                _ => -1,
-            };
+            var bytes = S7DataSizes.ByteCount(size, BinaryPrimitives.ReadUInt16BigEndian(data[(at + 2)..]));
             if (bytes != items[i].DataLength || at + 4 + bytes > data.Length)
             {
                 return S7PduError.BadItem;

@@ -57,16 +57,15 @@ public static class S7JobDecoder
             }
 
             var size = (S7DataSize)data[at + 1];
-            var length = BinaryPrimitives.ReadUInt16BigEndian(data[(at + 2)..]);
-            var bytes = size is S7DataSize.Bits ? (length + 7) / 8 : length;
-            if (at + 4 + bytes > data.Length)
+            var bytes = S7DataSizes.ByteCount(size, BinaryPrimitives.ReadUInt16BigEndian(data[(at + 2)..]));
+            if (bytes < 0 || at + 4 + bytes > data.Length)
             {
                 error = S7PduError.BadItem;
                 break;
             }
 
             var value = data.Slice(at + 4, bytes);
-            var fits = bytes == items[i].DataLength && size is S7DataSize.Bit or S7DataSize.Bits or S7DataSize.OctetString;
+            var fits = bytes == items[i].DataLength;
             writes.Add(new S7WriteItem(items[i], fits ? [.. value] : [.. new byte[items[i].DataLength]]));
             problems.Add(fits ? S7ReturnCode.Success : S7ReturnCode.DataTypeInconsistent);
             at += 4 + bytes + (bytes % 2 == 1 && i < items.Length - 1 ? 1 : 0);
