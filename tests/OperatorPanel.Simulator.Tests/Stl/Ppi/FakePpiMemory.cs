@@ -8,7 +8,10 @@ internal sealed class FakePpiMemory : IPpiMemory
 {
     public Dictionary<S7Area, byte[]> Areas { get; } = new()
     {
-        [S7Area.I] = new byte[16], [S7Area.Q] = new byte[16], [S7Area.M] = new byte[32], [S7Area.V] = new byte[8192],
+        [S7Area.I] = new byte[16],
+        [S7Area.Q] = new byte[16],
+        [S7Area.M] = new byte[32],
+        [S7Area.V] = new byte[8192],
     };
 
     public List<S7Function> Controls { get; } = [];
