@@ -1,3 +1,5 @@
+using OperatorPanel.Core.Ppi;
+
 namespace OperatorPanel.TestKit;
 
 /// <summary>
@@ -90,4 +92,17 @@ public static class PpiCaptures
 
     /// <summary>HslCommunication SiemensPPI.Start and iot-tree: RUN ("P_PROGRAM" with 16#28).</summary>
     public const string RunRequest = "68 21 21 68 02 00 6C 32 01 00 00 00 00 00 14 00 00 28 00 00 00 00 00 00 FD 00 00 09 50 5F 50 52 4F 47 52 41 4D AA 16";
+
+    /// <summary>A telegram given as hex, read by Core's reader; throws when it is not one whole sound telegram.</summary>
+    public static PpiFrame Frame(string telegram)
+    {
+        var reader = new PpiFrameReader();
+        reader.Append(Hex.Parse(telegram));
+        return reader.TryTake(out var result) && result.Frame is { } frame && !reader.TryTake(out _)
+            ? frame
+            : throw new FormatException($"not one sound PPI telegram: {telegram}");
+    }
+
+    /// <summary>The S7 PDU inside an SD2 telegram given as hex.</summary>
+    public static byte[] Pdu(string telegram) => [.. Frame(telegram).Data];
 }

@@ -42,7 +42,7 @@ public sealed class PpiFuzzTests
         var random = new Random(21);
         foreach (var capture in Captures)
         {
-            var pdu = Pdu(capture);
+            var pdu = PpiCaptures.Pdu(capture);
             for (var round = 0; round < 400; round++)
             {
                 var mutated = (byte[])pdu.Clone();
@@ -55,13 +55,5 @@ public sealed class PpiFuzzTests
                 S7AnswerDecoder.TrySetupCommunication(cut, 0, out _, out _);
             }
         }
-    }
-
-    private static byte[] Pdu(string telegram)
-    {
-        var reader = new PpiFrameReader();
-        reader.Append(Hex.Parse(telegram));
-        reader.TryTake(out var result).Should().BeTrue();
-        return [.. result.Frame!.Data];
     }
 }

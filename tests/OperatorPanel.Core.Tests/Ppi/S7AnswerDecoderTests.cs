@@ -10,7 +10,7 @@ public sealed class S7AnswerDecoderTests
     [Fact]
     public void TryRead_CapturedTwelveBytes_GivesTheBytes()
     {
-        var error = S7AnswerDecoder.TryRead(Pdu(PpiCaptures.ReadVb300Answer), 0x2658, [S7Item.Bytes(S7Area.V, 300, 12)], out _, out var results);
+        var error = S7AnswerDecoder.TryRead(PpiCaptures.Pdu(PpiCaptures.ReadVb300Answer), 0x2658, [S7Item.Bytes(S7Area.V, 300, 12)], out _, out var results);
 
         error.Should().Be(S7PduError.None);
         Hex.Format(results[0].Data.AsSpan()).Should().Be("43 6C 99 B2 43 15 80 0B 43 33 66 76");
@@ -25,7 +25,7 @@ public sealed class S7AnswerDecoderTests
             S7Item.Bytes(S7Area.V, 100, 1), S7Item.Bytes(S7Area.V, 110, 1), S7Item.Bytes(S7Area.V, 200, 4),
         ];
 
-        var error = S7AnswerDecoder.TryRead(Pdu(PpiCaptures.ReadSevenItemsAnswer), 0x2659, items, out _, out var results);
+        var error = S7AnswerDecoder.TryRead(PpiCaptures.Pdu(PpiCaptures.ReadSevenItemsAnswer), 0x2659, items, out _, out var results);
 
         error.Should().Be(S7PduError.None);
         results.Select(r => Hex.Format(r.Data.AsSpan())).Should().Equal("00 00", "09", "00", "00", "00", "00", "00 47 00 6E");
@@ -34,7 +34,7 @@ public sealed class S7AnswerDecoderTests
     [Fact]
     public void TryRead_CapturedBitAnswer_GivesOneByte()
     {
-        var error = S7AnswerDecoder.TryRead(Pdu(PpiCaptures.ReadQ01Answer), 0, [S7Item.Bit(S7Area.Q, 0, 1)], out _, out var results);
+        var error = S7AnswerDecoder.TryRead(PpiCaptures.Pdu(PpiCaptures.ReadQ01Answer), 0, [S7Item.Bit(S7Area.Q, 0, 1)], out _, out var results);
 
         error.Should().Be(S7PduError.None);
         results[0].Should().Match<S7ItemResult>(r => r.DataSize == S7DataSize.Bit && r.Data.Length == 1 && r.Data[0] == 1);
@@ -43,7 +43,7 @@ public sealed class S7AnswerDecoderTests
     [Fact]
     public void TryRead_CapturedTimers_GivesFiveBytesPerTimer()
     {
-        var error = S7AnswerDecoder.TryRead(Pdu(PpiCaptures.ReadTimersAnswer), 0, [S7Item.Timers(32, 3)], out _, out var results);
+        var error = S7AnswerDecoder.TryRead(PpiCaptures.Pdu(PpiCaptures.ReadTimersAnswer), 0, [S7Item.Timers(32, 3)], out _, out var results);
 
         error.Should().Be(S7PduError.None);
         Hex.Format(results[0].Data.AsSpan(0, 5)).Should().Be("02 00 00 7F FF");
@@ -53,7 +53,7 @@ public sealed class S7AnswerDecoderTests
     [Fact]
     public void TryWrite_CapturedAnswer_GivesSuccess()
     {
-        var error = S7AnswerDecoder.TryWrite(Pdu(PpiCaptures.WriteVd300Answer), 0x2734, 1, out _, out var codes);
+        var error = S7AnswerDecoder.TryWrite(PpiCaptures.Pdu(PpiCaptures.WriteVd300Answer), 0x2734, 1, out _, out var codes);
 
         error.Should().Be(S7PduError.None);
         codes.Should().Equal(S7ReturnCode.Success);
@@ -62,20 +62,20 @@ public sealed class S7AnswerDecoderTests
     [Fact]
     public void TryControl_CapturedStopAnswer_IsAccepted()
     {
-        S7AnswerDecoder.TryControl(Pdu(PpiCaptures.StopAnswer), 0, S7Function.PlcStop, out _).Should().Be(S7PduError.None);
+        S7AnswerDecoder.TryControl(PpiCaptures.Pdu(PpiCaptures.StopAnswer), 0, S7Function.PlcStop, out _).Should().Be(S7PduError.None);
     }
 
     [Fact]
     public void TryRead_AnswerToAnOlderJob_IsAReferenceMismatch()
     {
-        S7AnswerDecoder.TryRead(Pdu(PpiCaptures.ReadVb300Answer), 0x2659, [S7Item.Bytes(S7Area.V, 300, 12)], out _, out _)
+        S7AnswerDecoder.TryRead(PpiCaptures.Pdu(PpiCaptures.ReadVb300Answer), 0x2659, [S7Item.Bytes(S7Area.V, 300, 12)], out _, out _)
             .Should().Be(S7PduError.ReferenceMismatch);
     }
 
     [Fact]
     public void TryRead_ItemOfAnotherLength_IsABadItem()
     {
-        S7AnswerDecoder.TryRead(Pdu(PpiCaptures.ReadVb300Answer), 0x2658, [S7Item.Bytes(S7Area.V, 300, 10)], out _, out _)
+        S7AnswerDecoder.TryRead(PpiCaptures.Pdu(PpiCaptures.ReadVb300Answer), 0x2658, [S7Item.Bytes(S7Area.V, 300, 10)], out _, out _)
             .Should().Be(S7PduError.BadItem);
     }
 
@@ -104,19 +104,9 @@ public sealed class S7AnswerDecoderTests
     [Fact]
     public void TryRead_TruncatedPdu_IsTooShort()
     {
-        var pdu = Pdu(PpiCaptures.ReadVb300Answer);
+        var pdu = PpiCaptures.Pdu(PpiCaptures.ReadVb300Answer);
 
         S7AnswerDecoder.TryRead(pdu.AsSpan(0, pdu.Length - 3), 0x2658, [S7Item.Bytes(S7Area.V, 300, 12)], out _, out _)
             .Should().Be(S7PduError.TooShort);
-    }
-
-    /// <summary>The PDU inside a captured SD2 telegram.</summary>
-    private static byte[] Pdu(string telegram)
-    {
-        var reader = new PpiFrameReader();
-        reader.Append(Hex.Parse(telegram));
-        reader.TryTake(out var result).Should().BeTrue();
-        result.Error.Should().Be(PpiFrameError.None);
-        return [.. result.Frame!.Data];
     }
 }

@@ -10,7 +10,7 @@ public sealed class S7JobDecoderTests
     [Fact]
     public void TryDecode_CapturedSevenItemRead_GivesTheItems()
     {
-        S7JobDecoder.TryDecode(Pdu(PpiCaptures.ReadSevenItemsRequest), out var job, out var error).Should().BeTrue();
+        S7JobDecoder.TryDecode(PpiCaptures.Pdu(PpiCaptures.ReadSevenItemsRequest), out var job, out var error).Should().BeTrue();
 
         error.Should().Be(S7PduError.None);
         var read = job.Should().BeOfType<S7Job.Read>().Subject;
@@ -22,7 +22,7 @@ public sealed class S7JobDecoderTests
     [Fact]
     public void TryDecode_CapturedWrite_GivesItemAndValue()
     {
-        S7JobDecoder.TryDecode(Pdu(PpiCaptures.WriteVd300Request), out var job, out _).Should().BeTrue();
+        S7JobDecoder.TryDecode(PpiCaptures.Pdu(PpiCaptures.WriteVd300Request), out var job, out _).Should().BeTrue();
 
         var write = job.Should().BeOfType<S7Job.Write>().Subject;
         write.Items.Should().ContainSingle();
@@ -63,7 +63,7 @@ public sealed class S7JobDecoderTests
     [InlineData(PpiCaptures.RunRequest, S7Function.PlcControl)]
     public void TryDecode_CapturedStopAndRun_AreControlJobs(string telegram, S7Function function)
     {
-        S7JobDecoder.TryDecode(Pdu(telegram), out var job, out _).Should().BeTrue();
+        S7JobDecoder.TryDecode(PpiCaptures.Pdu(telegram), out var job, out _).Should().BeTrue();
 
         job.Should().Be(new S7Job.Control(0, function));
     }
@@ -91,13 +91,5 @@ public sealed class S7JobDecoderTests
     {
         S7JobDecoder.TryDecode(S7AnswerCodec.Write(1, [S7ReturnCode.Success]), out _, out var error).Should().BeFalse();
         error.Should().Be(S7PduError.WrongMessageType);
-    }
-
-    private static byte[] Pdu(string telegram)
-    {
-        var reader = new PpiFrameReader();
-        reader.Append(Hex.Parse(telegram));
-        reader.TryTake(out var result).Should().BeTrue();
-        return [.. result.Frame!.Data];
     }
 }

@@ -19,10 +19,7 @@ public sealed class PpiSlaveFuzzTests
         string[] jobs = [PpiCaptures.ReadSevenItemsRequest, PpiCaptures.WriteVd300Request, PpiCaptures.ReadTimersRequest, PpiCaptures.ReadVb300Request];
         foreach (var job in jobs)
         {
-            var reader = new PpiFrameReader();
-            reader.Append(Hex.Parse(job));
-            reader.TryTake(out var result).Should().BeTrue();
-            var pdu = result.Frame!.Data.ToArray();
+            var pdu = PpiCaptures.Pdu(job);
             for (var round = 0; round < 500; round++)
             {
                 var mutated = (byte[])pdu.Clone();

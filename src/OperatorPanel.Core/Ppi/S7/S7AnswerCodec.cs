@@ -70,12 +70,5 @@ public static class S7AnswerCodec
         return length;
     }
 
-    private static byte[] Answer(ushort reference, byte[] parameters, byte[] data)
-    {
-        var pdu = new byte[S7Header.AnswerLength + parameters.Length + data.Length];
-        new S7Header(S7MessageType.AckData, reference, parameters.Length, data.Length).WriteTo(pdu);
-        parameters.CopyTo(pdu, S7Header.AnswerLength);
-        data.CopyTo(pdu, S7Header.AnswerLength + parameters.Length);
-        return pdu;
-    }
+    private static byte[] Answer(ushort reference, byte[] parameters, byte[] data) => S7Header.Pdu(S7MessageType.AckData, reference, parameters, data);
 }

@@ -36,6 +36,19 @@ public readonly record struct S7Header(S7MessageType Type, ushort Reference, int
         }
     }
 
+    /// <summary>A whole PDU: this header (its lengths are those of <paramref name="parameters"/> and <paramref name="data"/>), then both.</summary>
+    public static byte[] Pdu(S7MessageType type, ushort reference, byte[] parameters, byte[] data)
+    {
+        ArgumentNullException.ThrowIfNull(parameters);
+        ArgumentNullException.ThrowIfNull(data);
+        var header = new S7Header(type, reference, parameters.Length, data.Length);
+        var pdu = new byte[header.PduLength];
+        header.WriteTo(pdu);
+        parameters.CopyTo(pdu, header.Length);
+        data.CopyTo(pdu, header.Length + parameters.Length);
+        return pdu;
+    }
+
     /// <summary>Reads a header and checks that its lengths cover exactly <paramref name="pdu"/>.</summary>
     public static bool TryRead(ReadOnlySpan<byte> pdu, out S7Header header, out S7PduError error)
     {

@@ -74,12 +74,5 @@ public static class S7JobCodec
         return parameters;
     }
 
-    private static byte[] Pdu(ushort reference, byte[] parameters, byte[] data)
-    {
-        var pdu = new byte[S7Header.JobLength + parameters.Length + data.Length];
-        new S7Header(S7MessageType.Job, reference, parameters.Length, data.Length).WriteTo(pdu);
-        parameters.CopyTo(pdu, S7Header.JobLength);
-        data.CopyTo(pdu, S7Header.JobLength + parameters.Length);
-        return pdu;
-    }
+    private static byte[] Pdu(ushort reference, byte[] parameters, byte[] data) => S7Header.Pdu(S7MessageType.Job, reference, parameters, data);
 }

@@ -119,11 +119,6 @@ public sealed class PpiSlaveTests
     private static PpiFrame Request(byte master, byte[] job) => PpiFrame.Variable(2, master, PpiFunctionCode.FirstRequest, job);
 
     /// <summary>The slave's reaction to a telegram given as hex, as hex ("" for none).</summary>
-    private string Reply(string telegram)
-    {
-        var reader = new PpiFrameReader();
-        reader.Append(Hex.Parse(telegram));
-        reader.TryTake(out var result).Should().BeTrue();
-        return _slave.Receive(result.Frame!) is { } reply ? Hex.Format(PpiFrameCodec.Encode(reply)) : "";
-    }
+    private string Reply(string telegram) =>
+        _slave.Receive(PpiCaptures.Frame(telegram)) is { } reply ? Hex.Format(PpiFrameCodec.Encode(reply)) : "";
 }
