@@ -114,7 +114,7 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
             {
                 PlcErrorKind.NoAnswer or PlcErrorKind.Timeout => false,
                 PlcErrorKind.HandlerProtocolV1 or PlcErrorKind.NegativeReply => true,
-                PlcErrorKind.PortUnavailable or PlcErrorKind.FrameCorrupt => null,
+                PlcErrorKind.PortUnavailable or PlcErrorKind.FrameCorrupt or PlcErrorKind.AnotherMaster => null,
             };
             return new SilenceCheck(answers, failure.Message);
         }

@@ -50,6 +50,7 @@ public sealed partial class LinkStepViewModel
             {
                 PlcErrorKind.PortUnavailable => $"{link.PortName} could not be used: {ex.Message}",
                 PlcErrorKind.HandlerProtocolV1 => $"{where}: {ex.Message}.",
+                PlcErrorKind.AnotherMaster => $"{where}: another PPI master is on the bus; the panel does not share it. ({ex.Message})",
                 PlcErrorKind.FrameCorrupt => $"{where}: garbled replies; check that baud rate and parity match the handler. ({ex.Message})",
                 PlcErrorKind.Timeout or PlcErrorKind.NegativeReply or PlcErrorKind.NoAnswer =>
                     $"{where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
