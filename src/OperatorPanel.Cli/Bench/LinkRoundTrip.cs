@@ -42,7 +42,7 @@ internal static class LinkRoundTrip
         using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
         var hostRun = Task.Run(() => host.RunAsync(stop.Token), CancellationToken.None);
         // As the panel does on connecting: IDENTIFY tells the engine the handler's features (09 READ CHANGES OF LISTS).
-        if (await link.ExchangeAsync(new IdentifyRequest(line.Station), cancellationToken).ConfigureAwait(false) is IdentifyResponse identity)
+        if ((await link.ExchangeAsync(new IdentifyRequest(line.Station), cancellationToken).ConfigureAwait(false)).Response is IdentifyResponse identity)
         {
             engine.NoteIdentity(identity);
         }

@@ -1,7 +1,6 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Protocol;
-using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Cli.Commands;
 
@@ -31,19 +30,15 @@ internal static class IdentifyCommand
             }
 
             await using var session = opened;
-            PlcResponse response;
-            try
+            var reply = await session.Link.ExchangeAsync(new IdentifyRequest(target.Station), cancellationToken);
+            if (reply.Failure is { } failure)
             {
-                response = await session.Link.ExchangeAsync(new IdentifyRequest(target.Station), cancellationToken);
-            }
-            catch (PlcCommunicationException ex)
-            {
-                return LinkFailure.From(target, ex).Report(cli);
+                return LinkFailure.From(target, failure).Report(cli);
             }
 
-            if (response is not IdentifyResponse identity)
+            if (reply.Response is not IdentifyResponse identity)
             {
-                return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: IDENTIFY answered with {response}");
+                return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: IDENTIFY answered with {reply.Response}");
             }
 
             var view = IdentifyView.From(target, identity);

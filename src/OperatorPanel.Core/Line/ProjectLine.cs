@@ -167,7 +167,7 @@ public sealed partial class ProjectLine : IAsyncDisposable
     /// IDENTIFY to one station, beside the polling (one request on the wire at a time). The engine hears the reply: a
     /// handler without READ CHANGES copies gets its lists read with READ LIST.
     /// </summary>
-    public Task<PlcResponse> IdentifyAsync(Station station, CancellationToken cancellationToken = default) =>
+    public Task<LinkReply> IdentifyAsync(Station station, CancellationToken cancellationToken = default) =>
         BusOf(station) is { } bus
             ? IdentifyOnAsync(bus, station, cancellationToken)
             : throw new InvalidOperationException($"{station} is not on a connected bus");
@@ -209,10 +209,10 @@ public sealed partial class ProjectLine : IAsyncDisposable
         return line;
     }
 
-    private static async Task<PlcResponse> IdentifyOnAsync(Bus bus, Station station, CancellationToken cancellationToken)
+    private static async Task<LinkReply> IdentifyOnAsync(Bus bus, Station station, CancellationToken cancellationToken)
     {
         var reply = await bus.Line.Link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
-        if (reply is IdentifyResponse identity)
+        if (reply.Response is IdentifyResponse identity)
         {
             bus.Line.Engine.NoteIdentity(identity);
         }

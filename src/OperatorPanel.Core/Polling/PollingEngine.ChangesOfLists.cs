@@ -31,23 +31,16 @@ public sealed partial class PollingEngine
 
         var request = new ReadChangesOfListsRequest(station, ReadChangesOfListsRequest.MaskOf(lists.Select(l => l.List)));
         var names = string.Join(", ", lists.Select(l => l.List));
-        PlcResponse? response;
-        try
-        {
-            response = await _link.ExchangeAsync(request, cancellationToken).ConfigureAwait(false);
-        }
-        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
-        {
-            throw;
-        }
-        catch (Exception exception)
+        var exchange = await _link.ExchangeAsync(request, cancellationToken).ConfigureAwait(false);
+        if (exchange.Failure is { } failure)
         {
             // The lost reply may have moved the PLC's copies on: never repeat the 09, read each list with 08 FULL (rule 2).
             ForgetCopies(lists);
-            _logger.Debug("{Station}: READ CHANGES OF LISTS {Lists} brought no reply ({Error}); asking each FULL", station.Address, names, exception.Message);
+            _logger.Debug("{Station}: READ CHANGES OF LISTS {Lists} brought no reply ({Error}); asking each FULL", station.Address, names, failure.Message);
             return ImmutableHashSet<int>.Empty;
         }
 
+        var response = exchange.Response;
         if (response is ReadChangesOfListsResponse reply && Apply(lists, reply) is { } applied)
         {
             _stations.RecordReply(station);

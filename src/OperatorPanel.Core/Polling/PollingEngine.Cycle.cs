@@ -1,5 +1,6 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Core.Polling;
@@ -89,10 +90,10 @@ public sealed partial class PollingEngine
     private async Task<FrameRead> ReadFrameAsync(int index, CancellationToken cancellationToken)
     {
         var frame = _plan.Frames[index];
-        PlcResponse? response;
+        LinkReply exchange;
         try
         {
-            response = await ExchangeFrameAsync(index, cancellationToken).ConfigureAwait(false);
+            exchange = await ExchangeFrameAsync(index, cancellationToken).ConfigureAwait(false);
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {
@@ -100,10 +101,18 @@ public sealed partial class PollingEngine
         }
         catch (Exception exception)
         {
+            // A bug of ours or a broken fake, never a link failure (those are values): the loop goes on.
             var (message, offline) = _stations.RecordFailure(frame.Station, exception);
             return FrameRead.Failure(message, offline);
         }
 
+        if (exchange.Failure is { } failure)
+        {
+            var (message, offline) = _stations.RecordFailure(frame.Station, failure);
+            return FrameRead.Failure(message, offline);
+        }
+
+        var response = exchange.Response;
         switch (response)
         {
             case ReadResponse read when read.Data.Length == frame.DataBytes:

@@ -1,7 +1,7 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
-using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Polling;
 
@@ -71,7 +71,7 @@ public sealed partial class PollingEngine
     }
 
     /// <summary>READ CHANGES or READ LIST when the frame has a list (defining the station's lists first when needed), else a plain READ.</summary>
-    private async Task<PlcResponse> ExchangeFrameAsync(int index, CancellationToken cancellationToken)
+    private async Task<LinkReply> ExchangeFrameAsync(int index, CancellationToken cancellationToken)
     {
         var frame = _plan.Frames[index];
         if (!UseReadLists || !_listIds.TryGetValue(index, out var list) || _plainFrames.Contains(index))
@@ -81,31 +81,35 @@ public sealed partial class PollingEngine
 
         for (var attempt = 0; ; attempt++)
         {
-            if (!_definedFrames.Contains(index) && !await DefineListsAsync(frame.Station, index, cancellationToken).ConfigureAwait(false))
+            if (!_definedFrames.Contains(index))
             {
-                return await ReadPlainAsync(frame, cancellationToken).ConfigureAwait(false);
+                if (await DefineListsAsync(frame.Station, cancellationToken).ConfigureAwait(false) is { } defineFailed)
+                {
+                    return defineFailed;
+                }
+
+                if (!_definedFrames.Contains(index))
+                {
+                    return await ReadPlainAsync(frame, cancellationToken).ConfigureAwait(false);
+                }
             }
 
             var request = ListRequest(index, list);
-            PlcResponse response;
-            try
-            {
-                response = await _link.ExchangeAsync(request, cancellationToken).ConfigureAwait(false);
-            }
-            catch (PlcCommunicationException) when (request is ReadChangesRequest { Full: false } && attempt == 0)
-            {
-                // The lost reply may have moved the PLC's copy on: never repeat it without FULL (protocol rule 2).
-                CopyOf(index).Forget();
-                _logger.Debug("{Station}: READ CHANGES of list {List} brought no reply; asking FULL", frame.Station.Address, list);
-                continue;
-            }
-            catch (PlcCommunicationException)
+            var reply = await _link.ExchangeAsync(request, cancellationToken).ConfigureAwait(false);
+            if (reply is LinkReply.Failed)
             {
                 CopyOf(index).Forget();
-                throw;
+                if (request is ReadChangesRequest { Full: false } && attempt == 0)
+                {
+                    // The lost reply may have moved the PLC's copy on: never repeat it without FULL (protocol rule 2).
+                    _logger.Debug("{Station}: READ CHANGES of list {List} brought no reply; asking FULL", frame.Station.Address, list);
+                    continue;
+                }
+
+                return reply;
             }
 
-            if (response is ErrorResponse { Error: ProtocolError.ListNotDefined } && attempt == 0)
+            if (reply.Response is ErrorResponse { Error: ProtocolError.ListNotDefined } && attempt == 0)
             {
                 // The station lost its lists (and their copies); define them again and read once more, in this cycle.
                 ForgetLists(frame.Station);
@@ -113,12 +117,12 @@ public sealed partial class PollingEngine
                 continue;
             }
 
-            if (response is not ReadChangesResponse)
+            if (reply.Response is not ReadChangesResponse)
             {
                 CopyOf(index).Forget();
             }
 
-            return response;
+            return reply;
         }
     }
 
@@ -182,14 +186,13 @@ public sealed partial class PollingEngine
     }
 
     /// <summary>
-    /// Defines every not yet defined list of the station, in id order, then says whether the frame at
-    /// <paramref name="index"/> is defined. Once the station has been sent a DEFINE, it may hold any of its lists (a
-    /// DEFINE whose reply was lost and that the link sent again cleared the others), and a list defined below those
-    /// may not fit: such a round clears the tail first and defines all of the station's lists again, in id order from
-    /// an empty tail (docs/protocol.md, Lists, "The PC's part"). A refused DEFINE (logged once) sends that frame back
-    /// to plain READ.
+    /// Defines every not yet defined list of the station, in id order. Once the station has been sent a DEFINE, it may
+    /// hold any of its lists (a DEFINE whose reply was lost and that the link sent again cleared the others), and a list
+    /// defined below those may not fit: such a round clears the tail first and defines all of the station's lists again,
+    /// in id order from an empty tail (docs/protocol.md, Lists, "The PC's part"). A refused DEFINE (logged once) sends
+    /// that frame back to plain READ. Returns the link failure that stopped the round, or null.
     /// </summary>
-    private async Task<bool> DefineListsAsync(Station station, int index, CancellationToken cancellationToken)
+    private async Task<LinkReply.Failed?> DefineListsAsync(Station station, CancellationToken cancellationToken)
     {
         var frames = _listIds.Where(l => _plan.Frames[l.Key].Station == station && !_definedFrames.Contains(l.Key) && !_plainFrames.Contains(l.Key))
             .OrderBy(l => l.Value).ToList();
@@ -197,38 +200,49 @@ public sealed partial class PollingEngine
         {
             frames = [.. _listIds.Where(l => _plan.Frames[l.Key].Station == station && !_plainFrames.Contains(l.Key)).OrderBy(l => l.Value)];
             ForgetLists(station);
-            await ClearListsAsync(station, frames.Select(f => f.Value), cancellationToken).ConfigureAwait(false);
+            if (await ClearListsAsync(station, frames.Select(f => f.Value), cancellationToken).ConfigureAwait(false) is { } clearFailed)
+            {
+                return clearFailed;
+            }
         }
 
         foreach (var (frameIndex, list) in frames)
         {
             var frame = _plan.Frames[frameIndex];
-            var response = await _link.ExchangeAsync(new DefineListRequest(station, list, frame.Items), cancellationToken).ConfigureAwait(false);
+            var reply = await _link.ExchangeAsync(new DefineListRequest(station, list, frame.Items), cancellationToken).ConfigureAwait(false);
             CopyOf(frameIndex).Forget();
-            if (response is DefineListResponse)
+            switch (reply)
             {
-                _definedFrames.Add(frameIndex);
-            }
-            else
-            {
-                _plainFrames.Add(frameIndex);
-                _logger.Warning("{Station}: DEFINE LIST {List} ({Items}) not accepted ({Reply}); reading that frame with plain READ", station.Address, list, Describe(frame), Describe(response));
+                case LinkReply.Failed failed:
+                    return failed;
+                case LinkReply.Answered { Response: DefineListResponse }:
+                    _definedFrames.Add(frameIndex);
+                    break;
+                default:
+                    _plainFrames.Add(frameIndex);
+                    _logger.Warning("{Station}: DEFINE LIST {List} ({Items}) not accepted ({Reply}); reading that frame with plain READ", station.Address, list, Describe(frame), Describe(reply.Response));
+                    break;
             }
         }
 
-        return _definedFrames.Contains(index);
+        return null;
     }
 
     /// <summary>
     /// Empties the station's list tail: a DEFINE LIST of each id with one item past the end of V. A stored id clears
     /// every list before the item is refused (02); an id not stored is refused and changes nothing.
     /// </summary>
-    private async Task ClearListsAsync(Station station, IEnumerable<int> lists, CancellationToken cancellationToken)
+    private async Task<LinkReply.Failed?> ClearListsAsync(Station station, IEnumerable<int> lists, CancellationToken cancellationToken)
     {
         foreach (var list in lists)
         {
-            await _link.ExchangeAsync(new DefineListRequest(station, list, [ClearingItem]), cancellationToken).ConfigureAwait(false);
+            if (await _link.ExchangeAsync(new DefineListRequest(station, list, [ClearingItem]), cancellationToken).ConfigureAwait(false) is LinkReply.Failed failed)
+            {
+                return failed;
+            }
         }
+
+        return null;
     }
 
     /// <summary>The handler cleared all of the station's lists and dropped their copies.</summary>
@@ -252,6 +266,6 @@ public sealed partial class PollingEngine
         return copy;
     }
 
-    private Task<PlcResponse> ReadPlainAsync(PollFrame frame, CancellationToken cancellationToken) =>
+    private Task<LinkReply> ReadPlainAsync(PollFrame frame, CancellationToken cancellationToken) =>
         _link.ExchangeAsync(new ReadRequest(frame.Station, frame.Items), cancellationToken);
 }

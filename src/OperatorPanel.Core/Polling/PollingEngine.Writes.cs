@@ -7,7 +7,7 @@ namespace OperatorPanel.Core.Polling;
 
 /// <summary>
 /// Writes: queued by any thread, sent by the loop ahead of the next READ (between two exchanges, never inside one),
-/// sent once (<see cref="IPlcLink.ExchangeOnceAsync"/>), confirmed by the reply's read-back or, when the reply was lost,
+/// sent once (<see cref="PlcLink.ActsOnProcess"/>), confirmed by the reply's read-back or, when the reply was lost,
 /// by reading the target back (WriteOutcome.ConfirmedByReadBack, NotApplied, Unknown), logged with old and new value.
 /// </summary>
 public sealed partial class PollingEngine
@@ -65,10 +65,10 @@ public sealed partial class PollingEngine
             return;
         }
 
-        OnceReply reply;
+        LinkReply reply;
         try
         {
-            reply = await _link.ExchangeOnceAsync(plcRequest, cancellationToken).ConfigureAwait(false);
+            reply = await _link.ExchangeAsync(plcRequest, cancellationToken).ConfigureAwait(false);
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {
@@ -76,27 +76,19 @@ public sealed partial class PollingEngine
                 default, "polling stopped while the write was on the wire", "no read-back: the panel stopped polling"));
             throw;
         }
-        catch (Exception exception)
-        {
-            var (message, _) = _stations.RecordFailure(request.Station, exception);
-            Finish(pending, oldValue, LostReplyResolution.Unresolved("the link failed while sending", message));
-            return;
-        }
 
         switch (reply)
         {
-            case OnceReply.Answered answered:
+            case LinkReply.Answered answered:
                 Finish(pending, oldValue, Judge(request, answered.Response));
                 break;
-            case OnceReply.NotSent notSent:
+            case LinkReply.Failed { Sent: false } notSent:
                 var (message, _) = _stations.RecordFailure(request.Station, notSent.Failure);
                 Finish(pending, oldValue, new WriteOutcome.Failed($"{message}; nothing was sent", WriteFailureKind.LinkFailure));
                 break;
-            case OnceReply.ReplyLost lost:
+            case LinkReply.Failed lost:
                 Finish(pending, oldValue, await ResolveByReadBackAsync(request, oldRaw, lost, cancellationToken).ConfigureAwait(false));
                 break;
-            default:
-                throw new InvalidOperationException($"unknown link reply {reply}");
         }
     }
 
@@ -121,27 +113,29 @@ public sealed partial class PollingEngine
     /// judge it, never repeating the write. Cancellation leaves the write unknown.
     /// </summary>
     private async Task<WriteOutcome> ResolveByReadBackAsync(
-        WriteRequest request, ImmutableArray<byte> oldRaw, OnceReply.ReplyLost lost, CancellationToken cancellationToken)
+        WriteRequest request, ImmutableArray<byte> oldRaw, LinkReply.Failed lost, CancellationToken cancellationToken)
     {
         var cause = lost.CorruptedCopy
-            ? $"{lost.Cause}; the PLC acted on a corrupted copy of the request, so it may have written another address too: check the values near {request.Address}"
-            : lost.Cause;
+            ? $"{lost.Failure.Message}; the PLC acted on a corrupted copy of the request, so it may have written another address too: check the values near {request.Address}"
+            : lost.Failure.Message;
         _logger.Warning("Write {Request}: {Cause}; reading the target back", request.ToString(), cause);
-        PlcResponse response;
+        LinkReply reply;
         try
         {
-            response = await _link.ExchangeAsync(LostReplyResolution.ReadBackOf(request), cancellationToken).ConfigureAwait(false);
+            reply = await _link.ExchangeAsync(LostReplyResolution.ReadBackOf(request), cancellationToken).ConfigureAwait(false);
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {
             return new WriteOutcome.Unknown(default, cause, "no read-back: the panel stopped polling");
         }
-        catch (Exception exception)
+
+        if (reply.Failure is { } failure)
         {
-            var (message, _) = _stations.RecordFailure(request.Station, exception);
+            var (message, _) = _stations.RecordFailure(request.Station, failure);
             return LostReplyResolution.Unresolved(cause, message);
         }
 
+        var response = reply.Response;
         if (response is not ReadResponse read || read.Data.Length != LostReplyResolution.ReadBackOf(request).TotalLength)
         {
             var problem = response is ErrorResponse refused ? ProtocolErrorText.Describe(refused.Error) : $"a {response?.Command} reply";

@@ -175,17 +175,11 @@ public static class SoakSession
         private async Task IdentifyAsync(CancellationToken cancellationToken)
         {
             _identifyAttempts++;
-            try
+            // A failure means noise took it: the run polls as a panel that has not identified the handler yet.
+            if ((await link.ExchangeAsync(new IdentifyRequest(setup.Station), cancellationToken).WaitAsync(StepLimit, cancellationToken).ConfigureAwait(false)).Response is IdentifyResponse identity)
             {
-                if (await link.ExchangeAsync(new IdentifyRequest(setup.Station), cancellationToken).WaitAsync(StepLimit, cancellationToken).ConfigureAwait(false) is IdentifyResponse identity)
-                {
-                    engine.NoteIdentity(identity);
-                    Identified = true;
-                }
-            }
-            catch (PlcCommunicationException)
-            {
-                // Noise took it: the run polls as a panel that has not identified the handler yet.
+                engine.NoteIdentity(identity);
+                Identified = true;
             }
         }
 

@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 
@@ -11,14 +12,14 @@ public sealed partial class PanelSession
     {
         foreach (var view in IsConnected ? Stations.ToList() : [])
         {
-            try
+            switch (await _line.IdentifyAsync(view.Address, cancellationToken))
             {
-                var reply = await _line.IdentifyAsync(view.Address, cancellationToken);
-                view.RecordIdentify(reply as IdentifyResponse, reply is ErrorResponse refused ? $"IDENTIFY refused: {refused.Error}" : null);
-            }
-            catch (PlcCommunicationException exception)
-            {
-                view.RecordIdentify(null, $"IDENTIFY: {exception.Kind}: {exception.Message}", exception.Kind == PlcErrorKind.HandlerProtocolV1);
+                case LinkReply.Answered { Response: var reply }:
+                    view.RecordIdentify(reply as IdentifyResponse, reply is ErrorResponse refused ? $"IDENTIFY refused: {refused.Error}" : null);
+                    break;
+                case LinkReply.Failed { Failure: var failure }:
+                    view.RecordIdentify(null, $"IDENTIFY: {failure.Kind}: {failure.Message}", failure.Kind == PlcErrorKind.HandlerProtocolV1);
+                    break;
             }
         }
 

@@ -24,7 +24,7 @@ public sealed class LinkConnectionTester : IConnectionTester
         (_openTransport, _time) = (openTransport, time);
     }
 
-    public async Task<PlcResponse> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
+    public async Task<LinkReply> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(link);
         await using var plcLink = new PlcLink(_openTransport(link), LinkOptions.For(link), _time);

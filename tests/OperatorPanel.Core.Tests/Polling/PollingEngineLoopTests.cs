@@ -119,7 +119,7 @@ public sealed class PollingEngineLoopTests : IAsyncDisposable
     [Fact]
     public async Task Run_LinkThrowsEveryTime_LoopKeepsPollingAtTheMinimumPeriod()
     {
-        _link.Throw(One, new IOException("cable pulled"));
+        _link.Fail(One, new IOException("cable pulled"));
         Start();
         await _clock.WhenTimerScheduledAsync().Guarded();
         _clock.Advance(70 * Ms);

@@ -98,7 +98,7 @@ public sealed class PollingEngineWritesTests
     public async Task Write_LinkFailsAndReadBackFailsToo_UnknownAndSentOnlyOnce()
     {
         var engine = Engine(Items(One, "VB0"));
-        _link.Throw(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer after 3 tries"));
+        _link.Fail(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer after 3 tries"));
 
         var outcome = await WriteThroughCycle(engine, WriteRequest.Bytes(One, PlcAddress.Parse("VB5"), [0x05]));
 

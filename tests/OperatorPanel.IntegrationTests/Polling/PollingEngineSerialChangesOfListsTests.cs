@@ -61,7 +61,7 @@ public sealed partial class PollingEngineSerialChangesOfListsTests
         {
             rig.Engine.Plan.ListCount.Should().Be(2);
             var reply = await rig.Link.ExchangeAsync(new IdentifyRequest(plc.Config.Station), CancellationToken.None).WaitAsync(SerialLineRig.Limit);
-            var identity = reply.Should().BeOfType<IdentifyResponse>().Subject;
+            var identity = reply.Response.Should().BeOfType<IdentifyResponse>().Subject;
             identity.HasChangesOfLists.Should().BeTrue("the reference model answers 09");
             rig.Engine.NoteIdentity(identity);
             await rig.RefreshUntilAsync(r => r.FramesFailed == 0);

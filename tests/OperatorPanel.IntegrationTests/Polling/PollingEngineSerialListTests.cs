@@ -43,7 +43,7 @@ public sealed partial class PollingEngineSerialListTests
         var before = Commands(rig.Tap.Received).Count;
         var result = await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
 
-        write.Should().BeOfType<WriteBlockResponse>();
+        write.Response.Should().BeOfType<WriteBlockResponse>();
         plc.Lists.Floor.Should().BeLessThan(256, "the lists were defined again");
         result.FramesFailed.Should().Be(0);
         Commands(rig.Tap.Received).Skip(before).Take(4).Should().Equal(

@@ -73,7 +73,7 @@ public sealed class PollingEngineSerialTests
         var viaWire = await rig.Link.ExchangeAsync(new WriteBlockRequest(station, 0x40, ProtocolArea.I, 0, [0xFF]), default).WaitAsync(SerialLineRig.Limit);
 
         viaEngine.Should().BeOfType<WriteOutcome.Failed>().Which.Kind.Should().Be(WriteFailureKind.InvalidRequest);
-        viaWire.Should().BeOfType<ErrorResponse>().Which.Error.Should().Be(ProtocolError.NotWritable);
+        viaWire.Response.Should().BeOfType<ErrorResponse>().Which.Error.Should().Be(ProtocolError.NotWritable);
         plc.Memory.I[0].Should().Be(0x5A);
     }
 

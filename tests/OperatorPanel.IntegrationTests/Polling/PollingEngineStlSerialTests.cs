@@ -72,7 +72,7 @@ public sealed class PollingEngineStlSerialTests
         string[] watched = [.. Enumerable.Range(0, 26).Select(i => $"VB{i * 10}")];
         await using var rig = await SerialLineRig.StartAsync(line, [(new Station(2), Cpu)], watched, Baud);
         var identity = await rig.Link.ExchangeAsync(new IdentifyRequest(new Station(2)), CancellationToken.None).WaitAsync(SerialLineRig.Limit);
-        rig.Engine.NoteIdentity(identity.Should().BeOfType<IdentifyResponse>().Subject);
+        rig.Engine.NoteIdentity(identity.Response.Should().BeOfType<IdentifyResponse>().Subject);
         await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
         (station.Memory.V[0], station.Memory.V[250]) = (0x11, 0x5A);
         var before = rig.Tap.Received.Length;
