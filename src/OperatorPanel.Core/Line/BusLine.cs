@@ -27,7 +27,7 @@ public sealed class BusLine : IAsyncDisposable
     /// <summary>Starts polling <paramref name="plan"/> on <paramref name="link"/>.</summary>
     public static BusLine Start(
         PlcLink link, PollPlan plan, RefreshMode mode, TimeSpan minimumPeriod, bool useReadLists, TimeProvider time, ILogger logger) =>
-        new(link, new PollingEngine(link, plan, time, logger) { Mode = mode, MinimumPeriod = minimumPeriod, UseReadLists = useReadLists });
+        new(link, new PollingEngine(link, plan, time, logger, new PollingOptions { UseReadLists = useReadLists }) { Mode = mode, MinimumPeriod = minimumPeriod });
 
     /// <summary>
     /// One engine cycling on demand with plain READs: what a one-off read or write needs (it refreshes once or twice, so

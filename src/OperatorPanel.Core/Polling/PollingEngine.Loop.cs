@@ -1,14 +1,22 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Writes;
+
 namespace OperatorPanel.Core.Polling;
 
-/// <summary>The loop: writes first, then a cycle when one is due, else wait on the clock or for work.</summary>
+/// <summary>
+/// The loop: queued writes first, then a cycle when one is due, else wait on the clock or for work. A cycle goes station
+/// by station: writes ahead of each exchange, the station's readers asked in order for its frames not read yet, the
+/// quality rules (<see cref="CycleReads"/>), and one published batch.
+/// </summary>
 public sealed partial class PollingEngine
 {
-    private DateTimeOffset? _lastCycleStart;
+    private long _cycleCount;
+    private int _running;
 
     /// <summary>
     /// Polls and writes until <paramref name="cancellationToken"/> is cancelled, then returns normally. Queued writes
-    /// that were never sent complete as <see cref="Writes.WriteFailureKind.EngineStopped"/>; pending refreshes are
-    /// cancelled. Only one run at a time.
+    /// that were never sent complete as <see cref="WriteFailureKind.EngineStopped"/>; pending refreshes are cancelled.
+    /// Only one run at a time.
     /// </summary>
     public async Task RunAsync(CancellationToken cancellationToken)
     {
@@ -17,7 +25,7 @@ public sealed partial class PollingEngine
             throw new InvalidOperationException("The polling engine is already running.");
         }
 
-        _logger.Information("Polling started: {Frames} READ frames per cycle, mode {Mode}", _plan.FrameCount, Mode);
+        _context.Logger.Information("Polling started: {Frames} READ frames per cycle, mode {Mode}", Plan.FrameCount, Mode);
         try
         {
             while (!cancellationToken.IsCancellationRequested)
@@ -26,7 +34,7 @@ public sealed partial class PollingEngine
                 try
                 {
                     await ExecutePendingWritesAsync(cancellationToken).ConfigureAwait(false);
-                    var delay = DelayBeforeNextCycle();
+                    var delay = _schedule.DelayBeforeNextCycle();
                     if (delay == TimeSpan.Zero)
                     {
                         await RunCycleAsync(cancellationToken).ConfigureAwait(false);
@@ -42,7 +50,7 @@ public sealed partial class PollingEngine
                 }
                 catch (Exception exception)
                 {
-                    _logger.Error(exception, "Polling loop error; polling continues");
+                    _context.Logger.Error(exception, "Polling loop error; polling continues");
                 }
             }
         }
@@ -50,35 +58,100 @@ public sealed partial class PollingEngine
         {
             FailPendingWork();
             Volatile.Write(ref _running, 0);
-            _logger.Information("Polling stopped");
+            _context.Logger.Information("Polling stopped");
         }
     }
 
-    /// <summary>Zero: run a cycle now (a refresh was requested, or the period is over). Null: nothing due until woken (triggered mode without a request).</summary>
-    private TimeSpan? DelayBeforeNextCycle()
+    /// <summary>Runs one full cycle now. Used by the loop; tests call it directly (never alongside <see cref="RunAsync"/>).</summary>
+    internal async Task<PollResult> RunCycleAsync(CancellationToken cancellationToken)
     {
-        lock (_gate)
+        var started = _context.Time.GetUtcNow();
+        var waiters = _schedule.Start(started);
+        try
         {
-            _refreshWaiters.RemoveAll(w => w.Task.IsCompleted);
+            var result = await PollAllAsync(++_cycleCount, started, cancellationToken).ConfigureAwait(false);
+            waiters.ForEach(w => w.TrySetResult(result));
+            return result;
+        }
+        catch (Exception)
+        {
+            waiters.ForEach(w => w.TrySetCanceled(cancellationToken));
+            throw;
+        }
+    }
 
-            // "Refresh now" means now in either mode; in continuous mode it does not wait out the minimum period.
-            if (_refreshWaiters.Count > 0)
+    private async Task<PollResult> PollAllAsync(long cycle, DateTimeOffset started, CancellationToken cancellationToken)
+    {
+        var reads = new CycleReads(Plan);
+        var changes = new List<ValueChange>();
+        var tried = new List<Station>();
+        var writes = 0;
+        foreach (var station in Plan.Stations)
+        {
+            writes += await ExecutePendingWritesAsync(cancellationToken).ConfigureAwait(false);
+            var frames = Enumerable.Range(0, Plan.Frames.Length).Where(i => Plan.Frames[i].Station == station).ToList();
+            if (_rest.IsResting(station, started, Mode, Options.OfflineRetryInterval) is { } restingError)
             {
-                return TimeSpan.Zero;
+                reads.MarkOffline(frames, restingError);
+            }
+            else
+            {
+                tried.Add(station);
+                writes += await ReadStationAsync(station, frames, reads, cancellationToken).ConfigureAwait(false);
             }
 
-            if (_mode == RefreshMode.OnDemand)
+            changes.AddRange(reads.Apply(station, _values, _context.Time.GetUtcNow()));
+        }
+
+        _rest.NoteSilences(Plan.Stations, tried, Options.OfflineRetryInterval);
+        Publish(changes);
+        return new PollResult(cycle, started, _context.Time.GetUtcNow(), reads.Sent, reads.Failed, writes, changes.Count);
+    }
+
+    /// <summary>
+    /// Reads the station's frames, one exchange at a time with queued writes between, until each is read or the station
+    /// went silent (then the rest wait for the next cycle: at most one time-out per station and cycle). Returns the writes done.
+    /// </summary>
+    private async Task<int> ReadStationAsync(Station station, List<int> pending, CycleReads reads, CancellationToken cancellationToken)
+    {
+        var writes = 0;
+        while (pending.Count > 0)
+        {
+            writes += await ExecutePendingWritesAsync(cancellationToken).ConfigureAwait(false);
+            foreach (var (frame, read) in await ReadNextAsync(station, pending, cancellationToken).ConfigureAwait(false))
             {
-                return null;
+                reads.Record(frame, read);
+                pending.Remove(frame);
+                if (read.StationOffline)
+                {
+                    reads.MarkOffline(pending, read.Error!);
+                    return writes;
+                }
+            }
+        }
+
+        return writes;
+    }
+
+    /// <summary>The first of the station's readers that takes any of the pending frames reads them.</summary>
+    private async Task<IReadOnlyList<(int Frame, FrameRead Read)>> ReadNextAsync(Station station, List<int> pending, CancellationToken cancellationToken)
+    {
+        try
+        {
+            foreach (var reader in _readers.ReadersOf(station))
+            {
+                if (await reader.ReadAsync(pending, cancellationToken).ConfigureAwait(false) is { Count: > 0 } read)
+                {
+                    return read;
+                }
             }
 
-            if (_lastCycleStart is not { } last)
-            {
-                return TimeSpan.Zero;
-            }
-
-            var remaining = last + _minimumPeriod - _time.GetUtcNow();
-            return remaining > TimeSpan.Zero ? remaining : TimeSpan.Zero;
+            throw new InvalidOperationException($"no reader of {station} took frame {pending[0]}");
+        }
+        catch (Exception exception) when (exception is not OperationCanceledException || !cancellationToken.IsCancellationRequested)
+        {
+            // A bug of ours or of a link, never a link failure (those are values): the frame fails, polling goes on.
+            return [(pending[0], _context.Judge.Failed(station, exception))];
         }
     }
 
@@ -91,27 +164,9 @@ public sealed partial class PollingEngine
         }
 
         using var stopTimer = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
-        var timer = Task.Delay(due, _time, stopTimer.Token);
+        var timer = Task.Delay(due, _context.Time, stopTimer.Token);
         await Task.WhenAny(wake, timer).ConfigureAwait(false);
         await stopTimer.CancelAsync().ConfigureAwait(false);
         cancellationToken.ThrowIfCancellationRequested();
-    }
-
-    private void FailPendingWork()
-    {
-        while (_writes.TryDequeue(out var pending))
-        {
-            if (pending.TryStartSending())
-            {
-                Finish(pending, OldValueText(pending.Request), new Writes.WriteOutcome.Failed(
-                    "polling stopped before the write was sent; nothing was written", Writes.WriteFailureKind.EngineStopped));
-            }
-        }
-
-        lock (_gate)
-        {
-            _refreshWaiters.ForEach(w => w.TrySetCanceled());
-            _refreshWaiters.Clear();
-        }
     }
 }

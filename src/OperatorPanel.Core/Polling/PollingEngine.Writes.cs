@@ -1,30 +1,15 @@
 using System.Collections.Immutable;
-using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Writes;
 
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
-/// Writes: queued by any thread, sent by the loop ahead of the next READ (between two exchanges, never inside one),
-/// sent once (<see cref="PlcLink.ActsOnProcess"/>), confirmed by the reply's read-back or, when the reply was lost,
-/// by reading the target back (WriteOutcome.ConfirmedByReadBack, NotApplied, Unknown), logged with old and new value.
+/// The write queue: writes queued by any thread, sent by the loop ahead of the next exchange (never inside one) through
+/// the bus's <see cref="IStationWriter"/>, logged with old and new value, their read-back published as values.
 /// </summary>
 public sealed partial class PollingEngine
 {
-    /// <summary>
-    /// Queues a write and returns its outcome once sent and read back. The write waits while <see cref="RunAsync"/> is
-    /// not running. Cancelling <paramref name="cancellationToken"/> withdraws it only while it is still queued.
-    /// </summary>
-    public Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default)
-    {
-        ArgumentNullException.ThrowIfNull(request);
-        var pending = new PendingWrite(request, cancellationToken);
-        _writes.Enqueue(pending);
-        _wake.Set();
-        return pending.Task;
-    }
-
     private async Task<int> ExecutePendingWritesAsync(CancellationToken cancellationToken)
     {
         var done = 0;
@@ -32,7 +17,7 @@ public sealed partial class PollingEngine
         {
             if (!pending.TryStartSending())
             {
-                _logger.Information("Write {Request} withdrawn by the caller before it was sent", pending.Request.ToString());
+                _context.Logger.Information("Write {Request} withdrawn by the caller before it was sent", pending.Request.ToString());
                 continue;
             }
 
@@ -43,7 +28,7 @@ public sealed partial class PollingEngine
             catch (Exception exception) when (exception is not OperationCanceledException || !cancellationToken.IsCancellationRequested)
             {
                 // A bug of ours must not leave the caller waiting forever: the write still gets an outcome.
-                _logger.Error(exception, "Write {Request} broke the engine's own handling", pending.Request.ToString());
+                _context.Logger.Error(exception, "Write {Request} broke the engine's own handling", pending.Request.ToString());
                 Finish(pending, WriteLog.Unknown, new WriteOutcome.Unknown(
                     default, $"internal error: {exception.Message}", "the panel's own handling broke after the write may have been sent"));
             }
@@ -59,16 +44,10 @@ public sealed partial class PollingEngine
         var request = pending.Request;
         var oldRaw = OldValue(request);
         var oldValue = WriteLog.Format(request.Address, oldRaw);
-        if (!WriteCommand.TryBuild(request, _plan.Cpus.GetValueOrDefault(request.Station), out var plcRequest, out var refusal))
-        {
-            Finish(pending, oldValue, refusal);
-            return;
-        }
-
-        LinkReply reply;
+        WriteResult result;
         try
         {
-            reply = await _link.ExchangeAsync(plcRequest, cancellationToken).ConfigureAwait(false);
+            result = await _readers.Writer.WriteAsync(request, oldRaw, cancellationToken).ConfigureAwait(false);
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {
@@ -77,90 +56,17 @@ public sealed partial class PollingEngine
             throw;
         }
 
-        switch (reply)
-        {
-            case LinkReply.Answered answered:
-                Finish(pending, oldValue, Judge(request, answered.Response));
-                break;
-            case LinkReply.Failed { Sent: false } notSent:
-                var (message, _) = _stations.RecordFailure(request.Station, notSent.Failure);
-                Finish(pending, oldValue, new WriteOutcome.Failed($"{message}; nothing was sent", WriteFailureKind.LinkFailure));
-                break;
-            case LinkReply.Failed lost:
-                Finish(pending, oldValue, await ResolveByReadBackAsync(request, oldRaw, lost, cancellationToken).ConfigureAwait(false));
-                break;
-        }
-    }
-
-    private WriteOutcome Judge(WriteRequest request, PlcResponse response)
-    {
-        var outcome = WriteCommand.Interpret(request, response, out var readBack);
-        if (outcome is WriteOutcome.Failed { Kind: WriteFailureKind.UnexpectedReply } odd)
-        {
-            _stations.RecordBadReply(request.Station, odd.Reason);
-        }
-        else
-        {
-            _stations.RecordReply(request.Station, (outcome as WriteOutcome.Failed)?.Reason);
-        }
-
-        PublishReadBack(request, readBack);
-        return outcome;
-    }
-
-    /// <summary>
-    /// The write's reply was lost, so the PLC may have acted: read the target back (a READ, retried as reads are) and
-    /// judge it, never repeating the write. Cancellation leaves the write unknown.
-    /// </summary>
-    private async Task<WriteOutcome> ResolveByReadBackAsync(
-        WriteRequest request, ImmutableArray<byte> oldRaw, LinkReply.Failed lost, CancellationToken cancellationToken)
-    {
-        var cause = lost.CorruptedCopy
-            ? $"{lost.Failure.Message}; the PLC acted on a corrupted copy of the request, so it may have written another address too: check the values near {request.Address}"
-            : lost.Failure.Message;
-        _logger.Warning("Write {Request}: {Cause}; reading the target back", request.ToString(), cause);
-        LinkReply reply;
-        try
-        {
-            reply = await _link.ExchangeAsync(LostReplyResolution.ReadBackOf(request), cancellationToken).ConfigureAwait(false);
-        }
-        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
-        {
-            return new WriteOutcome.Unknown(default, cause, "no read-back: the panel stopped polling");
-        }
-
-        if (reply.Failure is { } failure)
-        {
-            var (message, _) = _stations.RecordFailure(request.Station, failure);
-            return LostReplyResolution.Unresolved(cause, message);
-        }
-
-        var response = reply.Response;
-        if (response is not ReadResponse read || read.Data.Length != LostReplyResolution.ReadBackOf(request).TotalLength)
-        {
-            var problem = response is ErrorResponse refused ? ProtocolErrorText.Describe(refused.Error) : $"a {response?.Command} reply";
-            _stations.RecordBadReply(request.Station, $"read-back of {request.Address}: {problem}");
-            return LostReplyResolution.Unresolved(cause, problem);
-        }
-
-        _stations.RecordReply(request.Station);
-        PublishReadBack(request, read.Data);
-        return LostReplyResolution.Judge(request, oldRaw, read.Data, cause);
-    }
-
-    private void PublishReadBack(WriteRequest request, ImmutableArray<byte> readBack)
-    {
-        if (!readBack.IsDefault)
+        if (!result.ReadBack.IsDefault)
         {
             var area = ProtocolAreaExtensions.FromMemoryArea(request.Address.Area)!.Value;
-            Publish(_values.Apply(request.Station, area, request.Address.ByteOffset, readBack, _time.GetUtcNow()));
+            Publish(_values.Apply(request.Station, area, request.Address.ByteOffset, result.ReadBack, _context.Time.GetUtcNow()));
         }
+
+        Finish(pending, oldValue, result.Outcome);
     }
 
     private ImmutableArray<byte> OldValue(WriteRequest request) =>
         _values.TryGet(new WatchedItem(request.Station, request.Address), out var old) && old.HasValue ? old.Raw : default;
-
-    private string OldValueText(WriteRequest request) => WriteLog.Format(request.Address, OldValue(request));
 
     private void Finish(PendingWrite pending, string oldValue, WriteOutcome outcome)
     {
@@ -169,7 +75,21 @@ public sealed partial class PollingEngine
             return;
         }
 
-        WriteLog.Record(_logger, pending.Request, oldValue, outcome);
+        WriteLog.Record(_context.Logger, pending.Request, oldValue, outcome);
         pending.Complete(outcome);
+    }
+
+    private void FailPendingWork()
+    {
+        while (_writes.TryDequeue(out var pending))
+        {
+            if (pending.TryStartSending())
+            {
+                Finish(pending, WriteLog.Format(pending.Request.Address, OldValue(pending.Request)), new WriteOutcome.Failed(
+                    "polling stopped before the write was sent; nothing was written", WriteFailureKind.EngineStopped));
+            }
+        }
+
+        _schedule.CancelWaiters();
     }
 }

@@ -2,6 +2,8 @@ using System.Collections.Concurrent;
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Polling.Readers;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Writes;
 using Serilog;
 using Serilog.Core;
@@ -9,68 +11,59 @@ using Serilog.Core;
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
-/// Keeps the watched values of a <see cref="PollPlan"/> up to date over an <see cref="IPlcLink"/> and carries the
-/// operator's writes, in the two modes of seed 000 §7. One loop (<see cref="RunAsync"/>) does all link traffic, so one
-/// request is on the wire at a time; queued writes go ahead of the next READ. Failures never escape the loop: they
-/// become value qualities, <see cref="StationStatus"/>es and log entries, and polling goes on.
-/// All waiting uses the injected <see cref="TimeProvider"/>.
+/// The polling loop of one bus: keeps the watched values of a <see cref="PollPlan"/> up to date over an
+/// <see cref="IPlcLink"/> and carries the operator's writes, in the two modes of seed 000 §7. One loop
+/// (<see cref="RunAsync"/>, PollingEngine.Loop.cs) does all link traffic, so one request is on the wire at a time: a cycle
+/// asks each station's readers (Readers/ReaderChoice, chosen from its IDENTIFY) for its frames, and queued writes go
+/// ahead of the next exchange (Writes/IStationWriter). Failures never escape the loop: they become value qualities,
+/// <see cref="StationStatus"/>es and log entries, and polling goes on. All waiting uses the injected
+/// <see cref="TimeProvider"/>. Two files: this one holds the state and what callers use; the loop is the other.
 /// </summary>
 public sealed partial class PollingEngine
 {
-    private readonly IPlcLink _link;
-    private readonly PollPlan _plan;
-    private readonly TimeProvider _time;
-    private readonly ILogger _logger;
+    private readonly PollingContext _context;
     private readonly ValueStore _values;
-    private readonly StationTracker _stations;
+    private readonly ReaderChoice _readers;
+    private readonly OfflineRest _rest;
     private readonly WakeSignal _wake = new();
+    private readonly CycleSchedule _schedule;
     private readonly ConcurrentQueue<PendingWrite> _writes = new();
     private readonly Lock _gate = new();
-    private readonly List<TaskCompletionSource<PollResult>> _refreshWaiters = [];
     private ImmutableArray<Action<IReadOnlyList<ValueChange>>> _subscribers = [];
-    private RefreshMode _mode = RefreshMode.Continuous;
-    private TimeSpan _minimumPeriod = TimeSpan.FromMilliseconds(100);
-    private PollResult? _lastResult;
-    private int _running;
 
-    public PollingEngine(IPlcLink link, PollPlan plan, TimeProvider? timeProvider = null, ILogger? logger = null)
+    public PollingEngine(IPlcLink link, PollPlan plan, TimeProvider? timeProvider = null, ILogger? logger = null, PollingOptions? options = null)
     {
         ArgumentNullException.ThrowIfNull(link);
         ArgumentNullException.ThrowIfNull(plan);
-        _link = link;
-        _plan = plan;
-        _time = timeProvider ?? TimeProvider.System;
-        _logger = (logger ?? Logger.None).ForContext<PollingEngine>();
-        _values = new ValueStore(plan.Values.Select(v => v.Item), _time.GetUtcNow());
-        _stations = new StationTracker(_time, _logger);
-        _listIds = ReadListAssignment.For(plan);
+        var time = timeProvider ?? TimeProvider.System;
+        var log = (logger ?? Logger.None).ForContext<PollingEngine>();
+        var stations = new StationTracker(time, log);
+        _context = new PollingContext(plan, link, new FrameJudge(stations), options ?? new PollingOptions(), time, log);
+        _values = new ValueStore(plan.Values.Select(v => v.Item), time.GetUtcNow());
+        _readers = new ReaderChoice(_context);
+        _rest = new OfflineRest(stations, log);
+        _schedule = new CycleSchedule(_wake, time);
     }
 
-    public PollPlan Plan => _plan;
+    public PollPlan Plan => _context.Plan;
+
+    public PollingOptions Options => _context.Options;
 
     /// <summary>Switchable while running; the loop notices at once.</summary>
     public RefreshMode Mode
     {
-        get { lock (_gate) { return _mode; } }
-        set { lock (_gate) { _mode = value; } _wake.Set(); }
+        get => _schedule.Mode;
+        set => _schedule.Mode = value;
     }
 
     /// <summary>In continuous mode a cycle never starts sooner than this after the previous cycle started. Default 100 ms.</summary>
     public TimeSpan MinimumPeriod
     {
-        get { lock (_gate) { return _minimumPeriod; } }
-        set
-        {
-            ArgumentOutOfRangeException.ThrowIfLessThan(value, TimeSpan.Zero);
-            lock (_gate) { _minimumPeriod = value; }
-            _wake.Set();
-        }
+        get => _schedule.MinimumPeriod;
+        set => _schedule.MinimumPeriod = value;
     }
 
-    public PollResult? LastResult
-    {
-        get { lock (_gate) { return _lastResult; } }
-    }
+    private StationTracker Stations => _context.Judge.Stations;
 
     /// <summary>
     /// Calls <paramref name="onChanges"/> with every batch of changed values (value or quality), once per cycle and
@@ -91,24 +84,34 @@ public sealed partial class PollingEngine
     /// <summary>The station's link state; for a silent station resting between tries, when it is tried next.</summary>
     public StationStatus GetStationStatus(Station station)
     {
-        var status = _stations.Get(station);
-        return NextTry(station, status) is { } next ? status with { NextTryAt = next } : status;
+        var status = Stations.Get(station);
+        return _rest.NextTry(status, Mode, Options.OfflineRetryInterval) is { } next ? status with { NextTryAt = next } : status;
     }
 
     /// <summary>The panel stopped the station (Stop/RemoteStop confirmed it): its silence is no longer news.</summary>
-    public void NoteStoppedByPanel(Station station) => _stations.RecordStoppedByPanel(station);
+    public void NoteStoppedByPanel(Station station) => Stations.RecordStoppedByPanel(station);
+
+    /// <summary>What an IDENTIFY reply says about the station's handler chooses its readers from the next exchange on.</summary>
+    public void NoteIdentity(IdentifyResponse identity) => _readers.NoteIdentity(identity);
 
     /// <summary>
     /// Asks for one full cycle and returns its result. In <see cref="RefreshMode.OnDemand"/> this is what makes the
     /// engine poll; in continuous mode it completes with the next regular cycle. Cancelled when polling stops first.
     /// </summary>
-    public Task<PollResult> RequestRefreshAsync(CancellationToken cancellationToken = default)
+    public Task<PollResult> RequestRefreshAsync(CancellationToken cancellationToken = default) => _schedule.RequestRefresh(cancellationToken);
+
+    /// <summary>
+    /// Queues a write and returns its outcome once sent and read back; it goes ahead of the next exchange, never inside
+    /// one. The write waits while <see cref="RunAsync"/> is not running. Cancelling <paramref name="cancellationToken"/>
+    /// withdraws it only while it is still queued.
+    /// </summary>
+    public Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default)
     {
-        var waiter = new TaskCompletionSource<PollResult>(TaskCreationOptions.RunContinuationsAsynchronously);
-        cancellationToken.Register(() => waiter.TrySetCanceled(cancellationToken));
-        lock (_gate) { _refreshWaiters.Add(waiter); }
+        ArgumentNullException.ThrowIfNull(request);
+        var pending = new PendingWrite(request, cancellationToken);
+        _writes.Enqueue(pending);
         _wake.Set();
-        return waiter.Task;
+        return pending.Task;
     }
 
     private void Publish(List<ValueChange> changes)
@@ -129,7 +132,7 @@ public sealed partial class PollingEngine
             }
             catch (Exception exception)
             {
-                _logger.Error(exception, "A value subscriber threw; polling continues");
+                _context.Logger.Error(exception, "A value subscriber threw; polling continues");
             }
         }
     }

@@ -20,11 +20,8 @@ public sealed class OfflineRetryTests
     {
         _link = new FakePlcLink(_clock);
         _link.Set(Two, ProtocolArea.V, 0, 0x21);
-        _engine = new PollingEngine(_link, PollPlanner.Build([Item(One, "VB0"), Item(Two, "VB0")]), _clock, _log.CreateLogger())
-        {
-            UseReadLists = false,
-            Options = new PollingOptions { OfflineRetryInterval = Interval },
-        };
+        _engine = new PollingEngine(
+            _link, PollPlanner.Build([Item(One, "VB0"), Item(Two, "VB0")]), _clock, _log.CreateLogger(), new PollingOptions { UseReadLists = false, OfflineRetryInterval = Interval });
     }
 
     [Fact]

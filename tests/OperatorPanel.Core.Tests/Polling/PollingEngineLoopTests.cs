@@ -20,7 +20,7 @@ public sealed class PollingEngineLoopTests : IAsyncDisposable
     public PollingEngineLoopTests()
     {
         _link = new FakePlcLink(_clock) { ExchangeDuration = 30 * Ms };
-        _engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock) { MinimumPeriod = 100 * Ms, UseReadLists = false };
+        _engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock, options: new PollingOptions { UseReadLists = false }) { MinimumPeriod = 100 * Ms };
     }
 
     [Fact]

@@ -17,7 +17,7 @@ public sealed class StoppedByPanelTests
     public StoppedByPanelTests()
     {
         _link = new FakePlcLink(_clock);
-        _engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0", "QB0")), _clock, _log.CreateLogger()) { UseReadLists = false };
+        _engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0", "QB0")), _clock, _log.CreateLogger(), new PollingOptions { UseReadLists = false });
     }
 
     [Fact]
