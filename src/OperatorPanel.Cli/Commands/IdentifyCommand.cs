@@ -1,5 +1,6 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Cli.Commands;
@@ -24,13 +25,13 @@ internal static class IdentifyCommand
                 return ExitCodes.BadInput;
             }
 
-            if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
+            if (!LinkSession.TryOpen(target, PollPlan.Empty, cli.Log, out var opened, out var openError))
             {
                 return cli.Fail(ExitCodes.BadInput, openError);
             }
 
             await using var session = opened;
-            var reply = await session.Link.ExchangeAsync(new IdentifyRequest(target.Station), cancellationToken);
+            var reply = await session.Bus.IdentifyAsync(target.Station, cancellationToken);
             if (reply.Failure is { } failure)
             {
                 return LinkFailure.From(target, failure).Report(cli);

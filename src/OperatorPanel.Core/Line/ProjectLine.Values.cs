@@ -47,7 +47,7 @@ public sealed partial class ProjectLine : ILineValues
     {
         if (BusOf(station) is { } bus)
         {
-            return bus.Line.Engine.TryGetValue(station, address, out value);
+            return bus.TryGetValue(station, address, out value);
         }
 
         value = PolledValue.NotRead(_time.GetUtcNow());
@@ -55,7 +55,7 @@ public sealed partial class ProjectLine : ILineValues
     }
 
     /// <summary>On a polling loop's thread: one engine batch, routed by address and handed to <see cref="ProjectLineOptions.Deliver"/> whole.</summary>
-    private void OnEngineChanges(IReadOnlyList<ValueChange> changes)
+    private void OnBusChanges(IReadOnlyList<ValueChange> changes)
     {
         var calls = new List<(Action<PolledValue> Subscriber, PolledValue Value)>();
         lock (_gate)

@@ -20,7 +20,6 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     private readonly LinkOptions _options;
     private readonly TimeProvider _time;
     private readonly ILogger _log;
-    private readonly BusArbiter _arbiter = new();
     private readonly FrameReader _reader = new();
     private readonly byte[] _buffer = new byte[512];
     private readonly ConcurrentDictionary<Station, StationStatistics> _statistics = new();
@@ -67,18 +66,13 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     private int RetriesFor(PlcRequest request) =>
         ActsOnProcess(request.Command) || request is ReadChangesRequest { Full: false } or ReadChangesOfListsRequest ? 0 : _options.Retries;
 
-    public async ValueTask DisposeAsync()
-    {
-        _arbiter.Dispose();
-        await _transport.DisposeAsync().ConfigureAwait(false);
-    }
+    public async ValueTask DisposeAsync() => await _transport.DisposeAsync().ConfigureAwait(false);
 
     public async Task<LinkReply> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(request);
-        using var turn = await _arbiter.AcquireAsync(cancellationToken).ConfigureAwait(false);
 
-        // Under the turn, so numbers go out in order; retries resend the same frame and so the same number.
+        // Retries resend the same frame and so the same number.
         request = request with { Sequence = unchecked(++_sequence) };
         var statistics = _statistics.GetOrAdd(request.Station, _ => new StationStatistics());
         var frame = RequestCodec.Encode(request);

@@ -4,19 +4,19 @@ using OperatorPanel.Core.Writes;
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
-/// The loop: queued writes first, then a cycle when one is due, else wait on the clock or for work. A cycle goes station
-/// by station: writes ahead of each exchange, the station's readers asked in order for its frames not read yet, the
+/// The loop: the bus's queued jobs first (writes, IDENTIFY, STOP), then a cycle when one is due, else wait on the clock
+/// or for work. A cycle goes station by station: queued jobs ahead of each exchange, the station's readers asked in order for its frames not read yet, the
 /// quality rules (<see cref="CycleReads"/>), and one published batch.
 /// </summary>
-public sealed partial class PollingEngine
+internal sealed partial class PollingEngine
 {
     private long _cycleCount;
     private int _running;
 
     /// <summary>
-    /// Polls and writes until <paramref name="cancellationToken"/> is cancelled, then returns normally. Queued writes
-    /// that were never sent complete as <see cref="WriteFailureKind.EngineStopped"/>; pending refreshes are cancelled.
-    /// Only one run at a time.
+    /// Polls and runs the queue's jobs until <paramref name="cancellationToken"/> is cancelled, then returns normally.
+    /// Queued jobs that never started get their abandoned outcome (a write: <see cref="WriteFailureKind.EngineStopped"/>);
+    /// pending refreshes are cancelled. Only one run at a time.
     /// </summary>
     public async Task RunAsync(CancellationToken cancellationToken)
     {
@@ -30,10 +30,10 @@ public sealed partial class PollingEngine
         {
             while (!cancellationToken.IsCancellationRequested)
             {
-                var wake = _wake.Current;
+                var wake = _queue.Wake.Current;
                 try
                 {
-                    await ExecutePendingWritesAsync(cancellationToken).ConfigureAwait(false);
+                    await _queue.RunAsync(cancellationToken).ConfigureAwait(false);
                     var delay = _schedule.DelayBeforeNextCycle();
                     if (delay == TimeSpan.Zero)
                     {
@@ -56,7 +56,8 @@ public sealed partial class PollingEngine
         }
         finally
         {
-            FailPendingWork();
+            _queue.AbandonAll();
+            _schedule.CancelWaiters();
             Volatile.Write(ref _running, 0);
             _context.Logger.Information("Polling stopped");
         }
@@ -85,10 +86,10 @@ public sealed partial class PollingEngine
         var reads = new CycleReads(Plan);
         var changes = new List<ValueChange>();
         var tried = new List<Station>();
-        var writes = 0;
+        var jobs = 0;
         foreach (var station in Plan.Stations)
         {
-            writes += await ExecutePendingWritesAsync(cancellationToken).ConfigureAwait(false);
+            jobs += await _queue.RunAsync(cancellationToken).ConfigureAwait(false);
             var frames = Enumerable.Range(0, Plan.Frames.Length).Where(i => Plan.Frames[i].Station == station).ToList();
             if (_rest.IsResting(station, started, Mode, Options.OfflineRetryInterval) is { } restingError)
             {
@@ -97,7 +98,7 @@ public sealed partial class PollingEngine
             else
             {
                 tried.Add(station);
-                writes += await ReadStationAsync(station, frames, reads, cancellationToken).ConfigureAwait(false);
+                jobs += await ReadStationAsync(station, frames, reads, cancellationToken).ConfigureAwait(false);
             }
 
             changes.AddRange(reads.Apply(station, _values, _context.Time.GetUtcNow()));
@@ -105,19 +106,19 @@ public sealed partial class PollingEngine
 
         _rest.NoteSilences(Plan.Stations, tried, Options.OfflineRetryInterval);
         Publish(changes);
-        return new PollResult(cycle, started, _context.Time.GetUtcNow(), reads.Sent, reads.Failed, writes, changes.Count);
+        return new PollResult(cycle, started, _context.Time.GetUtcNow(), reads.Sent, reads.Failed, jobs, changes.Count);
     }
 
     /// <summary>
-    /// Reads the station's frames, one exchange at a time with queued writes between, until each is read or the station
-    /// went silent (then the rest wait for the next cycle: at most one time-out per station and cycle). Returns the writes done.
+    /// Reads the station's frames, one exchange at a time with the queue's jobs between, until each is read or the station
+    /// went silent (then the rest wait for the next cycle: at most one time-out per station and cycle). Returns the jobs run.
     /// </summary>
     private async Task<int> ReadStationAsync(Station station, List<int> pending, CycleReads reads, CancellationToken cancellationToken)
     {
-        var writes = 0;
+        var jobs = 0;
         while (pending.Count > 0)
         {
-            writes += await ExecutePendingWritesAsync(cancellationToken).ConfigureAwait(false);
+            jobs += await _queue.RunAsync(cancellationToken).ConfigureAwait(false);
             foreach (var (frame, read) in await ReadNextAsync(station, pending, cancellationToken).ConfigureAwait(false))
             {
                 reads.Record(frame, read);
@@ -125,12 +126,12 @@ public sealed partial class PollingEngine
                 if (read.StationOffline)
                 {
                     reads.MarkOffline(pending, read.Error!);
-                    return writes;
+                    return jobs;
                 }
             }
         }
 
-        return writes;
+        return jobs;
     }
 
     /// <summary>The first of the station's readers that takes any of the pending frames reads them.</summary>

@@ -1,4 +1,3 @@
-using System.Collections.Concurrent;
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
@@ -17,32 +16,38 @@ namespace OperatorPanel.Core.Polling;
 /// asks each station's readers (Readers/ReaderChoice, chosen from its IDENTIFY) for its frames, and queued writes go
 /// ahead of the next exchange (Writes/IStationWriter). Failures never escape the loop: they become value qualities,
 /// <see cref="StationStatus"/>es and log entries, and polling goes on. All waiting uses the injected
-/// <see cref="TimeProvider"/>. Two files: this one holds the state and what callers use; the loop is the other.
+/// <see cref="TimeProvider"/>. Two files: this one holds the state, what callers use and the write job; the loop is the
+/// other. Outside Core a bus is reached through Line/Bus, which owns its engine.
 /// </summary>
-public sealed partial class PollingEngine
+internal sealed partial class PollingEngine
 {
     private readonly PollingContext _context;
     private readonly ValueStore _values;
     private readonly ReaderChoice _readers;
     private readonly OfflineRest _rest;
-    private readonly WakeSignal _wake = new();
+    private readonly BusQueue _queue;
     private readonly CycleSchedule _schedule;
-    private readonly ConcurrentQueue<PendingWrite> _writes = new();
     private readonly Lock _gate = new();
     private ImmutableArray<Action<IReadOnlyList<ValueChange>>> _subscribers = [];
 
     public PollingEngine(IPlcLink link, PollPlan plan, TimeProvider? timeProvider = null, ILogger? logger = null, PollingOptions? options = null)
+        : this(link, plan, null, null, timeProvider ?? TimeProvider.System, logger ?? Logger.None, options ?? new PollingOptions())
+    {
+    }
+
+    /// <summary>An engine for a bus that keeps its station states and its queue across plans (Line/Bus).</summary>
+    public PollingEngine(IPlcLink link, PollPlan plan, StationTracker? stations, BusQueue? queue, TimeProvider time, ILogger logger, PollingOptions options)
     {
         ArgumentNullException.ThrowIfNull(link);
         ArgumentNullException.ThrowIfNull(plan);
-        var time = timeProvider ?? TimeProvider.System;
-        var log = (logger ?? Logger.None).ForContext<PollingEngine>();
-        var stations = new StationTracker(time, log);
-        _context = new PollingContext(plan, link, new FrameJudge(stations), options ?? new PollingOptions(), time, log);
+        var log = logger.ForContext<PollingEngine>();
+        stations ??= new StationTracker(time, log);
+        _context = new PollingContext(plan, link, new FrameJudge(stations), options, time, log);
         _values = new ValueStore(plan.Values.Select(v => v.Item), time.GetUtcNow());
         _readers = new ReaderChoice(_context);
         _rest = new OfflineRest(stations, log);
-        _schedule = new CycleSchedule(_wake, time);
+        _queue = queue ?? new BusQueue(log);
+        _schedule = new CycleSchedule(_queue.Wake, time);
     }
 
     public PollPlan Plan => _context.Plan;
@@ -101,17 +106,56 @@ public sealed partial class PollingEngine
     public Task<PollResult> RequestRefreshAsync(CancellationToken cancellationToken = default) => _schedule.RequestRefresh(cancellationToken);
 
     /// <summary>
-    /// Queues a write and returns its outcome once sent and read back; it goes ahead of the next exchange, never inside
-    /// one. The write waits while <see cref="RunAsync"/> is not running. Cancelling <paramref name="cancellationToken"/>
-    /// withdraws it only while it is still queued.
+    /// Queues a write on the bus's queue and returns its outcome once sent and read back; it goes ahead of the next
+    /// exchange, never inside one. The write waits while <see cref="RunAsync"/> is not running. Cancelling
+    /// <paramref name="cancellationToken"/> withdraws it only while it is still queued. Every write is logged with old and
+    /// new value and its outcome (Writes/WriteLog).
     /// </summary>
     public Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default)
     {
         ArgumentNullException.ThrowIfNull(request);
-        var pending = new PendingWrite(request, cancellationToken);
-        _writes.Enqueue(pending);
-        _wake.Set();
-        return pending.Task;
+        return _queue.Enqueue($"Write {request}", ct => WriteNowAsync(request, ct), () => Record(request, OldValue(request), new WriteOutcome.Failed(
+            "polling stopped before the write was sent; nothing was written", WriteFailureKind.EngineStopped)), cancellationToken);
+    }
+
+    /// <summary>The write job, on the loop between two exchanges: the bus's writer sends it, the read-back becomes values.</summary>
+    private async Task<WriteOutcome> WriteNowAsync(WriteRequest request, CancellationToken cancellationToken)
+    {
+        var oldRaw = OldValue(request);
+        try
+        {
+            var result = await _readers.Writer.WriteAsync(request, oldRaw, cancellationToken).ConfigureAwait(false);
+            if (!result.ReadBack.IsDefault)
+            {
+                var area = ProtocolAreaExtensions.FromMemoryArea(request.Address.Area)!.Value;
+                Publish(_values.Apply(request.Station, area, request.Address.ByteOffset, result.ReadBack, _context.Time.GetUtcNow()));
+            }
+
+            return Record(request, oldRaw, result.Outcome);
+        }
+        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
+        {
+            return Record(request, oldRaw, new WriteOutcome.Unknown(
+                default, "polling stopped while the write was on the wire", "no read-back: the panel stopped polling"));
+        }
+        catch (Exception exception)
+        {
+            // A bug of ours must not leave the caller waiting forever: the write still gets an outcome.
+            _context.Logger.Error(exception, "Write {Request} broke the engine's own handling", request.ToString());
+            var outcome = new WriteOutcome.Unknown(
+                default, $"internal error: {exception.Message}", "the panel's own handling broke after the write may have been sent");
+            WriteLog.Record(_context.Logger, request, WriteLog.Unknown, outcome);
+            return outcome;
+        }
+    }
+
+    private ImmutableArray<byte> OldValue(WriteRequest request) =>
+        _values.TryGet(new WatchedItem(request.Station, request.Address), out var old) && old.HasValue ? old.Raw : default;
+
+    private WriteOutcome Record(WriteRequest request, ImmutableArray<byte> oldRaw, WriteOutcome outcome)
+    {
+        WriteLog.Record(_context.Logger, request, WriteLog.Format(request.Address, oldRaw), outcome);
+        return outcome;
     }
 
     private void Publish(List<ValueChange> changes)

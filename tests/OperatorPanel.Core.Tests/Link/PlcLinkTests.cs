@@ -206,29 +206,6 @@ public sealed class PlcLinkTests
     }
 
     [Fact]
-    public async Task Exchange_TwoCallersAtOnce_OnlyOneRequestIsOnTheBus()
-    {
-        var clock = new ManualTimeProvider();
-        var pair = new InMemoryTransportPair(clock);
-        await pair.BusSide.OpenAsync(default);
-        var link = new PlcLink(pair.PanelSide, LinkOptions.For(Some.SerialSettings()) with { InterFrameGap = TimeSpan.Zero }, clock);
-        var other = ReadMb0 with { Items = [new ReadItem(ProtocolArea.M, 1, 1)] };
-
-        var first = link.ExchangeAsync(ReadMb0, default);
-        var second = link.ExchangeAsync(other, default);
-        var onBus = await ReadFrameAsync(pair.BusSide);
-        var nothingMore = await pair.BusSide.ReadAsync(new byte[64], TimeSpan.Zero, default);
-
-        onBus.Should().Be(Request);
-        nothingMore.Should().Be(0, "the second request waits for the first reply");
-        await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x01)), default);
-        (await first).Response.Should().BeOfType<ReadResponse>();
-        (await ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(other with { Sequence = 0x02 })));
-        await pair.BusSide.WriteAsync(Hex.Ascii(Ascii(ResponseCodec.Encode(new ReadResponse(Station2, 0x02, [0x02]), other with { Sequence = 0x02 }))), default);
-        ((ReadResponse)(await second).Response!).Data.Should().Equal(0x02);
-    }
-
-    [Fact]
     public async Task Statistics_WhileAFrameIsInFlight_CountTheRequestOnlyOnceItHasEnded()
     {
         var clock = new ManualTimeProvider();

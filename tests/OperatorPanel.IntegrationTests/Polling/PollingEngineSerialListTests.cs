@@ -21,8 +21,8 @@ public sealed partial class PollingEngineSerialListTests
         }
 
         var commands = Commands(rig.Tap.Received);
-        commands.Count(c => c == CommandCode.DefineList).Should().Be(rig.Engine.Plan.FrameCount);
-        commands.Skip(rig.Engine.Plan.FrameCount * 2).Should().NotBeEmpty().And.OnlyContain(c => c == CommandCode.ReadChanges);
+        commands.Count(c => c == CommandCode.DefineList).Should().Be(rig.Bus.Plan.FrameCount);
+        commands.Skip(rig.Bus.Plan.FrameCount * 2).Should().NotBeEmpty().And.OnlyContain(c => c == CommandCode.ReadChanges);
         rig.Value(plc, "VD100").Raw.Should().Equal(0x00, 0x01, 0xE2, 0x40);
     }
 
@@ -36,7 +36,7 @@ public sealed partial class PollingEngineSerialListTests
 
         // 18 + 2 x 118 = 254 characters: the request reaches every list in the tail. Typed writes are at most 4 bytes, so
         // the block goes over the same link (another client of the bus, e.g. a recipe download).
-        var write = await rig.Link.ExchangeAsync(new WriteBlockRequest(plc.Config.Station, 0x77, ProtocolArea.V, 4000, block), CancellationToken.None)
+        var write = await rig.Bus.ExchangeAsync(new WriteBlockRequest(plc.Config.Station, 0x77, ProtocolArea.V, 4000, block), CancellationToken.None)
             .WaitAsync(SerialLineRig.Limit);
         plc.Memory.WriteDoubleWord(ProtocolArea.V, 100, 7_654_321);
         plc.Memory.WriteWord(ProtocolArea.V, 2000, 0x1234);
