@@ -26,6 +26,7 @@ public sealed class Bus : IAsyncDisposable
     private readonly StationTracker _stations;
     private readonly BusQueue _queue;
     private readonly ConcurrentDictionary<Station, IdentifyResponse> _identities = new();
+    private readonly ConcurrentDictionary<Station, LinkReply> _lastIdentify = new();
     private readonly Action<IReadOnlyList<ValueChange>> _onChanges;
     private PollingEngine _engine;
     private CancellationTokenSource _stop = new();
@@ -44,8 +45,8 @@ public sealed class Bus : IAsyncDisposable
 
     /// <summary>
     /// Starts polling <paramref name="plan"/> on <paramref name="link"/>, which the bus owns from now on.
-    /// <paramref name="onChanges"/> hears every batch of changed values, on the loop's thread (Line/ProjectLine routes
-    /// them to the subscribers of each address).
+    /// <paramref name="onChanges"/> hears, on the loop's thread, the changed values after every cycle and every job, an
+    /// empty batch included (Line/ProjectLine routes them to the subscribers of each address and raises StateChanged).
     /// </summary>
     public static Bus Start(PlcLink link, PollPlan plan, BusSettings settings, TimeProvider? time = null, ILogger? logger = null, Action<IReadOnlyList<ValueChange>>? onChanges = null)
     {
@@ -94,6 +95,12 @@ public sealed class Bus : IAsyncDisposable
     /// </summary>
     public Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default) =>
         _queue.Enqueue($"STOP of {station}", ct => StopNowAsync(station, ct), () => new StopOutcome.NotSent(station, "disconnected before STOP was sent"), cancellationToken);
+
+    /// <summary>What the station said in its last answered IDENTIFY on this bus; null before one answered.</summary>
+    public IdentifyResponse? IdentityOf(Station station) => _identities.GetValueOrDefault(station);
+
+    /// <summary>What the station's last IDENTIFY brought: its reply (a refusal included) or the failure; null before any.</summary>
+    public LinkReply? LastIdentifyOf(Station station) => _lastIdentify.GetValueOrDefault(station);
 
     /// <summary>The station's state on this bus; for a silent station resting between tries, when it is tried next.</summary>
     public StationStatus StatusOf(Station station) => Volatile.Read(ref _engine).GetStationStatus(station);
@@ -148,6 +155,11 @@ public sealed class Bus : IAsyncDisposable
     private async Task<LinkReply> ExchangeNowAsync(PlcRequest request, CancellationToken cancellationToken)
     {
         var reply = await _link.ExchangeAsync(request, cancellationToken).ConfigureAwait(false);
+        if (request is IdentifyRequest)
+        {
+            _lastIdentify[request.Station] = reply;
+        }
+
         if (reply.Response is IdentifyResponse identity)
         {
             _identities[identity.Station] = identity;
@@ -170,7 +182,7 @@ public sealed class Bus : IAsyncDisposable
 
     private PollingEngine NewEngine(PollPlan plan, RefreshMode mode)
     {
-        var engine = new PollingEngine(_link, plan, _stations, _queue, _time, _logger, _settings.Polling)
+        var engine = new PollingEngine(_link, plan, _stations, _queue, _time, _logger, _settings.Polling, _onChanges)
         {
             Mode = mode,
             MinimumPeriod = _settings.MinimumPeriod,
@@ -180,7 +192,6 @@ public sealed class Bus : IAsyncDisposable
             engine.NoteIdentity(identity);
         }
 
-        engine.Subscribe(_onChanges);
         return engine;
     }
 

@@ -2,6 +2,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Stop;
 using OperatorPanel.Core.Writes;
 using Serilog;
@@ -187,6 +188,12 @@ public sealed partial class ProjectLine : IAsyncDisposable
         BusOf(station) is { } bus
             ? bus.StopAsync(station, cancellationToken)
             : Task.FromResult<StopOutcome>(new StopOutcome.NotSent(station, "not connected"));
+
+    /// <summary>What the station said in its last answered IDENTIFY while connected; null before one answered or when not connected.</summary>
+    public IdentifyResponse? IdentityOf(Station station) => BusOf(station)?.IdentityOf(station);
+
+    /// <summary>What the station's last IDENTIFY brought (its reply or the failure); null before any or when not connected.</summary>
+    public LinkReply? LastIdentifyOf(Station station) => BusOf(station)?.LastIdentifyOf(station);
 
     /// <summary>The station's polling status; null when not connected.</summary>
     public StationStatus? StatusOf(Station station) => BusOf(station)?.StatusOf(station);

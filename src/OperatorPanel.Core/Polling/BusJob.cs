@@ -21,7 +21,8 @@ internal abstract class BusJob
     /// <summary>False when the caller withdrew the job before it reached the wire.</summary>
     public bool TryStart() => Interlocked.CompareExchange(ref _state, Started, Queued) == Queued;
 
-    public abstract Task RunAsync(ILogger logger, CancellationToken cancellationToken);
+    /// <summary>Runs the job, then <paramref name="afterEach"/>, then hands its caller the outcome.</summary>
+    public abstract Task RunAsync(ILogger logger, Action afterEach, CancellationToken cancellationToken);
 
     /// <summary>Polling stopped before the job started.</summary>
     public abstract void Abandon();
@@ -53,12 +54,14 @@ internal sealed class BusJob<T> : BusJob
 
     public Task<T> Task => _completion.Task;
 
-    public override async Task RunAsync(ILogger logger, CancellationToken cancellationToken)
+    public override async Task RunAsync(ILogger logger, Action afterEach, CancellationToken cancellationToken)
     {
         _registration.Dispose();
         try
         {
-            _completion.TrySetResult(await _run(cancellationToken).ConfigureAwait(false));
+            var result = await _run(cancellationToken).ConfigureAwait(false);
+            afterEach();
+            _completion.TrySetResult(result);
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {

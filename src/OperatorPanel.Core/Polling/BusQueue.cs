@@ -29,8 +29,11 @@ internal sealed class BusQueue(ILogger logger)
         return job.Task;
     }
 
-    /// <summary>Runs every queued job, in order; returns how many ran. Stops at cancellation (polling stops).</summary>
-    public async Task<int> RunAsync(CancellationToken cancellationToken)
+    /// <summary>
+    /// Runs every queued job, in order; returns how many ran. <paramref name="afterEach"/> runs after each job, before its
+    /// caller hears the outcome (the engine hands on the job's changes then). Stops at cancellation (polling stops).
+    /// </summary>
+    public async Task<int> RunAsync(Action afterEach, CancellationToken cancellationToken)
     {
         var done = 0;
         while (_jobs.TryDequeue(out var job))
@@ -41,7 +44,7 @@ internal sealed class BusQueue(ILogger logger)
                 continue;
             }
 
-            await job.RunAsync(logger, cancellationToken).ConfigureAwait(false);
+            await job.RunAsync(logger, afterEach, cancellationToken).ConfigureAwait(false);
             done++;
             cancellationToken.ThrowIfCancellationRequested();
         }

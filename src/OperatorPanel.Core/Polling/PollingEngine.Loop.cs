@@ -33,7 +33,7 @@ internal sealed partial class PollingEngine
                 var wake = _queue.Wake.Current;
                 try
                 {
-                    await _queue.RunAsync(cancellationToken).ConfigureAwait(false);
+                    await _queue.RunAsync(Flush, cancellationToken).ConfigureAwait(false);
                     var delay = _schedule.DelayBeforeNextCycle();
                     if (delay == TimeSpan.Zero)
                     {
@@ -89,7 +89,7 @@ internal sealed partial class PollingEngine
         var jobs = 0;
         foreach (var station in Plan.Stations)
         {
-            jobs += await _queue.RunAsync(cancellationToken).ConfigureAwait(false);
+            jobs += await _queue.RunAsync(Flush, cancellationToken).ConfigureAwait(false);
             var frames = Enumerable.Range(0, Plan.Frames.Length).Where(i => Plan.Frames[i].Station == station).ToList();
             if (_rest.IsResting(station, started, Mode, Options.OfflineRetryInterval) is { } restingError)
             {
@@ -105,7 +105,8 @@ internal sealed partial class PollingEngine
         }
 
         _rest.NoteSilences(Plan.Stations, tried, Options.OfflineRetryInterval);
-        Publish(changes);
+        _batch.AddRange(changes);
+        Flush();
         return new PollResult(cycle, started, _context.Time.GetUtcNow(), reads.Sent, reads.Failed, jobs, changes.Count);
     }
 
@@ -118,7 +119,7 @@ internal sealed partial class PollingEngine
         var jobs = 0;
         while (pending.Count > 0)
         {
-            jobs += await _queue.RunAsync(cancellationToken).ConfigureAwait(false);
+            jobs += await _queue.RunAsync(Flush, cancellationToken).ConfigureAwait(false);
             foreach (var (frame, read) in await ReadNextAsync(station, pending, cancellationToken).ConfigureAwait(false))
             {
                 reads.Record(frame, read);

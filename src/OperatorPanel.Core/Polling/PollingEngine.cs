@@ -27,16 +27,30 @@ internal sealed partial class PollingEngine
     private readonly OfflineRest _rest;
     private readonly BusQueue _queue;
     private readonly CycleSchedule _schedule;
-    private readonly Lock _gate = new();
-    private ImmutableArray<Action<IReadOnlyList<ValueChange>>> _subscribers = [];
+    private readonly Action<IReadOnlyList<ValueChange>> _onChanges;
 
-    public PollingEngine(IPlcLink link, PollPlan plan, TimeProvider? timeProvider = null, ILogger? logger = null, PollingOptions? options = null)
-        : this(link, plan, null, null, timeProvider ?? TimeProvider.System, logger ?? Logger.None, options ?? new PollingOptions())
+    /// <summary>The changes of the cycle or job under way, handed on whole at its end; the loop's thread only.</summary>
+    private readonly List<ValueChange> _batch = [];
+
+    /// <param name="link">The bus's link.</param>
+    /// <param name="plan">What to read.</param>
+    /// <param name="timeProvider">The clock of every wait.</param>
+    /// <param name="logger">Where failures and writes are logged.</param>
+    /// <param name="options">How lists are read and silent stations rested.</param>
+    /// <param name="onChanges">
+    /// Hears, on the loop's thread, the batch of changed values (value or quality) after every cycle and every job of the
+    /// queue (a write's read-back), an empty batch included: the bus's owner (Line/ProjectLine) routes the changes and
+    /// refreshes what shows station states and link counters. A throwing listener is logged; polling goes on.
+    /// </param>
+    public PollingEngine(
+        IPlcLink link, PollPlan plan, TimeProvider? timeProvider = null, ILogger? logger = null, PollingOptions? options = null, Action<IReadOnlyList<ValueChange>>? onChanges = null)
+        : this(link, plan, null, null, timeProvider ?? TimeProvider.System, logger ?? Logger.None, options ?? new PollingOptions(), onChanges)
     {
     }
 
     /// <summary>An engine for a bus that keeps its station states and its queue across plans (Line/Bus).</summary>
-    public PollingEngine(IPlcLink link, PollPlan plan, StationTracker? stations, BusQueue? queue, TimeProvider time, ILogger logger, PollingOptions options)
+    public PollingEngine(
+        IPlcLink link, PollPlan plan, StationTracker? stations, BusQueue? queue, TimeProvider time, ILogger logger, PollingOptions options, Action<IReadOnlyList<ValueChange>>? onChanges)
     {
         ArgumentNullException.ThrowIfNull(link);
         ArgumentNullException.ThrowIfNull(plan);
@@ -48,6 +62,7 @@ internal sealed partial class PollingEngine
         _rest = new OfflineRest(stations, log);
         _queue = queue ?? new BusQueue(log);
         _schedule = new CycleSchedule(_queue.Wake, time);
+        _onChanges = onChanges ?? (_ => { });
     }
 
     public PollPlan Plan => _context.Plan;
@@ -69,18 +84,6 @@ internal sealed partial class PollingEngine
     }
 
     private StationTracker Stations => _context.Judge.Stations;
-
-    /// <summary>
-    /// Calls <paramref name="onChanges"/> with every batch of changed values (value or quality), once per cycle and
-    /// once per write read-back, on the polling loop's thread; marshal to the UI yourself. A throwing subscriber is
-    /// logged and stays subscribed. Dispose the result to unsubscribe. Outside Core, values come from Line/ILineValues.
-    /// </summary>
-    internal IDisposable Subscribe(Action<IReadOnlyList<ValueChange>> onChanges)
-    {
-        ArgumentNullException.ThrowIfNull(onChanges);
-        lock (_gate) { _subscribers = _subscribers.Add(onChanges); }
-        return new Subscription(() => { lock (_gate) { _subscribers = _subscribers.Remove(onChanges); } });
-    }
 
     /// <summary>The latest value of a watched address; false when the plan does not watch it.</summary>
     public bool TryGetValue(Station station, PlcAddress address, out PolledValue value) =>
@@ -128,7 +131,7 @@ internal sealed partial class PollingEngine
             if (!result.ReadBack.IsDefault)
             {
                 var area = ProtocolAreaExtensions.FromMemoryArea(request.Address.Area)!.Value;
-                Publish(_values.Apply(request.Station, area, request.Address.ByteOffset, result.ReadBack, _context.Time.GetUtcNow()));
+                _batch.AddRange(_values.Apply(request.Station, area, request.Address.ByteOffset, result.ReadBack, _context.Time.GetUtcNow()));
             }
 
             return Record(request, oldRaw, result.Outcome);
@@ -158,33 +161,18 @@ internal sealed partial class PollingEngine
         return outcome;
     }
 
-    private void Publish(List<ValueChange> changes)
+    /// <summary>The end of a cycle or a job: its changes, maybe none, go to the listener in one batch.</summary>
+    private void Flush()
     {
-        if (changes.Count == 0)
+        var batch = _batch.ToArray();
+        _batch.Clear();
+        try
         {
-            return;
+            _onChanges(batch);
         }
-
-        ImmutableArray<Action<IReadOnlyList<ValueChange>>> subscribers;
-        lock (_gate) { subscribers = _subscribers; }
-        var batch = changes.AsReadOnly();
-        foreach (var subscriber in subscribers)
+        catch (Exception exception)
         {
-            try
-            {
-                subscriber(batch);
-            }
-            catch (Exception exception)
-            {
-                _context.Logger.Error(exception, "A value subscriber threw; polling continues");
-            }
+            _context.Logger.Error(exception, "A value subscriber threw; polling continues");
         }
-    }
-
-    private sealed class Subscription(Action unsubscribe) : IDisposable
-    {
-        private Action? _unsubscribe = unsubscribe;
-
-        public void Dispose() => Interlocked.Exchange(ref _unsubscribe, null)?.Invoke();
     }
 }

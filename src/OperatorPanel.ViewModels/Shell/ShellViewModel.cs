@@ -109,21 +109,8 @@ public sealed partial class ShellViewModel : ObservableObject
         NotifyCommands();
     }
 
-    private void OnSessionChanged(object? sender, PropertyChangedEventArgs e)
-    {
-        var mirrored = e.PropertyName switch
-        {
-            nameof(PanelSession.Mode) => nameof(IsContinuous),
-            nameof(PanelSession.IsReadOnly) => nameof(IsReadOnly),
-            nameof(PanelSession.IsConnected) => nameof(IsConnected),
-            _ => null,
-        };
-        if (mirrored is not null)
-        {
-            OnPropertyChanged(mirrored);
-            NotifyCommands();
-        }
-    }
+    /// <summary>The session's state (connected, refresh mode, read-only) is bound where it is shown; the commands follow it.</summary>
+    private void OnSessionChanged(object? sender, PropertyChangedEventArgs e) => NotifyCommands();
 
     private void NotifyCommands()
     {

@@ -179,37 +179,40 @@ public sealed class PollingEngineTests
     }
 
     [Fact]
-    public async Task RunCycle_SubscriberThrows_OtherSubscribersServedAndErrorLogged()
+    public async Task RunCycle_ListenerThrows_ErrorLoggedAndPollingGoesOn()
     {
-        var engine = Engine(Items(One, "VB0"));
-        engine.Subscribe(_ => throw new InvalidOperationException("view model bug"));
-        var later = new List<ValueChange>();
-        engine.Subscribe(later.AddRange);
+        var engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock, _log.CreateLogger(), onChanges: _ => throw new InvalidOperationException("view model bug"));
 
-        await engine.RunCycleAsync(CancellationToken.None);
+        var first = await engine.RunCycleAsync(CancellationToken.None);
+        var second = await engine.RunCycleAsync(CancellationToken.None);
 
-        later.Should().ContainSingle();
+        (first.FramesFailed, second.FramesFailed).Should().Be((0, 0));
+        engine.TryGetValue(One, PlcAddress.Parse("VB0"), out var value).Should().BeTrue();
+        value.Quality.Should().Be(ValueQuality.Good);
         _log.Events.Should().Contain(e => e.Level == LogEventLevel.Error && e.Exception!.Message == "view model bug");
     }
 
     [Fact]
-    public async Task Subscribe_Disposed_StopsDelivery()
+    public async Task RunCycle_NothingChanged_ListenerHearsAnEmptyBatch()
     {
-        var engine = Engine(Items(One, "VB0"));
-        var received = new List<ValueChange>();
-        engine.Subscribe(received.AddRange).Dispose();
+        var heard = new List<IReadOnlyList<ValueChange>>();
+        var engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock, onChanges: heard.Add);
 
         await engine.RunCycleAsync(CancellationToken.None);
+        await engine.RunCycleAsync(CancellationToken.None);
 
-        received.Should().BeEmpty();
+        heard.Select(b => b.Count).Should().Equal([1, 0], "every cycle ends with its batch, so the status bar hears of it");
     }
 
-    private PollingEngine Engine(IEnumerable<WatchedItem> items)
-    {
-        var engine = new PollingEngine(_link, PollPlanner.Build(items), _clock, _log.CreateLogger());
-        engine.Subscribe(_batches.Add);
-        return engine;
-    }
+    /// <summary>An engine whose batches with changes land in <see cref="_batches"/> (each cycle also ends with an empty one when nothing changed).</summary>
+    private PollingEngine Engine(IEnumerable<WatchedItem> items) =>
+        new(_link, PollPlanner.Build(items), _clock, _log.CreateLogger(), onChanges: b =>
+        {
+            if (b.Count > 0)
+            {
+                _batches.Add(b);
+            }
+        });
 
     private static string Hex(PolledValue value) => Convert.ToHexString(value.Raw.AsSpan());
 }
