@@ -42,7 +42,7 @@ public sealed partial class ArchitectureTests
     public void CoreFolders_TheWireLayersDoNotImportTheLayersAboveThem(string folder, string above)
     {
         var core = Path.Combine(RepositoryRoot(), "src", "OperatorPanel.Core");
-        var importing = Directory.EnumerateFiles(Path.Combine(core, folder), "*.cs")
+        var importing = Directory.EnumerateFiles(Path.Combine(core, folder), "*.cs", SearchOption.AllDirectories)
             .Where(f => File.ReadAllText(f).Contains($"OperatorPanel.Core.{above}", StringComparison.Ordinal) || File.ReadAllText(f).Contains($" {above}.", StringComparison.Ordinal))
             .Select(Path.GetFileName);
 

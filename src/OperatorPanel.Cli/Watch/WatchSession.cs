@@ -84,7 +84,7 @@ internal sealed class WatchSession : IAsyncDisposable
     }
 
     /// <summary>
-    /// IDENTIFY each station beside the polling, as the panel does on connecting: the engine learns what the handler has
+    /// IDENTIFY each station through its bus, as the panel does on connecting: the bus learns what the handler has
     /// (READ CHANGES copies, 09 READ CHANGES OF LISTS) and polls accordingly from then on. Not awaited on opening, so
     /// a silent station does not hold up the view; it is polled as before and shows up offline. A v1 handler's message
     /// is logged. What it found is kept for the view (<see cref="HandlerCheckOf"/>): the watch is where a technician sees

@@ -13,6 +13,9 @@ namespace OperatorPanel.Core.Link;
 /// replies for an older request, and the echo of our own request that some RS-485 adapters return, are skipped rather
 /// than taken for the answer. One request at a time: its bus (Line/Bus) is its one caller, through the bus's queue.
 /// Whether a station is online is not the link's business: the bus's station states (Polling/StationTracker) keep it.
+/// Four files by concern, one type because all four share the transport, the frame reader, the sequence number and the
+/// gap timing of one wire: the exchange and its retries (here), receiving one attempt's reply (.Receive), getting a
+/// vanished port back (.Reconnect), the v1 IDENTIFY probe (.V1Probe).
 /// </summary>
 public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
 {

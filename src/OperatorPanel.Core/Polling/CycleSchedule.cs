@@ -80,6 +80,22 @@ internal sealed class CycleSchedule(WakeSignal wake, TimeProvider time)
         }
     }
 
+    /// <summary>Waits for <paramref name="wake"/> (new work) or, when a cycle is due later, its <paramref name="delay"/>.</summary>
+    public async Task WaitAsync(Task wake, TimeSpan? delay, CancellationToken cancellationToken)
+    {
+        if (delay is not { } due)
+        {
+            await wake.WaitAsync(cancellationToken).ConfigureAwait(false);
+            return;
+        }
+
+        using var stopTimer = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
+        var timer = Task.Delay(due, time, stopTimer.Token);
+        await Task.WhenAny(wake, timer).ConfigureAwait(false);
+        await stopTimer.CancelAsync().ConfigureAwait(false);
+        cancellationToken.ThrowIfCancellationRequested();
+    }
+
     /// <summary>Polling stopped: every refresh request still waiting is cancelled.</summary>
     public void CancelWaiters()
     {

@@ -5,8 +5,8 @@ namespace OperatorPanel.Core.Polling;
 
 /// <summary>
 /// The loop: the bus's queued jobs first (writes, IDENTIFY, STOP), then a cycle when one is due, else wait on the clock
-/// or for work. A cycle goes station by station: queued jobs ahead of each exchange, the station's readers asked in order for its frames not read yet, the
-/// quality rules (<see cref="CycleReads"/>), and one published batch.
+/// or for work. A cycle goes station by station: queued jobs ahead of each exchange, the station's readers asked in order
+/// for its frames not read yet, the quality rules (<see cref="CycleReads"/>), and one batch handed on at its end.
 /// </summary>
 internal sealed partial class PollingEngine
 {
@@ -41,7 +41,7 @@ internal sealed partial class PollingEngine
                     }
                     else
                     {
-                        await WaitAsync(wake, delay, cancellationToken).ConfigureAwait(false);
+                        await _schedule.WaitAsync(wake, delay, cancellationToken).ConfigureAwait(false);
                     }
                 }
                 catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
@@ -155,20 +155,5 @@ internal sealed partial class PollingEngine
             // A bug of ours or of a link, never a link failure (those are values): the frame fails, polling goes on.
             return [(pending[0], _context.Judge.Failed(station, exception))];
         }
-    }
-
-    private async Task WaitAsync(Task wake, TimeSpan? delay, CancellationToken cancellationToken)
-    {
-        if (delay is not { } due)
-        {
-            await wake.WaitAsync(cancellationToken).ConfigureAwait(false);
-            return;
-        }
-
-        using var stopTimer = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
-        var timer = Task.Delay(due, _context.Time, stopTimer.Token);
-        await Task.WhenAny(wake, timer).ConfigureAwait(false);
-        await stopTimer.CancelAsync().ConfigureAwait(false);
-        cancellationToken.ThrowIfCancellationRequested();
     }
 }

@@ -67,7 +67,7 @@ internal sealed partial class PollingEngine
 
     public PollPlan Plan => _context.Plan;
 
-    public PollingOptions Options => _context.Options;
+    private PollingOptions Options => _context.Options;
 
     /// <summary>Switchable while running; the loop notices at once.</summary>
     public RefreshMode Mode

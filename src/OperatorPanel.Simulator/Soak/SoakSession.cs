@@ -137,7 +137,7 @@ public static class SoakSession
 
         public List<SoakWrite> Writes { get; } = [];
 
-        /// <summary>The handler answered IDENTIFY, so the engine polls its lists with 09 as the panel does.</summary>
+        /// <summary>The handler answered IDENTIFY, so the bus polls its lists with 09 as the panel does.</summary>
         public bool Identified { get; private set; }
 
         public List<ShownValue> Shown { get; } = [];

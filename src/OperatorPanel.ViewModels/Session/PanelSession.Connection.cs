@@ -3,7 +3,7 @@ using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.ViewModels.Session;
 
-/// <summary>Connecting, disconnecting, refreshing, and following project edits while connected.</summary>
+/// <summary>Connecting (and identifying every station), disconnecting, refreshing, and following project edits while connected.</summary>
 public sealed partial class PanelSession : IAsyncDisposable
 {
     private ILineConnector? _connector;
@@ -37,6 +37,24 @@ public sealed partial class PanelSession : IAsyncDisposable
         await _line.DisconnectAsync();
         OnPropertyChanged(nameof(IsConnected));
         StatusLine.Show("Disconnected");
+    }
+
+    /// <summary>
+    /// Sends IDENTIFY to every station through its bus's queue (beside the polling, one request on the wire at a time),
+    /// for Diagnostics and the status bar: which CPU and handler each station really runs. The line keeps what each reply
+    /// said; the station views read it at the line's StateChanged.
+    /// </summary>
+    public async Task IdentifyAsync(CancellationToken cancellationToken = default)
+    {
+        foreach (var view in IsConnected ? Stations.ToList() : [])
+        {
+            await _line.IdentifyAsync(view.Address, cancellationToken);
+        }
+
+        foreach (var view in Stations.Where(s => s.CpuMismatch))
+        {
+            StatusLine.ShowError($"{view.Name}: the PLC reports {view.Identity!.CpuText}, the project says {view.Station.Cpu.DisplayName}");
+        }
     }
 
     /// <summary>

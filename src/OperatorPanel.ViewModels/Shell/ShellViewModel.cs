@@ -18,7 +18,8 @@ namespace OperatorPanel.ViewModels.Shell;
 /// The main window: project file commands with dirty tracking, the line (connect, refresh mode, refresh now, demo,
 /// read-only), the per-station status bar, the panes (with the Alarms pane and the alarm count), the project wizard
 /// (File > New, Edit project) and Generate PLC code. Everything reads <see cref="Session"/>, which carries the project,
-/// the values and every change notification.
+/// the values and every change notification. Five files, one per menu of the window (this one: state and panes; .Files,
+/// .Line, .Alarms, .Wizard), because the commands of one window share its dirty mark and its services.
 /// </summary>
 public sealed partial class ShellViewModel : ObservableObject
 {
