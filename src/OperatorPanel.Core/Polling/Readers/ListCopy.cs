@@ -1,6 +1,6 @@
 using System.Collections.Immutable;
 
-namespace OperatorPanel.Core.Polling;
+namespace OperatorPanel.Core.Polling.Readers;
 
 /// <summary>
 /// The PC's side of one stored list's change copy: the list's data as the PLC's copy holds it after the last good READ

@@ -1,5 +1,6 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
+using Serilog;
 
 namespace OperatorPanel.Core.Polling;
 
@@ -10,31 +11,34 @@ namespace OperatorPanel.Core.Polling;
 /// cycle where nobody answered (the port or cable gone) never rests, so every station is good again as soon as the line
 /// is back. In triggered refresh (<see cref="RefreshMode.OnDemand"/>) every refresh tries every station: someone asked.
 /// </summary>
-public sealed partial class PollingEngine
+internal sealed class OfflineRest(StationTracker stations, ILogger logger)
 {
-    /// <summary>Replaced whole by the polling loop, so <see cref="GetStationStatus"/> may read it from any thread.</summary>
+    /// <summary>Replaced whole by the polling loop, so <see cref="NextTry"/> may read it from any thread.</summary>
     private ImmutableHashSet<Station> _silentWhileOthersAnswer = [];
 
-    /// <summary>The station's last error when it sits this cycle out; null when it is to be polled.</summary>
-    private string? IsResting(Station station, DateTimeOffset now)
+    /// <summary>When a resting station is tried next; null when it is polled every cycle.</summary>
+    public DateTimeOffset? NextTry(StationStatus status, RefreshMode mode, TimeSpan interval)
     {
-        var status = _stations.Get(station);
-        return NextTry(station, status) is { } next && now < next ? status.LastError ?? "offline" : null;
+        ArgumentNullException.ThrowIfNull(status);
+        return mode == RefreshMode.Continuous
+            && Volatile.Read(ref _silentWhileOthersAnswer).Contains(status.Station)
+            && status.State is StationState.Offline or StationState.StoppedByPanel
+            && status.LastFailureAt is { } failedAt
+                ? failedAt + interval
+                : null;
     }
 
-    /// <summary>When a resting station is tried next; null when it is polled every cycle.</summary>
-    private DateTimeOffset? NextTry(Station station, StationStatus status) =>
-        Mode == RefreshMode.Continuous
-        && Volatile.Read(ref _silentWhileOthersAnswer).Contains(station)
-        && status.State is StationState.Offline or StationState.StoppedByPanel
-        && status.LastFailureAt is { } failedAt
-            ? failedAt + Options.OfflineRetryInterval
-            : null;
+    /// <summary>The station's last error when it sits this cycle out; null when it is to be polled.</summary>
+    public string? IsResting(Station station, DateTimeOffset now, RefreshMode mode, TimeSpan interval)
+    {
+        var status = stations.Get(station);
+        return NextTry(status, mode, interval) is { } next && now < next ? status.LastError ?? "offline" : null;
+    }
 
     /// <summary>After a cycle: which of the stations it tried were silent while another station answered.</summary>
-    private void NoteSilences(IReadOnlyCollection<Station> tried)
+    public void NoteSilences(IEnumerable<Station> all, IReadOnlyCollection<Station> tried, TimeSpan interval)
     {
-        var answering = _plan.Stations.Where(s => _stations.Get(s).State == StationState.Online).ToHashSet();
+        var answering = all.Where(s => stations.Get(s).State == StationState.Online).ToHashSet();
         if (!tried.Any(answering.Contains))
         {
             // Nobody answered in this cycle: the port or cable is gone, so a station resting since another answered earlier
@@ -49,23 +53,12 @@ public sealed partial class PollingEngine
             if (!silent.Contains(station))
             {
                 silent = silent.Add(station);
-                _logger.Information(
+                logger.Information(
                     "Station {Station} is silent while others on the bus answer: tried every {Interval} s so it does not slow their refresh",
-                    station.Address, Options.OfflineRetryInterval.TotalSeconds);
+                    station.Address, interval.TotalSeconds);
             }
         }
 
         Volatile.Write(ref _silentWhileOthersAnswer, silent);
-    }
-
-    private void MarkFramesOffline(Station station, FrameRead[] reads, string error)
-    {
-        for (var i = 0; i < _plan.Frames.Length; i++)
-        {
-            if (_plan.Frames[i].Station == station)
-            {
-                reads[i] = FrameRead.Failure(error, stationOffline: true);
-            }
-        }
     }
 }
