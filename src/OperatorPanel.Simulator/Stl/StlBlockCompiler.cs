@@ -1,6 +1,8 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Simulator.Stl.Operations;
 using OperatorPanel.Stl;
+using OperatorPanel.Stl.Instructions;
 
 namespace OperatorPanel.Simulator.Stl;
 
@@ -116,12 +118,15 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
         StlBlock block, AwlInstruction instruction, IReadOnlyDictionary<string, (StlLoc Loc, int Bytes, bool IsBit)> locals)
     {
         var line = instruction.Line;
-        if (!StlInstructionSet.TryGet(instruction.Mnemonic, out var code, out var types))
+        if (!StlOperations.TryGet(instruction.Mnemonic, out var operation) || !StlInstructionTable.TryGet(instruction.Mnemonic, out var spec))
         {
-            Report(line, $"{instruction.Mnemonic} is not implemented by the simulator");
+            var why = StlOperations.NotExecuted.TryGetValue(instruction.Mnemonic, out var reason) ? $": {reason}" : string.Empty;
+            Report(line, $"{instruction.Mnemonic} is not implemented by the simulator{why}");
             return null;
         }
 
+        var code = operation.Code;
+        StlOperandType[] types = [.. spec.Operands.Select(StlOperandTypes.Of)];
         if (!PlacedIn(code, block.Kind))
         {
             Report(line, $"{instruction.Mnemonic} cannot be used in {block.Name} ({block.Source.DefaultName})");
@@ -137,8 +142,7 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
 
         var op = new StlOp
         {
-            Code = code,
-            Mnemonic = instruction.Mnemonic,
+            Operation = operation,
             Line = line,
             Width = code is StlOpCode.CmpLd or StlOpCode.CmpA or StlOpCode.CmpO or StlOpCode.CmpRLd or StlOpCode.CmpRA or StlOpCode.CmpRO
                 ? StlOperandResolver.BytesOf(types[0]) : 0,
@@ -146,11 +150,11 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
         if (op.Width > 0)
         {
             var tail = instruction.Mnemonic[(code is StlOpCode.CmpLd or StlOpCode.CmpRLd ? 3 : 2)..];
-            op.N = StlInstructionSet.RelationOf(tail)!.Value;
+            op.N = CompareInstructions.RelationOf(tail)!.Value;
         }
         else if (code == StlOpCode.Fnd)
         {
-            op.N = StlInstructionSet.RelationOf(instruction.Mnemonic[3..])!.Value;
+            op.N = CompareInstructions.RelationOf(instruction.Mnemonic[3..])!.Value;
         }
         else if (code is StlOpCode.Eu or StlOpCode.Ed)
         {
@@ -171,7 +175,7 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
 
         (op.A, op.B, op.C) = (locs[0], locs[1], locs[2]);
         ok = ok && _rules.Check(op, Report);
-        op.Cost = StlTiming.Base(code) + (op.Parameters.Length * StlTiming.PerParameter)
+        op.Cost = operation.Time.Nanoseconds + (op.Parameters.Length * StlTiming.PerParameter)
             + (StlTiming.IndirectOperand * (locs.Count(l => l?.Kind == StlLocKind.Indirect)
                 + op.Parameters.Count(p => p.Actual.Kind == StlLocKind.Indirect)));
         return ok ? op : null;

@@ -11,10 +11,10 @@ public sealed class StlProgramLoaderTests
     [Fact]
     public void Load_UnknownInstruction_ReportsNameAndLineAndGivesNoProgram()
     {
-        var result = Load("LD     SM0.0\nHSC    0");
+        var result = Load("LD     SM0.0\nPID    VB100, 0");
 
         result.Succeeded.Should().BeFalse();
-        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: HSC is not implemented by the simulator");
+        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: PID is not implemented by the simulator: PID loop control is not modelled");
     }
 
     [Theory]
@@ -123,6 +123,7 @@ public sealed class StlProgramLoaderTests
     {
         var result = Load("LD     SM0.0\nNETR   VB0, 0");
 
-        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: NETR is not implemented by the simulator");
+        result.Diagnostics.Select(d => d.ToString()).Should().Equal(
+            "line 5: NETR is not implemented by the simulator: the simulator models the Freeport ports only, not a PPI network");
     }
 }

@@ -1,0 +1,81 @@
+namespace OperatorPanel.Simulator.Stl.Execution;
+
+/// <summary>
+/// What raises interrupt events while the CPU runs: the communication ports (receive character, receive message
+/// complete, transmit complete) and the timed interrupts. <see cref="NextChange"/> is when one of them next needs the
+/// CPU's attention, so the scan loop looks at them only then.
+/// </summary>
+internal sealed class StlEventSources(StlInterrupts interrupts, int portCount)
+{
+    private readonly IStlPort?[] _ports = new IStlPort?[2];
+    private readonly List<StlEvent> _raised = [];
+
+    /// <summary>Simulated time (ns) of the next port or timed event; long.MaxValue when none is pending.</summary>
+    public long NextChange { get; private set; } = long.MaxValue;
+
+    /// <summary>A CPU 221/222/224 has port 0 only, a 224XP/226 ports 0 and 1.</summary>
+    public void AttachPort(IStlPort port)
+    {
+        ArgumentNullException.ThrowIfNull(port);
+        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(port.Number, portCount, nameof(port));
+        ArgumentOutOfRangeException.ThrowIfNegative(port.Number, nameof(port));
+        _ports[port.Number] = port;
+        port.Reset();
+    }
+
+    /// <summary>The port RCV/XMT name; null when the host attached none (nothing connected).</summary>
+    public IStlPort? Port(int number) => _ports[number];
+
+    /// <summary>The CPU left RUN: every port ends its receive or transmit and speaks PPI again.</summary>
+    public void ResetPorts()
+    {
+        foreach (var port in _ports)
+        {
+            port?.Reset();
+        }
+    }
+
+    /// <summary>Brings a port to <paramref name="now"/>, queueing the events it raised on the way at their own times.</summary>
+    public void Advance(IStlPort port, long now)
+    {
+        _raised.Clear();
+        port.AdvanceTo(StlTime.ToTimeSpan(now), _raised);
+        foreach (var raised in _raised)
+        {
+            interrupts.Enqueue(raised.Number, StlTime.FromTimeSpan(raised.At));
+        }
+    }
+
+    /// <summary>Every port and timed event due by <paramref name="now"/> queued.</summary>
+    public void Collect(long now)
+    {
+        var time = StlTime.ToTimeSpan(now);
+        foreach (var port in _ports)
+        {
+            if (port?.NextChange is { } change && change <= time)
+            {
+                Advance(port, now);
+            }
+        }
+
+        interrupts.RaiseTimed(now);
+        Refresh();
+    }
+
+    public void Refresh()
+    {
+        var next = interrupts.NextTimed;
+        foreach (var port in _ports)
+        {
+            if (port?.NextChange is { } change)
+            {
+                next = Math.Min(next, StlTime.FromTimeSpan(change));
+            }
+        }
+
+        NextChange = next;
+    }
+
+    /// <summary>A timed interrupt was just attached: it may fall due before anything else.</summary>
+    public void TimedAttached() => NextChange = Math.Min(NextChange, interrupts.NextTimed);
+}
