@@ -9,9 +9,10 @@ namespace OperatorPanel.Cli.Commands;
 /// <summary>
 /// <c>opanel stl run FILE.awl --cpu C [--for 5s] [--set I0.0=1[@2s]]... [--print VW0]... [--json]</c>: loads a
 /// Micro/WIN export, runs it on the simulated CPU for that simulated time (scan by scan, as fast as the PC goes) with
-/// those inputs, and prints each requested address as <c>ADDR value</c>. Exit 0 after the run (a CPU that went to
-/// STOP is reported on stderr); 1 for a bad option or a program that cannot be loaded, each problem printed as
-/// <c>FILE.awl:LINE: message</c>.
+/// those inputs, and prints each requested address as <c>ADDR value</c>: the state at the end of the last scan that
+/// completed at or before --for, as the PLC shows it (outputs are written at the end of a scan). Exit 0 after the run
+/// (a CPU that went to STOP is reported on stderr); 1 for a bad option or a program that cannot be loaded, each problem
+/// printed as <c>FILE.awl:LINE: message</c>.
 /// </summary>
 internal static class StlRunCommand
 {
@@ -22,19 +23,19 @@ internal static class StlRunCommand
         var revision = CpuOptions.Revision();
         var duration = new Option<string>("--for")
         {
-            Description = "Simulated time to run: 250ms, 5s, 1.5s (default 1s)",
+            Description = "Simulated time to run: 250ms, 5s, 1.5s, 10m, 1h (default 1s); the values printed are those at the end of the last scan completed by then",
             DefaultValueFactory = _ => "1s",
         };
         var sets = new Option<string[]>("--set")
         {
-            Description = "ADDR=VALUE before the run, or ADDR=VALUE@TIME during it (I0.0=1, VW10=-5, I0.1=0@2s); repeatable",
+            Description = "ADDR=VALUE before the run, or ADDR=VALUE@TIME during it, TIME not after --for (I0.0=1, VW10=-5, I0.1=0@2s); repeatable",
             AllowMultipleArgumentsPerToken = false,
         };
         var prints = new Option<string[]>("--print")
         {
-            Description = "Address to print after the run: Q0.0, VB10, VW10 (INT), VD10 (DINT), VD10:real, T37, T37.bit, C5, C5.bit, AC0; repeatable",
+            Description = "Address to print, as at the end of the last complete scan: Q0.0, VB10, VW10 (INT), VD10 (DINT), VD10:real, T37, T37.bit, C5, C5.bit, AC0; repeatable",
         };
-        var command = new Command("run", "Run an .awl program on the simulated CPU for a simulated time and print addresses")
+        var command = new Command("run", "Run an .awl program on the simulated CPU for a simulated time and print addresses as they are at the end of the last complete scan")
         {
             file, cpu, revision, duration, sets, prints,
         };
@@ -53,7 +54,7 @@ internal static class StlRunCommand
 
         if (!StlSetting.TryParseTime(durationText, out var duration))
         {
-            return cli.Fail(ExitCodes.BadInput, $"--for '{durationText}': not a time (write 250ms, 5s or 1.5s, at most a day)");
+            return cli.Fail(ExitCodes.BadInput, $"--for '{durationText}': not a time (write 250ms, 5s, 1.5s, 10m or 1h, at most a day)");
         }
 
         var settings = new List<StlSetting>();
@@ -62,6 +63,12 @@ internal static class StlRunCommand
             if (!StlSetting.TryParse(text, cpu, out var setting, out var error))
             {
                 return cli.Fail(ExitCodes.BadInput, $"--set {error}");
+            }
+
+            if (setting.At > duration)
+            {
+                return cli.Fail(ExitCodes.BadInput, string.Create(CultureInfo.InvariantCulture,
+                    $"--set '{text}': {setting.At.TotalMilliseconds} ms is after --for {durationText}: the run ends before it (set it earlier or run longer)"));
             }
 
             settings.Add(setting);
@@ -132,6 +139,8 @@ internal static class StlRunCommand
                 ok = true,
                 file = name,
                 simulatedMs = duration.TotalMilliseconds,
+                stateAtMs = run.ReadAt?.TotalMilliseconds,
+                noScanCompleted = run.NoScanCompleted,
                 scans = plc.Scans,
                 mode = plc.Mode.ToString(),
                 stop,
@@ -148,6 +157,11 @@ internal static class StlRunCommand
         if (stop is not null)
         {
             cli.Error.WriteLine(stop);
+        }
+
+        if (run.NoScanCompleted)
+        {
+            cli.Error.WriteLine($"opanel: warning: no scan of {name} completed within --for; the values are those at the end of the run");
         }
 
         return ExitCodes.Ok;

@@ -81,6 +81,39 @@ public sealed class StlRunCommandTests
     }
 
     [Fact]
+    public void Run_SetAfterFor_ExitOneNamingTheSetting()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("Counters.awl"), "--cpu", "224", "--for", "2s",
+            "--set", "I0.0=1@3s", "--print", "C0");
+
+        exit.Should().Be(1);
+        output.Should().BeEmpty();
+        error.Should().Contain("--set 'I0.0=1@3s'").And.Contain("after --for 2s");
+    }
+
+    [Fact]
+    public void Run_ForInMinutes_RunsAndPrintsTheLastCompleteScan()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("ScanEnd.awl"), "--cpu", "224", "--for", "0.01m",
+            "--print", "Q0.6", "--print", "VW2", "--print", "VW0");
+
+        exit.Should().Be(0, error);
+        output.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal("Q0.6 1", "VW2 10", "VW0 11");
+    }
+
+    [Fact]
+    public void Run_Json_SaysWhenTheStateWasTaken()
+    {
+        var (exit, output, _) = CliRunner.Run("stl", "run", Corpus("ScanEnd.awl"), "--cpu", "224", "--for", "50ms", "--print", "Q0.6", "--json");
+
+        exit.Should().Be(0);
+        using var json = JsonDocument.Parse(output);
+        var at = json.RootElement.GetProperty("stateAtMs").GetDouble();
+        at.Should().BeInRange(45, 50, "the end of the last scan before 50 ms (a scan takes about 1.4 ms)");
+        json.RootElement.GetProperty("noScanCompleted").GetBoolean().Should().BeFalse();
+    }
+
+    [Fact]
     public void Run_MissingFile_ExitOne()
     {
         var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("NoSuch.awl"), "--cpu", "224");
