@@ -3,6 +3,7 @@ using System.Globalization;
 using System.Text;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Run;
+using OperatorPanel.Stl;
 
 namespace OperatorPanel.Cli.Commands;
 
@@ -35,17 +36,21 @@ internal static class StlRunCommand
         {
             Description = "Address to print, as at the end of the last complete scan: Q0.0, VB10, VW10 (INT), VD10 (DINT), VD10:real, T37, T37.bit, C5, C5.bit, AC0; repeatable",
         };
+        var strict = new Option<bool>("--strict")
+        {
+            Description = "Refuse instructions the simulator treats as doing nothing (HDEF, HSC, PLS) and interrupt events it never raises, instead of warning",
+        };
         var command = new Command("run", "Run an .awl program on the simulated CPU for a simulated time and print addresses as they are at the end of the last complete scan")
         {
-            file, cpu, revision, duration, sets, prints,
+            file, cpu, revision, duration, sets, prints, strict,
         };
         command.SetAction(parse => Run(
             context(parse), parse.GetValue(file)!, parse.GetValue(cpu), parse.GetValue(revision), parse.GetValue(duration)!,
-            parse.GetValue(sets) ?? [], parse.GetValue(prints) ?? []));
+            parse.GetValue(sets) ?? [], parse.GetValue(prints) ?? [], parse.GetValue(strict)));
         return command;
     }
 
-    private static int Run(CliContext cli, string path, string? cpuName, string? revisionName, string durationText, string[] setTexts, string[] printTexts)
+    private static int Run(CliContext cli, string path, string? cpuName, string? revisionName, string durationText, string[] setTexts, string[] printTexts, bool strict)
     {
         if (!CpuOptions.TryResolve(cpuName, revisionName, out var cpu, out var cpuError))
         {
@@ -96,7 +101,7 @@ internal static class StlRunCommand
             return cli.Fail(ExitCodes.BadInput, $"cannot read {path}: {ex.Message}");
         }
 
-        var load = StlProgramLoader.Load(awl, cpu);
+        var load = StlProgramLoader.Load(awl, cpu, new StlLoadOptions { Strict = strict });
         var name = Path.GetFileName(path);
         if (load.Program is null)
         {
@@ -106,7 +111,7 @@ internal static class StlRunCommand
         var run = new StlRun(load.Program);
         run.Run(duration, settings);
         cli.Log.Information("stl run {File} on {Cpu}: {Duration} simulated, {Scans} scans, mode {Mode}", name, cpu.Name, duration, run.Plc.Scans, run.Plc.Mode);
-        return Report(cli, name, duration, run, watches);
+        return Report(cli, name, duration, run, watches, load.Warnings);
     }
 
     private static int Refuse(CliContext cli, string name, StlLoadResult load)
@@ -128,7 +133,7 @@ internal static class StlRunCommand
         return ExitCodes.BadInput;
     }
 
-    private static int Report(CliContext cli, string name, TimeSpan duration, StlRun run, List<StlWatch> watches)
+    private static int Report(CliContext cli, string name, TimeSpan duration, StlRun run, List<StlWatch> watches, IReadOnlyList<AwlDiagnostic> warnings)
     {
         var plc = run.Plc;
         var stop = plc.Fault is { } fault ? $"{name}:{fault.Line}: the CPU went to STOP ({fault.Code} in {fault.Block}): {fault.Message}" : null;
@@ -141,12 +146,18 @@ internal static class StlRunCommand
                 simulatedMs = duration.TotalMilliseconds,
                 stateAtMs = run.ReadAt?.TotalMilliseconds,
                 noScanCompleted = run.NoScanCompleted,
+                warnings = warnings.Select(w => new { file = name, line = w.Line, message = w.Message }),
                 scans = plc.Scans,
                 mode = plc.Mode.ToString(),
                 stop,
                 values = watches.Select(w => new { address = w.Text, value = run.Read(w) }),
             });
             return ExitCodes.Ok;
+        }
+
+        foreach (var warning in warnings)
+        {
+            cli.Error.WriteLine($"{name}:{warning.Line}: warning: {warning.Message}");
         }
 
         foreach (var watch in watches)

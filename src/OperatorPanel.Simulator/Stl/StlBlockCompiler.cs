@@ -7,10 +7,12 @@ using OperatorPanel.Stl.Instructions;
 namespace OperatorPanel.Simulator.Stl;
 
 /// <summary>Compiles the instructions of one block into ops: operands resolved, jumps and FOR/NEXT pairs linked, costs set.</summary>
-internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlock> blocks, List<AwlDiagnostic> diagnostics)
+internal sealed class StlBlockCompiler(
+    CpuProfile cpu, Dictionary<string, StlBlock> blocks, List<AwlDiagnostic> diagnostics, List<AwlDiagnostic> warnings, StlLoadOptions options)
 {
     private readonly StlOperandResolver _resolver = new(cpu);
     private readonly StlTimerNumbers _rules = new();
+    private readonly HashSet<int> _silentEvents = [];
 
     public int EdgeCount { get; private set; }
 
@@ -125,6 +127,17 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
             return null;
         }
 
+        if (operation.NotSimulated is { } notSimulated)
+        {
+            if (options.Strict)
+            {
+                Report(line, $"{instruction.Mnemonic} is not implemented by the simulator: {notSimulated} (--strict)");
+                return null;
+            }
+
+            warnings.Add(new AwlDiagnostic(line, $"{instruction.Mnemonic}: {notSimulated}; it does nothing here (--strict refuses it)"));
+        }
+
         var code = operation.Code;
         StlOperandType[] types = [.. spec.Operands.Select(StlOperandTypes.Of)];
         if (!PlacedIn(code, block.Kind))
@@ -224,20 +237,31 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
     }
 
     /// <summary>
-    /// An attached routine must be able to run: the simulator raises the Freeport events and the timed interrupts only,
-    /// so a program waiting on an input edge, a high-speed counter or a pulse output would silently never see it. Event
-    /// numbers: ML801761 p. 172, Table 6-50 (docs/sources/s7200-facts.md section 5): 8/25 receive character, 9/26
-    /// transmit complete, 23/24 receive message complete (ports 0/1), 10/11 timed interrupts 0/1.
+    /// The simulator raises the input edges of I0.0-I0.3 (events 0-7, from changes of the field inputs), the Freeport
+    /// events (8, 9, 23-26) and the timed interrupts (10, 11). Event numbers: ML801761 p. 172, Table 6-50
+    /// (docs/sources/s7200-facts.md section 5). An ATCH to any other event (high-speed counters, pulse outputs, T32/T96)
+    /// is warned about once per event, since the rest of the program runs as it would; strict mode refuses it.
     /// </summary>
     private bool IsRaised(StlOp op)
     {
-        if (op.N is 8 or 9 or 10 or 11 or (>= 23 and <= 26))
+        if (op.N is (>= 0 and <= 11) or (>= 23 and <= 26))
         {
             return true;
         }
 
-        Report(op.Line, $"ATCH: the simulator never raises event {op.N}: it raises the Freeport events (8, 9, 23-26) and the timed interrupts (10, 11) only");
-        return false;
+        var name = StlInterruptEvents.Name(op.N);
+        if (options.Strict)
+        {
+            Report(op.Line, $"ATCH: event {op.N} ({name}) never fires in the simulator: it raises the input edges (0-7), the Freeport events (8, 9, 23-26) and the timed interrupts (10, 11) only (--strict)");
+            return false;
+        }
+
+        if (_silentEvents.Add(op.N))
+        {
+            warnings.Add(new AwlDiagnostic(op.Line, $"ATCH: event {op.N} ({name}) never fires in the simulator; its routine runs only for the events it can raise (--strict refuses it)"));
+        }
+
+        return true;
     }
 
     private bool TryBlock(StlOp op, AwlOperand operand)

@@ -51,6 +51,7 @@ public sealed partial class StlPlc
     internal void RunTo(long end)
     {
         var time = _m.Time;
+        _m.Events.InputsSet(InputImage[0], time.Now, Mode == OperatingMode.Run);
         _m.Events.Refresh();
         while (time.Now < end && Mode == OperatingMode.Run)
         {

@@ -13,16 +13,16 @@ namespace OperatorPanel.Simulator.Stl;
 public static class StlProgramLoader
 {
     /// <summary>Parses and loads .awl text; parse and load diagnostics come back together, in line order.</summary>
-    public static StlLoadResult Load(string awlText, CpuProfile cpu)
+    public static StlLoadResult Load(string awlText, CpuProfile cpu, StlLoadOptions? options = null)
     {
         var parsed = AwlParser.Parse(awlText);
-        var loaded = Load(parsed.Program, cpu);
+        var loaded = Load(parsed.Program, cpu, options);
         return parsed.Succeeded
             ? loaded
-            : new StlLoadResult(null, [.. parsed.Diagnostics.Concat(loaded.Diagnostics).OrderBy(d => d.Line)]);
+            : new StlLoadResult(null, [.. parsed.Diagnostics.Concat(loaded.Diagnostics).OrderBy(d => d.Line)]) { Warnings = loaded.Warnings };
     }
 
-    public static StlLoadResult Load(AwlProgram program, CpuProfile cpu)
+    public static StlLoadResult Load(AwlProgram program, CpuProfile cpu, StlLoadOptions? options = null)
     {
         ArgumentNullException.ThrowIfNull(program);
         ArgumentNullException.ThrowIfNull(cpu);
@@ -34,7 +34,8 @@ public static class StlProgramLoader
         CheckBlocks(blocks, cpu, diagnostics);
         var names = NameBlocks(blocks, diagnostics);
         var locals = blocks.Select(b => StlLocalLayout.Place(b, cpu.LocalBytesPerPou, diagnostics)).ToArray();
-        var compiler = new StlBlockCompiler(cpu, names, diagnostics);
+        var warnings = new List<AwlDiagnostic>();
+        var compiler = new StlBlockCompiler(cpu, names, diagnostics, warnings, options ?? StlLoadOptions.Default);
         foreach (var block in blocks)
         {
             block.Ops = compiler.Compile(block, locals[block.Index]);
@@ -43,9 +44,8 @@ public static class StlProgramLoader
         // What Micro/WIN refuses is said once, by the program check; the compiler's word on the same line goes.
         diagnostics.RemoveAll(d => refusals.Any(r => r.Line == d.Line));
         diagnostics.AddRange(refusals);
-        return diagnostics.Count == 0
-            ? new StlLoadResult(new StlProgram(cpu, blocks, compiler.EdgeCount), [])
-            : new StlLoadResult(null, [.. diagnostics.OrderBy(d => d.Line)]);
+        var loaded = diagnostics.Count == 0 ? new StlProgram(cpu, blocks, compiler.EdgeCount) : null;
+        return new StlLoadResult(loaded, [.. diagnostics.OrderBy(d => d.Line)]) { Warnings = [.. warnings.OrderBy(w => w.Line)] };
     }
 
     private static void CheckBlocks(StlBlock[] blocks, CpuProfile cpu, List<AwlDiagnostic> diagnostics)

@@ -50,7 +50,28 @@ public sealed class StlRunCommandTests
 
         exit.Should().Be(1);
         output.Should().BeEmpty();
-        error.Should().Contain("Refused.awl:8: HSC is not implemented").And.Contain("Refused.awl:12: NETW is not implemented");
+        error.Should().Contain("Refused.awl:10: PID is not implemented").And.Contain("Refused.awl:12: NETW is not implemented");
+    }
+
+    [Fact]
+    public void Run_HighSpeedCounter_WarnsByLineAndRunsTheRest()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("HighSpeedCounter.awl"), "--cpu", "224", "--for", "1.5s",
+            "--set", "I0.0=1", "--print", "Q0.1");
+
+        exit.Should().Be(0, error);
+        output.Should().Be($"Q0.1 1{Environment.NewLine}");
+        error.Should().Contain("HighSpeedCounter.awl:11: warning: HSC: high-speed counters")
+            .And.Contain("HighSpeedCounter.awl:9: warning: ATCH: event 12 (HSC0 CV=PV) never fires in the simulator");
+    }
+
+    [Fact]
+    public void Run_HighSpeedCounterStrict_ExitOneNamingEach()
+    {
+        var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("HighSpeedCounter.awl"), "--cpu", "224", "--strict", "--print", "Q0.1");
+
+        exit.Should().Be(1);
+        error.Should().Contain("HighSpeedCounter.awl:8: HDEF is not implemented by the simulator").And.Contain("(--strict)");
     }
 
     [Fact]

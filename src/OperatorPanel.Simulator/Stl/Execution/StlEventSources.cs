@@ -2,13 +2,16 @@ namespace OperatorPanel.Simulator.Stl.Execution;
 
 /// <summary>
 /// What raises interrupt events while the CPU runs: the communication ports (receive character, receive message
-/// complete, transmit complete) and the timed interrupts. <see cref="NextChange"/> is when one of them next needs the
-/// CPU's attention, so the scan loop looks at them only then.
+/// complete, transmit complete), the timed interrupts, and the edges of the field inputs I0.0-I0.3 (events 0-7,
+/// ML801761 p. 172, Table 6-50: rising 0/2/4/6, falling 1/3/5/7). <see cref="NextChange"/> is when a port or timer
+/// next needs the CPU's attention, so the scan loop looks at them only then; the inputs change only when the host sets
+/// them, between runs.
 /// </summary>
 internal sealed class StlEventSources(StlInterrupts interrupts, int portCount)
 {
     private readonly IStlPort?[] _ports = new IStlPort?[2];
     private readonly List<StlEvent> _raised = [];
+    private int _edgeInputs;
 
     /// <summary>Simulated time (ns) of the next port or timed event; long.MaxValue when none is pending.</summary>
     public long NextChange { get; private set; } = long.MaxValue;
@@ -74,6 +77,25 @@ internal sealed class StlEventSources(StlInterrupts interrupts, int portCount)
         }
 
         NextChange = next;
+    }
+
+    /// <summary>
+    /// The field inputs as the host left them: each change of I0.0-I0.3 since the last look is an edge event at
+    /// <paramref name="now"/> (queued when a routine is attached; <paramref name="raise"/> false in STOP, where only the
+    /// new state is taken).
+    /// </summary>
+    public void InputsSet(byte firstInputByte, long now, bool raise)
+    {
+        var inputs = firstInputByte & 0x0F;
+        var changed = inputs ^ _edgeInputs;
+        _edgeInputs = inputs;
+        for (var bit = 0; raise && bit < 4; bit++)
+        {
+            if ((changed & (1 << bit)) != 0)
+            {
+                interrupts.Enqueue((2 * bit) + ((inputs & (1 << bit)) != 0 ? 0 : 1), now);
+            }
+        }
     }
 
     /// <summary>A timed interrupt was just attached: it may fall due before anything else.</summary>

@@ -22,4 +22,5 @@ internal enum StlOpCode
     MovR, Bmd, Rlb, Rrb, Rlw, Rrw, Rld, Rrd, Shrb,
     Att, Fifo, Lifo, Fnd, Fill,
     Lscr, Scrt, Scre, Cscre, Stop, Wdr, Todr, Todw, Lds,
+    Hdef, Hsc, Pls,
 }

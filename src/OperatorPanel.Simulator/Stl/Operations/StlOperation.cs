@@ -16,4 +16,10 @@ internal sealed record StlOperation(string Mnemonic, StlOpCode Code, StlExecutio
 {
     /// <summary>A box instruction that does more than set ENO = 0 without power flow (FOR skips its loop).</summary>
     public StlUnpoweredHandler? Unpowered { get; init; }
+
+    /// <summary>
+    /// Why the instruction does nothing in the simulator (HSC, PLS: hardware it does not model); the loader warns with
+    /// it by line, or refuses the instruction in strict mode. Null for an instruction the simulator executes.
+    /// </summary>
+    public string? NotSimulated { get; init; }
 }

@@ -192,6 +192,10 @@ internal static class StlOperations
         yield return Box("XMT", Xmt, SystemCall, InterruptInstructions.Transmit);
         yield return Box("TODR", Todr, Other, ClockInstructions.Read);
         yield return Box("TODW", Todw, Other, ClockInstructions.Write);
+        const string highSpeed = "high-speed counters and pulse outputs drive hardware the simulator does not model";
+        yield return Box("HDEF", Hdef, Other, Bits.NoOperation) with { NotSimulated = highSpeed };
+        yield return Box("HSC", Hsc, Other, Bits.NoOperation) with { NotSimulated = highSpeed };
+        yield return Box("PLS", Pls, Other, Bits.NoOperation) with { NotSimulated = highSpeed };
     }
 
     /// <summary>LDB= ... OR&gt;=: the form (LD, A, O) and width (B, W, D, R) pick the row; the relation goes to op.N.</summary>
@@ -214,14 +218,8 @@ internal static class StlOperations
 
     private static IEnumerable<KeyValuePair<string, string>> Refused()
     {
-        const string highSpeed = "high-speed counters and pulse outputs drive hardware the simulator does not model";
         const string ppi = "the simulator models the Freeport ports only, not a PPI network";
         const string firmware2 = "a CPU firmware 2.0 instruction the simulator does not execute yet";
-        foreach (var mnemonic in (string[])["HDEF", "HSC", "PLS"])
-        {
-            yield return new(mnemonic, highSpeed);
-        }
-
         foreach (var mnemonic in (string[])["NETR", "NETW", "GPA", "SPA"])
         {
             yield return new(mnemonic, ppi);

@@ -47,6 +47,15 @@ public sealed class CorpusLoadTests
         var load = StlProgramLoader.Load(CorpusProgram.Text("Refused.awl"), CorpusProgram.Cpu224);
 
         load.Program.Should().BeNull();
+        load.Diagnostics.Select(d => (d.Line, d.Message.Split(' ')[0])).Should().Equal((10, "PID"), (11, "NETR"), (12, "NETW"));
+        load.Warnings.Select(d => (d.Line, d.Message.Split(':')[0])).Should().Equal((7, "HDEF"), (8, "HSC"), (9, "PLS"));
+    }
+
+    [Fact]
+    public void Refused_Strict_AlsoRefusesWhatDoesNothing()
+    {
+        var load = StlProgramLoader.Load(CorpusProgram.Text("Refused.awl"), CorpusProgram.Cpu224, new StlLoadOptions { Strict = true });
+
         load.Diagnostics.Select(d => (d.Line, d.Message.Split(' ')[0])).Should().Equal(
             (7, "HDEF"), (8, "HSC"), (9, "PLS"), (10, "PID"), (11, "NETR"), (12, "NETW"));
     }
