@@ -1,6 +1,5 @@
 using System.CommandLine;
 using System.Globalization;
-using System.Text;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Run;
 using OperatorPanel.Stl;
@@ -40,17 +39,23 @@ internal static class StlRunCommand
         {
             Description = "Refuse instructions the simulator treats as doing nothing (HDEF, HSC, PLS) and interrupt events it never raises, instead of warning",
         };
+        var symbols = new Option<string?>("--symbols")
+        {
+            Description = "The program's symbol table exported from Micro/WIN (tab-separated: symbol, address, comment): symbolic operands become its addresses",
+        };
         var command = new Command("run", "Run an .awl program on the simulated CPU for a simulated time and print addresses as they are at the end of the last complete scan")
         {
-            file, cpu, revision, duration, sets, prints, strict,
+            file, cpu, revision, duration, sets, prints, strict, symbols,
         };
         command.SetAction(parse => Run(
             context(parse), parse.GetValue(file)!, parse.GetValue(cpu), parse.GetValue(revision), parse.GetValue(duration)!,
-            parse.GetValue(sets) ?? [], parse.GetValue(prints) ?? [], parse.GetValue(strict)));
+            parse.GetValue(sets) ?? [], parse.GetValue(prints) ?? [], new StlLoadOptions { Strict = parse.GetValue(strict) }, parse.GetValue(symbols)));
         return command;
     }
 
-    private static int Run(CliContext cli, string path, string? cpuName, string? revisionName, string durationText, string[] setTexts, string[] printTexts, bool strict)
+    private static int Run(
+        CliContext cli, string path, string? cpuName, string? revisionName, string durationText, string[] setTexts, string[] printTexts,
+        StlLoadOptions options, string? symbolsPath)
     {
         if (!CpuOptions.TryResolve(cpuName, revisionName, out var cpu, out var cpuError))
         {
@@ -90,18 +95,22 @@ internal static class StlRunCommand
             watches.Add(watch);
         }
 
-        string awl;
-        try
+        if (!AwlFiles.TryRead(path, out var source, out var readError))
         {
-            // Micro/WIN exports in the Windows ANSI code page: Latin-1 keeps one character per byte.
-            awl = File.ReadAllText(path, Encoding.Latin1);
-        }
-        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
-        {
-            return cli.Fail(ExitCodes.BadInput, $"cannot read {path}: {ex.Message}");
+            return cli.Fail(ExitCodes.BadInput, readError);
         }
 
-        var load = StlProgramLoader.Load(awl, cpu, new StlLoadOptions { Strict = strict });
+        if (symbolsPath is not null)
+        {
+            if (!AwlFiles.TryReadSymbols(cli, symbolsPath, out var table, out readError))
+            {
+                return cli.Fail(ExitCodes.BadInput, readError);
+            }
+
+            options = options with { Symbols = table };
+        }
+
+        var load = StlProgramLoader.Load(source.Text, cpu, options);
         var name = Path.GetFileName(path);
         if (load.Program is null)
         {

@@ -1,4 +1,5 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Simulator.Stl.Operations;
 using OperatorPanel.Stl;
@@ -224,6 +225,11 @@ internal sealed class StlBlockCompiler(
 
                 Report(line, $"{op.Mnemonic}: '{text}' is not a {type.ToString().ToLowerInvariant()} number 0-{max}{(type == StlOperandType.Port ? $" on the {cpu.Name}" : string.Empty)}");
                 return false;
+            case StlOperandType.DWordIn when operand is { Kind: AwlOperandKind.Address, Area: MemoryArea.HC } && !options.Strict:
+                // A high-speed counter's current value (MOVD HC0, VD0): no counter runs here, so it reads 0, as HSC does nothing.
+                warnings.Add(new AwlDiagnostic(line, $"{op.Mnemonic}: '{operand.Text}': high-speed counters are not simulated; it reads 0 here (--strict refuses it)"));
+                locs[index] = new StlLoc { Kind = StlLocKind.Constant, Value = 0 };
+                return true;
             default:
                 if (_resolver.TryResolve(operand, type, locals, out var loc, out var error))
                 {

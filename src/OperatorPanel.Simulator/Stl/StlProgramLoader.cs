@@ -1,6 +1,8 @@
+using System.Collections.Immutable;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Stl;
 using OperatorPanel.Stl.Checks;
+using OperatorPanel.Stl.Symbols;
 
 namespace OperatorPanel.Simulator.Stl;
 
@@ -26,24 +28,40 @@ public static class StlProgramLoader
     {
         ArgumentNullException.ThrowIfNull(program);
         ArgumentNullException.ThrowIfNull(cpu);
-        var refusals = AwlProgramCheck.Check(program, cpu);
+        options ??= StlLoadOptions.Default;
         var diagnostics = new List<AwlDiagnostic>();
+        var warnings = new List<AwlDiagnostic>();
+        var unknownSymbols = ImmutableArray<AwlDiagnostic>.Empty;
+        if (options.Symbols is { } symbols)
+        {
+            (program, unknownSymbols) = AwlSymbolResolver.Resolve(program, symbols);
+        }
+
+        // What Micro/WIN's import would refuse in the file's structure does not stop a run: the interpreter can still
+        // run a program whose OB1 header lacks its name. A CALL to a missing block and a block defined twice the
+        // compiler refuses itself; a block without body (a protected POU) runs as an empty one, with a warning.
+        var export = AwlExportCheck.Check(program);
+        warnings.AddRange(export.Warnings);
+        warnings.AddRange(export.Refusals.Where(r => r.Id == AwlCheckIds.BlockHeaderWithoutName)
+            .Select(r => r with { Message = $"Micro/WIN would refuse this file: {r.Message}" }));
+        var refusals = AwlProgramCheck.Check(program, cpu);
         var ordered = program.Blocks.Where(b => b.Kind == AwlBlockKind.OrganizationBlock)
             .Concat(program.Blocks.Where(b => b.Kind != AwlBlockKind.OrganizationBlock)).ToArray();
         var blocks = ordered.Select((b, i) => new StlBlock(b, i)).ToArray();
         CheckBlocks(blocks, cpu, diagnostics);
         var names = NameBlocks(blocks, diagnostics);
         var locals = blocks.Select(b => StlLocalLayout.Place(b, cpu.LocalBytesPerPou, diagnostics)).ToArray();
-        var warnings = new List<AwlDiagnostic>();
-        var compiler = new StlBlockCompiler(cpu, names, diagnostics, warnings, options ?? StlLoadOptions.Default);
+        var compiler = new StlBlockCompiler(cpu, names, diagnostics, warnings, options);
         foreach (var block in blocks)
         {
             block.Ops = compiler.Compile(block, locals[block.Index]);
         }
 
-        // What Micro/WIN refuses is said once, by the program check; the compiler's word on the same line goes.
-        diagnostics.RemoveAll(d => refusals.Any(r => r.Line == d.Line));
+        // What Micro/WIN refuses is said once, by the program check, and a symbol missing from the table once, by the
+        // resolver; the compiler's word on the same line goes.
+        diagnostics.RemoveAll(d => refusals.Concat(unknownSymbols).Any(r => r.Line == d.Line));
         diagnostics.AddRange(refusals);
+        diagnostics.AddRange(unknownSymbols);
         var loaded = diagnostics.Count == 0 ? new StlProgram(cpu, blocks, compiler.EdgeCount) : null;
         return new StlLoadResult(loaded, [.. diagnostics.OrderBy(d => d.Line)]) { Warnings = [.. warnings.OrderBy(w => w.Line)] };
     }

@@ -135,6 +135,38 @@ public sealed class StlRunCommandTests
     }
 
     [Fact]
+    public void Run_Symbols_ResolvedFromTheExportedTable()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("Symbols/Conveyor.awl"), "--cpu", "224", "--for", "1s",
+            "--symbols", Corpus("Symbols/Conveyor-symbols.txt"), "--set", "I0.0=1@0.1s", "--set", "I0.0=0@0.2s", "--print", "Q0.0", "--print", "VW102");
+
+        exit.Should().Be(0, error);
+        output.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal("Q0.0 1", "VW102 6");
+    }
+
+    [Fact]
+    public void Run_ChineseExport_NamesInDiagnosticsRead()
+    {
+        var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("Encodings/Gbk.awl"), "--cpu", "224", "--print", "Q9.9");
+
+        exit.Should().Be(1);
+        error.Should().Contain("Q9.9");
+        var (ok, output, _) = CliRunner.Run("stl", "run", Corpus("Encodings/Gbk.awl"), "--cpu", "224", "--for", "1s",
+            "--set", "I0.0=1@0.1s", "--set", "I0.0=0@0.2s", "--print", "VW0");
+        ok.Should().Be(0);
+        output.Should().Be($"VW0 1{Environment.NewLine}");
+    }
+
+    [Fact]
+    public void Run_ProtectedPou_WarnsNamingIt()
+    {
+        var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("ProtectedPou.awl"), "--cpu", "224", "--print", "Q0.1");
+
+        exit.Should().Be(0);
+        error.Should().Contain("ProtectedPou.awl:16: warning: PWM_INIT (SBR_0) has no network: Micro/WIN exports a password-protected POU without its body");
+    }
+
+    [Fact]
     public void Run_MissingFile_ExitOne()
     {
         var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("NoSuch.awl"), "--cpu", "224");
