@@ -1,4 +1,5 @@
 using OperatorPanel.Simulator.Reference;
+using OperatorPanel.Simulator.Stl.Execution;
 
 namespace OperatorPanel.Simulator.Stl;
 
@@ -26,57 +27,39 @@ public sealed partial class StlPlc
         }
 
         // Telegrams whose last character arrived before now must be known before the jobs are done.
-        foreach (var port in _ports)
-        {
-            if (port?.NextChange is { } change && change.Ticks * 100 <= _now)
-            {
-                AdvancePort(port);
-            }
-        }
-
+        _m.Events.AdvancePorts(_m.Time.Now);
         CommunicationPhase.Invoke(this, EventArgs.Empty);
-        RefreshNextChange();
+        _m.Events.Refresh();
     }
 
     /// <summary>STOP: no program, but the ports run and the communication phase comes round, until RUN again or <paramref name="end"/>.</summary>
     private void RunStopped(long end)
     {
+        var time = _m.Time;
         if (CommunicationPhase is null)
         {
-            _now = Math.Max(_now, end);
+            time.Now = Math.Max(time.Now, end);
             return;
         }
 
-        var cycle = Math.Max(StopCommunicationCycle.Ticks * 100, 1);
+        var cycle = Math.Max(StlTime.FromTimeSpan(StopCommunicationCycle), 1);
         while (Mode == OperatingMode.Stop)
         {
-            var next = _nextStopCycle;
-            foreach (var port in _ports)
-            {
-                next = port?.NextChange is { } change ? Math.Min(next, change.Ticks * 100) : next;
-            }
-
+            var next = Math.Min(_nextStopCycle, _m.Events.NextPortChange);
             if (next > end)
             {
                 break;
             }
 
-            _now = Math.Max(_now, next);
-            foreach (var port in _ports)
+            time.Now = Math.Max(time.Now, next);
+            _m.Events.AdvancePorts(time.Now);
+            if (time.Now >= _nextStopCycle)
             {
-                if (port?.NextChange is { } change && change.Ticks * 100 <= _now)
-                {
-                    AdvancePort(port);
-                }
-            }
-
-            if (_now >= _nextStopCycle)
-            {
-                _nextStopCycle = _now + cycle;
+                _nextStopCycle = time.Now + cycle;
                 CommunicationPhase?.Invoke(this, EventArgs.Empty);
             }
         }
 
-        _now = Math.Max(_now, Mode == OperatingMode.Stop ? end : _now);
+        time.Now = Math.Max(time.Now, Mode == OperatingMode.Stop ? end : time.Now);
     }
 }
