@@ -1,6 +1,7 @@
 using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Demo;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 using Serilog;

@@ -1,11 +1,11 @@
 using System.Collections.Concurrent;
-using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Demo;
 using OperatorPanel.Simulator.Hosting;
 using Serilog;
 
@@ -42,7 +42,6 @@ internal sealed class WatchSession : IAsyncDisposable
         ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector();
         var options = new ProjectLineOptions
         {
-            LinkOptionsFor = serial => LinkSession.OptionsFor(serial, scanAllowance: null, demo),
             // A triggered watch refreshes once a second at most: registering read lists would only add exchanges.
             UseReadLists = project.Refresh.Mode == RefreshMode.Continuous,
         };
