@@ -14,6 +14,7 @@ namespace OperatorPanel.ViewModels.Shell;
 /// <param name="Wizards">Shows the wizard window for Edit project; null disables the command.</param>
 /// <param name="ConnectionTester">The wizard's "test connection" (the shell guards it with <see cref="PortInUseGuard"/>).</param>
 /// <param name="Ports">The serial ports the wizard's link page offers.</param>
+/// <param name="LayoutPath">The per-user window layout file (<see cref="Docking.DockingViewModel"/>); null keeps the layout for this run only.</param>
 public sealed record ShellServices(
     IDialogService Dialogs,
     IFileDialogService Files,
@@ -22,4 +23,5 @@ public sealed record ShellServices(
     INewProjectSource NewProjects,
     IWizardPresenter? Wizards = null,
     IConnectionTester? ConnectionTester = null,
-    ISerialPortCatalog? Ports = null);
+    ISerialPortCatalog? Ports = null,
+    string? LayoutPath = null);

@@ -15,10 +15,10 @@ public sealed partial class ShellViewModel : IDisposable
     private PanelProject _alarmsProject = NoProject;
     private string? _alarmsPath;
 
-    public AlarmsPaneViewModel AlarmsPane { get; }
+    private AlarmsViewModel _alarms;
 
-    /// <summary>The current project's alarms: rows, history, acknowledge, CSV export.</summary>
-    public AlarmsViewModel Alarms => AlarmsPane.Alarms;
+    /// <summary>The current project's alarms: rows, history, acknowledge, CSV export; the Alarms pane's content.</summary>
+    public AlarmsViewModel Alarms => _alarms;
 
     public int ActiveAlarmCount => Alarms.ActiveCount;
 
@@ -57,7 +57,8 @@ public sealed partial class ShellViewModel : IDisposable
         var old = Alarms;
         old.PropertyChanged -= OnAlarmsChanged;
         old.Dispose();
-        AlarmsPane.Alarms = CreateAlarms(e.Project, ProjectPath);
+        _alarms = CreateAlarms(e.Project, ProjectPath);
+        Panes.Single(p => p.Content == old).Content = _alarms;
         OnPropertyChanged(nameof(Alarms));
         NotifyAlarmCounts();
     }
