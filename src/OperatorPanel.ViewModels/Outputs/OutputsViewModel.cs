@@ -58,7 +58,8 @@ public sealed class OutputsViewModel : ObservableObject
             return;
         }
 
-        if (_options.ConfirmWrites && !await _dialogs.ConfirmAsync("Switch output", $"Set {output.Address} ({output.Symbol}) to {newValue}?"))
+        var current = output.Value is { } now ? (now ? "1" : "0") : null;
+        if (_options.ConfirmWrites && !await _dialogs.ConfirmAsync("Switch output", WriteMessages.Question(output.PlcAddress, output.Symbol, current, output.Quality, newValue)))
         {
             return;
         }

@@ -29,7 +29,8 @@ public sealed partial class PanelSession : IAsyncDisposable
         await _line.ConnectAsync(connector, cancellationToken);
         IsConnected = true;
         _statusTimer = _time.CreateTimer(_ => _dispatcher.Post(UpdateStations), null, StatusPeriod, StatusPeriod);
-        StatusLine.Show($"Connected to {Project.Stations.Length} station(s) on {string.Join(", ", _line.PortNames)}");
+        // "Polling", not "connected": whether each station answers is the station's own state beside this line.
+        StatusLine.Show($"Polling {string.Join(", ", Project.Stations.Select(s => s.Name))} on {string.Join(", ", _line.PortNames)}");
         await IdentifyAsync(cancellationToken);
     }
 
@@ -86,5 +87,9 @@ public sealed partial class PanelSession : IAsyncDisposable
         ProjectChanged?.Invoke(this, new ProjectChangedEventArgs(edited, ProjectChangeKind.Edited));
     }
 
-    public async ValueTask DisposeAsync() => await DisconnectAsync();
+    public async ValueTask DisposeAsync()
+    {
+        await DisconnectAsync();
+        StatusLine.Dispose();
+    }
 }

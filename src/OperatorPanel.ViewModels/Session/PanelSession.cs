@@ -44,6 +44,7 @@ public sealed partial class PanelSession : ObservableObject
         Project = project;
         Mode = project.Refresh.Mode;
         Stations = [.. project.Stations.Select(s => new StationStatusViewModel(s))];
+        StatusLine = new StatusLine(_time, _dispatcher);
     }
 
     /// <summary>
@@ -63,7 +64,7 @@ public sealed partial class PanelSession : ObservableObject
 
     public ObservableCollection<StationStatusViewModel> Stations { get; }
 
-    public StatusLine StatusLine { get; } = new();
+    public StatusLine StatusLine { get; }
 
     /// <summary>The operator's refresh mode; switches the running engines at once. Not saved in the project.</summary>
     [ObservableProperty]

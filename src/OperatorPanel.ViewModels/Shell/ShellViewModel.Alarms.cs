@@ -24,7 +24,10 @@ public sealed partial class ShellViewModel : IDisposable
 
     public int UnacknowledgedAlarmCount => Alarms.UnacknowledgedCount;
 
-    /// <summary>For the status bar: "2 active, 1 unacknowledged", or "no alarms".</summary>
+    /// <summary>An alarm is active or waits for acknowledgement: the banner and the status bar show it in colour.</summary>
+    public bool HasPendingAlarms => ActiveAlarmCount > 0 || UnacknowledgedAlarmCount > 0;
+
+    /// <summary>For the banner and the status bar: "2 active, 1 unacknowledged", or "no alarms".</summary>
     public string AlarmSummary => ActiveAlarmCount == 0 && UnacknowledgedAlarmCount == 0
         ? "no alarms"
         : $"{ActiveAlarmCount} active, {UnacknowledgedAlarmCount} unacknowledged";
@@ -79,6 +82,7 @@ public sealed partial class ShellViewModel : IDisposable
     {
         OnPropertyChanged(nameof(ActiveAlarmCount));
         OnPropertyChanged(nameof(UnacknowledgedAlarmCount));
+        OnPropertyChanged(nameof(HasPendingAlarms));
         OnPropertyChanged(nameof(AlarmSummary));
     }
 }
