@@ -42,6 +42,7 @@ public sealed partial class ProjectWizardViewModel : ObservableObject
         var station = project.Stations[stationIndex];
         CpuStep = new CpuStepViewModel(project.Name, station.Cpu, station.Name, station.Address, station.AllowStop);
         IoStep = new IoSymbolsStepViewModel(station.Inputs, station.Outputs, () => CpuStep.Cpu);
+        CpuStep.CpuChanged += IoStep.FollowCpu;
         MemoryStep = new MemoryCellsStepViewModel(station.Tags);
         AlarmStep = new AlarmTextsStepViewModel(station.Alarms);
         LinkStep = new LinkStepViewModel(station.Link, CpuStep, ports, tester);
