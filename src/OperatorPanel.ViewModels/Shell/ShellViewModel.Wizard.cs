@@ -35,7 +35,7 @@ public sealed partial class ShellViewModel
         }
 
         var index = Math.Clamp(SelectedStationIndex, 0, Session.Project.Stations.Length - 1);
-        var wizard = new ProjectWizardViewModel(Session.Project, index, new PortInUseGuard(tester, Session), ports);
+        var wizard = new ProjectWizardViewModel(Session.Project, index, new PortInUseGuard(tester, Session), ports, _time);
         if (await presenter.ShowAsync(wizard) is not { } edited)
         {
             return;
