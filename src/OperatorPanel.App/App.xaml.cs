@@ -129,7 +129,9 @@ public partial class App : Application
                 presenter,
                 tester,
                 ports,
-                Path.Combine(UserFolder, "layout.json"));
+                Path.Combine(UserFolder, "layout.json"),
+                Path.Combine(AppContext.BaseDirectory, "README.txt"),
+                new ShellDocumentLauncher());
         });
         services.AddSingleton(sp => new ShellViewModel(
             sp.GetRequiredService<PanelSession>(),

@@ -2,6 +2,7 @@ using System.ComponentModel;
 using System.Windows;
 using System.Windows.Media;
 using OperatorPanel.App.Generate;
+using OperatorPanel.App.Help;
 using OperatorPanel.ViewModels.Docking;
 using OperatorPanel.ViewModels.Shell;
 
@@ -10,7 +11,7 @@ namespace OperatorPanel.App;
 /// <summary>
 /// The shell window. Code-behind is visual only: it hands the docking host its panes, feeds DockingViewModel.FitZoom
 /// the window's size for Large display, puts the window where the layout says and remembers where it was, shows
-/// Generate PLC code while the shell has one open, and turns the window's Closing into the shell's "save changes?"
+/// Generate PLC code while the shell has one open and Help > About as a dialog, and turns the window's Closing into the shell's "save changes?"
 /// question.
 /// </summary>
 public partial class MainWindow : Window
@@ -111,6 +112,12 @@ public partial class MainWindow : Window
         if (e.PropertyName == nameof(ShellViewModel.GenerateCode))
         {
             ShowGenerateCode();
+        }
+
+        if (e.PropertyName == nameof(ShellViewModel.About) && _shell.About is { } about)
+        {
+            new AboutWindow(about) { Owner = this }.ShowDialog();
+            _shell.CloseAbout();
         }
     }
 

@@ -15,6 +15,8 @@ namespace OperatorPanel.ViewModels.Shell;
 /// <param name="ConnectionTester">The wizard's "test connection" (the shell guards it with <see cref="PortInUseGuard"/>).</param>
 /// <param name="Ports">The serial ports the wizard's link page offers.</param>
 /// <param name="LayoutPath">The per-user window layout file (<see cref="Docking.DockingViewModel"/>); null keeps the layout for this run only.</param>
+/// <param name="ReadmePath">The README installed beside the program, for Help > About; null: beside this assembly.</param>
+/// <param name="Documents">Opens the README from Help > About.</param>
 public sealed record ShellServices(
     IDialogService Dialogs,
     IFileDialogService Files,
@@ -24,4 +26,6 @@ public sealed record ShellServices(
     IWizardPresenter? Wizards = null,
     IConnectionTester? ConnectionTester = null,
     ISerialPortCatalog? Ports = null,
-    string? LayoutPath = null);
+    string? LayoutPath = null,
+    string? ReadmePath = null,
+    IDocumentLauncher? Documents = null);
