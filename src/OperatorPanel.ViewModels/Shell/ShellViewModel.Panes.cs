@@ -22,7 +22,7 @@ public sealed partial class ShellViewModel
     /// </remarks>
     private static IReadOnlyList<DockPaneViewModel> RegisterPanes(ShellViewModel shell) =>
     [
-        new("Inputs", "Inputs", shell.Inputs, DockPlacement.Left, 260),
+        new("Inputs", "Inputs", shell.Inputs, DockPlacement.Left, 210),
         new("Outputs", "Outputs", shell.Outputs, DockPlacement.Right, 260),
         new("Memory", "Memory", shell.Memory, DockPlacement.Center, 300),
         new("Alarms", "Alarms", shell.Alarms, DockPlacement.Bottom, 376),

@@ -165,7 +165,7 @@ public sealed class DockingViewModelTests : IAsyncDisposable
 
         docking.Zoom.Should().BeApproximately(1.5, 1e-9);
         docking.RegionSize(DockPlacement.Bottom).Should().Be(0);
-        docking.RegionSize(DockPlacement.Left).Should().Be(260);
+        docking.RegionSize(DockPlacement.Left).Should().Be(210);
     }
 
     [Fact]
