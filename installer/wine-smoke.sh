@@ -211,14 +211,20 @@ panel_clean() {
   ! window_titled "unexpected error" || fail "an unexpected-error dialog is open"
 }
 window_of() { xdotool search --onlyvisible --name "$1" 2>/dev/null | head -n 1; }
-# Keys to a window as the keyboard sends them (XTEST to the focused window; Xvfb has no window manager to ask).
+# Keys to one window. Xvfb has no window manager and Wine gives keys to the window it holds active: with a floating
+# pane open that is the pane's window, whatever X focus says. activate_at clicks a harmless spot of a window first (a
+# click makes it Wine's active window); keys_to then sends the keys to the window itself.
+activate_at() {
+  xdotool mousemove "$1" "$2" click 1
+  sleep 1
+}
 keys_to() {
   local id
   id=$(window_of "$1")
   [ -n "$id" ] || fail "no window titled '$1' to type into"
-  xdotool windowfocus "$id"
+  xdotool windowfocus "$id" 2>/dev/null || true
   sleep 1
-  xdotool key --delay 150 "${@:2}"
+  xdotool key --window "$id" --delay 150 "${@:2}" 2>/dev/null
 }
 window_gone() { ! window_titled "$1"; }
 close_panel() {
@@ -299,7 +305,8 @@ panel_clean
 begin "close the panel with the pane floating"
 closed_before=$(log_count "Operator Panel closed")
 # The main window's close (Alt+F4 as its close button), not taskkill: taskkill closes every window of the process,
-# the floating pane's first, and that hides the pane before the layout is saved.
+# the floating pane's first, and that hides the pane before the layout is saved. The status bar is the harmless spot.
+activate_at 640 772
 keys_to "$main_title" alt+F4
 wait_for 90 log_count_above "Operator Panel closed" "$closed_before" || fail "the panel did not close within 90 s"
 settle
@@ -325,6 +332,8 @@ screenshot "$art/panel-restart.png"
 panel_clean
 
 begin "close the floating pane with its own close button"
+# The floating pane opens at 120,120, 480x360 (FloatBounds.Default); its lamp list is the harmless spot.
+activate_at 450 300
 keys_to '^Inputs$' alt+F4
 wait_for 30 window_gone '^Inputs$' || fail "the floating Inputs pane did not close"
 sleep 2
