@@ -53,7 +53,9 @@ public static class DockLayoutStore
         }
         catch (JsonException ex)
         {
-            message = $"Window layout not restored ({path}): {ex.Message} The default layout is used.";
+            // Our words, not the parser's: where the file stops being a layout.
+            var at = ex.LineNumber is { } line ? $" at line {line + 1}, character {(ex.BytePositionInLine ?? 0) + 1}" : string.Empty;
+            message = $"Window layout not restored ({path}): the file is not a layout this panel wrote (unreadable{at}). The default layout is used.";
             return defaults;
         }
     }

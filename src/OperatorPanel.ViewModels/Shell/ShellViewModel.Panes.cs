@@ -34,7 +34,7 @@ public sealed partial class ShellViewModel
     {
         if (e.PropertyName == nameof(DockingViewModel.Message) && Docking.Message is { } message)
         {
-            _logger.Warning("{Message}", message);
+            _logger.Warning("{Message:l}", message);
             StatusLine.Show(message);
         }
     }

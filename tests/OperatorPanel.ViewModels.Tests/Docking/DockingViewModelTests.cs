@@ -77,7 +77,7 @@ public sealed class DockingViewModelTests : IAsyncDisposable
         docking.Load();
 
         docking.Capture().Should().BeEquivalentTo(docking.DefaultLayout);
-        docking.Message.Should().StartWith($"Window layout not restored ({LayoutPath}):").And.EndWith("The default layout is used.");
+        docking.Message.Should().Be($"Window layout not restored ({LayoutPath}): the file is not a layout this panel wrote (unreadable at line 1, character 3). The default layout is used.");
     }
 
     [Fact]

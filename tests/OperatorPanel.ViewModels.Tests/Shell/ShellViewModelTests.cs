@@ -257,6 +257,17 @@ public sealed class ShellViewModelTests : IAsyncDisposable
         _shell.Panes.Where(p => p.IsVisible).Select(p => p.ContentId).Should().Equal("Inputs", "Outputs", "Memory", "Alarms");
     }
 
+    [Fact]
+    public void Docking_SavedLayoutCannotBeShown_OneLineInTheStatusBarAndTheLog()
+    {
+        _shell.Docking.ResetAfterFailure("Cannot set Owner property to a Window that has not been shown previously.");
+
+        _shell.StatusLine.Text.Should().Be("The saved window layout could not be shown (Cannot set Owner property to a Window that has not been shown previously.); the default layout is used.");
+        _shell.StatusLine.IsError.Should().BeFalse("the panel goes on with the default layout");
+        _panel.Log.Messages.Should().Contain(_shell.StatusLine.Text);
+        _shell.Docking.Capture().Panes.Should().Equal(_shell.Docking.DefaultLayout.Panes);
+    }
+
     public async ValueTask DisposeAsync()
     {
         await _panel.DisposeAsync();
