@@ -85,6 +85,24 @@ public sealed partial class ArchitectureTests
     }
 
     [Fact]
+    public void Demo_DependsOnCoreStlGenAndSimulatorOnly()
+    {
+        var projects = ReferencedNames(Assembly.Load("OperatorPanel.Demo")).Where(r => r.StartsWith("OperatorPanel.", StringComparison.Ordinal));
+
+        projects.Should().BeSubsetOf(["OperatorPanel.Core", "OperatorPanel.StlGen", "OperatorPanel.Simulator"]);
+    }
+
+    [Fact]
+    public void ProjectFiles_TheAppAndTheCliTakeTheDemoLineFromDemo()
+    {
+        // One demo line for both front ends (issue 19): the App reaches the simulator only through OperatorPanel.Demo.
+        ProjectReferencesOf("src/OperatorPanel.App/OperatorPanel.App.csproj").Should().BeEquivalentTo(["OperatorPanel.ViewModels", "OperatorPanel.Demo"]);
+        ProjectReferencesOf("src/OperatorPanel.Cli/OperatorPanel.Cli.csproj").Should().Contain("OperatorPanel.Demo");
+        SourceFiles().Select(f => f.Relative).Where(f => Path.GetFileName(f) is "DemoLine.cs" or "DemoLineConnector.cs")
+            .Should().BeEquivalentTo(["OperatorPanel.Demo/DemoLine.cs", "OperatorPanel.Demo/DemoLineConnector.cs"]);
+    }
+
+    [Fact]
     public void Stl_DependsOnCoreOnly()
     {
         var projects = ReferencedNames(Assembly.Load("OperatorPanel.Stl")).Where(r => r.StartsWith("OperatorPanel.", StringComparison.Ordinal));

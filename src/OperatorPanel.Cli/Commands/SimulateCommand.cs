@@ -3,6 +3,7 @@ using OperatorPanel.Cli.Hosting;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Demo;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 

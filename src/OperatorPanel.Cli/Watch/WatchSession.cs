@@ -1,5 +1,4 @@
 using System.Collections.Concurrent;
-using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
@@ -7,6 +6,7 @@ using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Demo;
 using OperatorPanel.Simulator.Hosting;
 using Serilog;
 
@@ -43,7 +43,6 @@ internal sealed class WatchSession : IAsyncDisposable
         ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector();
         var options = new ProjectLineOptions
         {
-            LinkOptionsFor = serial => LinkSession.OptionsFor(serial, scanAllowance: null, demo),
             // A triggered watch refreshes once a second at most: registering read lists would only add exchanges.
             UseReadLists = project.Refresh.Mode == RefreshMode.Continuous,
         };

@@ -69,7 +69,9 @@ public sealed partial class ProjectLine : IAsyncDisposable
         var connection = await connector.ConnectAsync(Project, cancellationToken).ConfigureAwait(false);
         foreach (var bus in ProjectBus.Of(Project))
         {
-            var link = new PlcLink(connection.TransportFor(bus.Serial.PortName), _options.LinkOptionsFor(bus.Serial), _time, _logger);
+            var options = _options.LinkOptionsFor(bus.Serial);
+            options = options with { ScanAllowance = options.ScanAllowance + connection.ScanAllowance };
+            var link = new PlcLink(connection.TransportFor(bus.Serial.PortName), options, _time, _logger);
             var settings = new BusSettings
             {
                 Mode = Mode,

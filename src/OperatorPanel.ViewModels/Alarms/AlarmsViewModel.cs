@@ -23,6 +23,7 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     private readonly AlarmHistoryFile? _historyFile;
     private readonly IFileDialogService _files;
     private readonly string _projectName;
+    private readonly TimeZoneInfo _zone;
     private readonly List<IDisposable> _subscriptions = [];
     private readonly AlarmRowViewModel[] _projectRows;
     private (int First, int Count)? _visibleRows;
@@ -38,15 +39,15 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         ArgumentNullException.ThrowIfNull(values);
         ArgumentNullException.ThrowIfNull(time);
         ArgumentNullException.ThrowIfNull(files);
-        (_files, _projectName) = (files, project.Name);
+        (_files, _projectName, _zone) = (files, project.Name, time.LocalTimeZone);
         _tracker = new AlarmTracker(project, time);
         if (projectPath is not null)
         {
             _historyFile = new AlarmHistoryFile(AlarmHistoryFile.PathFor(projectPath), time);
             var load = _historyFile.Load();
             _tracker.Restore(load.Events);
-            History = new ObservableCollection<AlarmEvent>(load.Events);
-            Message = load.Message;
+            History = new ObservableCollection<AlarmHistoryRowViewModel>(load.Events.Select(e => new AlarmHistoryRowViewModel(e, _zone)));
+            (Message, IsMessageError) = (load.Message, load.Message is not null);
         }
         else
         {
@@ -91,8 +92,8 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     [ObservableProperty]
     public partial AlarmRowViewModel? FirstHiddenPending { get; private set; }
 
-    /// <summary>Every transition, oldest first, including those loaded from the history file.</summary>
-    public ObservableCollection<AlarmEvent> History { get; }
+    /// <summary>Every transition, oldest first, including those loaded from the history file; local time, as <see cref="Rows"/>.</summary>
+    public ObservableCollection<AlarmHistoryRowViewModel> History { get; }
 
     [ObservableProperty]
     [NotifyPropertyChangedFor(nameof(Summary))]
@@ -111,6 +112,10 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     /// <summary>The latest problem with the history file or the export, or the export's confirmation; null when none.</summary>
     [ObservableProperty]
     public partial string? Message { get; private set; }
+
+    /// <summary><see cref="Message"/> is a problem (red); false for the export's confirmation, which is never red.</summary>
+    [ObservableProperty]
+    public partial bool IsMessageError { get; private set; }
 
     public void Dispose() => _subscriptions.ForEach(s => s.Dispose());
 
@@ -198,12 +203,12 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 
         foreach (var entry in events)
         {
-            History.Add(entry);
+            History.Add(new AlarmHistoryRowViewModel(entry, _zone));
         }
 
         if (_historyFile is not null && !_historyFile.TryAppend(events, out var error))
         {
-            Message = error;
+            (Message, IsMessageError) = (error, true);
         }
 
         UpdateCounts();
@@ -233,12 +238,12 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         try
         {
             // UTF-8 with a byte-order mark: Excel on Windows reads alarm texts with accents correctly only then.
-            File.WriteAllText(path, AlarmCsv.Format(History), new UTF8Encoding(encoderShouldEmitUTF8Identifier: true));
-            Message = $"Exported {History.Count} history entries to {path}.";
+            File.WriteAllText(path, AlarmCsv.Format(History.Select(h => h.Event)), new UTF8Encoding(encoderShouldEmitUTF8Identifier: true));
+            (Message, IsMessageError) = ($"Exported {History.Count} history entries to {path} (times in UTC).", false);
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or NotSupportedException)
         {
-            Message = $"The alarm history could not be exported to {path}: {ex.Message}";
+            (Message, IsMessageError) = ($"The alarm history could not be exported to {path}: {ex.Message}", true);
         }
     }
 

@@ -35,7 +35,8 @@ public sealed partial class MemoryViewModel
         }
 
         var newValue = ValueFormatter.Format(bytes.AsSpan(), address.Width, cell.Format);
-        if (_options.ConfirmWrites && !await _dialogs.ConfirmAsync("Write memory", $"Set {address} ({cell.Symbol}) to {newValue}?"))
+        var current = cell.HasValue ? cell.ValueText : null;
+        if (_options.ConfirmWrites && !await _dialogs.ConfirmAsync("Write memory", WriteMessages.Question(address, cell.Symbol, current, cell.Quality, newValue)))
         {
             return;
         }

@@ -23,7 +23,8 @@ public sealed partial class PanelSession : IAsyncDisposable
         _connector = connector;
         await _line.ConnectAsync(connector, cancellationToken);
         OnPropertyChanged(nameof(IsConnected));
-        StatusLine.Show($"Connected to {Project.Stations.Length} station(s) on {string.Join(", ", _line.PortNames)}");
+        // "Polling", not "connected": whether each station answers is the station's own state beside this line.
+        StatusLine.Show($"Polling {string.Join(", ", Project.Stations.Select(s => s.Name))} on {string.Join(", ", _line.PortNames)}");
         await IdentifyAsync(cancellationToken);
     }
 
@@ -92,5 +93,9 @@ public sealed partial class PanelSession : IAsyncDisposable
         ProjectChanged?.Invoke(this, new ProjectChangedEventArgs(edited, ProjectChangeKind.Edited));
     }
 
-    public async ValueTask DisposeAsync() => await DisconnectAsync();
+    public async ValueTask DisposeAsync()
+    {
+        await DisconnectAsync();
+        StatusLine.Dispose();
+    }
 }

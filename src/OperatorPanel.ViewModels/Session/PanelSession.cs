@@ -36,6 +36,7 @@ public sealed partial class PanelSession : ObservableObject
         _line = new ProjectLine(project, options, time ?? TimeProvider.System, (logger ?? Logger.None).ForContext<PanelSession>());
         _line.StateChanged += (_, _) => UpdateStations();
         Stations = [.. project.Stations.Select(s => new StationStatusViewModel(s))];
+        StatusLine = new StatusLine(_time, _dispatcher);
     }
 
     /// <summary>
@@ -55,7 +56,7 @@ public sealed partial class PanelSession : ObservableObject
 
     public ObservableCollection<StationStatusViewModel> Stations { get; }
 
-    public StatusLine StatusLine { get; } = new();
+    public StatusLine StatusLine { get; }
 
     /// <summary>The operator's refresh mode, the line's: switches the running buses at once. Not saved in the project.</summary>
     public RefreshMode Mode

@@ -13,6 +13,7 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
 {
     private bool _hasAnswered;
     private bool _handlerV1;
+    private bool _lineOpen;
 
     public ProjectStation Station { get; } = station;
 
@@ -57,7 +58,7 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
             $"handler protocol version {Identity?.ProtocolVersion} is not the panel's {HandlerIdentity.ProtocolVersion}: generate and download the PLC code again",
         StationHealth.StoppedByPanel => "stopped by the panel: the port speaks PPI until someone sets RUN",
         StationHealth.HandlerV1 => "handler protocol v1: regenerate the PLC code (File > Generate PLC code) and download it",
-        StationHealth.Unknown => "not connected",
+        StationHealth.Unknown => _lineOpen ? "not read yet" : "not connected",
     };
 
     /// <summary>
@@ -79,6 +80,13 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
     {
         Statistics = statistics;
         NextTryAt = status?.NextTryAt;
+        // No status: the line is closed. A status still Unknown: the line is open and the station has not answered yet.
+        if (_lineOpen != status is not null)
+        {
+            _lineOpen = status is not null;
+            OnPropertyChanged(nameof(HealthText));
+        }
+
         if (identity is not null)
         {
             _hasAnswered = true;

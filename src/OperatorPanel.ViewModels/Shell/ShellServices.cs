@@ -14,6 +14,9 @@ namespace OperatorPanel.ViewModels.Shell;
 /// <param name="Wizards">Shows the wizard window for Edit project; null disables the command.</param>
 /// <param name="ConnectionTester">The wizard's "test connection" (the shell guards it with <see cref="PortInUseGuard"/>).</param>
 /// <param name="Ports">The serial ports the wizard's link page offers.</param>
+/// <param name="LayoutPath">The per-user window layout file (<see cref="Docking.DockingViewModel"/>); null keeps the layout for this run only.</param>
+/// <param name="ReadmePath">The README installed beside the program, for Help > About; null: beside this assembly.</param>
+/// <param name="Documents">Opens the README from Help > About.</param>
 public sealed record ShellServices(
     IDialogService Dialogs,
     IFileDialogService Files,
@@ -22,4 +25,7 @@ public sealed record ShellServices(
     INewProjectSource NewProjects,
     IWizardPresenter? Wizards = null,
     IConnectionTester? ConnectionTester = null,
-    ISerialPortCatalog? Ports = null);
+    ISerialPortCatalog? Ports = null,
+    string? LayoutPath = null,
+    string? ReadmePath = null,
+    IDocumentLauncher? Documents = null);

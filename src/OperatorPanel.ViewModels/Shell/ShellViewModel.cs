@@ -3,8 +3,8 @@ using System.ComponentModel;
 using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Alarms;
 using OperatorPanel.ViewModels.Diagnostics;
+using OperatorPanel.ViewModels.Docking;
 using OperatorPanel.ViewModels.Inputs;
 using OperatorPanel.ViewModels.Memory;
 using OperatorPanel.ViewModels.Outputs;
@@ -44,8 +44,10 @@ public sealed partial class ShellViewModel : ObservableObject
         Outputs = new OutputsViewModel(session, services.Dialogs, options, logger);
         Memory = new MemoryViewModel(session, services.Dialogs, options, logger);
         Diagnostics = new DiagnosticsViewModel(session, services.Dialogs);
-        AlarmsPane = new AlarmsPaneViewModel(CreateAlarms(session.Project, path: null));
-        Panes = [Inputs, Outputs, Memory, AlarmsPane, Diagnostics];
+        _alarms = CreateAlarms(session.Project, path: null);
+        Panes = RegisterPanes(this);
+        Docking = new DockingViewModel(services.LayoutPath, Panes);
+        Docking.PropertyChanged += OnDockingChanged;
         GenerateCodeCommand = new RelayCommand(OpenGenerateCode, () => HasProject);
         session.ProjectChanged += OnProjectChanged;
         session.PropertyChanged += OnSessionChanged;
@@ -65,9 +67,6 @@ public sealed partial class ShellViewModel : ObservableObject
     public MemoryViewModel Memory { get; }
 
     public DiagnosticsViewModel Diagnostics { get; }
-
-    /// <summary>The dockable panes, for the docking manager's items source: Inputs, Outputs, Memory, Alarms, Diagnostics.</summary>
-    public ObservableCollection<PaneViewModel> Panes { get; }
 
     public ObservableCollection<StationStatusViewModel> Stations => Session.Stations;
 

@@ -26,6 +26,23 @@ public sealed class LinkConnectionTester : IConnectionTester
         (_openTransport, _time) = (openTransport, time);
     }
 
+    /// <summary>Opening a serial port: a USB adapter's driver may take a second or two.</summary>
+    public static readonly TimeSpan PortOpenAllowance = TimeSpan.FromSeconds(2);
+
+    /// <summary>
+    /// The longest a test of <paramref name="link"/> can take when the link works as designed: the port opened, IDENTIFY
+    /// and its retries each waiting out its reply time-out and the gap before it, and the v1 probe the link sends when
+    /// nothing answered (PlcLink.V1Probe). A test still running after that is hanging in the port.
+    /// </summary>
+    public static TimeSpan LongestTest(SerialSettings link, Station station)
+    {
+        ArgumentNullException.ThrowIfNull(link);
+        var options = LinkOptions.For(link);
+        var identify = new IdentifyRequest(station);
+        var attempt = options.ReplyTimeoutFor(identify) + options.InterFrameGap;
+        return PortOpenAllowance + (attempt * (options.Retries + 2));
+    }
+
     public async Task<LinkReply> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(link);

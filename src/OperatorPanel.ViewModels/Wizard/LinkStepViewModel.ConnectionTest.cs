@@ -17,9 +17,13 @@ public sealed partial class LinkStepViewModel
     [ObservableProperty]
     public partial bool? TestSucceeded { get; private set; }
 
-    /// <summary>TestConnectionCommand.</summary>
-    [RelayCommand]
-    private async Task TestConnectionAsync()
+    /// <summary>
+    /// TestConnectionCommand (TestConnectionCancelCommand stops it): one IDENTIFY through the tester, given up after the
+    /// longest the link itself would take (<see cref="LinkConnectionTester.LongestTest"/>), so a port that hangs (a USB
+    /// adapter's driver, a device that never answers) ends the test by itself and the wizard goes on.
+    /// </summary>
+    [RelayCommand(IncludeCancelCommand = true)]
+    private async Task TestConnectionAsync(CancellationToken cancellationToken)
     {
         var cpu = _cpuStep.Cpu;
         if (_cpuStep.Station is not { } station || Problems.Length > 0 || string.IsNullOrWhiteSpace(PortName))
@@ -31,16 +35,34 @@ public sealed partial class LinkStepViewModel
 
         var link = Build();
         var where = string.Create(CultureInfo.InvariantCulture, $"Station {station.Address} on {link.PortName} at {link.LineText}");
+        var longest = LinkConnectionTester.LongestTest(link, station);
         TestSucceeded = null;
-        TestResult = where + ": asking...";
-        var reply = await _tester.IdentifyAsync(link, station, CancellationToken.None);
-        (TestSucceeded, TestResult) = reply.Response switch
+        TestResult = string.Create(CultureInfo.InvariantCulture, $"{where}: asking... (at most {Math.Ceiling(longest.TotalSeconds):0} s)");
+        using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
+        try
         {
-            null => (false, Describe(where, link.PortName, reply.Failure!)),
-            IdentifyResponse identity => Describe(where, identity, cpu),
-            ErrorResponse refusal => (false, $"{where} refused IDENTIFY ({refusal.Error}): the handler is too old or not ours; regenerate it."),
-            var other => (false, $"{where} answered IDENTIFY with a {other.Command} reply; is another device on the bus?"),
-        };
+            var reply = await _tester.IdentifyAsync(link, station, stop.Token).WaitAsync(longest, _time, stop.Token);
+            (TestSucceeded, TestResult) = reply.Response switch
+            {
+                null => (false, Describe(where, link.PortName, reply.Failure!)),
+                IdentifyResponse identity => Describe(where, identity, cpu),
+                ErrorResponse refusal => (false, $"{where} refused IDENTIFY ({refusal.Error}): the handler is too old or not ours; regenerate it."),
+                var other => (false, $"{where} answered IDENTIFY with a {other.Command} reply; is another device on the bus?"),
+            };
+        }
+        catch (TimeoutException)
+        {
+            // The tester is told to stop; whatever it still holds (a port stuck in its driver) is left to finish alone.
+            await stop.CancelAsync();
+            TestSucceeded = false;
+            TestResult = string.Create(CultureInfo.InvariantCulture,
+                $"{where}: nothing came back within {Math.Ceiling(longest.TotalSeconds):0} s, longer than the link itself waits: the port may be held by another program or its driver may hang. Check the port, unplug and replug a USB adapter, then test again.");
+        }
+        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
+        {
+            TestSucceeded = null;
+            TestResult = $"{where}: test cancelled.";
+        }
     }
 
     private static string Describe(string where, string portName, PlcCommunicationException failure) => failure.Kind switch

@@ -100,6 +100,44 @@ public sealed class ProjectLineTests
         line.Project.Should().Be(moved);
     }
 
+    [Fact]
+    public async Task Connect_ConnectionWithScanAllowance_EveryReplyIsWaitedForThatMuchLonger()
+    {
+        // The demo line's connection asks for a second more per reply (DemoLine.HostAllowance): every attempt that timed
+        // out waited that second longer than on a real port.
+        var (plain, plainTimeouts) = await TimeToGiveUpAsync(TimeSpan.Zero);
+        var (allowed, timeouts) = await TimeToGiveUpAsync(TimeSpan.FromSeconds(1));
+
+        timeouts.Should().Be(plainTimeouts).And.BePositive();
+        (allowed - plain).TotalMilliseconds.Should().BeApproximately(timeouts * 1000, 10 * timeouts);
+    }
+
+    /// <summary>Simulated time from a triggered refresh to its end when nothing answers; the clock moves only while the link waits.</summary>
+    private static async Task<(TimeSpan Waited, long Timeouts)> TimeToGiveUpAsync(TimeSpan allowance)
+    {
+        var clock = new ManualTimeProvider();
+        var line = new ProjectLine(Project(), time: clock);
+        await line.ConnectAsync(new PairConnector(clock) { ScanAllowance = allowance });
+        var start = clock.GetUtcNow();
+        var refresh = line.RefreshAsync(CancellationToken.None);
+        var guard = System.Diagnostics.Stopwatch.StartNew();
+        while (!refresh.IsCompleted && guard.Elapsed < TimeSpan.FromSeconds(30))
+        {
+            if (clock.ActiveTimers > 0)
+            {
+                clock.Advance(TimeSpan.FromMilliseconds(5));
+            }
+
+            await Task.Yield();
+        }
+
+        await refresh;
+        var waited = clock.GetUtcNow() - start;
+        var timeouts = line.StatisticsFor(Two).Timeouts;
+        await line.DisconnectAsync();
+        return (waited, timeouts);
+    }
+
     private static PanelProject Project() => new(
         "Line",
         new RefreshSettings(RefreshMode.OnDemand, TimeSpan.FromMilliseconds(100)),
@@ -112,8 +150,13 @@ public sealed class ProjectLineTests
     /// <summary>One in-memory port per bus; the bus end is never read, as if no PLC were attached.</summary>
     private sealed class PairConnector(TimeProvider time) : ILineConnector
     {
+        public TimeSpan ScanAllowance { get; init; }
+
         public Task<LineConnection> ConnectAsync(PanelProject project, CancellationToken cancellationToken) =>
             Task.FromResult(new LineConnection(ProjectBus.Of(project).ToDictionary(
-                b => b.Serial.PortName, b => (ITransport)new InMemoryTransportPair(time, b.Serial.PortName, b.Serial.PortName + " bus").PanelSide)));
+                b => b.Serial.PortName, b => (ITransport)new InMemoryTransportPair(time, b.Serial.PortName, b.Serial.PortName + " bus").PanelSide))
+            {
+                ScanAllowance = ScanAllowance,
+            });
     }
 }

@@ -45,7 +45,25 @@ public sealed class AlarmsViewModelTests : IDisposable
             + $"2024-01-15T08:00:00.000Z,Filler,2,M0.0,raised,active unacknowledged,fault,{JamText}\r\n"
             + $"2024-01-15T08:00:05.000Z,Filler,2,M0.0,acknowledged,active acknowledged,fault,{JamText}\r\n"
             + $"2024-01-15T08:00:15.000Z,Filler,2,M0.0,cleared,cleared,fault,{JamText}\r\n");
-        alarms.Message.Should().Be($"Exported 3 history entries to {_files.Answer}.");
+        alarms.Message.Should().Be($"Exported 3 history entries to {_files.Answer} (times in UTC).");
+        alarms.IsMessageError.Should().BeFalse("a success is never red");
+    }
+
+    [Fact]
+    public void History_ShopFloorZone_ShownInLocalTimeLikeTheAlarmTableAndExportedInUtc()
+    {
+        var clock = new ManualTimeProvider { LocalZone = TimeZoneInfo.CreateCustomTimeZone("Plant", TimeSpan.FromHours(2), "Plant", "Plant") };
+        using var alarms = new AlarmsViewModel(AlarmProject.Create(), null, _values, clock, _files);
+
+        _values.Publish(Bit(Jam, on: true));
+
+        var raised = new DateTimeOffset(2024, 1, 15, 10, 0, 0, TimeSpan.FromHours(2));
+        alarms.History.Should().ContainSingle().Which.At.Should().Be(raised);
+        alarms.History[0].At.Offset.Should().Be(TimeSpan.FromHours(2));
+        Row(alarms, Jam).RaisedAt!.Value.Offset.Should().Be(TimeSpan.FromHours(2), "the table and the history show one zone");
+        _files.Answer = _folder.File("export.csv");
+        alarms.ExportCsvCommand.Execute(null);
+        File.ReadAllText(_files.Answer).Should().Contain("2024-01-15T08:00:00.000Z,Filler", "exports are in UTC");
     }
 
     [Fact]
@@ -150,7 +168,7 @@ public sealed class AlarmsViewModelTests : IDisposable
 
         using var second = Create(project);
 
-        second.History.Should().ContainSingle().Which.Should().Be(new AlarmEvent(
+        second.History.Should().ContainSingle().Which.Event.Should().Be(new AlarmEvent(
             _clock.GetUtcNow(), "Filler", Station, Jam, AlarmTransition.Raised, AlarmState.ActiveUnacknowledged, AlarmClass.Fault, "Conveyor jam, \"infeed\", stop"));
         Row(second, Jam).State.Should().Be(AlarmState.ActiveUnacknowledged);
         second.UnacknowledgedCount.Should().Be(1);
@@ -169,6 +187,7 @@ public sealed class AlarmsViewModelTests : IDisposable
         alarms.History.Should().BeEmpty();
         alarms.Message.Should().Be($"The alarm history {history} is corrupt (line 1: time is missing or not an ISO 8601 UTC time); "
             + $"it was kept as {history}.corrupt-20240115T080000Z and a new history was started.");
+        alarms.IsMessageError.Should().BeTrue();
         File.ReadAllText(history + ".corrupt-20240115T080000Z").Should().StartWith("{\"time\":\"yesterday\"}");
         _values.Publish(Bit(Jam, on: true));
         File.ReadAllLines(history).Should().ContainSingle();

@@ -50,6 +50,18 @@ public sealed class PanelSessionTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task Connect_StatusLine_SaysWhichStationsArePolledOnWhichPortsAndIsNoError()
+    {
+        await _panel.ConnectAsync();
+
+        _panel.Session.StatusLine.Text.Should().Be("Polling Filler on COM7");
+        _panel.Session.StatusLine.IsError.Should().BeFalse();
+        _panel.Session.Stations[0].HealthText.Should().Be("not read yet", "triggered refresh: nothing is read before F5");
+        await _panel.RefreshAsync();
+        _panel.Session.Stations[0].HealthText.Should().Be("online");
+    }
+
+    [Fact]
     public async Task Values_SubscribedAddress_GetsItsValueAtOnceEveryChangeAndNotReadAfterDisconnect()
     {
         var speed = new List<PolledValue>();

@@ -4,21 +4,22 @@ using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 using Serilog;
 
-namespace OperatorPanel.Cli.Link;
+namespace OperatorPanel.Demo;
 
 /// <summary>
-/// The in-process demo line behind <c>--demo</c>: simulated PLCs (the chosen <see cref="SimulationModel"/>) running the demo process on one bus, served by a
+/// The in-process demo line behind the App's Help > Demo and the CLI's <c>--demo</c>: simulated PLCs (the chosen <see cref="SimulationModel"/>) running the demo process on one bus, served by a
 /// <see cref="Simulator.Hosting.SimulatedPlcHost"/> on real time behind an <see cref="InMemoryTransportPair"/>.
 /// The panel talks to <see cref="PanelSide"/> exactly as it would to a serial port.
 /// </summary>
-internal sealed class DemoLine : IAsyncDisposable
+public sealed class DemoLine : IAsyncDisposable
 {
     /// <summary>The demo process starts this far in, so the first reply shows a running line with a bottle counted.</summary>
     private static readonly TimeSpan WarmUp = TimeSpan.FromSeconds(2);
 
     /// <summary>
-    /// Added to the reply timeout on a demo line: the simulated PLCs run on a thread of this process, so a busy PC delays
-    /// their replies by however long that thread waits for a core, which a real line never does.
+    /// Added to the reply timeout (the link's scan allowance) on a demo line: the simulated PLCs run on a thread of this
+    /// process, so a busy PC delays their replies by however long that thread waits for a core, which a real line never
+    /// does. The App and the CLI both take it from here (<see cref="DemoLineConnector"/> hands it to the project's line).
     /// </summary>
     public static readonly TimeSpan HostAllowance = TimeSpan.FromSeconds(1);
 
@@ -56,10 +57,10 @@ internal sealed class DemoLine : IAsyncDisposable
     /// <summary>Stops the simulated stations; call before the panel side is closed, or the host sees an unplugged line.</summary>
     public async ValueTask DisposeAsync()
     {
-        await _stop.CancelAsync();
+        await _stop.CancelAsync().ConfigureAwait(false);
         try
         {
-            await _host;
+            await _host.ConfigureAwait(false);
         }
         catch (OperationCanceledException) when (_stop.IsCancellationRequested)
         {

@@ -6,13 +6,13 @@ using OperatorPanel.StlGen;
 using OperatorPanel.StlGen.Options;
 using Serilog;
 
-namespace OperatorPanel.Cli.Link;
+namespace OperatorPanel.Demo;
 
 /// <summary>
 /// A line from <see cref="SimulatedLineFactory"/> (the STL model runs the handler StlGen generates,
-/// <see cref="GeneratedHandler"/>), with what <c>opanel simulate</c> and <c>--demo</c> do with it.
+/// <see cref="GeneratedHandler"/>), with what <c>opanel simulate</c> and the demo line do with it.
 /// </summary>
-internal sealed class SimulatedLine
+public sealed class SimulatedLine
 {
     private SimulatedLine(ISimulatedLine line, bool runsProcess)
     {

@@ -1,4 +1,3 @@
-using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
@@ -7,7 +6,7 @@ using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 
-namespace OperatorPanel.Cli.Tests.Link;
+namespace OperatorPanel.Demo.Tests;
 
 /// <summary>--model picks what answers; the STL model is the generated handler in the interpreter (--demo and simulate).</summary>
 public sealed class SimulatedLineTests
