@@ -4,7 +4,6 @@ using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Demo;
-using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 using Serilog;
 

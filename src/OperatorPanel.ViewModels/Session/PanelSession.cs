@@ -36,7 +36,7 @@ public sealed partial class PanelSession : ObservableObject
         _line = new ProjectLine(project, options, time ?? TimeProvider.System, (logger ?? Logger.None).ForContext<PanelSession>());
         _line.StateChanged += (_, _) => UpdateStations();
         Stations = [.. project.Stations.Select(s => new StationStatusViewModel(s))];
-        StatusLine = new StatusLine(_time, _dispatcher);
+        StatusLine = new StatusLine(time ?? TimeProvider.System, dispatcher);
     }
 
     /// <summary>

@@ -2,6 +2,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.ViewModels.Wizard;

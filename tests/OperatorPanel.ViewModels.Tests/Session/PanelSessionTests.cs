@@ -46,7 +46,9 @@ public sealed class PanelSessionTests : IAsyncDisposable
         afterConnect.Should().Be(1, "the IDENTIFY on connecting");
         afterRefresh.Should().BeGreaterThan(afterConnect, "the cycle's READs show when the cycle ends");
         station.Statistics.Requests.Should().Be(afterRefresh + 1, "the write shows when it ends");
-        _panel.Clock.ActiveTimers.Should().Be(0, "nothing samples the line on a timer");
+        _panel.Clock.Advance(StatusLine.ErrorLifetime);
+        _panel.Clock.ActiveTimers.Should().Be(0, "nothing samples the line on a timer (the status message's expiry has run out)");
+        station.Statistics.Requests.Should().Be(afterRefresh + 1, "triggered refresh: time passing sends nothing");
     }
 
     [Fact]
