@@ -1,6 +1,6 @@
-using CommunityToolkit.Mvvm.ComponentModel;
 using System.Collections.ObjectModel;
 using System.ComponentModel;
+using CommunityToolkit.Mvvm.ComponentModel;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Writes;
 using OperatorPanel.ViewModels.Inputs;
