@@ -48,15 +48,37 @@ internal static class SnapshotRenderer
         Lamps(o, "inputs", s.Inputs);
         Lamps(o, "outputs", s.Outputs);
         Tags(o, s.Tags);
-        if (s.Alarms.Count == 0)
+        Alarms(o, s);
+    }
+
+    /// <summary>
+    /// "none active" only when every flag of the station was read; otherwise "unknown: Filler offline (8 of 8 flags not
+    /// read)", so a dead link never reads as all clear. Active alarms are listed; the unknown ones are counted (JSON
+    /// lists them), so an offline station does not push the rest of the view off the screen.
+    /// </summary>
+    private static void Alarms(StringBuilder o, StationSnapshot s)
+    {
+        var unknown = s.AlarmsUnknown;
+        var active = s.AlarmsActive;
+        if (unknown > 0)
         {
-            o.AppendLine("  alarms   none active");
+            var why = s.State == "online" ? "flags not read yet" : s.State;
+            var known = active > 0 ? $"; {active} active" : string.Empty;
+            o.AppendLine(CultureInfo.InvariantCulture, $"  alarms   unknown: {s.Name} {why} ({unknown} of {s.AlarmsDefined} flags not read){known}");
+        }
+        else
+        {
+            o.AppendLine(active == 0 ? "  alarms   none active" : string.Create(CultureInfo.InvariantCulture, $"  alarms   {active} active"));
+        }
+
+        var shown = s.Alarms.Where(a => a.State == AlarmRow.Active).ToList();
+        if (shown.Count == 0)
+        {
             return;
         }
 
-        o.AppendLine(CultureInfo.InvariantCulture, $"  alarms   {s.Alarms.Count} active");
-        var classWidth = s.Alarms.Max(a => a.Class.Length);
-        foreach (var alarm in s.Alarms)
+        var classWidth = shown.Max(a => a.Class.Length);
+        foreach (var alarm in shown)
         {
             o.AppendLine(CultureInfo.InvariantCulture, $"    {alarm.Flag,-6} {alarm.Class.PadRight(classWidth)}  {alarm.Text}");
         }

@@ -6,6 +6,7 @@ using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Services;
+using OperatorPanel.ViewModels.Session;
 
 namespace OperatorPanel.ViewModels.Alarms;
 
@@ -16,6 +17,7 @@ namespace OperatorPanel.ViewModels.Alarms;
 /// Each alarm's flag is subscribed on the line like any other value, so a flag change arrives on the UI thread.
 /// The list is kept in <see cref="AlarmOrder"/>, pending alarms first; the view reports which rows it shows
 /// (<see cref="ShowVisibleRows"/>) and <see cref="HiddenPendingText"/> counts the pending ones out of view.
+/// A station whose flags have no good reading makes its alarms unknown (<see cref="UnknownText"/>), never "no alarms".
 /// </summary>
 public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 {
@@ -32,7 +34,9 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     /// <param name="values">The line's values (PanelSession.Values); callbacks come on the UI thread.</param>
     /// <param name="time">Times raised, cleared and acknowledged; its local zone for display.</param>
     /// <param name="files">The save dialog of the CSV export.</param>
-    public AlarmsViewModel(PanelProject project, string? projectPath, ILineValues values, TimeProvider time, IFileDialogService files)
+    /// <param name="stations">The session's stations (PanelSession.Stations), for why a station's alarms are unknown ("offline").</param>
+    public AlarmsViewModel(
+        PanelProject project, string? projectPath, ILineValues values, TimeProvider time, IFileDialogService files, IEnumerable<StationStatusViewModel>? stations = null)
     {
         ArgumentNullException.ThrowIfNull(project);
         ArgumentNullException.ThrowIfNull(values);
@@ -55,8 +59,10 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 
         _projectRows = [.. _tracker.Alarms.Select(a => new AlarmRowViewModel(a, time.LocalTimeZone))];
         Rows = new ObservableCollection<AlarmRowViewModel>(Ordered());
+        _stations = stations;
+        WatchStations();
         UpdateCounts();
-        foreach (var alarm in _tracker.Alarms)
+        foreach (var alarm in _tracker.Alarms.ToList())
         {
             var (station, flag) = (alarm.Station, alarm.Definition.Flag);
             _subscriptions.Add(values.Subscribe(station, flag, value => Record(_tracker.Apply(station, flag, value) is { } entry ? [entry] : [])));
@@ -95,24 +101,33 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     public ObservableCollection<AlarmEvent> History { get; }
 
     [ObservableProperty]
-    [NotifyPropertyChangedFor(nameof(Summary))]
+    [NotifyPropertyChangedFor(nameof(Summary), nameof(ShortSummary))]
     public partial int ActiveCount { get; private set; }
 
     [ObservableProperty]
-    [NotifyPropertyChangedFor(nameof(Summary))]
+    [NotifyPropertyChangedFor(nameof(Summary), nameof(ShortSummary))]
     [NotifyCanExecuteChangedFor(nameof(AcknowledgeAllCommand))]
     public partial int UnacknowledgedCount { get; private set; }
 
-    /// <summary>For the status bar: "2 alarms active, 1 unacknowledged", or "no alarms".</summary>
-    public string Summary => ActiveCount == 0 && UnacknowledgedCount == 0
-        ? "no alarms"
-        : $"{ActiveCount} alarm{(ActiveCount == 1 ? string.Empty : "s")} active, {UnacknowledgedCount} unacknowledged";
+    /// <summary>
+    /// For the Alarms window: "2 alarms active, 1 unacknowledged", or "no alarms" when every flag was read; "alarms unknown"
+    /// (with the counts of the last reading, "alarms unknown; when last read 1 alarm active, 1 unacknowledged") while any
+    /// flag has no good reading.
+    /// </summary>
+    public string Summary => Describe(" alarm", " alarms");
+
+    /// <summary>The same for the status bar, without the noun: "2 active, 1 unacknowledged".</summary>
+    public string ShortSummary => Describe(string.Empty, string.Empty);
 
     /// <summary>The latest problem with the history file or the export, or the export's confirmation; null when none.</summary>
     [ObservableProperty]
     public partial string? Message { get; private set; }
 
-    public void Dispose() => _subscriptions.ForEach(s => s.Dispose());
+    public void Dispose()
+    {
+        _subscriptions.ForEach(s => s.Dispose());
+        UnwatchStations();
+    }
 
     /// <summary>
     /// The view shows the rows <paramref name="first"/> to <paramref name="first"/> + <paramref name="count"/> - 1 of
@@ -143,6 +158,14 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
             (var a, 0) => $"{a} pending alarm{Plural(a)} above",
             (var a, var b) => $"{a} pending alarm{Plural(a)} above, {b} below",
         };
+    }
+
+    private string Describe(string one, string many)
+    {
+        var counts = ActiveCount == 0 && UnacknowledgedCount == 0
+            ? null
+            : $"{ActiveCount}{(ActiveCount == 1 ? one : many)} active, {UnacknowledgedCount} unacknowledged";
+        return UnknownText is null ? counts ?? "no alarms" : counts is null ? "alarms unknown" : "alarms unknown; when last read " + counts;
     }
 
     private static string Plural(int count) => count == 1 ? string.Empty : "s";
@@ -182,13 +205,9 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 
     private bool CanAcknowledgeAll() => UnacknowledgedCount > 0;
 
+    /// <summary>Shows the tracker's state: after transitions (recorded in the history), or a flag turning known or unknown.</summary>
     private void Record(IReadOnlyList<AlarmEvent> events)
     {
-        if (events.Count == 0)
-        {
-            return;
-        }
-
         for (var i = 0; i < _projectRows.Length; i++)
         {
             _projectRows[i].Update(_tracker.Alarms[i]);
@@ -201,7 +220,7 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
             History.Add(entry);
         }
 
-        if (_historyFile is not null && !_historyFile.TryAppend(events, out var error))
+        if (events.Count > 0 && _historyFile is not null && !_historyFile.TryAppend(events, out var error))
         {
             Message = error;
         }
@@ -216,6 +235,7 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         var pending = Rows.Count(r => r.IsPending);
         MostUrgent = pending > 0 ? Rows[0] : null;
         MorePendingText = pending > 1 ? $"and {pending - 1} more" : null;
+        UpdateUnknown();
         UpdateHiddenPending();
         AcknowledgeCommand.NotifyCanExecuteChanged();
         ExportCsvCommand.NotifyCanExecuteChanged();

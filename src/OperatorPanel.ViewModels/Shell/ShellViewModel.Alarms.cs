@@ -24,10 +24,8 @@ public sealed partial class ShellViewModel : IDisposable
 
     public int UnacknowledgedAlarmCount => Alarms.UnacknowledgedCount;
 
-    /// <summary>For the status bar: "2 active, 1 unacknowledged", or "no alarms".</summary>
-    public string AlarmSummary => ActiveAlarmCount == 0 && UnacknowledgedAlarmCount == 0
-        ? "no alarms"
-        : $"{ActiveAlarmCount} active, {UnacknowledgedAlarmCount} unacknowledged";
+    /// <summary>For the status bar: "2 active, 1 unacknowledged", "no alarms", or "alarms unknown" (AlarmsViewModel.ShortSummary).</summary>
+    public string AlarmSummary => Alarms.ShortSummary;
 
     public void Dispose()
     {
@@ -40,7 +38,7 @@ public sealed partial class ShellViewModel : IDisposable
     private AlarmsViewModel CreateAlarms(PanelProject project, string? path)
     {
         (_alarmsProject, _alarmsPath) = (project, path);
-        var alarms = new AlarmsViewModel(project, path, Session.Values, _time, _services.Files);
+        var alarms = new AlarmsViewModel(project, path, Session.Values, _time, _services.Files, Session.Stations);
         alarms.PropertyChanged += OnAlarmsChanged;
         return alarms;
     }
@@ -68,7 +66,7 @@ public sealed partial class ShellViewModel : IDisposable
 
     private void OnAlarmsChanged(object? sender, PropertyChangedEventArgs e)
     {
-        if (e.PropertyName is nameof(AlarmsViewModel.ActiveCount) or nameof(AlarmsViewModel.UnacknowledgedCount))
+        if (e.PropertyName is nameof(AlarmsViewModel.ActiveCount) or nameof(AlarmsViewModel.UnacknowledgedCount) or nameof(AlarmsViewModel.ShortSummary))
         {
             NotifyAlarmCounts();
         }

@@ -104,6 +104,22 @@ public sealed class WatchCommandTests : IDisposable
         run.Out.Should().MatchRegex(@"IB0   \?{8}");
     }
 
+    [Fact]
+    public void Watch_PortMissingOnce_ShowsAlarmsUnknownNotNoneActive()
+    {
+        var file = Path.Combine(_folder, "line.opproj");
+        File.WriteAllText(file, File.ReadAllText(Sample).Replace("\"COM3\"", $"\"{Path.Combine(_folder, "no-such-port")}\"", StringComparison.Ordinal));
+
+        var text = CliRunner.Run("watch", file, "--once");
+        var json = CliRunner.Run("watch", file, "--once", "--json");
+
+        text.Out.Should().Contain("  alarms   unknown: Filler offline (8 of 8 flags not read)").And.NotContain("none active");
+        using var line = JsonDocument.Parse(json.Out);
+        var station = line.RootElement.GetProperty("stations")[0];
+        station.GetProperty("alarmsUnknown").GetInt32().Should().Be(8);
+        station.GetProperty("alarms").EnumerateArray().Select(a => a.GetProperty("state").GetString()).Should().AllBe("unknown").And.HaveCount(8);
+    }
+
     public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     private static string RepositoryRoot()

@@ -1,7 +1,9 @@
 using OperatorPanel.Core.Alarms;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.TestKit;
 using OperatorPanel.ViewModels.Alarms;
+using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Tests.Fakes;
 using static OperatorPanel.ViewModels.Tests.Fakes.AlarmProject;
 
@@ -148,7 +150,7 @@ public sealed class AlarmsViewModelTests : IDisposable
             _values.Publish(Bit(Jam, on: true));
         }
 
-        using var second = Create(project);
+        using var second = Create(project, readAll: false); // the line still holds Jam on
 
         second.History.Should().ContainSingle().Which.Should().Be(new AlarmEvent(
             _clock.GetUtcNow(), "Filler", Station, Jam, AlarmTransition.Raised, AlarmState.ActiveUnacknowledged, AlarmClass.Fault, "Conveyor jam, \"infeed\", stop"));
@@ -296,10 +298,44 @@ public sealed class AlarmsViewModelTests : IDisposable
         alarms.MorePendingText.Should().BeNull();
     }
 
+    [Fact]
+    public void Alarms_StationNotRead_ShowUnknownInTheTableBannerAndSummaryNotAllClear()
+    {
+        var filler = new StationStatusViewModel(AlarmProject.Create().Stations[0]);
+        using var alarms = new AlarmsViewModel(AlarmProject.Create(), null, _values, _clock, _files, [filler]);
+        filler.Update(new StationStatus(AlarmProject.Station, StationState.Offline, "PortUnavailable: serial port COM3: open failed", 1, null), LinkStatistics.Empty);
+
+        alarms.UnknownText.Should().Be("alarms unknown: Filler offline");
+        alarms.Summary.Should().Be("alarms unknown");
+        Row(alarms, Jam).IsKnown.Should().BeFalse();
+        Row(alarms, Jam).StateText.Should().Be("unknown");
+
+        _values.Publish([.. Bit(Jam, on: true), .. Bit(LowLevel, on: false), .. Bit(DoorOpen, on: false)]);
+        filler.Update(new StationStatus(AlarmProject.Station, StationState.Online, null, 0, _clock.GetUtcNow()), LinkStatistics.Empty);
+        alarms.UnknownText.Should().BeNull();
+        alarms.Summary.Should().Be("1 alarm active, 1 unacknowledged");
+
+        _values.Publish(Bit(Jam, on: true, ValueQuality.Stale));
+        filler.Update(new StationStatus(AlarmProject.Station, StationState.Offline, "NoAnswer: no answer", 3, _clock.GetUtcNow()), LinkStatistics.Empty);
+        Row(alarms, Jam).StateText.Should().Be("unknown (was active unacknowledged)");
+        Row(alarms, Jam).IsPending.Should().BeTrue("the operator still owes the acknowledgement");
+        alarms.UnknownText.Should().Be("alarms unknown: Filler not answering", "it answered before: STOP, TERM or off the bus");
+        alarms.Summary.Should().Be("alarms unknown; when last read 1 alarm active, 1 unacknowledged");
+    }
+
     private static AlarmRowViewModel Row(AlarmsViewModel alarms, Core.Addressing.PlcAddress flag) => alarms.Rows.Single(r => r.Flag == flag.ToString());
 
     private static List<string> Flags(AlarmsViewModel alarms) => [.. alarms.Rows.Select(r => r.Flag)];
 
-    private AlarmsViewModel Create(string? projectPath = null) =>
-        new(AlarmProject.Create(), projectPath, _values, _clock, _files);
+    /// <summary>The view model; with <paramref name="readAll"/> every flag then read once as off, as after the first poll of a station that answers.</summary>
+    private AlarmsViewModel Create(string? projectPath = null, bool readAll = true)
+    {
+        var alarms = new AlarmsViewModel(AlarmProject.Create(), projectPath, _values, _clock, _files);
+        if (readAll)
+        {
+            _values.Publish([.. Bit(Jam, on: false), .. Bit(LowLevel, on: false), .. Bit(DoorOpen, on: false)]);
+        }
+
+        return alarms;
+    }
 }
