@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Globalization;
 using System.Text;
+using OperatorPanel.Core.Messages;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Run;
 
@@ -84,9 +85,9 @@ internal static class StlRunCommand
             // Micro/WIN exports in the Windows ANSI code page: Latin-1 keeps one character per byte.
             awl = File.ReadAllText(path, Encoding.Latin1);
         }
-        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
+        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
         {
-            return cli.Fail(ExitCodes.BadInput, $"cannot read {path}: {ex.Message}");
+            return cli.Fail(ExitCodes.BadInput, $"{path}: cannot read it: {FileProblemText.Describe(ex, path, FileAction.Read)}");
         }
 
         var load = StlProgramLoader.Load(awl, cpu);

@@ -4,6 +4,7 @@ using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Line;
+using OperatorPanel.Core.Messages;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
@@ -258,7 +259,7 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or NotSupportedException)
         {
-            Message = $"The alarm history could not be exported to {path}: {ex.Message}";
+            Message = $"The alarm history could not be exported to {path}: {FileProblemText.Describe(ex, path, FileAction.Write)}.";
         }
     }
 
