@@ -37,7 +37,7 @@ internal sealed class LinkSession : IAsyncDisposable
             return false;
         }
 
-        ITransport transport = demo is null ? new SerialPortTransport(serial) : demo.PanelSide;
+        ITransport transport = demo is null ? new SerialPortTransport(serial, log) : demo.PanelSide;
         session = new LinkSession(new PlcLink(transport, OptionsFor(serial, scanAllowance, demo is not null), TimeProvider.System, log), demo);
         error = null;
         return true;
