@@ -39,7 +39,7 @@ internal sealed class WatchSession : IAsyncDisposable
     /// <summary>Opens every bus; false with the reason (and nothing left running) when a demo line cannot start.</summary>
     public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(PanelProject project, bool demo, SimulationModel model, ILogger log)
     {
-        ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector();
+        ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector(log);
         var options = new ProjectLineOptions
         {
             LinkOptionsFor = serial => LinkSession.OptionsFor(serial, scanAllowance: null, demo),
