@@ -30,6 +30,9 @@ internal sealed class PendingWrite
 
     public Task<WriteOutcome> Task => _completion.Task;
 
+    /// <summary>The write's intent once it is on record (Audit); its outcome is recorded under the same id.</summary>
+    public Audit.AuditEntry? Intent { get; set; }
+
     /// <summary>False when the caller withdrew the write before it reached the wire.</summary>
     public bool TryStartSending() => Interlocked.CompareExchange(ref _state, Sending, Queued) == Queued;
 
