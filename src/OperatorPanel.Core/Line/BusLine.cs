@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using Serilog;
@@ -24,17 +25,17 @@ public sealed class BusLine : IAsyncDisposable
 
     public PollingEngine Engine { get; }
 
-    /// <summary>Starts polling <paramref name="plan"/> on <paramref name="link"/>.</summary>
+    /// <summary>Starts polling <paramref name="plan"/> on <paramref name="link"/>; its writes go on record in <paramref name="audit"/> (PollingEngine.Audit; null records nothing).</summary>
     public static BusLine Start(
-        PlcLink link, PollPlan plan, RefreshMode mode, TimeSpan minimumPeriod, bool useReadLists, TimeProvider time, ILogger logger) =>
-        new(link, new PollingEngine(link, plan, time, logger) { Mode = mode, MinimumPeriod = minimumPeriod, UseReadLists = useReadLists });
+        PlcLink link, PollPlan plan, RefreshMode mode, TimeSpan minimumPeriod, bool useReadLists, TimeProvider time, ILogger logger, AuditContext? audit = null) =>
+        new(link, new PollingEngine(link, plan, time, logger) { Mode = mode, MinimumPeriod = minimumPeriod, UseReadLists = useReadLists, Audit = audit });
 
     /// <summary>
     /// One engine cycling on demand with plain READs: what a one-off read or write needs (it refreshes once or twice, so
     /// registering read lists, one more exchange each, would only cost time).
     /// </summary>
-    public static BusLine OnDemand(PlcLink link, PollPlan plan, TimeProvider time, ILogger logger) =>
-        Start(link, plan, RefreshMode.OnDemand, TimeSpan.Zero, useReadLists: false, time, logger);
+    public static BusLine OnDemand(PlcLink link, PollPlan plan, TimeProvider time, ILogger logger, AuditContext? audit = null) =>
+        Start(link, plan, RefreshMode.OnDemand, TimeSpan.Zero, useReadLists: false, time, logger, audit);
 
     public async ValueTask DisposeAsync()
     {

@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
@@ -43,6 +44,9 @@ public sealed partial class ProjectLine : IAsyncDisposable
 
     public bool IsConnected => _connection is not null;
 
+    /// <summary>Writes and STOPs of earlier programs on these ports, cut short and settled on the last connect (resolved at start).</summary>
+    public IReadOnlyList<CutShortWrite> ResolvedAtConnect { get; private set; } = [];
+
     /// <summary>The ports in use while connected ("COM3", "COM7 (demo)").</summary>
     public IEnumerable<string> PortNames => _buses.Select(b => b.Line.Link.PortName);
 
@@ -67,11 +71,19 @@ public sealed partial class ProjectLine : IAsyncDisposable
         }
 
         var connection = await connector.ConnectAsync(Project, cancellationToken).ConfigureAwait(false);
+        var resolved = new List<CutShortWrite>();
         foreach (var bus in ProjectBus.Of(Project))
         {
             var link = new PlcLink(connection.TransportFor(bus.Serial.PortName), _options.LinkOptionsFor(bus.Serial), _time, _logger);
+            if (_options.Journal is { } journal)
+            {
+                resolved.AddRange((await UnfinishedWrites.ResolveAsync(journal, link, link.PortName, _time, _logger, cancellationToken).ConfigureAwait(false)).Resolved);
+            }
+
             _buses.Add(new Bus(bus, Start(bus, link)));
         }
+
+        ResolvedAtConnect = resolved;
 
         _connection = connection;
         PushAll();
@@ -154,10 +166,14 @@ public sealed partial class ProjectLine : IAsyncDisposable
     public Task RefreshAsync(CancellationToken cancellationToken = default) =>
         Task.WhenAll(_buses.Select(b => b.Line.Engine.RequestRefreshAsync(cancellationToken)));
 
-    /// <summary>Writes through the station's engine; the outcome is the PLC's read-back, never the request.</summary>
+    /// <summary>
+    /// Writes through the station's engine; the outcome is the PLC's read-back, never the request. The write's record
+    /// names the address's symbol in the project when the request does not.
+    /// </summary>
     public Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default)
     {
         ArgumentNullException.ThrowIfNull(request);
+        request = request.Symbol is null ? request with { Symbol = Project.Stations.FirstOrDefault(s => s.Address == request.Station)?.SymbolOf(request.Address) } : request;
         return BusOf(request.Station) is { } bus
             ? bus.Line.Engine.WriteAsync(request, cancellationToken)
             : Task.FromResult<WriteOutcome>(new WriteOutcome.Failed($"{request.Address}: not connected, nothing written", WriteFailureKind.InvalidRequest));
@@ -183,7 +199,7 @@ public sealed partial class ProjectLine : IAsyncDisposable
             return new StopOutcome.NotSent(station, "not connected");
         }
 
-        var outcome = await new RemoteStop(bus.Line.Link, _logger).StopAsync(station, cancellationToken).ConfigureAwait(false);
+        var outcome = await new RemoteStop(bus.Line.Link, _logger, AuditFor(bus.Line.Link)).StopAsync(station, cancellationToken).ConfigureAwait(false);
         if (outcome.IsStopped)
         {
             bus.Line.Engine.NoteStoppedByPanel(station);
@@ -202,9 +218,12 @@ public sealed partial class ProjectLine : IAsyncDisposable
 
     public async ValueTask DisposeAsync() => await DisconnectAsync().ConfigureAwait(false);
 
+    private AuditContext? AuditFor(PlcLink link) =>
+        (_options.Audit ?? _options.Journal) is { } trail ? new AuditContext(trail, link.PortName, AuditUser.Current) : null;
+
     private BusLine Start(ProjectBus bus, PlcLink link)
     {
-        var line = BusLine.Start(link, bus.Plan(), Mode, Project.Refresh.MinimumPeriod, _options.UseReadLists, _time, _logger);
+        var line = BusLine.Start(link, bus.Plan(), Mode, Project.Refresh.MinimumPeriod, _options.UseReadLists, _time, _logger, AuditFor(link));
         line.Engine.Subscribe(OnEngineChanges);
         return line;
     }

@@ -1,4 +1,5 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Writes;
@@ -9,9 +10,14 @@ namespace OperatorPanel.Core.Polling;
 /// Writes: queued by any thread, sent by the loop ahead of the next READ (between two exchanges, never inside one),
 /// sent once (<see cref="IPlcLink.ExchangeOnceAsync"/>), confirmed by the reply's read-back or, when the reply was lost,
 /// by reading the target back (WriteOutcome.ConfirmedByReadBack, NotApplied, Unknown), logged with old and new value.
+/// With <see cref="Audit"/>, each write's intent is on record before its frame leaves and its outcome before the caller
+/// hears it; a write whose intent cannot be recorded is not sent.
 /// </summary>
 public sealed partial class PollingEngine
 {
+    /// <summary>Where writes go on record (the write journal), with the bus's port and the user; null records nothing.</summary>
+    public AuditContext? Audit { get; init; }
+
     /// <summary>
     /// Queues a write and returns its outcome once sent and read back. The write waits while <see cref="RunAsync"/> is
     /// not running. Cancelling <paramref name="cancellationToken"/> withdraws it only while it is still queued.
@@ -44,8 +50,8 @@ public sealed partial class PollingEngine
             {
                 // A bug of ours must not leave the caller waiting forever: the write still gets an outcome.
                 _logger.Error(exception, "Write {Request} broke the engine's own handling", pending.Request.ToString());
-                Finish(pending, WriteLog.Unknown, new WriteOutcome.Unknown(
-                    default, $"internal error: {exception.Message}", "the panel's own handling broke after the write may have been sent"));
+                await FinishAsync(pending, WriteLog.Unknown, new WriteOutcome.Unknown(
+                    default, $"internal error: {exception.Message}", "the panel's own handling broke after the write may have been sent")).ConfigureAwait(false);
             }
 
             done++;
@@ -65,6 +71,12 @@ public sealed partial class PollingEngine
             return;
         }
 
+        if (await RecordIntentAsync(pending, oldValue).ConfigureAwait(false) is { } notRecorded)
+        {
+            Finish(pending, oldValue, notRecorded);
+            return;
+        }
+
         OnceReply reply;
         try
         {
@@ -72,28 +84,28 @@ public sealed partial class PollingEngine
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {
-            Finish(pending, oldValue, new WriteOutcome.Unknown(
-                default, "polling stopped while the write was on the wire", "no read-back: the panel stopped polling"));
+            await FinishAsync(pending, oldValue, new WriteOutcome.Unknown(
+                default, "polling stopped while the write was on the wire", "no read-back: the panel stopped polling")).ConfigureAwait(false);
             throw;
         }
         catch (Exception exception)
         {
             var (message, _) = _stations.RecordFailure(request.Station, exception);
-            Finish(pending, oldValue, LostReplyResolution.Unresolved("the link failed while sending", message));
+            await FinishAsync(pending, oldValue, LostReplyResolution.Unresolved("the link failed while sending", message)).ConfigureAwait(false);
             return;
         }
 
         switch (reply)
         {
             case OnceReply.Answered answered:
-                Finish(pending, oldValue, Judge(request, answered.Response));
+                await FinishAsync(pending, oldValue, Judge(request, answered.Response)).ConfigureAwait(false);
                 break;
             case OnceReply.NotSent notSent:
                 var (message, _) = _stations.RecordFailure(request.Station, notSent.Failure);
-                Finish(pending, oldValue, new WriteOutcome.Failed($"{message}; nothing was sent", WriteFailureKind.LinkFailure));
+                await FinishAsync(pending, oldValue, new WriteOutcome.Failed($"{message}; nothing was sent", WriteFailureKind.LinkFailure)).ConfigureAwait(false);
                 break;
             case OnceReply.ReplyLost lost:
-                Finish(pending, oldValue, await ResolveByReadBackAsync(request, oldRaw, lost, cancellationToken).ConfigureAwait(false));
+                await FinishAsync(pending, oldValue, await ResolveByReadBackAsync(request, oldRaw, lost, cancellationToken).ConfigureAwait(false)).ConfigureAwait(false);
                 break;
             default:
                 throw new InvalidOperationException($"unknown link reply {reply}");
@@ -167,6 +179,36 @@ public sealed partial class PollingEngine
         _values.TryGet(new WatchedItem(request.Station, request.Address), out var old) && old.HasValue ? old.Raw : default;
 
     private string OldValueText(WriteRequest request) => WriteLog.Format(request.Address, OldValue(request));
+
+    /// <summary>Puts the intent on record before the frame leaves; null when recorded (or no audit), else the write's refusal.</summary>
+    private async Task<WriteOutcome?> RecordIntentAsync(PendingWrite pending, string oldValue)
+    {
+        if (Audit is not { } audit)
+        {
+            return null;
+        }
+
+        var intent = WriteAudit.Intent(pending.Request, oldValue, audit, _time.GetUtcNow());
+        if (await audit.Trail.RecordAsync(intent, CancellationToken.None).ConfigureAwait(false) is { } notKept)
+        {
+            return new WriteOutcome.Failed($"the write was not sent: it could not be put on record ({notKept})", WriteFailureKind.NotRecorded);
+        }
+
+        pending.Intent = intent;
+        return null;
+    }
+
+    /// <summary>Records the outcome of a write whose intent is on record (the caller hears it after), then finishes it.</summary>
+    private async Task FinishAsync(PendingWrite pending, string oldValue, WriteOutcome outcome)
+    {
+        if (pending.Intent is { } intent && !pending.Task.IsCompleted && Audit is { } audit
+            && await audit.Trail.RecordAsync(WriteAudit.Outcome(intent, pending.Request, outcome, _time.GetUtcNow()), CancellationToken.None).ConfigureAwait(false) is { } notKept)
+        {
+            _logger.Warning("Write {Request}: its outcome could not be put on record: {Reason:l}", pending.Request.ToString(), notKept);
+        }
+
+        Finish(pending, oldValue, outcome);
+    }
 
     private void Finish(PendingWrite pending, string oldValue, WriteOutcome outcome)
     {
