@@ -1,6 +1,8 @@
 using System.Text.Encodings.Web;
 using System.Text.Json;
 using System.Text.Json.Serialization;
+using OperatorPanel.Cli.Logging;
+using OperatorPanel.Core.Audit;
 using Serilog;
 
 namespace OperatorPanel.Cli;
@@ -27,6 +29,12 @@ internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, I
 
     /// <summary>True when stdout is the console itself, not a pipe, a file or a test's writer: live views redraw in place.</summary>
     public bool IsTerminal { get; init; }
+
+    /// <summary>
+    /// The write journal beside the logs (--log-dir, default the user's OperatorPanel/logs, shared with the app): every
+    /// write and STOP goes on record there before it is sent.
+    /// </summary>
+    public WriteJournal Journal { get; init; } = WriteJournal.In(CliLogging.DefaultLogFolder);
 
     public void WriteJson<T>(T value) => Out.WriteLine(JsonSerializer.Serialize(value, JsonOptions));
 

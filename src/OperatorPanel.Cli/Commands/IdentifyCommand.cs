@@ -31,6 +31,7 @@ internal static class IdentifyCommand
             }
 
             await using var session = opened;
+            await session.ResolveCutShortAsync(cli, cancellationToken);
             PlcResponse response;
             try
             {

@@ -63,6 +63,7 @@ internal static class ReadCommand
         }
 
         await using var session = opened;
+        await session.ResolveCutShortAsync(cli, cancellationToken);
         await using var run = BusLine.OnDemand(session.Link, PlanFor(target, addresses.Select(a => a.Address)), TimeProvider.System, cli.Log);
         await run.Engine.RequestRefreshAsync(cancellationToken);
         var status = run.Engine.GetStationStatus(target.Station);

@@ -57,7 +57,8 @@ internal static class StopCommand
             }
 
             await using var session = opened;
-            var outcome = await new RemoteStop(session.Link, cli.Log).StopAsync(target.Station, cancellationToken);
+            await session.ResolveCutShortAsync(cli, cancellationToken);
+            var outcome = await new RemoteStop(session.Link, cli.Log, session.AuditFor(cli)).StopAsync(target.Station, cancellationToken);
             var view = StopResultView.From(target, outcome);
             if (cli.Json)
             {

@@ -49,13 +49,18 @@ internal static class WatchCommand
                 return cli.Fail(ExitCodes.BadInput, "--cycles and --duration must be positive");
             }
 
-            var (opened, openError) = await WatchSession.TryOpenAsync(load.Project, parse.GetValue(demo), parse.GetValue(model), cli.Log);
+            var (opened, openError) = await WatchSession.TryOpenAsync(load.Project, parse.GetValue(demo), parse.GetValue(model), cli.Log, cli.Journal);
             if (opened is null)
             {
                 return cli.Fail(ExitCodes.BadInput, openError ?? "the demo line did not start");
             }
 
             await using var session = opened;
+            foreach (var cutShort in session.Line.ResolvedAtConnect)
+            {
+                cli.Error.WriteLine("opanel: " + cutShort.Describe());
+            }
+
             using var stop = new StopSignals(seconds is { } s ? TimeSpan.FromSeconds(s) : null);
             var last = await RunAsync(cli, session, limit, stop.Token);
             return last.AllOffline ? ExitCodes.LinkFailure : ExitCodes.Ok;

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using OperatorPanel.Cli.Hosting;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
@@ -20,7 +21,9 @@ internal static class WriteCommand
         + "the width's length, a number with '.' or an exponent a REAL (double words only), a leading '-' a signed number, anything else unsigned. "
         + "Exit codes: 0 all confirmed; 1 bad input (address, value) or refused by the PLC (not writable, out of range), nothing written "
         + "for bad input; 2 not applied (nothing sent, or the old value read back after a lost reply) or read back differently; "
-        + "3 unknown whether applied (3 wins over 2, 2 over 1)";
+        + "3 unknown whether applied (3 wins over 2, 2 over 1); 130 interrupted by Ctrl+C or SIGTERM: the write on the wire is finished and "
+        + "read back, every outcome is printed, the writes after it are not sent (3 wins over 130). Each write's intent is in the write "
+        + "journal before its frame leaves, and its outcome after; a write cut short by a kill is settled at the next start";
 
     public static Command Create(Func<ParseResult, CliContext> context)
     {
@@ -35,7 +38,7 @@ internal static class WriteCommand
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
-            if (!link.TryBind(parse, cli, out var target, out _))
+            if (!link.TryBind(parse, cli, out var target, out var fromProject))
             {
                 return ExitCodes.BadInput;
             }
@@ -48,7 +51,7 @@ internal static class WriteCommand
                     return cli.Fail(ExitCodes.BadInput, error + "; nothing written");
                 }
 
-                items.Add(item);
+                items.Add(item with { Request = item.Request with { Symbol = fromProject?.SymbolOf(item.Address) } });
             }
 
             return await WriteAsync(cli, target, items, cancellationToken);
@@ -63,9 +66,22 @@ internal static class WriteCommand
             return cli.Fail(ExitCodes.BadInput, openError);
         }
 
+        // Ctrl+C (or SIGTERM) lets the write on the wire finish and be read back: it is never abandoned half-way.
+        using var stop = new StopSignals(null, () => cli.Error.WriteLine(
+            "opanel: stopping after the write on the wire (Ctrl+C again quits at once; that write is then settled at the next start)"));
         await using var session = opened;
-        await using var run = BusLine.OnDemand(session.Link, ReadCommand.PlanFor(target, items.Select(i => i.Address)), TimeProvider.System, cli.Log);
-        await run.Engine.RequestRefreshAsync(cancellationToken);
+        await session.ResolveCutShortAsync(cli, cancellationToken);
+        await using var run = BusLine.OnDemand(
+            session.Link, ReadCommand.PlanFor(target, items.Select(i => i.Address)), TimeProvider.System, cli.Log, session.AuditFor(cli));
+        try
+        {
+            await run.Engine.RequestRefreshAsync(stop.Token);
+        }
+        catch (OperationCanceledException) when (stop.IsStopRequested)
+        {
+            return cli.Fail(ExitCodes.Interrupted, "interrupted before the first write; nothing written");
+        }
+
         var status = run.Engine.GetStationStatus(target.Station);
         if (status.State != StationState.Online)
         {
@@ -76,7 +92,13 @@ internal static class WriteCommand
         foreach (var item in items)
         {
             var old = run.Engine.TryGetValue(target.Station, item.Address, out var value) ? value : null;
-            var outcome = await run.Engine.WriteAsync(item.Request, cancellationToken);
+            if (stop.IsStopRequested)
+            {
+                results.Add(WriteResultView.NotSent(item, old, "interrupted (Ctrl+C) before it was sent"));
+                continue;
+            }
+
+            var outcome = await run.Engine.WriteAsync(item.Request, CancellationToken.None);
             results.Add(WriteResultView.From(item, old, outcome));
         }
 
@@ -89,6 +111,12 @@ internal static class WriteCommand
             results.ForEach(r => r.WriteText(cli.Out));
         }
 
-        return results.Max(r => r.ExitCode);
+        return ExitCodeOf(results, stop.IsStopRequested);
     }
+
+    /// <summary>3 (unknown whether applied) first: it asks for a look at the PLC; then 130 when interrupted; else the worst.</summary>
+    private static int ExitCodeOf(List<WriteResultView> results, bool interrupted) =>
+        results.Any(r => r.ExitCode == ExitCodes.WriteUnknown) ? ExitCodes.WriteUnknown
+        : interrupted ? ExitCodes.Interrupted
+        : results.Max(r => r.ExitCode);
 }

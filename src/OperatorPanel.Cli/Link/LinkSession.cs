@@ -1,5 +1,7 @@
 using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Writes;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
@@ -56,6 +58,27 @@ internal sealed class LinkSession : IAsyncDisposable
 
     /// <summary>The --demo PLC: the target's station and CPU, its handler with STOP so <c>opanel stop --demo</c> can be tried.</summary>
     private static HandlerConfig DemoStation(LinkTarget target) => new(target.Station, target.Cpu!, allowStop: true);
+
+    /// <summary>Where this session's writes and STOPs go on record: the journal, with this port and the user.</summary>
+    public AuditContext AuditFor(CliContext cli) => new(cli.Journal, PortName, AuditUser.Current);
+
+    /// <summary>
+    /// Settles the writes and STOPs that earlier programs left cut short on this port (UnfinishedWrites: read back,
+    /// recorded as resolved at start) and says each on stderr, so a technician learns what a killed write did.
+    /// </summary>
+    public async Task ResolveCutShortAsync(CliContext cli, CancellationToken cancellationToken)
+    {
+        var (resolved, problem) = await UnfinishedWrites.ResolveAsync(cli.Journal, Link, PortName, TimeProvider.System, cli.Log, cancellationToken);
+        if (problem is not null)
+        {
+            cli.Error.WriteLine($"opanel: {problem}");
+        }
+
+        foreach (var entry in resolved)
+        {
+            cli.Error.WriteLine("opanel: " + entry.Describe());
+        }
+    }
 
     public async ValueTask DisposeAsync()
     {

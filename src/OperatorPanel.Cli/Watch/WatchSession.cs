@@ -1,6 +1,7 @@
 using System.Collections.Concurrent;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
@@ -36,8 +37,11 @@ internal sealed class WatchSession : IAsyncDisposable
     /// </summary>
     public string? HandlerCheckOf(Station station) => _handlerChecks.TryGetValue(station, out var check) ? check : null;
 
-    /// <summary>Opens every bus; false with the reason (and nothing left running) when a demo line cannot start.</summary>
-    public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(PanelProject project, bool demo, SimulationModel model, ILogger log)
+    /// <summary>
+    /// Opens every bus; false with the reason (and nothing left running) when a demo line cannot start. Writes go on
+    /// record in <paramref name="journal"/>, and on connecting the writes earlier programs left cut short on the ports are settled.
+    /// </summary>
+    public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(PanelProject project, bool demo, SimulationModel model, ILogger log, WriteJournal journal)
     {
         ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector(log);
         var options = new ProjectLineOptions
@@ -45,6 +49,7 @@ internal sealed class WatchSession : IAsyncDisposable
             LinkOptionsFor = serial => LinkSession.OptionsFor(serial, scanAllowance: null, demo),
             // A triggered watch refreshes once a second at most: registering read lists would only add exchanges.
             UseReadLists = project.Refresh.Mode == RefreshMode.Continuous,
+            Journal = journal,
         };
         var line = new ProjectLine(project, options, TimeProvider.System, log);
         try

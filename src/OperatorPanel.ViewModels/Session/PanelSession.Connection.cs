@@ -30,6 +30,12 @@ public sealed partial class PanelSession : IAsyncDisposable
         IsConnected = true;
         _statusTimer = _time.CreateTimer(_ => _dispatcher.Post(UpdateStations), null, StatusPeriod, StatusPeriod);
         StatusLine.Show($"Connected to {Project.Stations.Length} station(s) on {string.Join(", ", _line.PortNames)}");
+        if (_line.ResolvedAtConnect is [var first, ..] cutShort)
+        {
+            // An earlier program was killed with a write on the wire: the operator learns what it did (the log has each).
+            StatusLine.ShowError(cutShort.Count == 1 ? first.Describe() : $"{cutShort.Count} writes cut short earlier were settled at start (see the log); the first: {first.Describe()}");
+        }
+
         await IdentifyAsync(cancellationToken);
     }
 
