@@ -45,6 +45,34 @@ internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, I
         Out.Flush();
     }
 
+    /// <summary>
+    /// Reports every bad argument at once, one a line ("opanel: 'VB99999': ..."), then what was not done ("nothing
+    /// written"); with --json one object with all of them.
+    /// </summary>
+    public int FailAll(int exitCode, IReadOnlyList<string> errors, string consequence)
+    {
+        var summary = errors.Count == 1 ? consequence : $"{errors.Count} arguments are wrong; {consequence}";
+        if (Json)
+        {
+            WriteJson(new { ok = false, error = errors.Count == 1 ? $"{errors[0]}; {consequence}" : summary, errors });
+            return exitCode;
+        }
+
+        if (errors.Count == 1)
+        {
+            Error.WriteLine($"opanel: {errors[0]}; {consequence}");
+            return exitCode;
+        }
+
+        foreach (var error in errors)
+        {
+            Error.WriteLine($"opanel: {error}");
+        }
+
+        Error.WriteLine($"opanel: {summary}");
+        return exitCode;
+    }
+
     /// <summary>Reports bad input: a JSON object on stdout with --json, otherwise the message on stderr.</summary>
     public int Fail(int exitCode, string message)
     {

@@ -16,7 +16,7 @@ internal static class WriteCommand
         "Write values to a PLC, each confirmed by the PLC's read-back; prints old -> new and confirmed, mismatch (read back X) or failed: reason. "
         + "A write whose reply is lost is never sent again: the panel reads the address back and prints confirmed (reply lost, read back), "
         + "not applied (the old value is still there: write again if still wanted) or unknown (check the value before writing again). "
-        + "Every write is logged with old and new value. "
+        + "Every write is logged with old and new value. Every bad assignment is reported, and then nothing is written. "
         + "VALUE notation: a bit takes 0/1, true/false, on/off; 16#FF or 0xFF is hex, 2#1010 binary, 'AB' or \"AB\" ASCII of exactly "
         + "the width's length, a number with '.' or an exponent a REAL (double words only), a leading '-' a signed number, anything else unsigned. "
         + "Exit codes: 0 all confirmed; 1 bad input (address, value) or refused by the PLC (not writable, out of range), nothing written "
@@ -29,7 +29,8 @@ internal static class WriteCommand
     {
         var assignments = new Argument<string[]>("assignment")
         {
-            Description = "ADDR=VALUE, e.g. VW200=1234 Q0.1=on VD120=12.5 VB110=16#2A VD130='AB12'",
+            Description = "ADDR=VALUE, e.g. VW200=1234 Q0.1=on VD120=12.5 VB110=16#2A VD130='AB12'; with --project also SYMBOL=VALUE "
+                + "in the tag's units (RecipeNumber=3, TankLevel=55.2), and a tag's min/max hold however the cell is named",
             Arity = ArgumentArity.OneOrMore,
         };
         var link = new LinkOptionSet();
@@ -44,17 +45,22 @@ internal static class WriteCommand
             }
 
             var items = new List<WriteItem>();
+            var errors = new List<string>();
             foreach (var text in parse.GetValue(assignments) ?? [])
             {
-                if (!WriteItem.TryParse(text, target, out var item, out var error))
+                if (WriteItem.TryParse(text, target, fromProject, out var item, out var error))
                 {
-                    return cli.Fail(ExitCodes.BadInput, error + "; nothing written");
+                    items.Add(item);
                 }
-
-                items.Add(item with { Request = item.Request with { Symbol = fromProject?.SymbolOf(item.Address) } });
+                else
+                {
+                    errors.Add(error);
+                }
             }
 
-            return await WriteAsync(cli, target, items, cancellationToken);
+            return errors.Count > 0
+                ? cli.FailAll(ExitCodes.BadInput, errors, "nothing written")
+                : await WriteAsync(cli, target, items, cancellationToken);
         });
         return command;
     }

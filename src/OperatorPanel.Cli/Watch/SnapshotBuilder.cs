@@ -81,7 +81,7 @@ internal static class SnapshotBuilder
     private static TagRow Tag(ProjectTag tag, PolledValue? value, ProjectLine line, Station station)
     {
         var quality = line.TryGetValue(station, tag.Address, out var polled) ? polled.Quality.ToString().ToLowerInvariant() : "bad";
-        var text = value is null ? "-" : ValueFormatter.Format(value.Raw.AsSpan(), tag.Address.Width, tag.Format);
+        var text = value is null ? "-" : TagValues.Format(tag, value.Raw.AsSpan());
         return new TagRow(tag.Symbol, tag.Address.ToString(), text, quality);
     }
 }

@@ -8,7 +8,7 @@ namespace OperatorPanel.Core.Transport;
 /// <summary>
 /// One program per serial port. Two programs on one RS-485 line garble each other's frames, and the technician is then
 /// sent to check wiring and line settings. Windows opens a COM port for one program at a time by itself. Linux does not:
-/// its exclusive mode (the TIOCEXCL ioctl) is out of reach of System.IO.Ports without P/Invoke, which this product
+/// its exclusive mode (the TIOCEXCL ioctl) is out of reach of the .NET serial library without P/Invoke, which this product
 /// does not use, so the port is claimed by a lock file in the UUCP convention that Linux serial programs share
 /// (Filesystem Hierarchy Standard 3.0, section 5.9 "/var/lock": "LCK.." and the device's base name, holding the
 /// owner's PID as ten ASCII digits, space-padded, and a newline). A lock whose process is gone is stale and taken

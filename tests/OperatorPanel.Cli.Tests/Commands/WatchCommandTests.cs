@@ -30,8 +30,8 @@ public sealed class WatchCommandTests : IDisposable
         run.Out.Should().MatchRegex(@"link     requests \d+  replies [1-9]\d*  retries \d+  timeouts \d+  rtt avg \d+\.\d ms");
         run.Out.Should().MatchRegex(@"    IB0   ●[●○]{7}  I0\.0 EStopHealthy  I0\.1 StartButton"); // e-stop chain healthy in the demo
         run.Out.Should().MatchRegex(@"    QB1   [●○]{2}······  Q1\.0 Horn  Q1\.1 RejectPusher");
-        run.Out.Should().MatchRegex(@"    BottleCount      VD100 +[1-9]\d*  good"); // the 2 s warm-up counts a bottle or two
-        run.Out.Should().MatchRegex(@"    FillSetpoint     VD120 +\d+(\.\d+)?  good"); // REAL shown as a number
+        run.Out.Should().MatchRegex(@"    BottleCount      VD100 +[1-9]\d* bottles  good"); // the 2 s warm-up counts a bottle or two
+        run.Out.Should().MatchRegex(@"    FillSetpoint     VD120 +\d+(\.\d+)? ml  good"); // REAL shown as a number
         run.Out.Should().MatchRegex(@"    StatusWord       MW10 +2#\d{4}_\d{4}_\d{4}_\d{4}  good");
         run.Out.Should().MatchRegex(@"    M2\.2 +warning +Low product level in tank");
     }
