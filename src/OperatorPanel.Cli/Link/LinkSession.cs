@@ -1,8 +1,8 @@
 using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
-using OperatorPanel.Core.Writes;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Core.Writes;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 using Serilog;

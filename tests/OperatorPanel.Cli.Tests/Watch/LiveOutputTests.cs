@@ -1,7 +1,7 @@
 using OperatorPanel.Cli.Watch;
 using OperatorPanel.TestKit;
-using Spectre.Console.Testing;
 using Serilog.Core;
+using Spectre.Console.Testing;
 
 namespace OperatorPanel.Cli.Tests.Watch;
 
