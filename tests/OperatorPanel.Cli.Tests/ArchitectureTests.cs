@@ -39,14 +39,18 @@ public sealed partial class ArchitectureTests
     [InlineData("Link", "Polling")]
     [InlineData("Link", "Line")]
     [InlineData("Polling", "Line")]
+    [InlineData("Ppi", "Link")]
+    [InlineData("Ppi", "Polling")]
+    [InlineData("Ppi", "Line")]
+    [InlineData("Ppi", "Protocol")]
     public void CoreFolders_TheWireLayersDoNotImportTheLayersAboveThem(string folder, string above)
     {
         var core = Path.Combine(RepositoryRoot(), "src", "OperatorPanel.Core");
-        var importing = Directory.EnumerateFiles(Path.Combine(core, folder), "*.cs")
+        var importing = Directory.EnumerateFiles(Path.Combine(core, folder), "*.cs", SearchOption.AllDirectories)
             .Where(f => File.ReadAllText(f).Contains($"OperatorPanel.Core.{above}", StringComparison.Ordinal) || File.ReadAllText(f).Contains($" {above}.", StringComparison.Ordinal))
             .Select(Path.GetFileName);
 
-        importing.Should().BeEmpty($"Core/{folder} sits below Core/{above} (one direction: transport, link, polling, line)");
+        importing.Should().BeEmpty($"Core/{folder} sits below Core/{above} (one direction: transport, link, polling, line; PPI beside the Freeport protocol, below the bus owner)");
     }
 
     [Fact]

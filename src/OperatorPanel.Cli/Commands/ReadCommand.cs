@@ -1,7 +1,6 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 
@@ -62,22 +61,21 @@ internal static class ReadCommand
 
     private static async Task<int> ReadAsync(CliContext cli, LinkTarget target, List<(ArgumentTarget Target, DisplayFormat? Format)> addresses, CancellationToken cancellationToken)
     {
-        if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
+        if (!LinkSession.TryOpen(target, PlanFor(target, addresses.Select(a => a.Target.Address)), cli, out var opened, out var openError))
         {
             return cli.Fail(ExitCodes.BadInput, openError);
         }
 
         await using var session = opened;
         await session.ResolveCutShortAsync(cli, cancellationToken);
-        await using var run = BusLine.OnDemand(session.Link, PlanFor(target, addresses.Select(a => a.Target.Address)), TimeProvider.System, cli.Log);
-        await run.Engine.RequestRefreshAsync(cancellationToken);
-        var status = run.Engine.GetStationStatus(target.Station);
+        await session.Bus.RefreshAsync(cancellationToken);
+        var status = session.Bus.StatusOf(target.Station);
         if (status.State != StationState.Online)
         {
             return LinkFailure.From(target, status.LastError, status.LastErrorKind).Report(cli);
         }
 
-        var views = addresses.Distinct().Select(a => ReadValueView.From(a.Target, run.Engine.TryGetValue(target.Station, a.Target.Address, out var v) ? v : null, a.Format)).ToList();
+        var views = addresses.Distinct().Select(a => ReadValueView.From(a.Target, session.Bus.TryGetValue(target.Station, a.Target.Address, out var v) ? v : null, a.Format)).ToList();
         if (cli.Json)
         {
             cli.WriteJson(views);

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Stop;
 
 namespace OperatorPanel.Cli.Commands;
@@ -51,14 +52,14 @@ internal static class StopCommand
                     + "until someone sets RUN. Nothing sent; to do it, give the same command with --yes");
             }
 
-            if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
+            if (!LinkSession.TryOpen(target, PollPlan.Empty, cli, out var opened, out var openError))
             {
                 return cli.Fail(ExitCodes.BadInput, openError);
             }
 
             await using var session = opened;
             await session.ResolveCutShortAsync(cli, cancellationToken);
-            var outcome = await new RemoteStop(session.Link, cli.Log, session.AuditFor(cli)).StopAsync(target.Station, cancellationToken);
+            var outcome = await session.Bus.StopAsync(target.Station, cancellationToken);
             var view = StopResultView.From(target, outcome);
             if (cli.Json)
             {

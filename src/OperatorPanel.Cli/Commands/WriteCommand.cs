@@ -1,7 +1,6 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Hosting;
 using OperatorPanel.Cli.Link;
-using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 
 namespace OperatorPanel.Cli.Commands;
@@ -67,7 +66,7 @@ internal static class WriteCommand
 
     private static async Task<int> WriteAsync(CliContext cli, LinkTarget target, List<WriteItem> items, CancellationToken cancellationToken)
     {
-        if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
+        if (!LinkSession.TryOpen(target, ReadCommand.PlanFor(target, items.Select(i => i.Address)), cli, out var opened, out var openError))
         {
             return cli.Fail(ExitCodes.BadInput, openError);
         }
@@ -77,18 +76,16 @@ internal static class WriteCommand
             "opanel: stopping after the write on the wire (Ctrl+C again quits at once; that write is then settled at the next start)"));
         await using var session = opened;
         await session.ResolveCutShortAsync(cli, cancellationToken);
-        await using var run = BusLine.OnDemand(
-            session.Link, ReadCommand.PlanFor(target, items.Select(i => i.Address)), TimeProvider.System, cli.Log, session.AuditFor(cli));
         try
         {
-            await run.Engine.RequestRefreshAsync(stop.Token);
+            await session.Bus.RefreshAsync(stop.Token);
         }
         catch (OperationCanceledException) when (stop.IsStopRequested)
         {
             return cli.Fail(ExitCodes.Interrupted, "interrupted before the first write; nothing written");
         }
 
-        var status = run.Engine.GetStationStatus(target.Station);
+        var status = session.Bus.StatusOf(target.Station);
         if (status.State != StationState.Online)
         {
             return LinkFailure.From(target, status.LastError, status.LastErrorKind).Report(cli, "nothing written");
@@ -97,14 +94,14 @@ internal static class WriteCommand
         var results = new List<WriteResultView>();
         foreach (var item in items)
         {
-            var old = run.Engine.TryGetValue(target.Station, item.Address, out var value) ? value : null;
+            var old = session.Bus.TryGetValue(target.Station, item.Address, out var value) ? value : null;
             if (stop.IsStopRequested)
             {
                 results.Add(WriteResultView.NotSent(item, old, "interrupted (Ctrl+C) before it was sent"));
                 continue;
             }
 
-            var outcome = await run.Engine.WriteAsync(item.Request, CancellationToken.None);
+            var outcome = await session.Bus.WriteAsync(item.Request, CancellationToken.None);
             results.Add(WriteResultView.From(item, old, outcome));
         }
 

@@ -30,9 +30,15 @@ internal sealed class SimulatedLine
     /// </summary>
     public static bool TryCreate(
         IEnumerable<HandlerConfig> stations, SimulationModel model, SerialSettings serial, bool runProcess,
+        [NotNullWhen(true)] out SimulatedLine? line, [NotNullWhen(false)] out string? error) =>
+        TryCreate(stations, model, serial, runProcess, PpiMode.BesideHandler, out line, out error);
+
+    /// <summary>As above; <paramref name="ppi"/> = <see cref="PpiMode.WithoutHandler"/> loads no handler (simulate --ppi).</summary>
+    public static bool TryCreate(
+        IEnumerable<HandlerConfig> stations, SimulationModel model, SerialSettings serial, bool runProcess, PpiMode ppi,
         [NotNullWhen(true)] out SimulatedLine? line, [NotNullWhen(false)] out string? error)
     {
-        if (!SimulatedLineFactory.TryCreate(stations, model, serial, runProcess, GeneratedHandler, out var created, out error))
+        if (!SimulatedLineFactory.TryCreate(stations, model, serial, runProcess, GeneratedHandler, ppi, out var created, out error))
         {
             line = null;
             return false;

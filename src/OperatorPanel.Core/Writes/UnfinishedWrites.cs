@@ -41,24 +41,19 @@ public static class UnfinishedWrites
         var resolved = new List<CutShortWrite>();
         foreach (var intent in intents)
         {
-            (string Outcome, string Detail)? settled;
-            try
+            var settled = IsSimulated(intent.Port)
+                ? new Settlement(Unknown, "it went to a simulated PLC, which ended with its program")
+                : await ReadBackAsync(intent, link, cancellationToken).ConfigureAwait(false);
+            if (settled.PortGone)
             {
-                settled = IsSimulated(intent.Port)
-                    ? (Unknown, "it went to a simulated PLC, which ended with its program")
-                    : await ReadBackAsync(intent, link, cancellationToken).ConfigureAwait(false);
-            }
-            catch (PlcCommunicationException portGone) when (portGone.Kind == PlcErrorKind.PortUnavailable)
-            {
-                log.Warning("{Action} {Entry:l} was cut short earlier and is not settled yet: {Reason:l}", intent.Action, intent.Describe(), portGone.Message);
+                log.Warning("{Action} {Entry:l} was cut short earlier and is not settled yet: {Reason:l}", intent.Action, intent.Describe(), settled.Detail);
                 break; // the port is not there: the rest cannot be read either
             }
 
-            var (outcome, detail) = settled.Value;
-            var entry = intent.Then(AuditStep.ResolvedAtStart, clock.GetUtcNow(), outcome, detail);
+            var entry = intent.Then(AuditStep.ResolvedAtStart, clock.GetUtcNow(), settled.Outcome, settled.Detail);
             log.Warning(
                 "{Action} {Entry:l} by {User:l} at {At:o} was cut short (its program ended before the outcome); resolved at start: {Outcome:l}: {Detail:l}",
-                intent.Action, intent.Describe(), intent.User, intent.At, outcome, detail);
+                intent.Action, intent.Describe(), intent.User, intent.At, settled.Outcome, settled.Detail);
             if (await journal.RecordAsync(entry, cancellationToken).ConfigureAwait(false) is { } notKept)
             {
                 log.Warning("{Problem:l}", notKept);
@@ -76,7 +71,7 @@ public static class UnfinishedWrites
     private static bool SamePort(string a, string b) =>
         string.Equals(a, b, OperatingSystem.IsWindows() ? StringComparison.OrdinalIgnoreCase : StringComparison.Ordinal);
 
-    private static async Task<(string Outcome, string Detail)> ReadBackAsync(AuditEntry intent, IPlcLink link, CancellationToken cancellationToken)
+    private static async Task<Settlement> ReadBackAsync(AuditEntry intent, IPlcLink link, CancellationToken cancellationToken)
     {
         if (intent.Action == AuditAction.Stop)
         {
@@ -87,51 +82,50 @@ public static class UnfinishedWrites
             || ProtocolAreaExtensions.FromMemoryArea(address.Area) is not { } area
             || !WriteLog.TryParse(address, intent.NewValue, out var requested))
         {
-            return (Unknown, $"the journal entry names no address or value this program reads ({intent.Target} := {intent.NewValue})");
+            return new Settlement(Unknown, $"the journal entry names no address or value this program reads ({intent.Target} := {intent.NewValue})");
         }
 
         var length = address.Bit is null ? address.Width.ByteCount() : 1;
-        PlcResponse reply;
-        try
+        var reply = await link.ExchangeAsync(new ReadRequest(intent.Station, [new ReadItem(area, address.ByteOffset, length)]), cancellationToken).ConfigureAwait(false);
+        if (reply.Failure is { } failure)
         {
-            reply = await link.ExchangeAsync(new ReadRequest(intent.Station, [new ReadItem(area, address.ByteOffset, length)]), cancellationToken).ConfigureAwait(false);
-        }
-        catch (PlcCommunicationException failure) when (failure.Kind != PlcErrorKind.PortUnavailable)
-        {
-            return (Unknown, $"the read-back failed: {failure.Message}");
+            return failure.Kind == PlcErrorKind.PortUnavailable
+                ? Settlement.PortUnavailable(failure.Message)
+                : new Settlement(Unknown, $"the read-back failed: {failure.Message}");
         }
 
-        if (reply is not ReadResponse { Data.Length: var n } read || n != length)
+        if (reply.Response is not ReadResponse { Data.Length: var n } read || n != length)
         {
-            return (Unknown, $"the read-back got {(reply is ErrorResponse refused ? ProtocolErrorText.Describe(refused.Error) : $"a {reply.Command} reply")}");
+            return new Settlement(Unknown, $"the read-back got {(reply.Response is ErrorResponse refused ? ProtocolErrorText.Describe(refused.Error) : $"a {reply.Response?.Command} reply")}");
         }
 
         var now = ValueStore.Extract(address, read.Data.AsSpan());
         var nowText = WriteLog.Format(address, now);
         if (now.AsSpan().SequenceEqual(requested.AsSpan()))
         {
-            return (Applied, $"the PLC holds the requested {nowText}");
+            return new Settlement(Applied, $"the PLC holds the requested {nowText}");
         }
 
         return WriteLog.TryParse(address, intent.OldValue, out var old) && now.AsSpan().SequenceEqual(old.AsSpan())
-            ? (NotApplied, $"the PLC still holds the old {nowText}")
-            : (Unknown, $"the PLC holds {nowText}, neither the old {intent.OldValue} nor the requested {intent.NewValue}: its program may have changed it since");
+            ? new Settlement(NotApplied, $"the PLC still holds the old {nowText}")
+            : new Settlement(Unknown, $"the PLC holds {nowText}, neither the old {intent.OldValue} nor the requested {intent.NewValue}: its program may have changed it since");
     }
 
-    private static async Task<(string Outcome, string Detail)> IdentifyAsync(Station station, IPlcLink link, CancellationToken cancellationToken)
+    private static async Task<Settlement> IdentifyAsync(Station station, IPlcLink link, CancellationToken cancellationToken)
     {
-        try
+        var reply = await link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
+        return reply.Failure switch
         {
-            await link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
-            return (NotApplied, "the station answers IDENTIFY, so its program runs");
-        }
-        catch (PlcCommunicationException failure) when (failure.Kind is PlcErrorKind.NoAnswer or PlcErrorKind.Timeout)
-        {
-            return (Unknown, "the station is silent: in STOP, at TERM or off the bus");
-        }
-        catch (PlcCommunicationException failure) when (failure.Kind != PlcErrorKind.PortUnavailable)
-        {
-            return (Unknown, $"IDENTIFY failed: {failure.Message}");
-        }
+            null => new Settlement(NotApplied, "the station answers IDENTIFY, so its program runs"),
+            { Kind: PlcErrorKind.NoAnswer or PlcErrorKind.Timeout } => new Settlement(Unknown, "the station is silent: in STOP, at TERM or off the bus"),
+            { Kind: PlcErrorKind.PortUnavailable } failure => Settlement.PortUnavailable(failure.Message),
+            var failure => new Settlement(Unknown, $"IDENTIFY failed: {failure.Message}"),
+        };
+    }
+
+    /// <summary>How a cut-short action was settled; <paramref name="PortGone"/>: not at all, the port could not be opened.</summary>
+    private readonly record struct Settlement(string Outcome, string Detail, bool PortGone = false)
+    {
+        public static Settlement PortUnavailable(string message) => new(Unknown, message, PortGone: true);
     }
 }

@@ -40,13 +40,22 @@ public sealed partial class StlPlc
     /// <summary>Raised at the start of each scan for the one before it (not for the first scan).</summary>
     public event EventHandler<StlScan>? ScanCompleted;
 
-    /// <summary>Executes scans and interrupts until simulated time <paramref name="until"/>; in STOP time just passes.</summary>
+    /// <summary>
+    /// Executes scans and interrupts until simulated time <paramref name="until"/>; in STOP time passes, with the ports
+    /// and the communication phase running when anything listens to it (<see cref="CommunicationPhase"/>).
+    /// </summary>
     public void RunUntil(TimeSpan until)
     {
         var end = until.Ticks * 100;
         RefreshNextChange();
-        while (_now < end && Mode == OperatingMode.Run)
+        while (_now < end)
         {
+            if (Mode == OperatingMode.Stop)
+            {
+                RunStopped(end);
+                continue;
+            }
+
             if (_now >= _nextChange)
             {
                 CollectEvents();
@@ -172,6 +181,7 @@ public sealed partial class StlPlc
     private void BeginOverhead()
     {
         Array.Copy(Memory.Q, OutputImage, OutputImage.Length);
+        ServeCommunication();
         _overheadUntil = _now + StlTiming.ScanOverhead;
         _busy += StlTiming.ScanOverhead;
     }

@@ -134,6 +134,7 @@ public sealed partial class StlPlc
     {
         Mode = OperatingMode.Stop;
         Fault = fault;
+        _nextStopCycle = _now;
         _depth = -1;
         _interruptBase = -1;
         ResetInterrupts();

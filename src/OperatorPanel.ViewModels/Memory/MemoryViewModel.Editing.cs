@@ -11,7 +11,7 @@ public sealed partial class MemoryViewModel
     /// <summary>
     /// Checks the typed text in the cell's units against its type and range (TagValues: RecipeNumber takes 1..8) and the
     /// address for the station's CPU (AddressRules), then writes it; a bad value is refused with a message and nothing
-    /// goes on the wire. The engine logs the write and puts it on record.
+    /// goes on the wire. The bus logs the write and puts it on record.
     /// </summary>
     internal async Task CommitAsync(MemoryCellViewModel cell)
     {

@@ -13,7 +13,7 @@ namespace OperatorPanel.ViewModels.Outputs;
 
 /// <summary>
 /// The Outputs window: every output the project symbolises, as lamps with a switch (seed 000 §7, "Output" window).
-/// A switch writes the bit with WRITE BIT through the engine, which logs it with old and new value.
+/// A switch writes the bit with WRITE BIT through its bus, which logs it with old and new value.
 /// </summary>
 public sealed class OutputsViewModel : PaneViewModel
 {

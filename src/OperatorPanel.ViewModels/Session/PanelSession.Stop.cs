@@ -21,7 +21,6 @@ public sealed partial class PanelSession
             _ when IsReadOnly => new StopOutcome.NotSent(station, "read-only mode, nothing sent"),
             _ => await _line.StopAsync(station, cancellationToken),
         };
-        UpdateStations();
         if (outcome.IsStopped)
         {
             StatusLine.Show(outcome.Text);

@@ -18,7 +18,8 @@ namespace OperatorPanel.ViewModels.Shell;
 /// The main window: project file commands with dirty tracking, the line (connect, refresh mode, refresh now, demo,
 /// read-only), the per-station status bar, the panes (with the Alarms pane and the alarm count), the project wizard
 /// (File > New, Edit project) and Generate PLC code. Everything reads <see cref="Session"/>, which carries the project,
-/// the values and every change notification.
+/// the values and every change notification. Five files, one per menu of the window (this one: state and panes; .Files,
+/// .Line, .Alarms, .Wizard), because the commands of one window share its dirty mark and its services.
 /// </summary>
 public sealed partial class ShellViewModel : ObservableObject
 {
@@ -109,21 +110,8 @@ public sealed partial class ShellViewModel : ObservableObject
         NotifyCommands();
     }
 
-    private void OnSessionChanged(object? sender, PropertyChangedEventArgs e)
-    {
-        var mirrored = e.PropertyName switch
-        {
-            nameof(PanelSession.Mode) => nameof(IsContinuous),
-            nameof(PanelSession.IsReadOnly) => nameof(IsReadOnly),
-            nameof(PanelSession.IsConnected) => nameof(IsConnected),
-            _ => null,
-        };
-        if (mirrored is not null)
-        {
-            OnPropertyChanged(mirrored);
-            NotifyCommands();
-        }
-    }
+    /// <summary>The session's state (connected, refresh mode, read-only) is bound where it is shown; the commands follow it.</summary>
+    private void OnSessionChanged(object? sender, PropertyChangedEventArgs e) => NotifyCommands();
 
     private void NotifyCommands()
     {

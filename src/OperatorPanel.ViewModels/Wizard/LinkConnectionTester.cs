@@ -1,13 +1,15 @@
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
-using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
 /// <summary>
-/// Tests a link the way the panel will use it: a <see cref="PlcLink"/> with the medium's timeouts and retries
-/// (<see cref="LinkOptions.For"/>), over a transport opened for the test and closed after it. The port must not be in use
+/// Tests a link the way the panel will use it: a <see cref="Bus"/> on a <see cref="PlcLink"/> with the medium's timeouts
+/// and retries (<see cref="LinkOptions.For"/>), over a transport opened for the test and closed after it, IDENTIFY through
+/// its queue. The port must not be in use
 /// by a running session: disconnect before testing the port the panel is connected on.
 /// </summary>
 public sealed class LinkConnectionTester : IConnectionTester
@@ -24,10 +26,10 @@ public sealed class LinkConnectionTester : IConnectionTester
         (_openTransport, _time) = (openTransport, time);
     }
 
-    public async Task<PlcResponse> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
+    public async Task<LinkReply> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(link);
-        await using var plcLink = new PlcLink(_openTransport(link), LinkOptions.For(link), _time);
-        return await plcLink.ExchangeAsync(new IdentifyRequest(station), cancellationToken);
+        await using var bus = Bus.OnDemand(new PlcLink(_openTransport(link), LinkOptions.For(link), _time), PollPlan.Empty, _time);
+        return await bus.IdentifyAsync(station, cancellationToken);
     }
 }

@@ -33,30 +33,26 @@ public sealed partial class LinkStepViewModel
         var where = string.Create(CultureInfo.InvariantCulture, $"Station {station.Address} on {link.PortName} at {link.LineText}");
         TestSucceeded = null;
         TestResult = where + ": asking...";
-        try
+        var reply = await _tester.IdentifyAsync(link, station, CancellationToken.None);
+        (TestSucceeded, TestResult) = reply.Response switch
         {
-            var reply = await _tester.IdentifyAsync(link, station, CancellationToken.None);
-            (TestSucceeded, TestResult) = reply switch
-            {
-                IdentifyResponse identity => Describe(where, identity, cpu),
-                ErrorResponse refusal => (false, $"{where} refused IDENTIFY ({refusal.Error}): the handler is too old or not ours; regenerate it."),
-                _ => (false, $"{where} answered IDENTIFY with a {reply.Command} reply; is another device on the bus?"),
-            };
-        }
-        catch (PlcCommunicationException ex)
-        {
-            TestSucceeded = false;
-            TestResult = ex.Kind switch
-            {
-                PlcErrorKind.PortUnavailable => $"{link.PortName} could not be used: {ex.Message}",
-                PlcErrorKind.HandlerProtocolV1 => $"{where}: {ex.Message}.",
-                PlcErrorKind.FrameCorrupt => $"{where}: garbled replies; check that baud rate and parity match the handler. ({ex.Message})",
-                PlcErrorKind.Timeout or PlcErrorKind.NegativeReply or PlcErrorKind.NoAnswer =>
-                    $"{where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
-                    + $"mode switch at RUN (not TERM) and that the handler is loaded. ({ex.Message})",
-            };
-        }
+            null => (false, Describe(where, link.PortName, reply.Failure!)),
+            IdentifyResponse identity => Describe(where, identity, cpu),
+            ErrorResponse refusal => (false, $"{where} refused IDENTIFY ({refusal.Error}): the handler is too old or not ours; regenerate it."),
+            var other => (false, $"{where} answered IDENTIFY with a {other.Command} reply; is another device on the bus?"),
+        };
     }
+
+    private static string Describe(string where, string portName, PlcCommunicationException failure) => failure.Kind switch
+    {
+        PlcErrorKind.PortUnavailable => $"{portName} could not be used: {failure.Message}",
+        PlcErrorKind.HandlerProtocolV1 => $"{where}: {failure.Message}.",
+        PlcErrorKind.AnotherMaster => $"{where}: another PPI master is on the bus; the panel does not share it. ({failure.Message})",
+        PlcErrorKind.FrameCorrupt => $"{where}: garbled replies; check that baud rate and parity match the handler. ({failure.Message})",
+        PlcErrorKind.Timeout or PlcErrorKind.NegativeReply or PlcErrorKind.NoAnswer =>
+            $"{where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
+            + $"mode switch at RUN (not TERM) and that the handler is loaded. ({failure.Message})",
+    };
 
     private static (bool, string) Describe(string where, IdentifyResponse identity, Core.Cpu.CpuProfile cpu)
     {

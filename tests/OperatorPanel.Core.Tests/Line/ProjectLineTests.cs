@@ -34,6 +34,57 @@ public sealed class ProjectLineTests
     }
 
     [Fact]
+    public async Task Subscribe_OneSubscriberThrows_TheOthersStillHearAndTheErrorIsLogged()
+    {
+        var (logger, sink) = CollectingSink.CreateLogger();
+        var heard = new List<PolledValue>();
+        var line = new ProjectLine(Project(), time: _clock, logger: logger);
+        var broken = false;
+        using var first = line.Subscribe(Two, Vw10, _ =>
+        {
+            if (broken)
+            {
+                throw new InvalidOperationException("view model bug");
+            }
+        });
+        using var second = line.Subscribe(Two, Vw10, heard.Add);
+        broken = true;
+
+        await line.ConnectAsync(new PairConnector(_clock));
+        await line.DisconnectAsync();
+
+        heard.Should().HaveCount(3, "subscribe, connect and disconnect: the broken subscriber stops nobody");
+        sink.Events.Should().Contain(e => e.Level == Serilog.Events.LogEventLevel.Error && e.Exception!.Message == "view model bug");
+    }
+
+    [Fact]
+    public async Task Subscribe_Disposed_HearsNothingMore()
+    {
+        var heard = new List<PolledValue>();
+        var line = new ProjectLine(Project(), time: _clock);
+        line.Subscribe(Two, Vw10, heard.Add).Dispose();
+
+        await line.ConnectAsync(new PairConnector(_clock));
+        await line.DisconnectAsync();
+
+        heard.Should().ContainSingle("only the value at subscription time arrived");
+    }
+
+    [Fact]
+    public async Task StateChanged_ConnectAndDisconnect_RaisedThroughDeliverEachTime()
+    {
+        var delivered = 0;
+        var raised = 0;
+        var line = new ProjectLine(Project(), new ProjectLineOptions { Deliver = work => { delivered++; work(); } }, _clock);
+        line.StateChanged += (_, _) => raised++;
+
+        await line.ConnectAsync(new PairConnector(_clock));
+        await line.DisconnectAsync();
+
+        (delivered, raised).Should().Be((2, 2), "the status bar hears of connect and disconnect, inside the delivery of the values");
+    }
+
+    [Fact]
     public async Task Edit_StationsChangeWhileConnected_RefusedThenTakenOnceDisconnected()
     {
         var line = new ProjectLine(Project(), time: _clock);

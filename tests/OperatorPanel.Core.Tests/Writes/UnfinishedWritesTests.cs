@@ -62,7 +62,7 @@ public sealed class UnfinishedWritesTests : IDisposable
     public async Task ResolveAsync_PortUnavailable_SettlesNothingYet()
     {
         WriteCutShort("COM3");
-        _link.Throw(new Station(2), new PlcCommunicationException(PlcErrorKind.PortUnavailable, null, "serial port COM3: open failed"));
+        _link.Fail(new Station(2), new PlcCommunicationException(PlcErrorKind.PortUnavailable, null, "serial port COM3: open failed"));
 
         (await UnfinishedWrites.ResolveAsync(_journal, _link, "COM3", _clock)).Resolved.Should().BeEmpty();
         _journal.CutShort(_ => true).Intents.Should().ContainSingle("a later start with the port back settles it");

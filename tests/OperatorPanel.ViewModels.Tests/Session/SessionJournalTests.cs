@@ -1,7 +1,10 @@
 using System.Diagnostics;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Writes;
+using OperatorPanel.Simulator.Reference;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Tests.Fakes;
 
@@ -48,8 +51,27 @@ public sealed class SessionJournalTests : IAsyncDisposable
         lines[1].Should().Contain("\"step\":\"outcome\"").And.Contain("\"outcome\":\"confirmed\"");
     }
 
-    private PanelSession Session(WriteJournal journal) =>
-        new(PanelFixture.Project(), new InlineDispatcher(), _panel.Clock, _panel.Logger, journal)
+    [Fact]
+    public async Task Stop_ThroughTheSession_GoesOnRecordBeforeStopLeavesAndItsOutcomeAfter()
+    {
+        var journal = WriteJournal.In(_folder.Path, _panel.Clock);
+        var project = PanelFixture.Project();
+        _panel.Connector.Configure(new HandlerConfig(PanelFixture.Filler, CpuProfiles.For(CpuModel.Cpu224), allowStop: true));
+        await using var session = Session(journal, project with { Stations = [project.Stations[0] with { AllowStop = true }] });
+        await session.ConnectAsync(_panel.Connector);
+
+        var outcome = await session.StopAsync(PanelFixture.Filler);
+
+        outcome.IsStopped.Should().BeTrue();
+        _panel.Plc.Mode.Should().Be(OperatingMode.Stop);
+        var lines = File.ReadAllLines(journal.Path);
+        lines.Should().HaveCount(2, "the STOP went through the bus's queue, which puts it on record");
+        lines[0].Should().Contain("\"step\":\"intent\"").And.Contain("\"action\":\"stop\"").And.Contain("\"old\":\"RUN\"").And.Contain("\"new\":\"STOP\"").And.Contain("\"port\":\"COM7\"");
+        lines[1].Should().Contain("\"step\":\"outcome\"").And.Contain("\"outcome\":\"station 2 stopped: the port speaks PPI until someone sets RUN\"");
+    }
+
+    private PanelSession Session(WriteJournal journal, PanelProject? project = null) =>
+        new(project ?? PanelFixture.Project(), new InlineDispatcher(), _panel.Clock, _panel.Logger, journal)
         {
             LinkOptionsFor = serial => Core.Link.LinkOptions.For(serial) with { InterFrameGap = TimeSpan.Zero },
         };

@@ -180,7 +180,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
 
         _shell.IsDemo.Should().BeTrue();
         _shell.Title.Should().Be("Bottling line 1 (demo) - Operator Panel");
-        _shell.IsConnected.Should().BeTrue();
+        _shell.Session.IsConnected.Should().BeTrue();
         _shell.Stations.Should().OnlyContain(s => s.Health == ViewModels.Session.StationHealth.Online);
         _shell.Inputs.Groups.SelectMany(g => g.Points).Should().OnlyContain(p => p.Quality == Core.Polling.ValueQuality.Good);
         _shell.ProjectPath.Should().BeNull("Save must not overwrite the shipped sample");
@@ -189,11 +189,11 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     [Fact]
     public void ToggleRefreshMode_TriggeredProject_ContinuousThenTriggered()
     {
-        _shell.IsContinuous.Should().BeFalse();
+        _shell.Session.IsContinuous.Should().BeFalse();
 
         _shell.ToggleRefreshModeCommand.Execute(null);
 
-        _shell.IsContinuous.Should().BeTrue();
+        _shell.Session.IsContinuous.Should().BeTrue();
         _panel.Session.Mode.Should().Be(Core.Polling.RefreshMode.Continuous);
         _shell.ToggleRefreshModeCommand.Execute(null);
         _shell.StatusLine.Text.Should().Be("Refresh: triggered; F5 refreshes");
@@ -211,7 +211,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
 
         _shell.ToggleReadOnlyCommand.Execute(null);
 
-        _shell.IsReadOnly.Should().BeTrue();
+        _shell.Session.IsReadOnly.Should().BeTrue();
         conveyor.SwitchCommand.CanExecute(null).Should().BeFalse();
         speed.BeginEditCommand.CanExecute(null).Should().BeFalse();
     }
