@@ -37,7 +37,8 @@ public sealed class WriteInterruptTests : IDisposable
         exit.Should().Be(130, error);
         var lines = output.Split('\n', StringSplitOptions.RemoveEmptyEntries);
         lines.Should().HaveCount(4, "every write is printed: done, or not sent");
-        lines[0].Should().Be("VD300    0 -> 999  confirmed", "the write on the wire was finished and read back");
+        // "confirmed", or under a loaded test host "confirmed (reply lost, read back)": either way finished and read back.
+        lines[0].Should().StartWith("VD300    0 -> 999  confirmed", "the write on the wire was finished and read back (all it printed: {0})", output);
         lines.Should().Contain(l => l.EndsWith("not sent: interrupted (Ctrl+C) before it was sent", StringComparison.Ordinal));
         error.Should().Contain("opanel: stopping after the write on the wire");
         var journal = Journal();
