@@ -3,6 +3,7 @@ using System.Windows;
 using System.Windows.Threading;
 using Microsoft.Extensions.DependencyInjection;
 using OperatorPanel.App.Services;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.ViewModels.Services;
@@ -112,8 +113,10 @@ public partial class App : Application
         services.AddSingleton<IFileDialogService, WpfFileDialogService>();
         services.AddSingleton(sp => new PanelOptionsStore(Path.Combine(UserFolder, "options.json"), sp.GetRequiredService<ILogger>()));
         services.AddSingleton(sp => sp.GetRequiredService<PanelOptionsStore>().Load());
+        // The write journal sits beside the logs, where opanel keeps its own: a write cut short by either is settled by the next.
         services.AddSingleton(sp => new PanelSession(
-            ShellViewModel.NoProject, sp.GetRequiredService<IUiDispatcher>(), TimeProvider.System, sp.GetRequiredService<ILogger>()));
+            ShellViewModel.NoProject, sp.GetRequiredService<IUiDispatcher>(), TimeProvider.System, sp.GetRequiredService<ILogger>(),
+            WriteJournal.In(Path.Combine(UserFolder, "logs"))));
         services.AddSingleton(sp =>
         {
             var presenter = new WizardPresenter();
@@ -122,7 +125,7 @@ public partial class App : Application
             return new ShellServices(
                 sp.GetRequiredService<IDialogService>(),
                 sp.GetRequiredService<IFileDialogService>(),
-                new SerialLineConnector(),
+                new SerialLineConnector(sp.GetRequiredService<ILogger>()),
                 new DemoSource(sp.GetRequiredService<ILogger>()),
                 // File > New tests a port like Edit project does: never one the connected panel is polling on.
                 new WizardProjectSource(presenter, new PortInUseGuard(tester, sp.GetRequiredService<PanelSession>()), ports),

@@ -1,6 +1,8 @@
 using System.Text.Encodings.Web;
 using System.Text.Json;
 using System.Text.Json.Serialization;
+using OperatorPanel.Cli.Logging;
+using OperatorPanel.Core.Audit;
 using Serilog;
 
 namespace OperatorPanel.Cli;
@@ -28,6 +30,12 @@ internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, I
     /// <summary>True when stdout is the console itself, not a pipe, a file or a test's writer: live views redraw in place.</summary>
     public bool IsTerminal { get; init; }
 
+    /// <summary>
+    /// The write journal beside the logs (--log-dir, default the user's OperatorPanel/logs, shared with the app): every
+    /// write and STOP goes on record there before it is sent.
+    /// </summary>
+    public WriteJournal Journal { get; init; } = WriteJournal.In(CliLogging.DefaultLogFolder);
+
     public void WriteJson<T>(T value) => Out.WriteLine(JsonSerializer.Serialize(value, JsonOptions));
 
     /// <summary>One compact JSON object on one line (JSON lines), flushed, for streams such as watch and simulate.</summary>
@@ -35,6 +43,34 @@ internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, I
     {
         Out.WriteLine(JsonSerializer.Serialize(value, JsonLineOptions));
         Out.Flush();
+    }
+
+    /// <summary>
+    /// Reports every bad argument at once, one a line ("opanel: 'VB99999': ..."), then what was not done ("nothing
+    /// written"); with --json one object with all of them.
+    /// </summary>
+    public int FailAll(int exitCode, IReadOnlyList<string> errors, string consequence)
+    {
+        var summary = errors.Count == 1 ? consequence : $"{errors.Count} arguments are wrong; {consequence}";
+        if (Json)
+        {
+            WriteJson(new { ok = false, error = errors.Count == 1 ? $"{errors[0]}; {consequence}" : summary, errors });
+            return exitCode;
+        }
+
+        if (errors.Count == 1)
+        {
+            Error.WriteLine($"opanel: {errors[0]}; {consequence}");
+            return exitCode;
+        }
+
+        foreach (var error in errors)
+        {
+            Error.WriteLine($"opanel: {error}");
+        }
+
+        Error.WriteLine($"opanel: {summary}");
+        return exitCode;
     }
 
     /// <summary>Reports bad input: a JSON object on stdout with --json, otherwise the message on stderr.</summary>

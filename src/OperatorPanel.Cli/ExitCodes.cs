@@ -24,6 +24,13 @@ internal static class ExitCodes
     /// <summary><c>opanel stop</c> without <c>--yes</c>: it said what it would do and sent nothing.</summary>
     public const int StopNotConfirmed = 4;
 
+    /// <summary>
+    /// Interrupted by Ctrl+C or SIGTERM (128 + SIGINT 2, as shells report it). <c>opanel write</c> first finishes the
+    /// write on the wire and prints every outcome; the writes after it were not sent. A second Ctrl+C ends any verb at
+    /// once with this code; a write then on the wire is settled at the next start (its intent is on record).
+    /// </summary>
+    public const int Interrupted = 130;
+
     /// <summary><c>opanel generate</c>: the handler settings are impossible; each STLnnn diagnostic is printed.</summary>
     public const int GeneratorRefused = 2;
 }

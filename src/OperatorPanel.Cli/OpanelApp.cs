@@ -1,6 +1,7 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Commands;
 using OperatorPanel.Cli.Logging;
+using OperatorPanel.Core.Audit;
 using Serilog.Events;
 
 namespace OperatorPanel.Cli;
@@ -85,6 +86,7 @@ internal sealed class GlobalOptions
         return new CliContext(output, error, parse.GetValue(_json), log)
         {
             IsTerminal = ReferenceEquals(output, Console.Out) && !Console.IsOutputRedirected,
+            Journal = WriteJournal.In(parse.GetValue(_logDir) ?? CliLogging.DefaultLogFolder),
         };
     }
 }

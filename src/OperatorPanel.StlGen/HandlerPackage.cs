@@ -2,6 +2,7 @@ using System.Collections.Immutable;
 using System.Diagnostics.CodeAnalysis;
 using System.Globalization;
 using System.Text;
+using OperatorPanel.Core.Messages;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Stl;
 using OperatorPanel.Stl.Symbols;
@@ -91,7 +92,7 @@ public sealed record HandlerPackage
         ArgumentNullException.ThrowIfNull(path);
         if (!AtomicFile.TryReadAll(path, MaxProgramBytes, out var bytes, out var reason))
         {
-            (program, error) = (null, $"cannot read {path}: {reason}");
+            (program, error) = (null, $"{path}: {reason}");
             return false;
         }
 
@@ -123,7 +124,7 @@ public sealed record HandlerPackage
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
         {
-            error = $"cannot create {folder}: {ex.Message}";
+            error = $"cannot create the folder {folder}: {FileProblemText.Describe(ex, folder, FileAction.Write)}";
             return false;
         }
 

@@ -257,7 +257,7 @@ public sealed class ProjectCommandTests : IDisposable
         var run = Run("project", "check", file);
 
         run.Code.Should().Be(1);
-        run.Out.Should().StartWith($"{file}: file: cannot read the file: ");
+        run.Out.Should().StartWith($"{file}: file: cannot read it: there is no such file");
     }
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);

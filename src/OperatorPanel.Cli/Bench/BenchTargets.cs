@@ -32,7 +32,7 @@ internal static class BenchTargets
                 bytesRatio,
                 Invariant($">= {MinBytesRatio:0.#}x fewer than one item per request (this protocol)"),
                 Invariant($"{perItem.TotalChars} / {planned.TotalChars} characters = {bytesRatio:0.00}x fewer; ")
-                    + Invariant($"against the seed paper's own frames {seedPerItem.TotalChars} / {planned.TotalChars} = {seedRatio:0.00}x")),
+                    + Invariant($"against the original binary protocol's frames, one item each, {seedPerItem.TotalChars} / {planned.TotalChars} = {seedRatio:0.00}x")),
             new TargetResult(
                 $"steady refresh {time.Model.Line} ({time.Medium}, modelled)",
                 time.SteadyRatio <= MaxSteadyRatio,

@@ -41,11 +41,11 @@ internal static class LinkBenchText
         o.WriteLine();
         LinkTimeText.Write(o, report.Time, report.HandlerProblems);
         o.WriteLine();
-        o.WriteLine("Targets (issue 11)");
+        o.WriteLine("Goals for the reference line (a goal not met is a finding to read, not an error of the benchmark)");
         foreach (var target in report.Targets)
         {
-            o.WriteLine($"  {target.Verdict} {target.Name}: {target.Limit}");
-            o.WriteLine($"       {target.Detail}");
+            o.WriteLine($"  {target.Verdict,-7} {target.Name}: {target.Limit}");
+            o.WriteLine($"          {target.Detail}");
         }
     }
 

@@ -23,7 +23,7 @@ internal static class LinkTimeText
         if (m.Radio is { } radio)
         {
             o.WriteLine($"  radio         {radio}");
-            o.WriteLine("                store-and-forward: each module receives a frame whole before sending it on, both directions (seed 000 6)");
+            o.WriteLine("                store-and-forward: each module receives a frame whole before sending it on, both directions");
             o.WriteLine("                FT232R latency timer: FTDI AN232B-04; CC1100 TX start: CC1101 data sheet SWRS061I Table 34");
         }
         else

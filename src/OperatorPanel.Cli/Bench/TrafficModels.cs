@@ -15,7 +15,7 @@ internal static class TrafficModels
     public const string PlainRead = "this panel's frames as plain READs";
     public const string DefineLists = "list set-up (once)";
     public const string PerItem = "one item per request, this protocol";
-    public const string SeedPerItem = "one item per request, seed frames";
+    public const string SeedPerItem = "one item per request, original frames";
     public const string LowerBoundHex = "lower bound, hex (2 chars/byte)";
     public const string LowerBoundBinary = "lower bound, binary (1 char/byte)";
 

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Cli.Commands;
 
@@ -12,9 +13,13 @@ internal static class AddressCommand
         var text = new Argument<string>("address") { Description = "An S7-200 address such as I0.3, VB100, VW200, VD300, SMB30, AIW0" };
         var cpu = CpuOptions.Model();
         var revision = CpuOptions.Revision();
-        var command = new Command("address", "Check an address against a CPU: canonical form, area, byte, bit, width, and whether the panel may write it")
+        var plcPort = new Option<int>("--plc-port") { Description = "The PLC port the handler serves, 0 or 1 (its port's SMB bytes are the handler's); default 0" };
+        var command = new Command(
+            "address",
+            "Check an address against a CPU: canonical form, area, byte, bit, width, what the Freeport link does with it, and whether the panel may "
+            + "write it (the CPU's read-only bytes, and the bytes a handler generated with the default settings keeps for itself)")
         {
-            text, cpu, revision,
+            text, cpu, revision, plcPort,
         };
         command.SetAction(parse =>
         {
@@ -24,12 +29,18 @@ internal static class AddressCommand
                 return cli.Fail(ExitCodes.BadInput, cpuError);
             }
 
-            return Describe(cli, parse.GetValue(text), profile);
+            var port = parse.GetValue(plcPort);
+            if (port is not (0 or 1) || port >= profile.CommunicationPorts)
+            {
+                return cli.Fail(ExitCodes.BadInput, $"--plc-port {port}: {profile.Name} has port{(profile.CommunicationPorts == 1 ? " 0 only" : "s 0 and 1")}");
+            }
+
+            return Describe(cli, parse.GetValue(text), profile, port);
         });
         return command;
     }
 
-    private static int Describe(CliContext cli, string? text, CpuProfile cpu)
+    private static int Describe(CliContext cli, string? text, CpuProfile cpu, int port)
     {
         if (!PlcAddress.TryParse(text, out var address, out var parseError))
         {
@@ -41,7 +52,9 @@ internal static class AddressCommand
             return cli.Fail(ExitCodes.BadInput, rangeError.Message);
         }
 
-        var writeError = AddressRules.Check(address, cpu, AddressUse.Write);
+        var writeError = AddressRules.Check(address, cpu, AddressUse.Write)?.Message
+            ?? LinkAreas.FreeportRefusal(address)
+            ?? HandlerProtection.Refusal(address, cpu, port);
         var view = new AddressView(
             address.ToString(),
             address.Area.ToString(),
@@ -53,7 +66,7 @@ internal static class AddressCommand
             cpu.DisplayName,
             AddressRules.IsServedByLink(address.Area),
             writeError is null,
-            writeError?.Message);
+            writeError);
 
         if (cli.Json)
         {
@@ -89,7 +102,7 @@ internal sealed record AddressView(
         o.WriteLine($"bit       {(Bit is { } b ? b.ToString(System.Globalization.CultureInfo.InvariantCulture) : "-")}");
         o.WriteLine($"width     {Width} ({Bytes} byte{(Bytes == 1 ? string.Empty : "s")}, last byte {LastByte})");
         o.WriteLine($"cpu       {Cpu}");
-        o.WriteLine($"link      {(ReadByLink ? "read by the panel link" : "not served by the panel link (I, Q, M, V and SM are)")}");
+        o.WriteLine($"link      {(ReadByLink ? $"read by the Freeport link (it reads {LinkAreas.FreeportServed})" : $"not read by the Freeport link (it reads {LinkAreas.FreeportServed})")}");
         o.WriteLine($"writable  {(Writable ? "yes" : "no: " + NotWritableBecause)}");
     }
 }

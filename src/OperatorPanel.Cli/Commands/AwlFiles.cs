@@ -17,7 +17,7 @@ internal static class AwlFiles
         source = null;
         if (!AtomicFile.TryReadAll(path, HandlerPackage.MaxProgramBytes, out var bytes, out var reason))
         {
-            error = $"cannot read {path}: {reason}";
+            error = $"{path}: {reason}";
             return false;
         }
 

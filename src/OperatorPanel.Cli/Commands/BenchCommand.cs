@@ -10,8 +10,8 @@ namespace OperatorPanel.Cli.Commands;
 /// (and <c>bench stl</c>, <c>bench plan</c>):
 /// the characters of a full refresh of the reference line against one item per request and the hex bound, the
 /// MODELLED time of a steady and an idle refresh on the PC/PPI cable or (--radio) the radio modules, the targets
-/// judged PASS/FAIL, then the round trip MEASURED over a socat pty; the text ends with one summary line.
-/// Exit 0 when both parts ran (a FAIL target is a finding, printed, not an error); 1 when socat is missing or an
+/// judged met or NOT MET, then the round trip MEASURED over a socat pty; the text ends with one summary line.
+/// Exit 0 when both parts ran (a goal not met is a finding, printed, not an error); 1 when socat is missing or an
 /// option is bad; 2 when the measured run failed or no frame got a reply (lost frames are counted in the output).
 /// </summary>
 internal static class BenchCommand

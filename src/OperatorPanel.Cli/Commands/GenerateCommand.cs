@@ -13,7 +13,7 @@ namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
 /// <c>opanel generate PROJECT -o DIR [--station NAME|ADDRESS] [--copy-bytes N] [--allow-stop] [--merge USER.awl] [--stats]</c>: writes the PLC handler
-/// for one station (STATION-handler.awl, STATION-symbols.txt, STATION-README.txt, with --merge also STATION-merged.awl;
+/// for one station (NAME-handler.awl, NAME-symbols.txt, NAME-README.txt, with --merge also NAME-merged.awl, NAME the station's name as a file name: "PLC 2" gives PLC_2-README.txt;
 /// a collision with the user's program writes nothing, prints USER.awl:LINE: STLnnn ... and exits 2). CPU, station address and line settings come from
 /// the project. Exit codes: 0 written, 1 bad input (project, options, files), 2 impossible handler settings (STLnnn).
 /// </summary>
@@ -34,7 +34,7 @@ internal static class GenerateCommand
         var interrupt = new Option<int?>("--int") { Description = "First of the handler's 3 interrupt routines (default 125)" };
         var copyBytes = new Option<int>("--copy-bytes") { Description = "V bytes for READ CHANGES copies after the work bytes, 0-255 (0 = none: every READ CHANGES answers the whole list; default 120)", DefaultValueFactory = _ => HandlerDefaults.CopyBytes };
         var allowStop = new Option<bool>("--allow-stop") { Description = "Include 07 STOP: the panel may put the CPU in STOP (default: the station's \"allowStop\" in the project, off unless set; off = no STOP code, the command is refused with error 05)" };
-        var merge = new Option<string?>("--merge") { Description = "A program exported from Micro/WIN (File > Export): check for collisions and write STATION-merged.awl" };
+        var merge = new Option<string?>("--merge") { Description = "A program exported from Micro/WIN (File > Export): check for collisions and write NAME-merged.awl (NAME: the station's name)" };
         var symbols = new Option<string?>("--symbols") { Description = "With --merge: the program's symbol table exported from Micro/WIN (symbol, address, comment, tab-separated), so symbolic operands are checked as their addresses" };
         var command = new Command("generate", "Generate the S7-200 handler program (.awl), symbol table and technician notes. Exit codes: 0 written, 1 bad input, 2 impossible settings")
         {

@@ -25,12 +25,13 @@ internal static class IdentifyCommand
                 return ExitCodes.BadInput;
             }
 
-            if (!LinkSession.TryOpen(target, PollPlan.Empty, cli.Log, out var opened, out var openError))
+            if (!LinkSession.TryOpen(target, PollPlan.Empty, cli, out var opened, out var openError))
             {
                 return cli.Fail(ExitCodes.BadInput, openError);
             }
 
             await using var session = opened;
+            await session.ResolveCutShortAsync(cli, cancellationToken);
             var reply = await session.Bus.IdentifyAsync(target.Station, cancellationToken);
             if (reply.Failure is { } failure)
             {

@@ -16,14 +16,15 @@ internal static class ReadCommand
     {
         var addresses = new Argument<string[]>("address")
         {
-            Description = "Addresses to read: I0.0, QB0, MW10, VD100, SMB28 ...; ADDR:real, :signed, :hex, :binary or :ascii shows the value so (VD16:real, MW2:signed)",
+            Description = "Addresses to read: I0.0, QB0, MW10, VD100, SMB28 ...; ADDR:real, :signed, :hex, :binary or :ascii shows the value so (VD16:real, MW2:signed); "
+                + "with --project also the station's symbols (BottleCount), shown in the tag's format, scaled, with its unit",
             Arity = ArgumentArity.OneOrMore,
         };
         var link = new LinkOptionSet();
         var command = new Command(
             "read",
             "Read addresses from a PLC once and print address, value (unsigned decimal and hex; 0/1 for a bit) and quality. "
-            + "Exit codes: 0 read, 1 bad address or refused by the PLC, 2 link failure")
+            + "Every bad argument is reported and nothing is read then. Exit codes: 0 read, 1 bad address or refused by the PLC, 2 link failure")
         {
             addresses,
         };
@@ -31,37 +32,42 @@ internal static class ReadCommand
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
-            if (!link.TryBind(parse, cli, out var target, out _))
+            if (!link.TryBind(parse, cli, out var target, out var station))
             {
                 return ExitCodes.BadInput;
             }
 
-            var parsed = new List<(PlcAddress Address, DisplayFormat? Format)>();
+            var parsed = new List<(ArgumentTarget Target, DisplayFormat? Format)>();
+            var errors = new List<string>();
             foreach (var text in parse.GetValue(addresses) ?? [])
             {
                 if (!ReadFormats.TrySplit(text, out var addressText, out var format, out var error)
-                    || !AddressArguments.TryParse(addressText, target.Cpu, AddressUse.Read, out var address, out error)
-                    || !ReadFormats.TryCheck(address, format, text, out error))
+                    || !ArgumentTarget.TryResolve(addressText, target, station, AddressUse.Read, out var resolved, out error)
+                    || !ReadFormats.TryCheck(resolved.Address, format, text, out error))
                 {
-                    return cli.Fail(ExitCodes.BadInput, error);
+                    errors.Add(error);
+                    continue;
                 }
 
-                parsed.Add((address, format));
+                parsed.Add((resolved, format));
             }
 
-            return await ReadAsync(cli, target, parsed, cancellationToken);
+            return errors.Count > 0
+                ? cli.FailAll(ExitCodes.BadInput, errors, "nothing read")
+                : await ReadAsync(cli, target, parsed, cancellationToken);
         });
         return command;
     }
 
-    private static async Task<int> ReadAsync(CliContext cli, LinkTarget target, List<(PlcAddress Address, DisplayFormat? Format)> addresses, CancellationToken cancellationToken)
+    private static async Task<int> ReadAsync(CliContext cli, LinkTarget target, List<(ArgumentTarget Target, DisplayFormat? Format)> addresses, CancellationToken cancellationToken)
     {
-        if (!LinkSession.TryOpen(target, PlanFor(target, addresses.Select(a => a.Address)), cli.Log, out var opened, out var openError))
+        if (!LinkSession.TryOpen(target, PlanFor(target, addresses.Select(a => a.Target.Address)), cli, out var opened, out var openError))
         {
             return cli.Fail(ExitCodes.BadInput, openError);
         }
 
         await using var session = opened;
+        await session.ResolveCutShortAsync(cli, cancellationToken);
         await session.Bus.RefreshAsync(cancellationToken);
         var status = session.Bus.StatusOf(target.Station);
         if (status.State != StationState.Online)
@@ -69,7 +75,7 @@ internal static class ReadCommand
             return LinkFailure.From(target, status.LastError, status.LastErrorKind).Report(cli);
         }
 
-        var views = addresses.Distinct().Select(a => ReadValueView.From(a.Address, session.Bus.TryGetValue(target.Station, a.Address, out var v) ? v : null, a.Format)).ToList();
+        var views = addresses.Distinct().Select(a => ReadValueView.From(a.Target, session.Bus.TryGetValue(target.Station, a.Target.Address, out var v) ? v : null, a.Format)).ToList();
         if (cli.Json)
         {
             cli.WriteJson(views);

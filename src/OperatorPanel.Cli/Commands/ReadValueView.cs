@@ -1,3 +1,4 @@
+using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
@@ -7,21 +8,28 @@ namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
 /// One address as <c>opanel read</c> prints it (text and JSON share this shape). Shown is the value in the format asked
-/// for with ADDR:FORMAT (VD16:real -> 12.5), null without one; the text prints it in place of the unsigned value.
+/// for with ADDR:FORMAT (VD16:real -> 12.5), or for a symbol read with --project in its tag's format, scaled and with
+/// its unit (TankLevel -> 55.2 %); null otherwise; the text prints it in place of the unsigned value, and the symbol last.
 /// </summary>
-internal sealed record ReadValueView(string Address, ulong? Value, string? Hex, string Quality, string? Error, string? Shown = null)
+internal sealed record ReadValueView(string Address, ulong? Value, string? Hex, string Quality, string? Error, string? Shown = null, string? Symbol = null)
 {
-    public static ReadValueView From(PlcAddress address, PolledValue? value, DisplayFormat? format = null)
+    public static ReadValueView From(PlcAddress address, PolledValue? value, DisplayFormat? format = null) =>
+        From(new ArgumentTarget(address, null, null, BySymbol: false), value, format);
+
+    public static ReadValueView From(ArgumentTarget target, PolledValue? value, DisplayFormat? format = null)
     {
+        var address = target.Address;
         if (value is not { HasValue: true })
         {
-            return new ReadValueView(address.ToString(), null, null, "bad", value?.Error ?? "not read");
+            return new ReadValueView(address.ToString(), null, null, "bad", value?.Error ?? "not read", Symbol: target.Symbol);
         }
 
         var raw = value.Raw.AsSpan();
         var hex = address.Width == AccessWidth.Bit ? null : ValueFormatter.Hex(raw);
-        var shown = format is { } f ? ValueFormatter.Format(raw, address.Width, f) : null;
-        return new ReadValueView(address.ToString(), ValueFormatter.Unsigned(raw), hex, value.Quality.ToString().ToLowerInvariant(), value.Error, shown);
+        var shown = format is { } f ? ValueFormatter.Format(raw, address.Width, f)
+            : target is { BySymbol: true, Tag: { } tag } ? TagValues.Format(tag, raw)
+            : null;
+        return new ReadValueView(address.ToString(), ValueFormatter.Unsigned(raw), hex, value.Quality.ToString().ToLowerInvariant(), value.Error, shown, target.Symbol);
     }
 
     /// <summary>The value as the text shows it: in the format asked for, else unsigned; "-" when not read.</summary>
@@ -35,6 +43,7 @@ internal sealed record ReadValueView(string Address, ulong? Value, string? Hex, 
     public void WriteText(TextWriter o, int valueWidth)
     {
         var error = Error is null ? string.Empty : "  " + Error;
-        o.WriteLine($"{Address,-8} {ValueText().PadRight(valueWidth)} {Hex ?? string.Empty,-12} {Quality}{error}");
+        var symbol = Symbol is null ? string.Empty : "  " + Symbol;
+        o.WriteLine($"{Address,-8} {ValueText().PadRight(valueWidth)} {Hex ?? string.Empty,-12} {Quality}{symbol}{error}");
     }
 }

@@ -52,12 +52,13 @@ internal static class StopCommand
                     + "until someone sets RUN. Nothing sent; to do it, give the same command with --yes");
             }
 
-            if (!LinkSession.TryOpen(target, PollPlan.Empty, cli.Log, out var opened, out var openError))
+            if (!LinkSession.TryOpen(target, PollPlan.Empty, cli, out var opened, out var openError))
             {
                 return cli.Fail(ExitCodes.BadInput, openError);
             }
 
             await using var session = opened;
+            await session.ResolveCutShortAsync(cli, cancellationToken);
             var outcome = await session.Bus.StopAsync(target.Station, cancellationToken);
             var view = StopResultView.From(target, outcome);
             if (cli.Json)

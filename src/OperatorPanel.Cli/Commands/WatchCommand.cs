@@ -4,6 +4,8 @@ using OperatorPanel.Cli.Link;
 using OperatorPanel.Cli.Watch;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
+using Spectre.Console;
+using Spectre.Console.Rendering;
 
 namespace OperatorPanel.Cli.Commands;
 
@@ -27,7 +29,8 @@ internal static class WatchCommand
         var command = new Command(
             "watch",
             "Show a project's stations live: link state and counters, inputs and outputs as lamps, tags, active alarms. "
-            + "Redraws in place on a terminal; appends a snapshot per refresh (--once, --cycles) or per second elsewhere; --json prints JSON lines. "
+            + "Drawn in place on a terminal, fitted to its size (long lines cut; lamps and tags give way on a low terminal, the title, "
+            + "each station's state and its alarms stay); appends a snapshot per refresh (--once, --cycles) or per second elsewhere; --json prints JSON lines. "
             + "Exit codes: 0 done, 1 project problems or bad option, 2 every station offline at the end")
         {
             file, demo, model, once, cycles, duration,
@@ -49,24 +52,58 @@ internal static class WatchCommand
                 return cli.Fail(ExitCodes.BadInput, "--cycles and --duration must be positive");
             }
 
-            var (opened, openError) = await WatchSession.TryOpenAsync(load.Project, parse.GetValue(demo), parse.GetValue(model), cli.Log);
+            var (opened, openError) = await WatchSession.TryOpenAsync(load.Project, parse.GetValue(demo), parse.GetValue(model), cli.Log, cli.Journal);
             if (opened is null)
             {
                 return cli.Fail(ExitCodes.BadInput, openError ?? "the demo line did not start");
             }
 
             await using var session = opened;
+            foreach (var cutShort in session.Line.ResolvedAtConnect)
+            {
+                cli.Error.WriteLine("opanel: " + cutShort.Describe());
+            }
+
             using var stop = new StopSignals(seconds is { } s ? TimeSpan.FromSeconds(s) : null);
-            var last = await RunAsync(cli, session, limit, stop.Token);
+            var last = cli.IsTerminal && !cli.Json
+                ? await OnTerminalAsync(cli, session, limit, stop.Token)
+                : await RunAsync(cli, session, limit, screen: null, size: null, stop.Token);
             return last.AllOffline ? ExitCodes.LinkFailure : ExitCodes.Ok;
         });
         return command;
     }
 
-    private static async Task<WatchSnapshot> RunAsync(CliContext cli, WatchSession session, int? limit, CancellationToken stop)
+    /// <summary>
+    /// The live view in place on the terminal: Spectre.Console's live display, each frame fitted to the terminal's size
+    /// now (one row spare, so the last line never scrolls the screen); the last frame stays when watch ends.
+    /// </summary>
+    private static async Task<WatchSnapshot> OnTerminalAsync(CliContext cli, WatchSession session, int? limit, CancellationToken stop)
+    {
+        var console = AnsiConsole.Console;
+        WatchSnapshot? last = null;
+        await console.Live(new Text(string.Empty))
+            .AutoClear(false)
+            .Overflow(VerticalOverflow.Crop)
+            .Cropping(VerticalOverflowCropping.Bottom)
+            .StartAsync(async live => last = await RunAsync(
+                cli,
+                session,
+                limit,
+                frame =>
+                {
+                    live.UpdateTarget(frame);
+                    live.Refresh();
+                },
+                () => (console.Profile.Width, console.Profile.Height - 1),
+                stop));
+        return last!;
+    }
+
+    private static async Task<WatchSnapshot> RunAsync(
+        CliContext cli, WatchSession session, int? limit, Action<IRenderable>? screen, Func<(int Width, int Height)>? size, CancellationToken stop)
     {
         var time = TimeProvider.System;
-        var output = new LiveOutput(cli, everyCycle: limit is not null, time);
+        var output = new LiveOutput(cli, everyCycle: limit is not null, time, screen, size);
         long cycle = 0;
         WatchSnapshot Snapshot() => SnapshotBuilder.Build(session, cycle, time.GetLocalNow());
         try

@@ -7,7 +7,7 @@ namespace OperatorPanel.Cli.Commands;
 /// <param name="Address">The address written, e.g. VW200.</param>
 /// <param name="Old">The last value read before the write, in the item's notation; "?" when unknown.</param>
 /// <param name="New">The value written.</param>
-/// <param name="Outcome">confirmed, confirmedByReadBack, mismatch, notApplied, unknown or failed.</param>
+/// <param name="Outcome">confirmed, confirmedByReadBack, mismatch, notApplied, unknown, failed or notSent (interrupted before its turn).</param>
 /// <param name="ReadBack">What the PLC holds after a mismatch, or after a lost reply when it could be read.</param>
 /// <param name="Reason">Why not confirmed, or why the reply was lost; with the operator's next step.</param>
 /// <param name="FailureKind">For "failed": the <see cref="WriteFailureKind"/>.</param>
@@ -32,6 +32,10 @@ internal sealed record WriteResultView(string Address, string Old, string New, s
         };
     }
 
+    /// <summary>Not sent at all (interrupted before its turn): nothing written.</summary>
+    public static WriteResultView NotSent(WriteItem item, PolledValue? old, string reason) =>
+        new(item.Address.ToString(), item.Show(old is { HasValue: true } ? old.Raw.AsSpan() : []), item.Show(item.Request.Value.AsSpan()), "notSent", null, reason, null);
+
     /// <summary>
     /// 0 confirmed (also by read-back after a lost reply); 1 refused before sending or by the PLC (nothing written);
     /// 2 not applied for certain on the link (never sent, or read back unchanged after a lost reply) or read back
@@ -43,6 +47,7 @@ internal sealed record WriteResultView(string Address, string Old, string New, s
         "confirmed" or "confirmedByReadBack" => ExitCodes.Ok,
         "failed" when FailureKind is nameof(WriteFailureKind.InvalidRequest) or nameof(WriteFailureKind.RefusedByPlc) => ExitCodes.BadInput,
         "unknown" => ExitCodes.WriteUnknown,
+        "notSent" => ExitCodes.Interrupted,
         _ => ExitCodes.LinkFailure,
     };
 
@@ -55,6 +60,7 @@ internal sealed record WriteResultView(string Address, string Old, string New, s
             "notApplied" => $"not applied: {Reason}",
             "unknown" => $"unknown: {Reason}",
             "failed" => $"failed: {Reason}",
+            "notSent" => $"not sent: {Reason}",
             _ => Outcome,
         };
         o.WriteLine($"{Address,-8} {Old} -> {New}  {verdict}");

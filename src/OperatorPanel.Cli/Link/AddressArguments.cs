@@ -19,16 +19,16 @@ internal static class AddressArguments
             return false;
         }
 
-        if (!AddressRules.IsServedByLink(address.Area))
+        if (LinkAreas.FreeportRefusal(address) is { } notServed)
         {
-            error = $"{address}: the panel link serves only I, Q, M, V and SM";
+            error = notServed;
             return false;
         }
 
         if (use == AddressUse.Write && address.Area == MemoryArea.I)
         {
             // The handler's write mask never has I (docs/protocol.md): refused here, before anything is read or sent.
-            error = $"{address}: inputs are the field's; the panel link writes only Q, M, V and SM";
+            error = $"{address}: inputs are the field's; the Freeport link writes only {LinkAreas.FreeportWritten}";
             return false;
         }
 

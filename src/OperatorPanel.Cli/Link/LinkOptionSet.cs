@@ -6,6 +6,7 @@ using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
+using OperatorPanel.StlGen;
 
 namespace OperatorPanel.Cli.Link;
 
@@ -144,7 +145,8 @@ internal sealed class LinkOptionSet
 
         cpu ??= projectStation?.Cpu;
 
-        target = new LinkTarget(station, serial, cpu, demo, TimeSpan.FromMilliseconds(scanMs), parse.GetValue(Model));
+        var notes = projectStation is null ? null : HandlerPackage.FileStem(projectStation) + "-README.txt";
+        target = new LinkTarget(station, serial, cpu, demo, TimeSpan.FromMilliseconds(scanMs), parse.GetValue(Model), notes);
         error = null;
         return true;
     }

@@ -5,13 +5,13 @@ using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Demo;
 using OperatorPanel.Simulator.Reference;
-using Serilog;
 
 namespace OperatorPanel.Cli.Link;
 
 /// <summary>
 /// One bus opened for a verb: a <see cref="Core.Line.Bus"/> polling on demand with plain READs, over a serial port or an
-/// in-process <see cref="DemoLine"/>. IDENTIFY, STOP, reads and writes all go through the bus's queue.
+/// in-process <see cref="DemoLine"/>. IDENTIFY, STOP, reads and writes all go through the bus's queue; its writes and
+/// STOPs go on record in the write journal (<see cref="CliContext.Journal"/>).
 /// </summary>
 internal sealed class LinkSession : IAsyncDisposable
 {
@@ -29,11 +29,14 @@ internal sealed class LinkSession : IAsyncDisposable
 
     /// <summary>
     /// Opens the target's port, or with <c>--demo</c> a demo line simulating its station, and a bus watching
-    /// <paramref name="plan"/> on it; false with the reason when the demo line cannot simulate the station.
+    /// <paramref name="plan"/> on it, logging to <c>cli.Log</c> and keeping its writes and STOPs on record in
+    /// <c>cli.Journal</c>; false with the reason when the demo line cannot simulate the station.
     /// </summary>
-    public static bool TryOpen(LinkTarget target, PollPlan plan, ILogger log, [NotNullWhen(true)] out LinkSession? session, [NotNullWhen(false)] out string? error)
+    public static bool TryOpen(LinkTarget target, PollPlan plan, CliContext cli, [NotNullWhen(true)] out LinkSession? session, [NotNullWhen(false)] out string? error)
     {
         ArgumentNullException.ThrowIfNull(target);
+        ArgumentNullException.ThrowIfNull(cli);
+        var log = cli.Log;
         session = null;
         DemoLine? demo = null;
         if (target.Demo && !DemoLine.TryStart(target.Serial, [DemoStation(target)], target.Model, log, out demo, out error))
@@ -41,9 +44,9 @@ internal sealed class LinkSession : IAsyncDisposable
             return false;
         }
 
-        ITransport transport = demo is null ? new SerialPortTransport(target.Serial) : demo.PanelSide;
+        ITransport transport = demo is null ? new SerialPortTransport(target.Serial, log) : demo.PanelSide;
         var link = new PlcLink(transport, OptionsFor(target.Serial, target.ScanAllowance, demo is not null), TimeProvider.System, log);
-        session = new LinkSession(Bus.OnDemand(link, plan, TimeProvider.System, log), demo);
+        session = new LinkSession(Bus.OnDemand(link, plan, TimeProvider.System, log, cli.Journal), demo);
         error = null;
         return true;
     }
@@ -58,6 +61,26 @@ internal sealed class LinkSession : IAsyncDisposable
 
     /// <summary>The --demo PLC: the target's station and CPU, its handler with STOP so <c>opanel stop --demo</c> can be tried.</summary>
     private static HandlerConfig DemoStation(LinkTarget target) => new(target.Station, target.Cpu!, allowStop: true);
+
+    /// <summary>
+    /// Settles the writes and STOPs that earlier programs left cut short on this port (through the bus's queue,
+    /// Writes/UnfinishedWrites: read back, recorded as resolved at start) and says each on stderr, so a technician learns
+    /// what a killed write did.
+    /// </summary>
+    public async Task ResolveCutShortAsync(CliContext cli, CancellationToken cancellationToken)
+    {
+        ArgumentNullException.ThrowIfNull(cli);
+        var (resolved, problem) = await Bus.SettleCutShortAsync(cli.Journal, cancellationToken);
+        if (problem is not null)
+        {
+            cli.Error.WriteLine($"opanel: {problem}");
+        }
+
+        foreach (var entry in resolved)
+        {
+            cli.Error.WriteLine("opanel: " + entry.Describe());
+        }
+    }
 
     /// <summary>The bus stops polling, then the demo line, then the port closes (the demo would see an unplugged line otherwise).</summary>
     public async ValueTask DisposeAsync()

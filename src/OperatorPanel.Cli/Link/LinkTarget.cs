@@ -12,7 +12,9 @@ namespace OperatorPanel.Cli.Link;
 /// <param name="Demo">True for the in-process simulated PLC.</param>
 /// <param name="ScanAllowance">The PLC scan time the reply timeout allows for (--scan-ms).</param>
 /// <param name="Model">With --demo, what answers as the PLC (--model).</param>
-internal sealed record LinkTarget(Station Station, SerialSettings Serial, CpuProfile? Cpu, bool Demo, TimeSpan ScanAllowance, SimulationModel Model = SimulationModel.Stl)
+/// <param name="NotesFile">With --project, the technician notes generate writes for the station ("Filler-README.txt"); else null.</param>
+internal sealed record LinkTarget(
+    Station Station, SerialSettings Serial, CpuProfile? Cpu, bool Demo, TimeSpan ScanAllowance, SimulationModel Model = SimulationModel.Stl, string? NotesFile = null)
 {
     public string Describe() => $"{Station} on {Serial.PortName}";
 }

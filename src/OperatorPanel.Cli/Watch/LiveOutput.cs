@@ -1,30 +1,30 @@
+using Spectre.Console.Rendering;
+
 namespace OperatorPanel.Cli.Watch;
 
 /// <summary>
-/// Where watch snapshots go. On a terminal the view is redrawn in place (cursor home, clear) at most five times a
-/// second; elsewhere (pipes, CI) and with --json each snapshot is appended, after every cycle when the cycles are
-/// counted (--once, --cycles), else once a second.
+/// Where watch snapshots go. On a terminal (<paramref name="screen"/> given) the view is drawn in place by
+/// Spectre.Console's live display, fitted to the terminal's size (<see cref="WatchScreen"/>), at most five times a
+/// second; elsewhere (pipes, CI) and with --json each snapshot is appended whole, after every cycle when the cycles
+/// are counted (--once, --cycles), else once a second.
 /// </summary>
-internal sealed class LiveOutput
+/// <param name="cli">Where to print, and whether as JSON.</param>
+/// <param name="everyCycle">Counted cycles (--once, --cycles): appended after every cycle.</param>
+/// <param name="time">The clock of the redraw and append intervals.</param>
+/// <param name="screen">Shows one frame of the live display; null when stdout is not a terminal.</param>
+/// <param name="size">The terminal's width and height now (it may be resized while watch runs).</param>
+internal sealed class LiveOutput(CliContext cli, bool everyCycle, TimeProvider time, Action<IRenderable>? screen = null, Func<(int Width, int Height)>? size = null)
 {
     private static readonly TimeSpan RedrawInterval = TimeSpan.FromMilliseconds(200);
     private static readonly TimeSpan AppendInterval = TimeSpan.FromSeconds(1);
-    private const string HomeAndClear = "\u001b[H\u001b[J";
 
-    private readonly CliContext _cli;
-    private readonly bool _everyCycle;
-    private readonly TimeProvider _time;
+    private readonly CliContext _cli = cli;
+    private readonly bool _everyCycle = everyCycle;
+    private readonly TimeProvider _time = time;
     private long? _lastShown;
     private bool _missed;
 
-    public LiveOutput(CliContext cli, bool everyCycle, TimeProvider time)
-    {
-        _cli = cli;
-        _everyCycle = everyCycle;
-        _time = time;
-    }
-
-    private bool Redraws => _cli.IsTerminal && !_cli.Json;
+    private bool Redraws => screen is not null && !_cli.Json;
 
     /// <summary>Called after each completed cycle; shows <paramref name="snapshot"/> when the policy says it is time.</summary>
     public void CycleCompleted(Func<WatchSnapshot> snapshot)
@@ -55,8 +55,14 @@ internal sealed class LiveOutput
             return;
         }
 
-        var text = SnapshotRenderer.Render(snapshot);
-        _cli.Out.Write(Redraws ? HomeAndClear + text : text + Environment.NewLine);
+        if (Redraws)
+        {
+            var (width, height) = size?.Invoke() ?? (80, 24);
+            screen!(WatchScreen.Render(snapshot, width, height));
+            return;
+        }
+
+        _cli.Out.Write(SnapshotRenderer.Render(snapshot) + Environment.NewLine);
         _cli.Out.Flush();
     }
 }

@@ -1,5 +1,6 @@
 using OperatorPanel.Cli.Commands;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
@@ -41,8 +42,18 @@ internal static class SnapshotBuilder
             Lamps(station.Inputs, Value),
             Lamps(station.Outputs, Value),
             [.. station.Tags.Select(t => Tag(t, Value(t.Address), line, station.Address))],
-            [.. station.Alarms.Where(a => Value(a.Flag)?.AsBit == true).Select(a => new AlarmRow(a.Flag.ToString(), a.Text, a.Class.ToString().ToLowerInvariant()))]);
+            Alarms(station, line))
+        {
+            AlarmsDefined = station.Alarms.Length,
+        };
     }
+
+    /// <summary>Active alarms, and every alarm whose flag has no good reading (Core's AlarmFlag: unknown is never "not set").</summary>
+    private static List<AlarmRow> Alarms(ProjectStation station, ProjectLine line) =>
+        [.. station.Alarms
+            .Select(a => (Alarm: a, On: AlarmFlag.Reading(line.TryGetValue(station.Address, a.Flag, out var v) ? v : null)))
+            .Where(a => a.On != false)
+            .Select(a => new AlarmRow(a.Alarm.Flag.ToString(), a.Alarm.Text, a.Alarm.Class.ToString().ToLowerInvariant(), a.On is null ? AlarmRow.Unknown : AlarmRow.Active))];
 
     private static List<LampByte> Lamps(IEnumerable<IoSymbol> symbols, Func<PlcAddress, PolledValue?> value) =>
         [.. symbols
@@ -70,7 +81,7 @@ internal static class SnapshotBuilder
     private static TagRow Tag(ProjectTag tag, PolledValue? value, ProjectLine line, Station station)
     {
         var quality = line.TryGetValue(station, tag.Address, out var polled) ? polled.Quality.ToString().ToLowerInvariant() : "bad";
-        var text = value is null ? "-" : ValueFormatter.Format(value.Raw.AsSpan(), tag.Address.Width, tag.Format);
+        var text = value is null ? "-" : TagValues.Format(tag, value.Raw.AsSpan());
         return new TagRow(tag.Symbol, tag.Address.ToString(), text, quality);
     }
 }

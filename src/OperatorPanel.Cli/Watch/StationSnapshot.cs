@@ -1,6 +1,9 @@
 namespace OperatorPanel.Cli.Watch;
 
-/// <summary>One station in a <see cref="WatchSnapshot"/>: its link state and counters, lamps, tags and active alarms.</summary>
+/// <summary>
+/// One station in a <see cref="WatchSnapshot"/>: its link state and counters, lamps, tags, and the alarms that are active
+/// or unknown (<see cref="AlarmsUnknown"/> counts the latter: a station not read has unknown alarms, not none).
+/// </summary>
 internal sealed record StationSnapshot(
     string Name,
     int Station,
@@ -14,4 +17,12 @@ internal sealed record StationSnapshot(
     IReadOnlyList<LampByte> Inputs,
     IReadOnlyList<LampByte> Outputs,
     IReadOnlyList<TagRow> Tags,
-    IReadOnlyList<AlarmRow> Alarms);
+    IReadOnlyList<AlarmRow> Alarms)
+{
+    public int AlarmsUnknown => Alarms.Count(a => a.State == AlarmRow.Unknown);
+
+    public int AlarmsActive => Alarms.Count(a => a.State == AlarmRow.Active);
+
+    /// <summary>The project's alarm count for this station, for "3 of 8 flags not read".</summary>
+    public int AlarmsDefined { get; init; }
+}

@@ -1,5 +1,6 @@
 using System.Collections.Concurrent;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
@@ -37,14 +38,18 @@ internal sealed class WatchSession : IAsyncDisposable
     /// </summary>
     public string? HandlerCheckOf(Station station) => _handlerChecks.TryGetValue(station, out var check) ? check : null;
 
-    /// <summary>Opens every bus; false with the reason (and nothing left running) when a demo line cannot start.</summary>
-    public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(PanelProject project, bool demo, SimulationModel model, ILogger log)
+    /// <summary>
+    /// Opens every bus; false with the reason (and nothing left running) when a demo line cannot start. Writes go on
+    /// record in <paramref name="journal"/>, and on connecting the writes earlier programs left cut short on the ports are settled.
+    /// </summary>
+    public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(PanelProject project, bool demo, SimulationModel model, ILogger log, WriteJournal journal)
     {
-        ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector();
+        ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector(log);
         var options = new ProjectLineOptions
         {
             // A triggered watch refreshes once a second at most: registering read lists would only add exchanges.
             UseReadLists = project.Refresh.Mode == RefreshMode.Continuous,
+            Journal = journal,
         };
         var line = new ProjectLine(project, options, TimeProvider.System, log);
         try

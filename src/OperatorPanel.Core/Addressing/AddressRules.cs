@@ -22,9 +22,8 @@ public static class AddressRules
         return use == AddressUse.Write ? WriteRefusal(address, cpu) : null;
     }
 
-    /// <summary>True when the panel's link protocol can read this address (I, Q, M, V and SM are served).</summary>
-    public static bool IsServedByLink(MemoryArea area) =>
-        area is MemoryArea.I or MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM;
+    /// <summary>True when the panel's link protocol can read this address (<see cref="LinkAreas.FreeportServes"/>).</summary>
+    public static bool IsServedByLink(MemoryArea area) => LinkAreas.FreeportServes(area);
 
     private static AddressError? WriteRefusal(PlcAddress address, CpuProfile cpu) => address.Area switch
     {
@@ -34,7 +33,7 @@ public static class AddressRules
             new AddressError(AddressErrorKind.NotWritable, $"{address}: SMB0-SMB{cpu.ReadOnlySmBytes - 1} are read-only system status bytes"),
         MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM => null,
         MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AQ or MemoryArea.AC or MemoryArea.HC or MemoryArea.L =>
-            new AddressError(AddressErrorKind.NotWritable, $"{address}: the panel link writes only Q, M, V and SMB{cpu.ReadOnlySmBytes} and up"),
+            new AddressError(AddressErrorKind.NotWritable, $"{address}: the Freeport link writes only Q, M, V and SMB{cpu.ReadOnlySmBytes} and up"),
     };
 
     private static string OutOfRangeMessage(PlcAddress address, CpuArea area, CpuProfile cpu)

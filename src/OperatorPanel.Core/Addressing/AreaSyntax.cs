@@ -19,11 +19,11 @@ internal static class AreaSyntax
     /// <summary>Areas that exist on the CPU but are not addressed by byte number in the panel.</summary>
     public static readonly (string Prefix, string Name)[] Unsupported =
     [
-        ("AC", "accumulators (AC)"),
+        ("AC", "accumulators (AC) belong to the running program; no link reads them"),
         ("HC", "high-speed counters (HC)"),
         ("T", "timers (T)"),
         ("C", "counters (C)"),
-        ("L", "local memory (L)"),
+        ("L", "local memory (L) belongs to the running program; no link reads it"),
     ];
 
     public static string Prefix(MemoryArea area) => area switch

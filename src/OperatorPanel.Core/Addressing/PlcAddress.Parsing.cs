@@ -78,7 +78,9 @@ public readonly partial record struct PlcAddress
         {
             if (upper.StartsWith(prefix, StringComparison.Ordinal))
             {
-                error = new AddressError(AddressErrorKind.UnknownArea, $"'{input}': {name} cannot be addressed by the panel; use I, Q, M, V, SM, S, AIW or AQW");
+                error = new AddressError(AddressErrorKind.UnknownArea, name.Contains(';', StringComparison.Ordinal)
+                    ? $"'{input}': {name}: copy what you need to V in the PLC program and watch that"
+                    : $"'{input}': {name}: {LinkAreas.NotServed(prefix, input.Trim())}");
                 return false;
             }
         }

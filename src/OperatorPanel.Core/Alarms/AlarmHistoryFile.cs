@@ -1,5 +1,6 @@
 using System.Diagnostics.CodeAnalysis;
 using System.Text;
+using OperatorPanel.Core.Messages;
 
 namespace OperatorPanel.Core.Alarms;
 
@@ -43,7 +44,7 @@ public sealed class AlarmHistoryFile
         }
         catch (Exception ex) when (IsEnvironmental(ex))
         {
-            return new AlarmHistoryLoad([], $"The alarm history {Path} could not be read ({ex.Message}); new alarms are still recorded.");
+            return new AlarmHistoryLoad([], $"The alarm history {Path} could not be read ({FileProblemText.Describe(ex, Path, FileAction.Read)}); new alarms are still recorded.");
         }
 
         var end = Array.LastIndexOf(bytes, (byte)'\n') + 1;
@@ -100,7 +101,7 @@ public sealed class AlarmHistoryFile
         }
         catch (Exception ex) when (IsEnvironmental(ex))
         {
-            error = $"The alarm history {Path} could not be written: {ex.Message}";
+            error = $"The alarm history {Path} could not be written: {FileProblemText.Describe(ex, Path, FileAction.Write)}";
             return false;
         }
     }
@@ -115,7 +116,7 @@ public sealed class AlarmHistoryFile
         }
         catch (Exception ex) when (IsEnvironmental(ex))
         {
-            return SetAside($"its unfinished last line could not be removed ({ex.Message})");
+            return SetAside($"its unfinished last line could not be removed ({FileProblemText.Describe(ex, Path, FileAction.Write)})");
         }
 
         return new AlarmHistoryLoad([.. events], $"The last alarm history entry in {Path} was cut short (the program stopped while writing it) and was dropped.");
@@ -130,7 +131,7 @@ public sealed class AlarmHistoryFile
         }
         catch (Exception ex) when (IsEnvironmental(ex))
         {
-            return new AlarmHistoryLoad([], $"The alarm history {Path} is corrupt ({why}) and could not be set aside ({ex.Message}); move it away to record alarms again.");
+            return new AlarmHistoryLoad([], $"The alarm history {Path} is corrupt ({why}) and could not be set aside ({FileProblemText.Describe(ex, Path, FileAction.Write)}); move it away to record alarms again.");
         }
 
         return new AlarmHistoryLoad([], $"The alarm history {Path} is corrupt ({why}); it was kept as {aside} and a new history was started.");

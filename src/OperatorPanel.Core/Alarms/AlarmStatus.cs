@@ -19,6 +19,12 @@ public sealed record AlarmStatus(
     DateTimeOffset? ClearedAt,
     DateTimeOffset? AcknowledgedAt)
 {
+    /// <summary>
+    /// True while the flag's latest reading is good. False before the first read and while the station is offline or
+    /// refuses the read: <see cref="State"/> is then the last known state, not the present one.
+    /// </summary>
+    public bool IsKnown { get; init; }
+
     public bool IsActive => State is AlarmState.ActiveUnacknowledged or AlarmState.ActiveAcknowledged;
 
     public bool IsUnacknowledged => State is AlarmState.ActiveUnacknowledged or AlarmState.ClearedUnacknowledged;

@@ -7,7 +7,9 @@ namespace OperatorPanel.Core.Alarms;
 /// <summary>
 /// The alarm state machine of every alarm of a project (seed 000 §7: messages shown while a flag bit is set).
 /// Only a <see cref="ValueQuality.Good"/> reading moves an alarm: a stale or bad value says nothing about the flag, so
-/// the alarm keeps its state until the link reads the bit again (a lost cable neither raises nor clears alarms).
+/// the alarm keeps its state until the link reads the bit again (a lost cable neither raises nor clears alarms), and is
+/// marked unknown meanwhile (<see cref="AlarmStatus.IsKnown"/>, <see cref="AlarmFlag"/>): a station not read shows
+/// "alarms unknown", never "no alarms".
 /// Not thread-safe: feed it from one thread (the view model's dispatcher).
 /// </summary>
 public sealed class AlarmTracker
@@ -40,6 +42,9 @@ public sealed class AlarmTracker
 
     public int UnacknowledgedCount => _alarms.Count(a => a.IsUnacknowledged);
 
+    /// <summary>Alarms whose flag has no good reading now (never read, station offline, read refused).</summary>
+    public int UnknownCount => _alarms.Count(a => !a.IsKnown);
+
     /// <summary>Applies a batch of polled values; returns the transitions they caused, in batch order.</summary>
     public IReadOnlyList<AlarmEvent> Apply(IReadOnlyList<ValueChange> changes)
     {
@@ -47,16 +52,25 @@ public sealed class AlarmTracker
         return [.. changes.Select(c => Apply(c.Station, c.Address, c.Current)).OfType<AlarmEvent>()];
     }
 
-    /// <summary>Applies one polled value of a flag; returns the transition it caused, or null.</summary>
+    /// <summary>
+    /// Applies one polled value of a flag; returns the transition it caused, or null. A value that is not good makes
+    /// the alarm unknown and causes no transition.
+    /// </summary>
     public AlarmEvent? Apply(Station station, PlcAddress flag, PolledValue value)
     {
         ArgumentNullException.ThrowIfNull(value);
-        if (value.Quality != ValueQuality.Good || value.AsBit is not { } on || !_index.TryGetValue((station, flag), out var i))
+        if (!_index.TryGetValue((station, flag), out var i))
         {
             return null;
         }
 
-        var status = _alarms[i];
+        if (AlarmFlag.Reading(value) is not { } on)
+        {
+            _alarms[i] = _alarms[i] with { IsKnown = false };
+            return null;
+        }
+
+        var status = _alarms[i] = _alarms[i] with { IsKnown = true };
         var next = (on, status.State) switch
         {
             (true, AlarmState.Cleared or AlarmState.ClearedUnacknowledged) => Raise(status),

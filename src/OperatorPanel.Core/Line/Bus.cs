@@ -1,5 +1,6 @@
 using System.Collections.Concurrent;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
@@ -14,7 +15,8 @@ namespace OperatorPanel.Core.Line;
 /// transport (through its <see cref="PlcLink"/>), the station states, what each station reported in IDENTIFY, and the
 /// polling loop (Polling/PollingEngine) running on the link. Polling, writes, IDENTIFY and STOP all pass through its one
 /// queue (Polling/BusQueue, S7NetPlus's TaskQueue idea), which the loop drains between two of its exchanges: one request
-/// is on the wire at a time by that one mechanism. Front ends reach a bus through the line (<see cref="ProjectLine"/>) or,
+/// is on the wire at a time by that one mechanism. With an audit trail (<see cref="BusSettings.Audit"/>) every write and
+/// STOP is on record before its frame leaves and its outcome before the caller hears it. Front ends reach a bus through the line (<see cref="ProjectLine"/>) or,
 /// for one verb of <c>opanel</c>, directly. Disposing stops the loop (after its exchange on the wire) and closes the port.
 /// </summary>
 public sealed class Bus : IAsyncDisposable
@@ -28,6 +30,7 @@ public sealed class Bus : IAsyncDisposable
     private readonly ConcurrentDictionary<Station, IdentifyResponse> _identities = new();
     private readonly ConcurrentDictionary<Station, LinkReply> _lastIdentify = new();
     private readonly Action<IReadOnlyList<ValueChange>> _onChanges;
+    private readonly AuditContext? _audit;
     private PollingEngine _engine;
     private CancellationTokenSource _stop = new();
     private Task _loop = Task.CompletedTask;
@@ -39,6 +42,7 @@ public sealed class Bus : IAsyncDisposable
         _stations = new StationTracker(time, logger.ForContext<PollingEngine>());
         _queue = new BusQueue(logger.ForContext<Bus>());
         _onChanges = onChanges ?? (_ => { });
+        _audit = settings.Audit is { } trail ? new AuditContext(trail, link.PortName, AuditUser.Current) : null;
         _engine = NewEngine(plan, settings.Mode);
         StartLoop();
     }
@@ -60,8 +64,8 @@ public sealed class Bus : IAsyncDisposable
     /// A bus refreshing on demand with plain READs: what one verb of <c>opanel</c> (read, write, identify, stop) or the
     /// wizard's connection test needs (it refreshes once or twice, so registering read lists would only cost time).
     /// </summary>
-    public static Bus OnDemand(PlcLink link, PollPlan plan, TimeProvider? time = null, ILogger? logger = null) =>
-        Start(link, plan, BusSettings.OnDemand, time, logger);
+    public static Bus OnDemand(PlcLink link, PollPlan plan, TimeProvider? time = null, ILogger? logger = null, IAuditTrail? audit = null) =>
+        Start(link, plan, BusSettings.OnDemand with { Audit = audit }, time, logger);
 
     public string PortName => _link.PortName;
 
@@ -95,6 +99,21 @@ public sealed class Bus : IAsyncDisposable
     /// </summary>
     public Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default) =>
         _queue.Enqueue($"STOP of {station}", ct => StopNowAsync(station, ct), () => new StopOutcome.NotSent(station, "disconnected before STOP was sent"), cancellationToken);
+
+    /// <summary>
+    /// Settles, through the queue, the writes and STOPs that earlier programs on this port left cut short in
+    /// <paramref name="journal"/> (Writes/UnfinishedWrites: read back, never written again), ahead of any write queued
+    /// after it. Nothing is settled when polling stops first: a later start does it.
+    /// </summary>
+    public Task<(IReadOnlyList<CutShortWrite> Resolved, string? Problem)> SettleCutShortAsync(WriteJournal journal, CancellationToken cancellationToken = default)
+    {
+        ArgumentNullException.ThrowIfNull(journal);
+        return _queue.Enqueue(
+            $"settling writes cut short on {PortName}",
+            ct => UnfinishedWrites.ResolveAsync(journal, _link, PortName, _time, _logger, ct),
+            () => ((IReadOnlyList<CutShortWrite>)[], null),
+            cancellationToken);
+    }
 
     /// <summary>What the station said in its last answered IDENTIFY on this bus; null before one answered.</summary>
     public IdentifyResponse? IdentityOf(Station station) => _identities.GetValueOrDefault(station);
@@ -171,7 +190,7 @@ public sealed class Bus : IAsyncDisposable
 
     private async Task<StopOutcome> StopNowAsync(Station station, CancellationToken cancellationToken)
     {
-        var outcome = await new RemoteStop(_link, _logger).StopAsync(station, cancellationToken).ConfigureAwait(false);
+        var outcome = await new RemoteStop(_link, _logger, _audit, _time).StopAsync(station, cancellationToken).ConfigureAwait(false);
         if (outcome.IsStopped)
         {
             Volatile.Read(ref _engine).NoteStoppedByPanel(station);
@@ -186,6 +205,7 @@ public sealed class Bus : IAsyncDisposable
         {
             Mode = mode,
             MinimumPeriod = _settings.MinimumPeriod,
+            Audit = _audit,
         };
         foreach (var identity in _identities.Values)
         {

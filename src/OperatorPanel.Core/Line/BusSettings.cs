@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Polling;
 
 namespace OperatorPanel.Core.Line;
@@ -14,4 +15,11 @@ public sealed record BusSettings
     public TimeSpan MinimumPeriod { get; init; } = TimeSpan.FromMilliseconds(100);
 
     public PollingOptions Polling { get; init; } = new();
+
+    /// <summary>
+    /// Where the bus's writes and STOPs go on record (the write journal, maybe with a historian: AuditTrail.Combine), with
+    /// its port and the user: each intent before its frame leaves (not sent when it cannot be), each outcome before the
+    /// caller hears it. Null records nothing (tests, tools that change no PLC).
+    /// </summary>
+    public IAuditTrail? Audit { get; init; }
 }

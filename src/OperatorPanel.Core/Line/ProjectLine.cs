@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
@@ -43,6 +44,9 @@ public sealed partial class ProjectLine : IAsyncDisposable
 
     public bool IsConnected => _connection is not null;
 
+    /// <summary>Writes and STOPs of earlier programs on these ports, cut short and settled on the last connect (resolved at start).</summary>
+    public IReadOnlyList<CutShortWrite> ResolvedAtConnect { get; private set; } = [];
+
     /// <summary>The ports in use while connected ("COM3", "COM7 (demo)").</summary>
     public IEnumerable<string> PortNames => _buses.Select(b => b.Bus.PortName);
 
@@ -57,7 +61,10 @@ public sealed partial class ProjectLine : IAsyncDisposable
         }
     }
 
-    /// <summary>Opens the project's ports through <paramref name="connector"/> and starts polling every bus.</summary>
+    /// <summary>
+    /// Opens the project's ports through <paramref name="connector"/> and starts polling every bus; with a write journal,
+    /// each bus first settles the writes its port's earlier programs left cut short (<see cref="ResolvedAtConnect"/>).
+    /// </summary>
     public async Task ConnectAsync(ILineConnector connector, CancellationToken cancellationToken = default)
     {
         ArgumentNullException.ThrowIfNull(connector);
@@ -77,12 +84,21 @@ public sealed partial class ProjectLine : IAsyncDisposable
                 Mode = Mode,
                 MinimumPeriod = Project.Refresh.MinimumPeriod,
                 Polling = new PollingOptions { UseReadLists = _options.UseReadLists },
+                Audit = _options.Audit ?? _options.Journal,
             };
             _buses.Add(new LineBus(bus, Bus.Start(link, bus.Plan(), settings, _time, _logger, OnBusChanges)));
         }
 
         _connection = connection;
         PushAll();
+        ResolvedAtConnect = _options.Journal is { } journal ? await SettleCutShortAsync(journal, cancellationToken).ConfigureAwait(false) : [];
+    }
+
+    /// <summary>Each bus settles, through its queue and ahead of any write, what earlier programs left cut short on its port.</summary>
+    private async Task<IReadOnlyList<CutShortWrite>> SettleCutShortAsync(WriteJournal journal, CancellationToken cancellationToken)
+    {
+        var settled = await Task.WhenAll(_buses.Select(b => b.Bus.SettleCutShortAsync(journal, cancellationToken))).ConfigureAwait(false);
+        return [.. settled.SelectMany(s => s.Resolved)];
     }
 
     /// <summary>Stops the loops, then what the connector runs beside the ports (a demo line), then closes the ports.</summary>
@@ -164,10 +180,14 @@ public sealed partial class ProjectLine : IAsyncDisposable
     public Task RefreshAsync(CancellationToken cancellationToken = default) =>
         Task.WhenAll(_buses.Select(b => b.Bus.RefreshAsync(cancellationToken)));
 
-    /// <summary>Writes through the station's bus; the outcome is the PLC's read-back, never the request.</summary>
+    /// <summary>
+    /// Writes through the station's bus; the outcome is the PLC's read-back, never the request. The write's record names
+    /// the address's symbol in the project when the request does not.
+    /// </summary>
     public Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default)
     {
         ArgumentNullException.ThrowIfNull(request);
+        request = request.Symbol is null ? request with { Symbol = Project.Stations.FirstOrDefault(s => s.Address == request.Station)?.SymbolOf(request.Address) } : request;
         return BusOf(request.Station) is { } bus
             ? bus.WriteAsync(request, cancellationToken)
             : Task.FromResult<WriteOutcome>(new WriteOutcome.Failed($"{request.Address}: not connected, nothing written", WriteFailureKind.InvalidRequest));

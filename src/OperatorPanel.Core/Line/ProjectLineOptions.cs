@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
 
@@ -17,4 +18,13 @@ public sealed record ProjectLineOptions
 
     /// <summary>Stored lists (default) or plain READs only (PollingOptions.UseReadLists).</summary>
     public bool UseReadLists { get; init; } = true;
+
+    /// <summary>
+    /// The write journal: every write and STOP goes on record there (unless <see cref="Audit"/> names another trail), and
+    /// on connecting, the writes its port's earlier programs left cut short are settled (Writes/UnfinishedWrites).
+    /// </summary>
+    public WriteJournal? Journal { get; init; }
+
+    /// <summary>Where writes and STOPs go on record when not (only) the journal, e.g. the journal and a historian (AuditTrail.Combine).</summary>
+    public IAuditTrail? Audit { get; init; }
 }

@@ -108,7 +108,7 @@ public static class PollPlanner
     {
         if (ProtocolAreaExtensions.FromMemoryArea(item.Address.Area) is null)
         {
-            return $"{item.Address}: the panel link reads only I, Q, M, V and SM";
+            return LinkAreas.FreeportRefusal(item.Address);
         }
 
         return cpus.TryGetValue(item.Station, out var cpu) ? AddressRules.Check(item.Address, cpu)?.Message : null;

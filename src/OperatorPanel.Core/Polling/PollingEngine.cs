@@ -1,5 +1,6 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling.Readers;
 using OperatorPanel.Core.Protocol;
@@ -83,6 +84,13 @@ internal sealed partial class PollingEngine
         set => _schedule.MinimumPeriod = value;
     }
 
+    /// <summary>
+    /// Where writes go on record (the write journal, with the bus's port and the user): each write's intent before it is
+    /// handed to the writer that sends it (a write whose intent cannot be recorded is not sent), its outcome before the
+    /// caller hears it. Null records nothing. STOPs go on record in Stop/RemoteStop.
+    /// </summary>
+    public AuditContext? Audit { get; init; }
+
     private StationTracker Stations => _context.Judge.Stations;
 
     /// <summary>The latest value of a watched address; false when the plan does not watch it.</summary>
@@ -121,10 +129,29 @@ internal sealed partial class PollingEngine
             "polling stopped before the write was sent; nothing was written", WriteFailureKind.EngineStopped)), cancellationToken);
     }
 
-    /// <summary>The write job, on the loop between two exchanges: the bus's writer sends it, the read-back becomes values.</summary>
+    /// <summary>
+    /// The write job, on the loop between two exchanges: its intent goes on record, the bus's writer sends it, the
+    /// read-back becomes values, its outcome goes on record and into the log before the caller hears it.
+    /// </summary>
     private async Task<WriteOutcome> WriteNowAsync(WriteRequest request, CancellationToken cancellationToken)
     {
         var oldRaw = OldValue(request);
+        var (intent, notRecorded) = await WriteAudit.RecordIntentAsync(Audit, request, WriteLog.Format(request.Address, oldRaw), _context.Time.GetUtcNow()).ConfigureAwait(false);
+        if (notRecorded is not null)
+        {
+            return Record(request, oldRaw, notRecorded);
+        }
+
+        var (outcome, oldText) = await SendAsync(request, oldRaw, cancellationToken).ConfigureAwait(false);
+        await WriteAudit.RecordOutcomeAsync(Audit, intent, request, outcome, _context.Time.GetUtcNow(), _context.Logger).ConfigureAwait(false);
+        WriteLog.Record(_context.Logger, request, oldText, outcome);
+        return outcome;
+    }
+
+    /// <summary>Hands the write to the bus's writer; any end is an outcome, with the old value as the log shows it.</summary>
+    private async Task<(WriteOutcome Outcome, string OldText)> SendAsync(WriteRequest request, ImmutableArray<byte> oldRaw, CancellationToken cancellationToken)
+    {
+        var oldText = WriteLog.Format(request.Address, oldRaw);
         try
         {
             var result = await _readers.Writer.WriteAsync(request, oldRaw, cancellationToken).ConfigureAwait(false);
@@ -134,21 +161,18 @@ internal sealed partial class PollingEngine
                 _batch.AddRange(_values.Apply(request.Station, area, request.Address.ByteOffset, result.ReadBack, _context.Time.GetUtcNow()));
             }
 
-            return Record(request, oldRaw, result.Outcome);
+            return (result.Outcome, oldText);
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {
-            return Record(request, oldRaw, new WriteOutcome.Unknown(
-                default, "polling stopped while the write was on the wire", "no read-back: the panel stopped polling"));
+            return (new WriteOutcome.Unknown(default, "polling stopped while the write was on the wire", "no read-back: the panel stopped polling"), oldText);
         }
         catch (Exception exception)
         {
             // A bug of ours must not leave the caller waiting forever: the write still gets an outcome.
             _context.Logger.Error(exception, "Write {Request} broke the engine's own handling", request.ToString());
-            var outcome = new WriteOutcome.Unknown(
-                default, $"internal error: {exception.Message}", "the panel's own handling broke after the write may have been sent");
-            WriteLog.Record(_context.Logger, request, WriteLog.Unknown, outcome);
-            return outcome;
+            return (new WriteOutcome.Unknown(
+                default, $"internal error: {exception.Message}", "the panel's own handling broke after the write may have been sent"), WriteLog.Unknown);
         }
     }
 

@@ -39,6 +39,6 @@ internal static class AlarmReader
             return $"an alarm flag is a bit such as M2.0; {address} is {AddressReader.Kind(address)}";
         }
 
-        return AddressRules.IsServedByLink(address.Area) ? null : $"{address}: the panel link serves only I, Q, M, V and SM";
+        return LinkAreas.FreeportRefusal(address);
     }
 }

@@ -1,5 +1,6 @@
 using System.Diagnostics.CodeAnalysis;
 using System.Globalization;
+using OperatorPanel.Core.Messages;
 
 namespace OperatorPanel.Core.Projects;
 
@@ -41,7 +42,7 @@ public static class AtomicFile
         }
         catch (Exception ex) when (IsEnvironmental(ex))
         {
-            error = "cannot read the file: " + ex.Message;
+            error = "cannot read it: " + FileProblemText.Describe(ex, path, FileAction.Read);
             return false;
         }
     }

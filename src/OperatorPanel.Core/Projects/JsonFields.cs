@@ -118,6 +118,32 @@ internal sealed class JsonFields
         return null;
     }
 
+    /// <summary>True when the entry has the property at all (optional properties that change a tag's meaning).</summary>
+    public bool Has(string name) => _values.ContainsKey(name);
+
+    /// <summary>A number, whole or not (a scale, a range end); required. Null when missing or wrong (reported).</summary>
+    public double? Number(string name)
+    {
+        if (!TryValue(name, required: true, out var value))
+        {
+            return null;
+        }
+
+        if (value.ValueKind != JsonValueKind.Number)
+        {
+            Wrong(name, "a number", value);
+            return null;
+        }
+
+        if (!value.TryGetDouble(out var number) || !double.IsFinite(number))
+        {
+            Problem(name, $"{JsonPath.Shorten(value.GetRawText())} is far outside any allowed range");
+            return null;
+        }
+
+        return number;
+    }
+
     public bool? Bool(string name, bool fallback)
     {
         if (!TryValue(name, required: false, out var value))

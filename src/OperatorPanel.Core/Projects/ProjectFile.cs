@@ -31,6 +31,11 @@ public static class ProjectFile
             return Fail("file", readError);
         }
 
+        if (bytes.Length == 0)
+        {
+            return Fail("file", "the file is empty (0 bytes); a project file is JSON text starting with '{'");
+        }
+
         string text;
         try
         {
@@ -56,7 +61,7 @@ public static class ProjectFile
         }
         catch (JsonException ex)
         {
-            return Fail(SyntaxLocation(text, ex), SyntaxMessage(ex));
+            return Fail(SyntaxLocation(text, ex), "not valid JSON: " + JsonSyntaxText.Describe(text, ex));
         }
 
         using (document)
@@ -104,13 +109,5 @@ public static class ProjectFile
         var byteColumn = (int)Math.Clamp(ex.BytePositionInLine ?? 0, 0, bytes.Length);
         var column = Encoding.UTF8.GetCharCount(bytes, 0, byteColumn) + 1;
         return string.Create(CultureInfo.InvariantCulture, $"line {lineIndex + 1}, column {column}");
-    }
-
-    /// <summary>The reader's sentence without its own "LineNumber: 3 | BytePositionInLine: 4." tail.</summary>
-    private static string SyntaxMessage(JsonException ex)
-    {
-        var message = ex.Message;
-        var tail = message.IndexOf(" LineNumber:", StringComparison.Ordinal);
-        return "not valid JSON: " + (tail >= 0 ? message[..tail] : message).Trim();
     }
 }

@@ -34,4 +34,10 @@ public sealed record ProjectStation(
     /// by default: a remote STOP halts the line (docs/protocol.md, "07 STOP").
     /// </summary>
     public bool AllowStop { get; init; }
+
+    /// <summary>The symbol the project gives <paramref name="address"/> (an output, input or tag; the first tag of several); null if none.</summary>
+    public string? SymbolOf(PlcAddress address) =>
+        Outputs.FirstOrDefault(s => s.Address == address)?.Symbol
+        ?? Inputs.FirstOrDefault(s => s.Address == address)?.Symbol
+        ?? Tags.FirstOrDefault(t => t.Address == address)?.Symbol;
 }

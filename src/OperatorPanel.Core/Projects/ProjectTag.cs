@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.Core.Projects;
 
@@ -8,4 +9,19 @@ namespace OperatorPanel.Core.Projects;
 /// <param name="Format">How the value is shown; it fits the address width (see <see cref="DisplayFormats.Fits"/>).</param>
 /// <param name="Writable">True when the operator may write the cell; the address then passes AddressRules for writing.</param>
 /// <param name="Description">Free comment for the operator; may be empty.</param>
-public sealed record ProjectTag(string Symbol, PlcAddress Address, DisplayFormat Format, bool Writable, string Description);
+/// <remarks>
+/// <see cref="Unit"/>, <see cref="Scale"/> and <see cref="Range"/> are optional ("unit", "scale", "min"/"max" in the file)
+/// and init properties, so tags built in code and projects written before them keep their shape. Scale and range are
+/// for numbers (unsigned, signed, float); the value shown, typed and range-checked is the scaled one (<see cref="TagValues"/>).
+/// </remarks>
+public sealed record ProjectTag(string Symbol, PlcAddress Address, DisplayFormat Format, bool Writable, string Description)
+{
+    /// <summary>The engineering unit shown after the value ("%", "ml", "bottles/min"); null when none.</summary>
+    public string? Unit { get; init; }
+
+    /// <summary>Raw PLC number to engineering value, linear; null shows the raw number.</summary>
+    public TagScale? Scale { get; init; }
+
+    /// <summary>What the operator may write, in engineering units; null when the address's width is the only limit.</summary>
+    public TagRange? Range { get; init; }
+}

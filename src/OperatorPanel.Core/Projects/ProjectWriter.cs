@@ -77,6 +77,7 @@ internal static class ProjectWriter
             json.WriteString("format", JsonWords.Of(tag.Format));
             json.WriteBoolean("writable", tag.Writable);
             json.WriteString("description", tag.Description);
+            WriteEngineering(json, tag);
             json.WriteEndObject();
         }
 
@@ -94,6 +95,38 @@ internal static class ProjectWriter
 
         json.WriteEndArray();
         json.WriteEndObject();
+    }
+
+    /// <summary>
+    /// Unit, scale and range only when set: unlike the other properties they are left out when absent, so a project
+    /// written before them saves exactly as it was.
+    /// </summary>
+    private static void WriteEngineering(Utf8JsonWriter json, ProjectTag tag)
+    {
+        if (tag.Unit is { } unit)
+        {
+            json.WriteString("unit", unit);
+        }
+
+        if (tag.Scale is { } scale)
+        {
+            json.WriteStartObject("scale");
+            json.WriteNumber("rawLow", scale.RawLow);
+            json.WriteNumber("rawHigh", scale.RawHigh);
+            json.WriteNumber("low", scale.Low);
+            json.WriteNumber("high", scale.High);
+            json.WriteEndObject();
+        }
+
+        if (tag.Range?.Min is { } min)
+        {
+            json.WriteNumber("min", min);
+        }
+
+        if (tag.Range?.Max is { } max)
+        {
+            json.WriteNumber("max", max);
+        }
     }
 
     private static void WriteSymbols(Utf8JsonWriter json, string name, IEnumerable<IoSymbol> symbols)

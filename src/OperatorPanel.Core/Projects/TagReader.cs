@@ -1,12 +1,15 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.Core.Projects;
 
 /// <summary>
 /// Reads a station's <c>tags</c>: memory cells of M and V (seed 000 §7), or read-only views of I, Q and SM.
-/// Two tags may share an address, e.g. VD120 shown once as a float and once in hex.
+/// Two tags may share an address, e.g. VD120 shown once as a float and once in hex. Optional, as an HMI has them:
+/// <c>unit</c>, <c>scale</c> (<c>{"rawLow", "rawHigh", "low", "high"}</c>, linear) and <c>min</c>/<c>max</c> (what the
+/// operator may write, in scaled units); scale and range only for numbers (unsigned, signed, float).
 /// </summary>
 internal static class TagReader
 {
@@ -15,7 +18,7 @@ internal static class TagReader
 
     private static ProjectTag? Read(JsonFields entry, CpuProfile? cpu, EntryRegistry registry)
     {
-        entry.ReportUnknown("symbol", "address", "format", "writable", "description");
+        entry.ReportUnknown("symbol", "address", "format", "writable", "description", "unit", "scale", "min", "max");
         var symbol = registry.ClaimSymbol(entry);
         var writable = entry.Bool("writable", fallback: false);
         var use = writable == true ? AddressUse.Write : AddressUse.Read;
@@ -28,14 +31,57 @@ internal static class TagReader
         }
 
         var description = entry.String("description", string.Empty);
-        return symbol is null || address is null || format is null || writable is null || description is null
+        var tag = symbol is null || address is null || format is null || writable is null || description is null
             ? null
             : new ProjectTag(symbol, address.Value, format.Value, writable.Value, description);
+        return ReadEngineering(entry, tag);
     }
 
-    private static string? Shape(PlcAddress address) => AddressRules.IsServedByLink(address.Area)
-        ? null
-        : $"{address}: the panel link serves only I, Q, M, V and SM";
+    /// <summary>Unit, scale and range of <paramref name="tag"/> (null when its basics failed; their problems are reported).</summary>
+    private static ProjectTag? ReadEngineering(JsonFields entry, ProjectTag? tag)
+    {
+        var ok = true;
+        var unit = entry.Has("unit") ? entry.String("unit") : null;
+        ok &= unit is not null || !entry.Has("unit");
+        var scale = ReadScale(entry, ref ok);
+        var min = entry.Has("min") ? entry.Number("min") : null;
+        var max = entry.Has("max") ? entry.Number("max") : null;
+        ok &= (min is not null || !entry.Has("min")) && (max is not null || !entry.Has("max"));
+        if (!ok || tag is null)
+        {
+            return null;
+        }
+
+        tag = tag with { Unit = unit, Scale = scale, Range = min is null && max is null ? null : new TagRange(min, max) };
+        if (TagRules.Problem(tag) is var (property, message))
+        {
+            entry.Problem(property, message);
+            return null;
+        }
+
+        return tag;
+    }
+
+    private static TagScale? ReadScale(JsonFields entry, ref bool ok)
+    {
+        if (!entry.Has("scale"))
+        {
+            return null;
+        }
+
+        var fields = entry.Object("scale");
+        fields?.ReportUnknown("rawLow", "rawHigh", "low", "high");
+        var (rawLow, rawHigh, low, high) = (fields?.Number("rawLow"), fields?.Number("rawHigh"), fields?.Number("low"), fields?.Number("high"));
+        if (rawLow is not { } rl || rawHigh is not { } rh || low is not { } l || high is not { } h)
+        {
+            ok = false;
+            return null;
+        }
+
+        return new TagScale(rl, rh, l, h);
+    }
+
+    private static string? Shape(PlcAddress address) => LinkAreas.FreeportRefusal(address);
 
     private static string FitHint(DisplayFormat format) => format switch
     {

@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
@@ -12,21 +13,33 @@ namespace OperatorPanel.Core.Stop;
 /// (nothing is sent unless FEATURES bit 0 says the handler carries STOP), then 07 once, never repeated, then IDENTIFY
 /// again. A CPU in STOP speaks PPI and answers no Freeport frame, so silence after STOP is the confirmation and an
 /// answer means it still runs; a lost reply is settled the same way, as a lost write reply is settled by reading back.
-/// Every attempt is logged like a write: "Station 2 RUN -> STOP by operator" with its outcome.
+/// Every attempt is logged like a write: "Station 2 RUN -> STOP by operator" with its outcome; with an audit trail its
+/// intent is on record before 07 leaves (not sent when it cannot be) and its outcome after, as a write's.
 /// </summary>
-public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
+public sealed class RemoteStop(IPlcLink link, ILogger? logger = null, AuditContext? audit = null, TimeProvider? time = null)
 {
     private readonly IPlcLink _link = link ?? throw new ArgumentNullException(nameof(link));
     private readonly ILogger _log = (logger ?? Logger.None).ForContext<RemoteStop>();
+    private readonly TimeProvider _time = time ?? TimeProvider.System;
 
     public async Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default)
     {
         var outcome = await CheckAsync(station, cancellationToken).ConfigureAwait(false);
         if (outcome is null)
         {
-            _log.Information("Station {Station} RUN -> STOP by operator: sending STOP", station.Address);
-            var sent = await _link.ExchangeAsync(new StopRequest(station), cancellationToken).ConfigureAwait(false);
-            outcome = await JudgeAsync(station, sent, cancellationToken).ConfigureAwait(false);
+            var intent = audit is null ? null : new AuditEntry(
+                Guid.NewGuid(), AuditStep.Intent, AuditAction.Stop, _time.GetUtcNow(), audit.User, audit.Port, station, null, null, "RUN", "STOP");
+            if (intent is not null && await audit!.Trail.RecordAsync(intent, CancellationToken.None).ConfigureAwait(false) is { } notKept)
+            {
+                outcome = new StopOutcome.NotSent(station, $"it could not be put on record ({notKept})");
+            }
+            else
+            {
+                _log.Information("Station {Station} RUN -> STOP by operator: sending STOP", station.Address);
+                var sent = await _link.ExchangeAsync(new StopRequest(station), cancellationToken).ConfigureAwait(false);
+                outcome = await JudgeAsync(station, sent, cancellationToken).ConfigureAwait(false);
+                await RecordOutcomeAsync(intent, outcome).ConfigureAwait(false);
+            }
         }
 
         if (outcome.IsStopped)
@@ -39,6 +52,15 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
         }
 
         return outcome;
+    }
+
+    private async Task RecordOutcomeAsync(AuditEntry? intent, StopOutcome outcome)
+    {
+        if (intent is not null && audit is not null
+            && await audit.Trail.RecordAsync(intent.Then(AuditStep.Outcome, _time.GetUtcNow(), outcome.Text, null), CancellationToken.None).ConfigureAwait(false) is { } notKept)
+        {
+            _log.Warning("Station {Station} STOP: its outcome could not be put on record: {Reason:l}", intent.Station.Address, notKept);
+        }
     }
 
     /// <summary>Null when the station answers IDENTIFY and its handler carries STOP; else why nothing may be sent.</summary>

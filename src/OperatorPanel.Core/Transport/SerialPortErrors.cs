@@ -47,6 +47,10 @@ internal static class SerialPortErrors
         [1167] = DeviceVanished,
     };
 
+    /// <summary>Windows' access denial of a COM port, which in practice is another program holding it.</summary>
+    public const string InUseOnWindows =
+        "in use by another program: Windows lets one program at a time open a COM port (close Micro/WIN, a terminal program or another panel on it)";
+
     /// <summary>What opening the port may throw besides our own exceptions.</summary>
     public static bool IsOpenFailure(Exception exception) =>
         exception is IOException or UnauthorizedAccessException or ArgumentException or InvalidOperationException;
@@ -64,6 +68,9 @@ internal static class SerialPortErrors
 
         // Unix reports every failed open as access denied, with the real errno in the inner exception.
         UnauthorizedAccessException { InnerException: IOException inner } => Unavailable(portName, "open failed: " + Describe(inner)),
+
+        // Windows opens a COM port for one program at a time and says only "Access to the port 'COM3' is denied."
+        UnauthorizedAccessException when OperatingSystem.IsWindows() => Unavailable(portName, InUseOnWindows),
         _ => Unavailable(portName, "open failed: " + Describe(failure)),
     };
 

@@ -1,4 +1,6 @@
 using System.IO.Ports;
+using Serilog;
+using Serilog.Core;
 using PortParity = System.IO.Ports.Parity;
 
 namespace OperatorPanel.Core.Transport;
@@ -12,7 +14,10 @@ namespace OperatorPanel.Core.Transport;
 /// adapter, closed pty) every later call fails the same way: the library's Unix I/O loop stops for good after a
 /// hang-up, and later reads would otherwise just time out. A failed transport reports itself not open, and opening it
 /// again closes the dead port and opens the device afresh (the link reconnects that way). Failures are <see cref="PlcCommunicationException"/> of
-/// kind <see cref="PlcErrorKind.PortUnavailable"/> naming the port (<see cref="SerialPortErrors"/>).
+/// kind <see cref="PlcErrorKind.PortUnavailable"/> naming the port (<see cref="SerialPortErrors"/>). One program per port:
+/// opening claims the port (<see cref="PortLock"/>) and a port another program holds is refused naming that program;
+/// closing never holds the caller longer than <see cref="BoundedClose.Limit"/>. Over 300 lines: the whole adapter (open,
+/// read, write, close) stays in the one file allowed to touch System.IO.Ports.
 /// </summary>
 public sealed class SerialPortTransport : ITransport
 {
@@ -23,14 +28,22 @@ public sealed class SerialPortTransport : ITransport
     private static readonly TimeSpan WriteSlack = TimeSpan.FromMilliseconds(500);
 
     private readonly SerialSettings _settings;
+    private readonly ILogger _logger;
+    private readonly TimeProvider _time;
+    private readonly string _lockFolder;
     private readonly CancellationTokenSource _closing = new();
+    private PortLock? _lock;
     private SerialIoLane? _readLane;
     private SerialIoLane? _writeLane;
     private SerialPort? _port;
     private OutstandingStreamRead? _unixRead;
     private string? _failure;
 
-    public SerialPortTransport(SerialSettings settings)
+    /// <param name="settings">The port and its line settings.</param>
+    /// <param name="logger">Where an abandoned close is reported.</param>
+    /// <param name="time">The clock of the close's time limit.</param>
+    /// <param name="lockFolder">Where the port lock goes; <see cref="PortLock.DefaultFolder"/> by default.</param>
+    public SerialPortTransport(SerialSettings settings, ILogger? logger = null, TimeProvider? time = null, string? lockFolder = null)
     {
         ArgumentNullException.ThrowIfNull(settings);
         ArgumentOutOfRangeException.ThrowIfLessThan(settings.DataBits, 7);
@@ -38,6 +51,9 @@ public sealed class SerialPortTransport : ITransport
         ArgumentOutOfRangeException.ThrowIfLessThan(settings.StopBits, 1);
         ArgumentOutOfRangeException.ThrowIfGreaterThan(settings.StopBits, 2);
         _settings = settings;
+        _logger = logger ?? Logger.None;
+        _time = time ?? TimeProvider.System;
+        _lockFolder = lockFolder ?? PortLock.DefaultFolder;
     }
 
     public string Name => _settings.PortName;
@@ -58,6 +74,11 @@ public sealed class SerialPortTransport : ITransport
             throw new InvalidOperationException($"{Name} is already open");
         }
 
+        if (_lock is null && !PortLock.TryAcquire(Name, _lockFolder, out _lock, out var inUse))
+        {
+            throw new PlcCommunicationException(PlcErrorKind.PortUnavailable, null, inUse);
+        }
+
         var readLane = new SerialIoLane("serial read " + Name);
         try
         {
@@ -67,6 +88,8 @@ public sealed class SerialPortTransport : ITransport
         catch (PlcCommunicationException)
         {
             await readLane.StopAsync().ConfigureAwait(false);
+            _lock?.Dispose();
+            _lock = null;
             throw;
         }
 
@@ -135,6 +158,10 @@ public sealed class SerialPortTransport : ITransport
         }
     }
 
+    /// <summary>
+    /// Stops the lanes, closes the port and releases its lock, waiting at most <see cref="BoundedClose.Limit"/>: a close
+    /// that takes longer is logged and left to finish in the background (the lock goes when it does, or with the process).
+    /// </summary>
     public async ValueTask DisposeAsync()
     {
         if (_closing.IsCancellationRequested)
@@ -143,17 +170,33 @@ public sealed class SerialPortTransport : ITransport
         }
 
         await _closing.CancelAsync().ConfigureAwait(false);
-        foreach (var lane in new[] { _readLane, _writeLane })
-        {
-            if (lane is not null)
+        var (lanes, port, unixRead, portLock) = (new[] { _readLane, _writeLane }, _port, _unixRead, _lock);
+        var closed = await BoundedClose.RunAsync(
+            async () =>
             {
-                await lane.StopAsync().ConfigureAwait(false);
-            }
+                foreach (var lane in lanes)
+                {
+                    if (lane is not null)
+                    {
+                        await lane.StopAsync().ConfigureAwait(false);
+                    }
+                }
+
+                port?.Dispose();
+                unixRead?.Forget();
+                portLock?.Dispose();
+            },
+            BoundedClose.Limit,
+            _time).ConfigureAwait(false);
+        if (closed)
+        {
+            _closing.Dispose();
+            return;
         }
 
-        _port?.Dispose();
-        _unixRead?.Forget();
-        _closing.Dispose();
+        _logger.Warning(
+            "Serial port {Port}: closing took more than {Seconds} s (a USB serial driver blocking in close?); the port is abandoned and the program goes on",
+            Name, BoundedClose.Limit.TotalSeconds);
     }
 
     /// <summary>

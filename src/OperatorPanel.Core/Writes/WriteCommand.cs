@@ -27,7 +27,7 @@ internal static class WriteCommand
         var error = cpu is null ? null : AddressRules.Check(address, cpu, AddressUse.Write);
         if (ProtocolAreaExtensions.FromMemoryArea(address.Area) is not { } area || area == ProtocolArea.I)
         {
-            error ??= new AddressError(AddressErrorKind.NotWritable, $"{address}: the panel link writes only Q, M, V and SM");
+            error ??= new AddressError(AddressErrorKind.NotWritable, $"{address}: the Freeport link writes only {LinkAreas.FreeportWritten}");
         }
 
         if (error is not null)

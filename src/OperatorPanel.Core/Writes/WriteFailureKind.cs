@@ -17,4 +17,7 @@ public enum WriteFailureKind
 
     /// <summary>Polling stopped before the write was sent; nothing was written.</summary>
     EngineStopped,
+
+    /// <summary>Its intent could not be put on record (the write journal unwritable): a write off the record is not sent.</summary>
+    NotRecorded,
 }

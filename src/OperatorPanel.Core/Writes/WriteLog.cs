@@ -54,6 +54,32 @@ internal static class WriteLog
         }
     }
 
+    /// <summary>Reads back what <see cref="Format"/> wrote ("16#002A", "1"); false for "unknown" or anything else.</summary>
+    public static bool TryParse(PlcAddress address, string text, out ImmutableArray<byte> value)
+    {
+        value = default;
+        if (address.Width == AccessWidth.Bit)
+        {
+            value = text switch { "0" => [0], "1" => [1], _ => default };
+            return !value.IsDefault;
+        }
+
+        if (!text.StartsWith("16#", StringComparison.Ordinal) || text.Length != 3 + (2 * address.Width.ByteCount()))
+        {
+            return false;
+        }
+
+        try
+        {
+            value = [.. Convert.FromHexString(text.AsSpan(3))];
+            return true;
+        }
+        catch (FormatException)
+        {
+            return false;
+        }
+    }
+
     public static string Format(PlcAddress address, ImmutableArray<byte> value) =>
         value.IsDefaultOrEmpty ? Unknown
         : address.Width == AccessWidth.Bit ? (value[0] != 0 ? "1" : "0")

@@ -93,6 +93,7 @@ public sealed class SoakJudge(SoakRegion region, ReadOnlyMemory<byte> initial)
             WriteFailureKind.LinkFailure => "port failure (not sent)",
             WriteFailureKind.UnexpectedReply => "unexpected reply",
             WriteFailureKind.EngineStopped => "engine stopped (not sent)",
+            WriteFailureKind.NotRecorded => "not put on record (not sent)",
         },
         _ => throw new ArgumentOutOfRangeException(nameof(outcome), outcome, "a write outcome the soak does not know"),
     };

@@ -31,9 +31,17 @@ public sealed class AlarmRowViewModel : ObservableObject
     /// <summary>
     /// "active unacknowledged", as the operator reads it. An alarm that needs no acknowledgement reads "active" (not
     /// "active acknowledged": nobody acknowledged it), and one never raised (in this session or the loaded history) reads
-    /// "not raised".
+    /// "not raised". An alarm whose flag has no good reading reads "unknown", with the last known state when there is
+    /// one to remember ("unknown (was active unacknowledged)").
     /// </summary>
-    public string StateText => _status switch
+    public string StateText => _status.IsKnown
+        ? KnownStateText
+        : _status.State == AlarmState.Cleared ? "unknown" : $"unknown (was {KnownStateText})";
+
+    /// <summary>False while the flag has no good reading (never read, station offline): the view greys the row.</summary>
+    public bool IsKnown => _status.IsKnown;
+
+    private string KnownStateText => _status switch
     {
         { RaisedAt: null, State: AlarmState.Cleared } => "not raised",
         { Definition.AcknowledgementRequired: false, State: AlarmState.ActiveAcknowledged } => "active",
@@ -65,7 +73,7 @@ public sealed class AlarmRowViewModel : ObservableObject
         foreach (var name in new[]
         {
             nameof(State), nameof(StateText), nameof(RaisedAt), nameof(ClearedAt), nameof(AcknowledgedAt),
-            nameof(IsActive), nameof(IsUnacknowledged), nameof(IsPending),
+            nameof(IsActive), nameof(IsUnacknowledged), nameof(IsPending), nameof(IsKnown),
         })
         {
             OnPropertyChanged(name);

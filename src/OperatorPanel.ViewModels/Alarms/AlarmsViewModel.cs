@@ -4,8 +4,10 @@ using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Line;
+using OperatorPanel.Core.Messages;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Services;
+using OperatorPanel.ViewModels.Session;
 
 namespace OperatorPanel.ViewModels.Alarms;
 
@@ -16,6 +18,7 @@ namespace OperatorPanel.ViewModels.Alarms;
 /// Each alarm's flag is subscribed on the line like any other value, so a flag change arrives on the UI thread.
 /// The list is kept in <see cref="AlarmOrder"/>, pending alarms first; the view reports which rows it shows
 /// (<see cref="ShowVisibleRows"/>) and <see cref="HiddenPendingText"/> counts the pending ones out of view.
+/// A station whose flags have no good reading makes its alarms unknown (<see cref="UnknownText"/>), never "no alarms".
 /// </summary>
 public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 {
@@ -33,7 +36,9 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     /// <param name="values">The line's values (PanelSession.Values); callbacks come on the UI thread.</param>
     /// <param name="time">Times raised, cleared and acknowledged; its local zone for display.</param>
     /// <param name="files">The save dialog of the CSV export.</param>
-    public AlarmsViewModel(PanelProject project, string? projectPath, ILineValues values, TimeProvider time, IFileDialogService files)
+    /// <param name="stations">The session's stations (PanelSession.Stations), for why a station's alarms are unknown ("offline").</param>
+    public AlarmsViewModel(
+        PanelProject project, string? projectPath, ILineValues values, TimeProvider time, IFileDialogService files, IEnumerable<StationStatusViewModel>? stations = null)
     {
         ArgumentNullException.ThrowIfNull(project);
         ArgumentNullException.ThrowIfNull(values);
@@ -56,8 +61,10 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 
         _projectRows = [.. _tracker.Alarms.Select(a => new AlarmRowViewModel(a, time.LocalTimeZone))];
         Rows = new ObservableCollection<AlarmRowViewModel>(Ordered());
+        _stations = stations;
+        WatchStations();
         UpdateCounts();
-        foreach (var alarm in _tracker.Alarms)
+        foreach (var alarm in _tracker.Alarms.ToList())
         {
             var (station, flag) = (alarm.Station, alarm.Definition.Flag);
             _subscriptions.Add(values.Subscribe(station, flag, value => Record(_tracker.Apply(station, flag, value) is { } entry ? [entry] : [])));
@@ -96,18 +103,31 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     public ObservableCollection<AlarmHistoryRowViewModel> History { get; }
 
     [ObservableProperty]
-    [NotifyPropertyChangedFor(nameof(Summary))]
+    [NotifyPropertyChangedFor(nameof(Summary), nameof(ShortSummary), nameof(BannerText))]
     public partial int ActiveCount { get; private set; }
 
     [ObservableProperty]
-    [NotifyPropertyChangedFor(nameof(Summary))]
+    [NotifyPropertyChangedFor(nameof(Summary), nameof(ShortSummary), nameof(BannerText))]
     [NotifyCanExecuteChangedFor(nameof(AcknowledgeAllCommand))]
     public partial int UnacknowledgedCount { get; private set; }
 
-    /// <summary>For the status bar: "2 alarms active, 1 unacknowledged", or "no alarms".</summary>
-    public string Summary => ActiveCount == 0 && UnacknowledgedCount == 0
-        ? "no alarms"
-        : $"{ActiveCount} alarm{(ActiveCount == 1 ? string.Empty : "s")} active, {UnacknowledgedCount} unacknowledged";
+    /// <summary>
+    /// For the Alarms window: "2 alarms active, 1 unacknowledged", or "no alarms" when every flag was read; "alarms unknown"
+    /// (with the counts of the last reading, "alarms unknown; when last read 1 alarm active, 1 unacknowledged") while any
+    /// flag has no good reading.
+    /// </summary>
+    public string Summary => Describe(" alarm", " alarms");
+
+    /// <summary>The same for the status bar, without the noun: "2 active, 1 unacknowledged".</summary>
+    public string ShortSummary => Describe(string.Empty, string.Empty);
+
+    /// <summary>
+    /// The banner's line: <see cref="ShortSummary"/>, with the stations whose alarms are unknown named and why
+    /// ("alarms unknown: Filler offline; when last read 1 active, 1 unacknowledged").
+    /// </summary>
+    public string BannerText => UnknownText is { } unknown
+        ? Counts(string.Empty, string.Empty) is { } counts ? $"{unknown}; when last read {counts}" : unknown
+        : ShortSummary;
 
     /// <summary>The latest problem with the history file or the export, or the export's confirmation; null when none.</summary>
     [ObservableProperty]
@@ -117,7 +137,11 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     [ObservableProperty]
     public partial bool IsMessageError { get; private set; }
 
-    public void Dispose() => _subscriptions.ForEach(s => s.Dispose());
+    public void Dispose()
+    {
+        _subscriptions.ForEach(s => s.Dispose());
+        UnwatchStations();
+    }
 
     /// <summary>
     /// The view shows the rows <paramref name="first"/> to <paramref name="first"/> + <paramref name="count"/> - 1 of
@@ -149,6 +173,16 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
             (var a, var b) => $"{a} pending alarm{Plural(a)} above, {b} below",
         };
     }
+
+    private string Describe(string one, string many)
+    {
+        var counts = Counts(one, many);
+        return UnknownText is null ? counts ?? "no alarms" : counts is null ? "alarms unknown" : "alarms unknown; when last read " + counts;
+    }
+
+    private string? Counts(string one, string many) => ActiveCount == 0 && UnacknowledgedCount == 0
+        ? null
+        : $"{ActiveCount}{(ActiveCount == 1 ? one : many)} active, {UnacknowledgedCount} unacknowledged";
 
     private static string Plural(int count) => count == 1 ? string.Empty : "s";
 
@@ -187,13 +221,9 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 
     private bool CanAcknowledgeAll() => UnacknowledgedCount > 0;
 
+    /// <summary>Shows the tracker's state: after transitions (recorded in the history), or a flag turning known or unknown.</summary>
     private void Record(IReadOnlyList<AlarmEvent> events)
     {
-        if (events.Count == 0)
-        {
-            return;
-        }
-
         for (var i = 0; i < _projectRows.Length; i++)
         {
             _projectRows[i].Update(_tracker.Alarms[i]);
@@ -206,7 +236,7 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
             History.Add(new AlarmHistoryRowViewModel(entry, _zone));
         }
 
-        if (_historyFile is not null && !_historyFile.TryAppend(events, out var error))
+        if (events.Count > 0 && _historyFile is not null && !_historyFile.TryAppend(events, out var error))
         {
             (Message, IsMessageError) = (error, true);
         }
@@ -221,6 +251,7 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         var pending = Rows.Count(r => r.IsPending);
         MostUrgent = pending > 0 ? Rows[0] : null;
         MorePendingText = pending > 1 ? $"and {pending - 1} more" : null;
+        UpdateUnknown();
         UpdateHiddenPending();
         AcknowledgeCommand.NotifyCanExecuteChanged();
         ExportCsvCommand.NotifyCanExecuteChanged();
@@ -243,7 +274,7 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or NotSupportedException)
         {
-            (Message, IsMessageError) = ($"The alarm history could not be exported to {path}: {ex.Message}", true);
+            (Message, IsMessageError) = ($"The alarm history could not be exported to {path}: {FileProblemText.Describe(ex, path, FileAction.Write)}.", true);
         }
     }
 

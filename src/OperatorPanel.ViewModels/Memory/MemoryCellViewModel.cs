@@ -16,11 +16,7 @@ public sealed partial class MemoryCellViewModel : ObservableObject
     private readonly MemoryViewModel _owner;
     private PolledValue? _value;
 
-    internal MemoryCellViewModel(ProjectStation station, ProjectTag tag, MemoryViewModel owner)
-    {
-        (Station, Tag, _owner) = (station, tag, owner);
-        FormatChoices = [.. Enum.GetValues<DisplayFormat>().Where(f => f.Fits(tag.Address.Width))];
-    }
+    internal MemoryCellViewModel(ProjectStation station, ProjectTag tag, MemoryViewModel owner) => (Station, Tag, _owner) = (station, tag, owner);
 
     public ProjectStation Station { get; }
 
@@ -46,21 +42,17 @@ public sealed partial class MemoryCellViewModel : ObservableObject
 
     public bool Writable => Tag.Writable;
 
-    /// <summary>Only the formats that fit the width: Bool for a bit, Float only for a double word (DisplayFormats.Fits).</summary>
-    public IReadOnlyList<DisplayFormat> FormatChoices { get; }
+    /// <summary>
+    /// How the value is shown: a project setting (the wizard, File > Edit project), not an operator's choice in the live
+    /// view, so every operator reads a cell the same way and a value is typed in the units it is shown in.
+    /// </summary>
+    public DisplayFormat Format => Tag.Format;
 
-    /// <summary>Changing it edits the project (it becomes unsaved) through <see cref="ChangeFormatCommand"/>, which owns the edit's task.</summary>
-    public DisplayFormat Format
-    {
-        get => Tag.Format;
-        set
-        {
-            if (value != Tag.Format)
-            {
-                ChangeFormatCommand.Execute(value);
-            }
-        }
-    }
+    /// <summary>"unsigned", "float, %, 0..1000 -> 0..100": the format with the tag's unit and scale, for the Format column.</summary>
+    public string FormatText => string.Join(", ", new[] { Tag.Format.ToString().ToLowerInvariant(), Tag.Unit, Tag.Scale?.ToString() }.OfType<string>());
+
+    /// <summary>"1..8 ms": what the operator may write, in the shown units; null when only the address's width limits it.</summary>
+    public string? RangeText => Tag.Range is { } range ? range + (Tag.Unit is { } unit ? " " + unit : string.Empty) : null;
 
     public ValueQuality Quality => _value?.Quality ?? ValueQuality.Bad;
 
@@ -70,9 +62,8 @@ public sealed partial class MemoryCellViewModel : ObservableObject
     /// <summary>A value was read (good, or stale and kept); false before the first read.</summary>
     internal bool HasValue => _value is { HasValue: true };
 
-    public string ValueText => _value is { HasValue: true } value
-        ? ValueFormatter.Format(value.Raw.AsSpan(), Tag.Address.Width, Tag.Format)
-        : "-";
+    /// <summary>The value in the tag's format, scaled to its engineering units, with its unit ("55.2 %"); "-" when never read.</summary>
+    public string ValueText => _value is { HasValue: true } value ? TagValues.Format(Tag, value.Raw.AsSpan()) : "-";
 
     internal bool CanEdit => Writable && _owner.CanWrite();
 
@@ -88,10 +79,6 @@ public sealed partial class MemoryCellViewModel : ObservableObject
     [RelayCommand(CanExecute = nameof(CanCommitEdit))]
     private Task CommitEditAsync() => _owner.CommitAsync(this);
 
-    /// <summary>The format combo box's edit; never throws (the owner reports a failure on the status line).</summary>
-    [RelayCommand]
-    private Task ChangeFormatAsync(DisplayFormat format) => _owner.ChangeFormatAsync(this, format);
-
     private bool CanBeginEdit() => CanEdit && !IsEditing;
 
     private bool CanCommitEdit() => IsEditing && !IsWriting;
@@ -106,7 +93,9 @@ public sealed partial class MemoryCellViewModel : ObservableObject
     [RelayCommand(CanExecute = nameof(CanBeginEdit))]
     private void BeginEdit()
     {
-        EditText = ValueText == "-" ? string.Empty : ValueText;
+        EditText = _value is { HasValue: true } value && Tag.Unit is { } unit && ValueText.EndsWith(" " + unit, StringComparison.Ordinal)
+            ? ValueText[..^(unit.Length + 1)]
+            : ValueText == "-" ? string.Empty : ValueText;
         EditError = null;
         IsEditing = true;
     }

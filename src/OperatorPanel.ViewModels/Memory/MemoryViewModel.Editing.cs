@@ -1,17 +1,17 @@
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Values;
 using OperatorPanel.Core.Writes;
 using OperatorPanel.ViewModels.Session;
 
 namespace OperatorPanel.ViewModels.Memory;
 
-/// <summary>Writing a cell's typed value, and changing its display format.</summary>
+/// <summary>Writing a cell's typed value, in the cell's units and inside its range.</summary>
 public sealed partial class MemoryViewModel
 {
     /// <summary>
-    /// Checks the typed text for the cell's type (ValueParser) and address for the station's CPU (AddressRules), then
-    /// writes it; a bad value is refused with a message and nothing goes on the wire. The bus logs the write.
+    /// Checks the typed text in the cell's units against its type and range (TagValues: RecipeNumber takes 1..8) and the
+    /// address for the station's CPU (AddressRules), then writes it; a bad value is refused with a message and nothing
+    /// goes on the wire. The bus logs the write and puts it on record.
     /// </summary>
     internal async Task CommitAsync(MemoryCellViewModel cell)
     {
@@ -22,7 +22,7 @@ public sealed partial class MemoryViewModel
             return;
         }
 
-        if (!ValueParser.TryParse(cell.EditText, address, cell.Format, out var bytes, out var valueError))
+        if (!TagValues.TryParse(cell.Tag, cell.EditText, out var bytes, out var valueError))
         {
             Refuse(cell, valueError.Message);
             return;
@@ -34,7 +34,7 @@ public sealed partial class MemoryViewModel
             return;
         }
 
-        var newValue = ValueFormatter.Format(bytes.AsSpan(), address.Width, cell.Format);
+        var newValue = TagValues.Format(cell.Tag, bytes.AsSpan());
         var current = cell.HasValue ? cell.ValueText : null;
         if (_options.ConfirmWrites && !await _dialogs.ConfirmAsync("Write memory", WriteMessages.Question(address, cell.Symbol, current, cell.Quality, newValue)))
         {
@@ -72,27 +72,6 @@ public sealed partial class MemoryViewModel
         else
         {
             _session.StatusLine.ShowError(status);
-        }
-    }
-
-    /// <summary>Edits the project: the cell shows its value in <paramref name="format"/> from now on (never throws).</summary>
-    internal async Task ChangeFormatAsync(MemoryCellViewModel cell, DisplayFormat format)
-    {
-        if (!format.Fits(cell.PlcAddress.Width))
-        {
-            _session.StatusLine.ShowError($"{cell.Address}: {format} does not fit a {cell.WidthText}");
-            return;
-        }
-
-        var tags = cell.Station.Tags.Replace(cell.Tag, cell.Tag with { Format = format });
-        try
-        {
-            await ApplyEditAsync(ProjectEdits.WithTags(_session.Project, cell.Station.Address, tags), (cell.Station.Address, cell.Symbol), _session.StatusLine.ShowError);
-        }
-        catch (Exception exception) when (exception is not OutOfMemoryException)
-        {
-            _logger.Error(exception, "Changing the format of {Address} failed", cell.Address);
-            _session.StatusLine.ShowError($"{cell.Address}: the format could not be changed: {exception.Message}");
         }
     }
 

@@ -25,6 +25,12 @@ public sealed partial class PanelSession : IAsyncDisposable
         OnPropertyChanged(nameof(IsConnected));
         // "Polling", not "connected": whether each station answers is the station's own state beside this line.
         StatusLine.Show($"Polling {string.Join(", ", Project.Stations.Select(s => s.Name))} on {string.Join(", ", _line.PortNames)}");
+        if (_line.ResolvedAtConnect is [var first, ..] cutShort)
+        {
+            // An earlier program was killed with a write on the wire: the operator learns what it did (the log has each).
+            StatusLine.ShowError(cutShort.Count == 1 ? first.Describe() : $"{cutShort.Count} writes cut short earlier were settled at start (see the log); the first: {first.Describe()}");
+        }
+
         await IdentifyAsync(cancellationToken);
     }
 

@@ -1,5 +1,6 @@
 using System.Collections.ObjectModel;
 using CommunityToolkit.Mvvm.ComponentModel;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
@@ -24,7 +25,15 @@ public sealed partial class PanelSession : ObservableObject
 {
     private readonly ProjectLine _line;
 
-    public PanelSession(PanelProject project, IUiDispatcher dispatcher, TimeProvider? time = null, ILogger? logger = null)
+    /// <param name="project">The project to open.</param>
+    /// <param name="dispatcher">Where value callbacks run (the UI thread).</param>
+    /// <param name="time">The clock.</param>
+    /// <param name="logger">The panel's log.</param>
+    /// <param name="journal">
+    /// The write journal (WriteJournal.In the panel's log folder, shared with opanel): every write and STOP goes on record
+    /// before it is sent, and connecting settles the writes an earlier program left cut short. Null keeps no journal (tests).
+    /// </param>
+    public PanelSession(PanelProject project, IUiDispatcher dispatcher, TimeProvider? time = null, ILogger? logger = null, WriteJournal? journal = null)
     {
         ArgumentNullException.ThrowIfNull(project);
         ArgumentNullException.ThrowIfNull(dispatcher);
@@ -32,6 +41,7 @@ public sealed partial class PanelSession : ObservableObject
         {
             LinkOptionsFor = serial => LinkOptionsFor(serial),
             Deliver = dispatcher.Post,
+            Journal = journal,
         };
         _line = new ProjectLine(project, options, time ?? TimeProvider.System, (logger ?? Logger.None).ForContext<PanelSession>());
         _line.StateChanged += (_, _) => UpdateStations();

@@ -27,10 +27,11 @@ public sealed partial class ShellViewModel : IDisposable
     /// <summary>An alarm is active or waits for acknowledgement: the banner and the status bar show it in colour.</summary>
     public bool HasPendingAlarms => ActiveAlarmCount > 0 || UnacknowledgedAlarmCount > 0;
 
-    /// <summary>For the banner and the status bar: "2 active, 1 unacknowledged", or "no alarms".</summary>
-    public string AlarmSummary => ActiveAlarmCount == 0 && UnacknowledgedAlarmCount == 0
-        ? "no alarms"
-        : $"{ActiveAlarmCount} active, {UnacknowledgedAlarmCount} unacknowledged";
+    /// <summary>For the status bar: "2 active, 1 unacknowledged", "no alarms", or "alarms unknown" (AlarmsViewModel.ShortSummary).</summary>
+    public string AlarmSummary => Alarms.ShortSummary;
+
+    /// <summary>For the banner: <see cref="AlarmSummary"/> naming the stations whose alarms are unknown ("alarms unknown: Filler offline").</summary>
+    public string AlarmBannerText => Alarms.BannerText;
 
     public void Dispose()
     {
@@ -43,7 +44,7 @@ public sealed partial class ShellViewModel : IDisposable
     private AlarmsViewModel CreateAlarms(PanelProject project, string? path)
     {
         (_alarmsProject, _alarmsPath) = (project, path);
-        var alarms = new AlarmsViewModel(project, path, Session.Values, _time, _services.Files);
+        var alarms = new AlarmsViewModel(project, path, Session.Values, _time, _services.Files, Session.Stations);
         alarms.PropertyChanged += OnAlarmsChanged;
         return alarms;
     }
@@ -72,7 +73,7 @@ public sealed partial class ShellViewModel : IDisposable
 
     private void OnAlarmsChanged(object? sender, PropertyChangedEventArgs e)
     {
-        if (e.PropertyName is nameof(AlarmsViewModel.ActiveCount) or nameof(AlarmsViewModel.UnacknowledgedCount))
+        if (e.PropertyName is nameof(AlarmsViewModel.ActiveCount) or nameof(AlarmsViewModel.UnacknowledgedCount) or nameof(AlarmsViewModel.ShortSummary))
         {
             NotifyAlarmCounts();
         }
@@ -84,5 +85,6 @@ public sealed partial class ShellViewModel : IDisposable
         OnPropertyChanged(nameof(UnacknowledgedAlarmCount));
         OnPropertyChanged(nameof(HasPendingAlarms));
         OnPropertyChanged(nameof(AlarmSummary));
+        OnPropertyChanged(nameof(AlarmBannerText));
     }
 }

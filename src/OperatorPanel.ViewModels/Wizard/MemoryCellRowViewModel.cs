@@ -4,8 +4,10 @@ using OperatorPanel.Core.Projects;
 namespace OperatorPanel.ViewModels.Wizard;
 
 /// <summary>
-/// A memory cell being edited: symbol, address, display format, writable, comment. When a new address does not fit the
-/// chosen format (VW100 shown as Bool), the format falls back to the address's default, as the project file does.
+/// A memory cell being edited: symbol, address, display format, writable, comment, and as an HMI has them a unit, a
+/// linear scale ("0..1000 -> 0..100") and the range the operator may write ("1..8"), typed as text and checked by the
+/// step (TagScale, TagRange, TagRules). When a new address does not fit the chosen format (VW100 shown as Bool), the
+/// format falls back to the address's default, as the project file does.
 /// </summary>
 public sealed class MemoryCellRowViewModel : WizardRowViewModel
 {
@@ -14,6 +16,9 @@ public sealed class MemoryCellRowViewModel : WizardRowViewModel
     private DisplayFormat _format;
     private bool _writable;
     private string _description;
+    private string _unit = string.Empty;
+    private string _scale = string.Empty;
+    private string _range = string.Empty;
 
     public MemoryCellRowViewModel(string symbol = "", string address = "", DisplayFormat format = DisplayFormat.Unsigned, bool writable = false, string description = "")
     {
@@ -23,6 +28,7 @@ public sealed class MemoryCellRowViewModel : WizardRowViewModel
     internal MemoryCellRowViewModel(ProjectTag tag)
         : this(tag.Symbol, tag.Address.ToString(), tag.Format, tag.Writable, tag.Description)
     {
+        (_unit, _scale, _range) = (tag.Unit ?? string.Empty, tag.Scale?.ToString() ?? string.Empty, tag.Range?.ToString() ?? string.Empty);
     }
 
     /// <summary>Every format; the ones that fit the address are <see cref="FittingFormats"/>.</summary>
@@ -53,4 +59,13 @@ public sealed class MemoryCellRowViewModel : WizardRowViewModel
     public bool Writable { get => _writable; set => Edit(ref _writable, value); }
 
     public string Description { get => _description; set => Edit(ref _description, value ?? string.Empty); }
+
+    /// <summary>Shown after the value ("%", "ml"); empty for none.</summary>
+    public string Unit { get => _unit; set => Edit(ref _unit, value ?? string.Empty); }
+
+    /// <summary>"0..1000 -> 0..100": raw PLC number to the value shown (numbers only); empty for none.</summary>
+    public string Scale { get => _scale; set => Edit(ref _scale, value ?? string.Empty); }
+
+    /// <summary>"1..8", "0..", "..100": what the operator may write, in the shown units; empty for no limit but the width's.</summary>
+    public string Range { get => _range; set => Edit(ref _range, value ?? string.Empty); }
 }

@@ -3,6 +3,7 @@ using System.Collections.ObjectModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
@@ -48,8 +49,22 @@ public sealed partial class MemoryCellsStepViewModel : WizardStepViewModel
 
     private int IndexOf(MemoryCellRowViewModel? row) => row is null ? -1 : Cells.IndexOf(row);
 
-    internal ImmutableArray<ProjectTag> Build() =>
-        [.. Cells.Select(r => new ProjectTag(r.Symbol.Trim(), PlcAddress.Parse(r.Address.Trim()), r.Format, r.Writable, r.Description.Trim()))];
+    internal ImmutableArray<ProjectTag> Build() => [.. Cells.Select(r => Tag(r, PlcAddress.Parse(r.Address.Trim()), out _)!)];
+
+    /// <summary>The row's tag with unit, scale and range; null with the reason when one of them is not written right.</summary>
+    private static ProjectTag? Tag(MemoryCellRowViewModel row, PlcAddress address, out string? error)
+    {
+        var tag = new ProjectTag(row.Symbol.Trim(), address, row.Format, row.Writable, row.Description.Trim());
+        if (!TagScale.TryParse(row.Scale, out var scale, out error) || !TagRange.TryParse(row.Range, out var range, out error))
+        {
+            return null;
+        }
+
+        var unit = row.Unit.Trim();
+        tag = tag with { Unit = unit.Length == 0 ? null : unit, Scale = scale, Range = range };
+        error = TagRules.Problem(tag)?.Message;
+        return error is null ? tag : null;
+    }
 
     internal override IEnumerable<string> Check(WizardContext context)
     {
@@ -61,6 +76,11 @@ public sealed partial class MemoryCellsStepViewModel : WizardStepViewModel
             var use = row.Writable ? AddressUse.Write : AddressUse.Read;
             var error = WizardAddress.Check(row.Address, context.Cpu, use, Served, out var address);
             error ??= row.Format.Fits(address.Width) ? null : $"{row.Format} cannot show {address}";
+            if (error is null)
+            {
+                Tag(row, address, out error);
+            }
+
             error ??= string.IsNullOrWhiteSpace(row.Symbol) ? "the symbol is empty" : null;
             error ??= symbols.Add(row.Symbol.Trim()) ? null : $"symbol '{row.Symbol.Trim()}' is already used";
             row.Error = error;
@@ -75,6 +95,5 @@ public sealed partial class MemoryCellsStepViewModel : WizardStepViewModel
         return problems;
     }
 
-    private static string? Served(PlcAddress address) =>
-        AddressRules.IsServedByLink(address.Area) ? null : $"{address}: the panel link serves only I, Q, M, V and SM";
+    private static string? Served(PlcAddress address) => LinkAreas.FreeportRefusal(address);
 }

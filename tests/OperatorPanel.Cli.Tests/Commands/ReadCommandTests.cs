@@ -32,7 +32,7 @@ public sealed class ReadCommandTests
 
     [Theory]
     [InlineData("VB99999", "byte number")]
-    [InlineData("AIW0", "serves only I, Q, M, V and SM")]
+    [InlineData("AIW0", "AIW0: the Freeport link reads only I, Q, M, V and SM: copy the analog value to V in the PLC program (MOVW AIW0, VW100)")]
     [InlineData("VB8192", "VB8192")]
     public void Read_BadAddress_ExitsOneWithTheMessage(string address, string message)
     {
@@ -96,7 +96,7 @@ public sealed class ReadCommandTests
         capper.ExitCode.Should().Be(0, capper.Error);
         capper.Out.Should().Be($"SMB6     144         16#90        good{Environment.NewLine}", "the demo simulates the project's CPU 226");
         filler.ExitCode.Should().Be(1);
-        filler.Error.Should().Be($"opanel: VB9000 is past the last V byte VB8191 of CPU 224{Environment.NewLine}");
+        filler.Error.Should().Be($"opanel: VB9000 is past the last V byte VB8191 of CPU 224; nothing read{Environment.NewLine}");
         neither.ExitCode.Should().Be(1);
         neither.Error.Should().Contain("the project has 2 stations (Filler (2), Capper (3)); choose one with --station");
     }
@@ -136,7 +136,7 @@ public sealed class ReadCommandTests
         var run = CliRunner.Run("read", address, "--demo");
 
         run.ExitCode.Should().Be(1);
-        run.Error.Should().Be(message + Environment.NewLine);
+        run.Error.Should().Be(message + "; nothing read" + Environment.NewLine);
     }
 
     [Fact]

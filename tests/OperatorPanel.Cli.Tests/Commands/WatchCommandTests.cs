@@ -30,8 +30,8 @@ public sealed class WatchCommandTests : IDisposable
         run.Out.Should().MatchRegex(@"link     requests \d+  replies [1-9]\d*  retries \d+  timeouts \d+  rtt avg \d+\.\d ms");
         run.Out.Should().MatchRegex(@"    IB0   ●[●○]{7}  I0\.0 EStopHealthy  I0\.1 StartButton"); // e-stop chain healthy in the demo
         run.Out.Should().MatchRegex(@"    QB1   [●○]{2}······  Q1\.0 Horn  Q1\.1 RejectPusher");
-        run.Out.Should().MatchRegex(@"    BottleCount      VD100 +[1-9]\d*  good"); // the 2 s warm-up counts a bottle or two
-        run.Out.Should().MatchRegex(@"    FillSetpoint     VD120 +\d+(\.\d+)?  good"); // REAL shown as a number
+        run.Out.Should().MatchRegex(@"    BottleCount      VD100 +[1-9]\d* bottles  good"); // the 2 s warm-up counts a bottle or two
+        run.Out.Should().MatchRegex(@"    FillSetpoint     VD120 +\d+(\.\d+)? ml  good"); // REAL shown as a number
         run.Out.Should().MatchRegex(@"    StatusWord       MW10 +2#\d{4}_\d{4}_\d{4}_\d{4}  good");
         run.Out.Should().MatchRegex(@"    M2\.2 +warning +Low product level in tank");
     }
@@ -102,6 +102,22 @@ public sealed class WatchCommandTests : IDisposable
         run.ExitCode.Should().Be(2);
         run.Out.Should().Contain("offline").And.Contain($"last error: station 2: serial port {port}: open failed").And.NotContain("PortUnavailable");
         run.Out.Should().MatchRegex(@"IB0   \?{8}");
+    }
+
+    [Fact]
+    public void Watch_PortMissingOnce_ShowsAlarmsUnknownNotNoneActive()
+    {
+        var file = Path.Combine(_folder, "line.opproj");
+        File.WriteAllText(file, File.ReadAllText(Sample).Replace("\"COM3\"", $"\"{Path.Combine(_folder, "no-such-port")}\"", StringComparison.Ordinal));
+
+        var text = CliRunner.Run("watch", file, "--once");
+        var json = CliRunner.Run("watch", file, "--once", "--json");
+
+        text.Out.Should().Contain("  alarms   unknown: Filler offline (8 of 8 flags not read)").And.NotContain("none active");
+        using var line = JsonDocument.Parse(json.Out);
+        var station = line.RootElement.GetProperty("stations")[0];
+        station.GetProperty("alarmsUnknown").GetInt32().Should().Be(8);
+        station.GetProperty("alarms").EnumerateArray().Select(a => a.GetProperty("state").GetString()).Should().AllBe("unknown").And.HaveCount(8);
     }
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);

@@ -1,6 +1,7 @@
 using OperatorPanel.Cli.Watch;
 using OperatorPanel.TestKit;
 using Serilog.Core;
+using Spectre.Console.Testing;
 
 namespace OperatorPanel.Cli.Tests.Watch;
 
@@ -37,9 +38,10 @@ public sealed class LiveOutputTests : IDisposable
     }
 
     [Fact]
-    public void CycleCompleted_Terminal_RedrawsInPlaceAtMostFiveTimesASecondAndShowsTheLastAtTheEnd()
+    public void CycleCompleted_Terminal_DrawsFramesInPlaceAtMostFiveTimesASecondAndShowsTheLastAtTheEnd()
     {
-        var output = new LiveOutput(Context(terminal: true), everyCycle: true, _time);
+        var frames = new List<string>();
+        var output = new LiveOutput(Context(terminal: true), everyCycle: true, _time, frame => frames.Add(Text(frame)), () => (80, 24));
 
         for (var i = 1; i <= 10; i++)
         {
@@ -49,13 +51,20 @@ public sealed class LiveOutputTests : IDisposable
 
         output.Finish(() => Snapshot(10));
 
-        Headers().Should().Equal("cycle 1", "cycle 5", "cycle 9", "cycle 10");
-        _out.ToString().Should().StartWith("\u001b[H\u001b[J");
+        frames.Select(f => f[f.IndexOf("cycle", StringComparison.Ordinal)..].Split("  ")[0]).Should().Equal("cycle 1", "cycle 5", "cycle 9", "cycle 10");
+        _out.ToString().Should().BeEmpty("the live display draws the frames, nothing is appended");
     }
 
     public void Dispose() => _out.Dispose();
 
     private CliContext Context(bool terminal) => new(_out, TextWriter.Null, Json: false, Logger.None) { IsTerminal = terminal };
+
+    private static string Text(Spectre.Console.Rendering.IRenderable frame)
+    {
+        var console = new TestConsole().Width(80);
+        console.Write(frame);
+        return console.Output;
+    }
 
     private static WatchSnapshot Snapshot(long cycle) => new("Line", "continuous", cycle, DateTimeOffset.UnixEpoch, []);
 

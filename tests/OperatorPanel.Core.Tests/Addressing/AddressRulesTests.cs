@@ -94,8 +94,8 @@ public sealed class AddressRulesTests
     [InlineData("SMW28", "SMB0-SMB29 are read-only")]
     [InlineData("SM0.7", "SMB0-SMB29 are read-only")]
     [InlineData("AIW0", "analog inputs are read-only")]
-    [InlineData("AQW0", "the panel link writes only Q, M, V and SMB30 and up")]
-    [InlineData("S0.0", "the panel link writes only Q, M, V and SMB30 and up")]
+    [InlineData("AQW0", "the Freeport link writes only Q, M, V and SMB30 and up")]
+    [InlineData("S0.0", "the Freeport link writes only Q, M, V and SMB30 and up")]
     public void Check_WriteToReadOnlyPlace_IsRefused(string text, string messagePart)
     {
         var error = AddressRules.Check(PlcAddress.Parse(text), CpuProfiles.For(CpuModel.Cpu224), AddressUse.Write);

@@ -118,17 +118,6 @@ public sealed class ProjectFileSyntaxTests
     }
 
     [Fact]
-    public void Load_MissingFile_ReportsAtFile()
-    {
-        using var folder = new TempFolder();
-
-        var problem = ProjectFile.Load(folder.File("nope.opproj")).Errors.Should().ContainSingle().Subject;
-
-        problem.Location.Should().Be("file");
-        problem.Message.Should().StartWith("cannot read the file: ");
-    }
-
-    [Fact]
     public void Load_BinaryGarbage_SaysItIsNotText()
     {
         using var folder = new TempFolder();

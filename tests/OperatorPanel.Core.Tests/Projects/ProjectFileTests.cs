@@ -34,7 +34,7 @@ public sealed class ProjectFileTests
             "I0.0", "I0.1", "I0.2", "I0.3", "I0.4", "I0.5", "I0.6", "I0.7", "I1.0", "I1.1", "I1.2", "I1.3", "I1.4", "I1.5");
         filler.Outputs.Select(o => o.Address.ToString()).Should().Equal(
             "Q0.0", "Q0.1", "Q0.2", "Q0.3", "Q0.4", "Q0.5", "Q0.6", "Q0.7", "Q1.0", "Q1.1");
-        filler.Tags.Should().ContainEquivalentOf(new ProjectTag("BottleCount", PlcAddress.Parse("VD100"), DisplayFormat.Unsigned, true, "Filled bottles counted at the outfeed; the operator may reset it"));
+        filler.Tags.Should().ContainEquivalentOf(new ProjectTag("BottleCount", PlcAddress.Parse("VD100"), DisplayFormat.Unsigned, true, "Filled bottles counted at the outfeed; the operator may reset it") { Unit = "bottles" });
         filler.Tags.Single(t => t.Symbol == "FillSetpoint").Format.Should().Be(DisplayFormat.Float);
         filler.Alarms.Select(a => a.Flag.ToString()).Should().Equal("M2.0", "M2.1", "M2.2", "M2.3", "M2.4", "M2.5", "M2.6", "M2.7");
         filler.Alarms[0].Should().Be(new AlarmDefinition(PlcAddress.Parse("M2.0"), "Emergency stop pressed", AlarmClass.Fault, true));

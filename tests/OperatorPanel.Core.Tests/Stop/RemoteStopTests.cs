@@ -134,6 +134,50 @@ public sealed class RemoteStopTests
         plc.Sent.Should().ContainSingle().Which.Should().BeOfType<IdentifyRequest>();
     }
 
+    [Fact]
+    public async Task Stop_WithAudit_IntentOnRecordBeforeStopLeavesOutcomeAfter()
+    {
+        var trail = new Audit.RecordingTrail();
+        var plc = new StoppablePlcLink(Two);
+        var recordedWhenSent = -1;
+        var audit = new Core.Audit.AuditContext(new SpyTrail(trail, () => recordedWhenSent = plc.Sent.OfType<StopRequest>().Count()), "COM9", "operator");
+
+        await new RemoteStop(plc, _log.CreateLogger(), audit).StopAsync(Two);
+
+        trail.Entries.Select(e => (e.Step, e.Action, e.OldValue, e.NewValue, e.Outcome)).Should().Equal(
+            (Core.Audit.AuditStep.Intent, Core.Audit.AuditAction.Stop, "RUN", "STOP", null),
+            (Core.Audit.AuditStep.Outcome, Core.Audit.AuditAction.Stop, "RUN", "STOP", "station 2 stopped: the port speaks PPI until someone sets RUN"));
+        recordedWhenSent.Should().Be(0, "the intent was on record before the STOP left");
+    }
+
+    [Fact]
+    public async Task Stop_IntentCannotBeRecorded_SendsNoStop()
+    {
+        var plc = new StoppablePlcLink(Two);
+        var audit = new Core.Audit.AuditContext(new Audit.RecordingTrail { Refuse = "the disk is full" }, "COM9", "operator");
+
+        var outcome = await new RemoteStop(plc, _log.CreateLogger(), audit).StopAsync(Two);
+
+        outcome.Should().Be(new StopOutcome.NotSent(Two, "it could not be put on record (the disk is full)"));
+        plc.Sent.OfType<StopRequest>().Should().BeEmpty();
+    }
+
+    /// <summary>Records into <paramref name="inner"/> and notes, at each record, how many STOPs had left.</summary>
+    private sealed class SpyTrail(Audit.RecordingTrail inner, Action onRecord) : Core.Audit.IAuditTrail
+    {
+        private int _calls;
+
+        public ValueTask<string?> RecordAsync(Core.Audit.AuditEntry entry, CancellationToken cancellationToken)
+        {
+            if (_calls++ == 0)
+            {
+                onRecord();
+            }
+
+            return inner.RecordAsync(entry, cancellationToken);
+        }
+    }
+
     private Task<StopOutcome> Stop(StoppablePlcLink plc) => new RemoteStop(plc, _log.CreateLogger()).StopAsync(Two);
 
     private List<(LogEventLevel Level, string Text)> Logged() =>

@@ -131,8 +131,8 @@ public sealed class PollingEngineWritesTests
     }
 
     [Theory]
-    [InlineData("IB0", "IB0: the panel link writes only Q, M, V and SM")]
-    [InlineData("SB0", "SB0: the panel link writes only Q, M, V and SM")]
+    [InlineData("IB0", "IB0: the Freeport link writes only Q, M, V and SM")]
+    [InlineData("SB0", "SB0: the Freeport link writes only Q, M, V and SM")]
     public async Task Write_AreaTheLinkNeverWrites_FailsWithoutSending(string address, string reason)
     {
         var engine = Engine(Items(One, "VB0"));

@@ -71,6 +71,43 @@ public sealed class SerialPortTransportTests
     }
 
     [Fact]
+    public async Task Open_PortAlreadyOpenHere_IsRefusedAndFreeAgainAfterClose()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        var first = await OpenAsync(pty.PathA);
+        await using var second = new SerialPortTransport(new SerialSettings { PortName = pty.PathA });
+
+        var failure = await second.Invoking(t => t.OpenAsync(default)).Should().ThrowAsync<PlcCommunicationException>();
+        failure.Which.Kind.Should().Be(PlcErrorKind.PortUnavailable);
+        failure.Which.Message.Should().Be($"serial port {pty.PathA} is already open in this program");
+
+        await first.DisposeAsync();
+        await using var third = await OpenAsync(pty.PathA);
+        third.IsOpen.Should().BeTrue();
+    }
+
+    [Fact]
+    public async Task Open_PortLockedByAnotherRunningProgram_IsRefusedNamingIt()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        var lockFile = PortLock.PathFor(pty.PathA, PortLock.DefaultFolder);
+        File.WriteAllText(lockFile, "         1\n");
+        try
+        {
+            await using var transport = new SerialPortTransport(new SerialSettings { PortName = pty.PathA });
+
+            var failure = await transport.Invoking(t => t.OpenAsync(default)).Should().ThrowAsync<PlcCommunicationException>();
+
+            failure.Which.Message.Should().StartWith($"serial port {pty.PathA} is in use by another program: ").And.Contain("(PID 1)");
+            File.Exists(lockFile).Should().BeTrue("the other program's lock stays");
+        }
+        finally
+        {
+            File.Delete(lockFile);
+        }
+    }
+
+    [Fact]
     public async Task Open_MissingDevice_FailsWithPortUnavailableNamingThePath()
     {
         var path = Path.Combine(Path.GetTempPath(), "opanel-missing-" + Guid.NewGuid().ToString("N"));

@@ -102,25 +102,12 @@ public sealed class MemoryViewModelTests : IAsyncDisposable
     }
 
     [Fact]
-    public void FormatChoices_ByWidth_OnlyFormatsThatFit()
+    public void Format_IsTheProjectsSetting_ShownWithUnitAndScaleAndNotChangeableHere()
     {
-        Speed.FormatChoices.Should().Equal(DisplayFormat.Unsigned, DisplayFormat.Signed, DisplayFormat.Hex, DisplayFormat.Binary, DisplayFormat.Ascii);
-        _memory.Cells.Single(c => c.Symbol == "Temperature").FormatChoices.Should().Contain(DisplayFormat.Float);
+        Speed.FormatText.Should().Be("signed");
         Speed.WidthText.Should().Be("word");
-    }
-
-    [Fact]
-    public async Task ChangeFormat_ToHex_ProjectEditedAndValueShownInHex()
-    {
-        await ConnectAndRefreshAsync();
-        _panel.Plc.Memory.WriteWord(ProtocolArea.V, 10, 0x0A3F);
-        await _panel.RefreshAsync();
-
-        await _memory.ChangeFormatAsync(Speed, DisplayFormat.Hex).Guarded();
-
-        Speed.Format.Should().Be(DisplayFormat.Hex);
-        Speed.ValueText.Should().Be("16#0A3F");
-        _changes.Should().Equal(ProjectChangeKind.Edited);
+        typeof(MemoryCellViewModel).GetProperty(nameof(MemoryCellViewModel.Format))!.CanWrite.Should().BeFalse("the operator does not change a cell's format in the live view");
+        typeof(MemoryCellViewModel).GetProperty("FormatChoices").Should().BeNull();
     }
 
     [Fact]

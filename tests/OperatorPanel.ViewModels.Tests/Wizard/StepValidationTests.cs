@@ -11,7 +11,7 @@ public sealed class StepValidationTests
     [InlineData("VW8191", false, "Cell 1 (VW8191): VW8191 ends at VB8192, past the last V byte VB8191 of CPU 224.")]
     [InlineData("SMB5", true, "Cell 1 (SMB5): SMB5: SMB0-SMB29 are read-only system status bytes.")]
     [InlineData("IB0", true, "Cell 1 (IB0): IB0: inputs are read from the field; the panel never writes them.")]
-    [InlineData("SB0", false, "Cell 1 (SB0): SB0: the panel link serves only I, Q, M, V and SM.")]
+    [InlineData("SB0", false, "Cell 1 (SB0): SB0: the Freeport link reads only I, Q, M, V and SM: copy the S bits to V in the PLC program (MOVB SB0, VB100) and watch that; a PPI link, once the panel has one, reads S bits directly.")]
     [InlineData("VW1O0", false, null)]
     public void MemoryCell_AddressRefused_NamesTheCellAndTheRule(string address, bool writable, string? message)
     {
@@ -26,6 +26,26 @@ public sealed class StepValidationTests
             wizard.Message.Should().StartWith("Cell 1 (VW1O0): ");
         }
         else
+        {
+            wizard.Message.Should().Be(message);
+        }
+    }
+
+    [Theory]
+    [InlineData("VB110", "1..8", "", "", null)]
+    [InlineData("VB110", "1..300", "", "", "Cell 1 (VB110): VB110: 300 is outside 0..255, the range of an unsigned byte (a signed byte takes -128..127).")]
+    [InlineData("VB110", "8..1", "", "", "Cell 1 (VB110): the range 8..1 ends below its start.")]
+    [InlineData("VW150", "", "0..1000 -> 0..100", "%", null)]
+    [InlineData("VW150", "", "0..1000", "%", "Cell 1 (VW150): '0..1000' is not a scale; write it as raw low..high -> value low..high, e.g. 0..1000 -> 0..100.")]
+    public void MemoryCell_RangeScaleAndUnit_CheckedAsTheProjectFileChecksThem(string address, string range, string scale, string unit, string? message)
+    {
+        var wizard = ProjectWizardViewModelTests.NewWizard();
+        wizard.CurrentIndex = 2;
+
+        wizard.MemoryStep.Cells.Add(new MemoryCellRowViewModel("Cell", address, DisplayFormat.Unsigned, writable: true) { Range = range, Scale = scale, Unit = unit });
+
+        wizard.NextCommand.CanExecute(null).Should().Be(message is null, wizard.Message);
+        if (message is not null)
         {
             wizard.Message.Should().Be(message);
         }
