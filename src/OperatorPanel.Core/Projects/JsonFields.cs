@@ -134,6 +134,35 @@ internal sealed class JsonFields
         return null;
     }
 
+    /// <summary>True when the object has the property (an optional object read only when present).</summary>
+    public bool Has(string name) => _values.ContainsKey(name);
+
+    /// <summary>A number, whole or not (a deadband of 0.5); optional, <paramref name="fallback"/> when missing.</summary>
+    public double? Number(string name, double fallback) =>
+        TryNullableNumber(name, out var value) ? value ?? fallback : null;
+
+    /// <summary>
+    /// An optional number that may also be written null (both mean "not set": <paramref name="value"/> null); false when
+    /// the property holds anything else, with the problem reported.
+    /// </summary>
+    public bool TryNullableNumber(string name, out double? value)
+    {
+        value = null;
+        if (!TryValue(name, required: false, out var element) || element.ValueKind == JsonValueKind.Null)
+        {
+            return true;
+        }
+
+        if (element.ValueKind != JsonValueKind.Number || !element.TryGetDouble(out var number) || !double.IsFinite(number))
+        {
+            Wrong(name, "a number", element);
+            return false;
+        }
+
+        value = number;
+        return true;
+    }
+
     /// <summary>A required nested object.</summary>
     public JsonFields? Object(string name) =>
         TryValue(name, required: true, out var value) ? Open(value, At(name), _problems) : null;

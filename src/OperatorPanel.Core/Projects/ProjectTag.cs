@@ -8,4 +8,16 @@ namespace OperatorPanel.Core.Projects;
 /// <param name="Format">How the value is shown; it fits the address width (see <see cref="DisplayFormats.Fits"/>).</param>
 /// <param name="Writable">True when the operator may write the cell; the address then passes AddressRules for writing.</param>
 /// <param name="Description">Free comment for the operator; may be empty.</param>
-public sealed record ProjectTag(string Symbol, PlcAddress Address, DisplayFormat Format, bool Writable, string Description);
+/// <remarks><see cref="Recorded"/> and <see cref="Deadband"/> ("record", "deadband") are init properties so the tags built in code keep their shape.</remarks>
+public sealed record ProjectTag(string Symbol, PlcAddress Address, DisplayFormat Format, bool Writable, string Description)
+{
+    /// <summary>The historian records the tag (the default); false leaves it out of the history.</summary>
+    public bool Recorded { get; init; } = true;
+
+    /// <summary>
+    /// The historian's deadband for this tag in the value's own units (as <see cref="Format"/> shows it): a change is
+    /// recorded when the value moves by more than this from the value last recorded. Null: the project's
+    /// <see cref="HistorySettings.DeadbandPercent"/>. Bits and codes (hex, binary, ASCII) record every change.
+    /// </summary>
+    public double? Deadband { get; init; }
+}

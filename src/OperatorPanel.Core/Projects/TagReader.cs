@@ -15,7 +15,7 @@ internal static class TagReader
 
     private static ProjectTag? Read(JsonFields entry, CpuProfile? cpu, EntryRegistry registry)
     {
-        entry.ReportUnknown("symbol", "address", "format", "writable", "description");
+        entry.ReportUnknown("symbol", "address", "format", "writable", "description", "record", "deadband");
         var symbol = registry.ClaimSymbol(entry);
         var writable = entry.Bool("writable", fallback: false);
         var use = writable == true ? AddressUse.Write : AddressUse.Read;
@@ -28,9 +28,17 @@ internal static class TagReader
         }
 
         var description = entry.String("description", string.Empty);
-        return symbol is null || address is null || format is null || writable is null || description is null
+        var recorded = entry.Bool("record", fallback: true);
+        var deadbandOk = entry.TryNullableNumber("deadband", out var deadband);
+        if (deadband is < 0)
+        {
+            entry.Problem("deadband", "a deadband cannot be negative; 0 records every change");
+            deadbandOk = false;
+        }
+
+        return symbol is null || address is null || format is null || writable is null || description is null || recorded is null || !deadbandOk
             ? null
-            : new ProjectTag(symbol, address.Value, format.Value, writable.Value, description);
+            : new ProjectTag(symbol, address.Value, format.Value, writable.Value, description) { Recorded = recorded.Value, Deadband = deadband };
     }
 
     private static string? Shape(PlcAddress address) => AddressRules.IsServedByLink(address.Area)
