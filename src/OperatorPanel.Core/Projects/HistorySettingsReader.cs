@@ -6,7 +6,7 @@ namespace OperatorPanel.Core.Projects;
 /// Reads the project's optional <c>history</c> object; a project without one records with <see cref="HistorySettings.Default"/>,
 /// so files written before the historian load unchanged.
 /// </summary>
-internal static class HistoryReader
+internal static class HistorySettingsReader
 {
     public static HistorySettings? Read(JsonFields project)
     {
