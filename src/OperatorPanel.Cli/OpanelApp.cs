@@ -1,6 +1,7 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Commands;
 using OperatorPanel.Cli.Logging;
+using OperatorPanel.Historian;
 using Serilog.Events;
 
 namespace OperatorPanel.Cli;
@@ -37,6 +38,8 @@ internal static class OpanelApp
         yield return IdentifyCommand.Create(context);
         yield return SimulateCommand.Create(context);
         yield return WatchCommand.Create(context);
+        yield return HistoryCommand.Create(context);
+        yield return TrendCommand.Create(context);
         yield return BenchCommand.Create(context);
         yield return GenerateCommand.Create(context);
         yield return StlCommand.Create(context);
@@ -44,7 +47,7 @@ internal static class OpanelApp
     }
 }
 
-/// <summary>Options every verb takes: --json, and the log levels and folder.</summary>
+/// <summary>Options every verb takes: --json, the log levels and folder, and the history folder.</summary>
 internal sealed class GlobalOptions
 {
     private readonly Option<bool> _json = new("--json") { Description = "Print machine-readable JSON on stdout", Recursive = true };
@@ -71,8 +74,15 @@ internal sealed class GlobalOptions
         Recursive = true,
     };
 
+    private readonly Option<string?> _historyDir = new("--history-dir")
+    {
+        Description = "Folder of the projects' history databases (default: OperatorPanel/history in the user's local application data folder)",
+        Recursive = true,
+    };
+
     public void AddTo(RootCommand root)
     {
+        root.Options.Add(_historyDir);
         root.Options.Add(_json);
         root.Options.Add(_logLevel);
         root.Options.Add(_consoleLevel);
@@ -85,6 +95,7 @@ internal sealed class GlobalOptions
         return new CliContext(output, error, parse.GetValue(_json), log)
         {
             IsTerminal = ReferenceEquals(output, Console.Out) && !Console.IsOutputRedirected,
+            History = parse.GetValue(_historyDir) is { } folder ? new HistoryFolder(folder) : HistoryFolder.Default,
         };
     }
 }

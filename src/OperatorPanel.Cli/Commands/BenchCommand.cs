@@ -6,7 +6,7 @@ using OperatorPanel.Core.Transport;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel bench link [--radio] [--scan-ms M] [--air-baud B] [--cycles N]</c> (and <c>bench stl</c>, <c>bench plan</c>):
+/// <c>opanel bench link [--radio] [--scan-ms M] [--air-baud B] [--cycles N]</c> (and <c>bench stl</c>, <c>bench plan</c>, <c>bench history</c>):
 /// the characters of a full refresh of the reference line against one item per request and the hex bound, the
 /// MODELLED time of a steady and an idle refresh on the PC/PPI cable or (--radio) the radio modules, the targets
 /// judged PASS/FAIL, then the round trip MEASURED over a socat pty; the text ends with one summary line.
@@ -26,6 +26,7 @@ internal static class BenchCommand
         command.Subcommands.Add(CreateLink(context));
         command.Subcommands.Add(StlBenchCommand.Create(context));
         command.Subcommands.Add(PlanBenchCommand.Create(context));
+        command.Subcommands.Add(HistoryBenchCommand.Create(context));
         return command;
     }
 

@@ -9,7 +9,8 @@ namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
 /// <c>opanel watch PROJECT [--demo]</c>: the project's stations live in the terminal, over the project's serial ports or
-/// an in-process demo line that simulates every station with its own CPU and the demo process.
+/// an in-process demo line that simulates every station with its own CPU and the demo process; every recorded value goes into the
+/// project's history database from the first cycle (the demo line's into a database of its own).
 /// </summary>
 internal static class WatchCommand
 {
@@ -28,6 +29,7 @@ internal static class WatchCommand
             "watch",
             "Show a project's stations live: link state and counters, inputs and outputs as lamps, tags, active alarms. "
             + "Redraws in place on a terminal; appends a snapshot per refresh (--once, --cycles) or per second elsewhere; --json prints JSON lines. "
+            + "Records the values into the project's history (the demo line's into its own) from the first cycle: opanel history prints it. "
             + "Exit codes: 0 done, 1 project problems or bad option, 2 every station offline at the end")
         {
             file, demo, model, once, cycles, duration,
@@ -49,18 +51,40 @@ internal static class WatchCommand
                 return cli.Fail(ExitCodes.BadInput, "--cycles and --duration must be positive");
             }
 
-            var (opened, openError) = await WatchSession.TryOpenAsync(load.Project, parse.GetValue(demo), parse.GetValue(model), cli.Log);
+            await using var historian = Historian.Historian.Open(cli.History.DatabaseFor(path, parse.GetValue(demo)), load.Project, TimeProvider.System, cli.Log, "opanel watch");
+            var (opened, openError) = await WatchSession.TryOpenAsync(load.Project, parse.GetValue(demo), parse.GetValue(model), cli.Log, historian);
             if (opened is null)
             {
                 return cli.Fail(ExitCodes.BadInput, openError ?? "the demo line did not start");
             }
 
-            await using var session = opened;
-            using var stop = new StopSignals(seconds is { } s ? TimeSpan.FromSeconds(s) : null);
-            var last = await RunAsync(cli, session, limit, stop.Token);
+            WatchSnapshot last;
+            await using (var session = opened)
+            {
+                using var stop = new StopSignals(seconds is { } s ? TimeSpan.FromSeconds(s) : null);
+                last = await RunAsync(cli, session, limit, stop.Token);
+            }
+
+            await historian.FlushAsync();
+            ReportHistory(cli, historian);
             return last.AllOffline ? ExitCodes.LinkFailure : ExitCodes.Ok;
         });
         return command;
+    }
+
+    /// <summary>Where the values went: one line after the text view (the JSON stream stays one object per line), and the log.</summary>
+    private static void ReportHistory(CliContext cli, Historian.Historian historian)
+    {
+        if (historian.Problem is { } problem)
+        {
+            cli.Error.WriteLine($"opanel: history not recorded: {problem}");
+        }
+        else if (!cli.Json)
+        {
+            cli.Out.WriteLine($"history: {historian.Written} rows recorded into {historian.DatabasePath} (opanel history --project ... prints them)");
+        }
+
+        cli.Log.Information("Watch recorded {Rows} history rows into {Path}", historian.Written, historian.DatabasePath);
     }
 
     private static async Task<WatchSnapshot> RunAsync(CliContext cli, WatchSession session, int? limit, CancellationToken stop)

@@ -23,6 +23,7 @@ internal sealed class WatchSession : IAsyncDisposable
     private readonly CancellationTokenSource _closing = new();
     private readonly ConcurrentDictionary<Station, string> _handlerChecks = new();
     private Task _identifying = Task.CompletedTask;
+    private IDisposable? _recording;
 
     private WatchSession(ProjectLine line) => Line = line;
 
@@ -36,8 +37,11 @@ internal sealed class WatchSession : IAsyncDisposable
     /// </summary>
     public string? HandlerCheckOf(Station station) => _handlerChecks.TryGetValue(station, out var check) ? check : null;
 
-    /// <summary>Opens every bus; false with the reason (and nothing left running) when a demo line cannot start.</summary>
-    public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(PanelProject project, bool demo, SimulationModel model, ILogger log)
+    /// <summary>
+    /// Opens every bus; false with the reason (and nothing left running) when a demo line cannot start. With a
+    /// <paramref name="historian"/> the line's values are recorded from before the first cycle.
+    /// </summary>
+    public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(PanelProject project, bool demo, SimulationModel model, ILogger log, Historian.Historian? historian = null)
     {
         ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector();
         var options = new ProjectLineOptions
@@ -47,16 +51,18 @@ internal sealed class WatchSession : IAsyncDisposable
             UseReadLists = project.Refresh.Mode == RefreshMode.Continuous,
         };
         var line = new ProjectLine(project, options, TimeProvider.System, log);
+        var recording = historian?.RecordLine(project, line, line.StatusOf);
         try
         {
             await line.ConnectAsync(connector);
         }
         catch (InvalidOperationException ex) when (demo)
         {
+            recording?.Dispose();
             return (null, ex.Message);
         }
 
-        var session = new WatchSession(line);
+        var session = new WatchSession(line) { _recording = recording };
         session._identifying = session.IdentifyEveryStationAsync(log, session._closing.Token);
         return (session, null);
     }
@@ -79,6 +85,7 @@ internal sealed class WatchSession : IAsyncDisposable
         }
 
         _closing.Dispose();
+        _recording?.Dispose();
         await Line.DisposeAsync();
     }
 
