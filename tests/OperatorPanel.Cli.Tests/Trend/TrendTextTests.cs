@@ -32,6 +32,6 @@ public sealed class TrendTextTests
         var rows = TrendText.Draw([(0d, 0d), null, (100d, 100d)], 2, out var min, out var max);
 
         (min, max).Should().Be((0, 100));
-        rows.Should().Equal("  █", "▁· ", "a value is drawn where it is, not filled from below");
+        rows.Should().Equal(["  █", "▁· "], "a value is drawn where it is, not filled from below");
     }
 }
