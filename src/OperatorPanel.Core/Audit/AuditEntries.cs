@@ -42,6 +42,13 @@ public static class AuditEntries
         return intent with { At = at, Phase = AuditPhase.Outcome, Outcome = word, Detail = detail };
     }
 
+    /// <summary>The caller withdrew the write while it was still queued: nothing was sent (Core/Writes/PendingWrite).</summary>
+    public static AuditEntry Withdrawn(AuditEntry intent, DateTimeOffset at)
+    {
+        ArgumentNullException.ThrowIfNull(intent);
+        return intent with { At = at, Phase = AuditPhase.Outcome, Outcome = "withdrawn", Detail = "cancelled before it was sent; nothing written" };
+    }
+
     public static AuditEntry StopIntent(long operation, DateTimeOffset at, Addressing.Station station, string user) =>
         new(at, operation, AuditAction.Stop, AuditPhase.Intent, station, null, "RUN", "STOP", null, string.Empty, user);
 

@@ -1,65 +1,91 @@
 using System.Collections.ObjectModel;
-using System.Text;
 using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Services;
+using OperatorPanel.Historian.Journal;
+using OperatorPanel.Historian.Storage;
 
 namespace OperatorPanel.ViewModels.Alarms;
 
 /// <summary>
 /// The alarm window ("PLC messages", seed 000 §7): every alarm of the project with its state and times, acknowledge one or
-/// all, the history of every transition (kept in <see cref="AlarmHistoryFile"/> when the project has a path) and its CSV
-/// export. <see cref="ActiveCount"/> and <see cref="UnacknowledgedCount"/> feed the shell's status bar, window shown or not.
-/// Each alarm's flag is subscribed on the line like any other value, so a flag change arrives on the UI thread.
+/// all, the alarm journal (<see cref="Journal"/>: every transition, kept in the project's history database when it has
+/// one, searched, exported and printed there) and the alarm sound (<see cref="Annunciator"/>). <see cref="ActiveCount"/>
+/// and <see cref="UnacknowledgedCount"/> feed the shell's status bar, window shown or not. Each alarm's flag is subscribed
+/// on the line like any other value, so a flag change arrives on the UI thread; <see cref="StartAsync"/> first takes up
+/// where the journal left off (an alarm unacknowledged at the last shutdown waits again), then subscribes.
 /// The list is kept in <see cref="AlarmOrder"/>, pending alarms first; the view reports which rows it shows
 /// (<see cref="ShowVisibleRows"/>) and <see cref="HiddenPendingText"/> counts the pending ones out of view.
 /// </summary>
 public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 {
     private readonly AlarmTracker _tracker;
-    private readonly AlarmHistoryFile? _historyFile;
-    private readonly IFileDialogService _files;
-    private readonly string _projectName;
+    private readonly AlarmJournal? _journal;
+    private readonly ILineValues _values;
+    private readonly string _user;
     private readonly List<IDisposable> _subscriptions = [];
     private readonly AlarmRowViewModel[] _projectRows;
     private (int First, int Count)? _visibleRows;
+    private bool _disposed;
 
     /// <param name="project">The project whose alarms are tracked.</param>
-    /// <param name="projectPath">The project file, or null for a project not saved yet (history kept in memory only).</param>
+    /// <param name="journal">The project's alarm journal (its history database), or null for a project never saved (kept in memory only).</param>
     /// <param name="values">The line's values (PanelSession.Values); callbacks come on the UI thread.</param>
     /// <param name="time">Times raised, cleared and acknowledged; its local zone for display.</param>
-    /// <param name="files">The save dialog of the CSV export.</param>
-    public AlarmsViewModel(PanelProject project, string? projectPath, ILineValues values, TimeProvider time, IFileDialogService files)
+    /// <param name="services">Dialogs, the sound, the print page's folder, and who acknowledges.</param>
+    public AlarmsViewModel(PanelProject project, AlarmJournal? journal, ILineValues values, TimeProvider time, AlarmServices services)
     {
         ArgumentNullException.ThrowIfNull(project);
         ArgumentNullException.ThrowIfNull(values);
         ArgumentNullException.ThrowIfNull(time);
-        ArgumentNullException.ThrowIfNull(files);
-        (_files, _projectName) = (files, project.Name);
+        ArgumentNullException.ThrowIfNull(services);
+        (_journal, _values, _user) = (journal, values, services.User);
         _tracker = new AlarmTracker(project, time);
-        if (projectPath is not null)
-        {
-            _historyFile = new AlarmHistoryFile(AlarmHistoryFile.PathFor(projectPath), time);
-            var load = _historyFile.Load();
-            _tracker.Restore(load.Events);
-            History = new ObservableCollection<AlarmEvent>(load.Events);
-            Message = load.Message;
-        }
-        else
-        {
-            History = [];
-        }
-
+        Journal = new AlarmJournalViewModel(project, journal, time, services.Files, services.Documents, services.PrintFolder);
+        Annunciator = new AlarmAnnunciator(services.Sound, time, project.AlarmSound);
         _projectRows = [.. _tracker.Alarms.Select(a => new AlarmRowViewModel(a, time.LocalTimeZone))];
         Rows = new ObservableCollection<AlarmRowViewModel>(Ordered());
         UpdateCounts();
+    }
+
+    /// <summary>The journal: search, CSV export, print.</summary>
+    public AlarmJournalViewModel Journal { get; }
+
+    /// <summary>The alarm sound and its Silence command.</summary>
+    public AlarmAnnunciator Annunciator { get; }
+
+    /// <summary>
+    /// Takes up the journal's state (each alarm's entries since its last raise), shows the last day of the journal, then
+    /// listens to the flags. A journal that cannot be read is reported in <see cref="Message"/> and the alarms start clear.
+    /// </summary>
+    public async Task StartAsync()
+    {
+        if (_journal is not null)
+        {
+            try
+            {
+                _tracker.Restore(await _journal.SinceLastRaiseAsync());
+            }
+            catch (HistoryException failure)
+            {
+                Message = failure.Message;
+            }
+
+            RefreshRows();
+        }
+
+        await Journal.SearchCommand.ExecuteAsync(null);
+        if (_disposed)
+        {
+            return;
+        }
+
         foreach (var alarm in _tracker.Alarms)
         {
             var (station, flag) = (alarm.Station, alarm.Definition.Flag);
-            _subscriptions.Add(values.Subscribe(station, flag, value => Record(_tracker.Apply(station, flag, value) is { } entry ? [entry] : [])));
+            _subscriptions.Add(_values.Subscribe(station, flag, value => Record(_tracker.Apply(station, flag, value) is { } entry ? [entry] : [])));
         }
     }
 
@@ -91,9 +117,6 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     [ObservableProperty]
     public partial AlarmRowViewModel? FirstHiddenPending { get; private set; }
 
-    /// <summary>Every transition, oldest first, including those loaded from the history file.</summary>
-    public ObservableCollection<AlarmEvent> History { get; }
-
     [ObservableProperty]
     [NotifyPropertyChangedFor(nameof(Summary))]
     public partial int ActiveCount { get; private set; }
@@ -108,11 +131,16 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         ? "no alarms"
         : $"{ActiveCount} alarm{(ActiveCount == 1 ? string.Empty : "s")} active, {UnacknowledgedCount} unacknowledged";
 
-    /// <summary>The latest problem with the history file or the export, or the export's confirmation; null when none.</summary>
+    /// <summary>The latest problem reading the journal; null when none (the journal's own messages are in <see cref="Journal"/>).</summary>
     [ObservableProperty]
     public partial string? Message { get; private set; }
 
-    public void Dispose() => _subscriptions.ForEach(s => s.Dispose());
+    public void Dispose()
+    {
+        _disposed = true;
+        _subscriptions.ForEach(s => s.Dispose());
+        Annunciator.Dispose();
+    }
 
     /// <summary>
     /// The view shows the rows <paramref name="first"/> to <paramref name="first"/> + <paramref name="count"/> - 1 of
@@ -189,23 +217,24 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
             return;
         }
 
+        RefreshRows();
+        foreach (var entry in events)
+        {
+            // Who acknowledged: the panel's user; a raise or a clear is the PLC's doing.
+            var user = entry.Transition == AlarmTransition.Acknowledged ? _user : null;
+            _journal?.Append(entry, user);
+            Journal.Add(entry, user);
+        }
+    }
+
+    private void RefreshRows()
+    {
         for (var i = 0; i < _projectRows.Length; i++)
         {
             _projectRows[i].Update(_tracker.Alarms[i]);
         }
 
         Reorder();
-
-        foreach (var entry in events)
-        {
-            History.Add(entry);
-        }
-
-        if (_historyFile is not null && !_historyFile.TryAppend(events, out var error))
-        {
-            Message = error;
-        }
-
         UpdateCounts();
     }
 
@@ -218,29 +247,6 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         MorePendingText = pending > 1 ? $"and {pending - 1} more" : null;
         UpdateHiddenPending();
         AcknowledgeCommand.NotifyCanExecuteChanged();
-        ExportCsvCommand.NotifyCanExecuteChanged();
+        Annunciator.Update(_tracker.Alarms);
     }
-
-    [RelayCommand(CanExecute = nameof(HasHistory))]
-    private void ExportCsv()
-    {
-        var suggested = (string.IsNullOrWhiteSpace(_projectName) ? "alarms" : _projectName + " alarms") + ".csv";
-        if (_files.PickFileToSave("Export alarm history", "CSV files (*.csv)|*.csv", suggested) is not { } path)
-        {
-            return;
-        }
-
-        try
-        {
-            // UTF-8 with a byte-order mark: Excel on Windows reads alarm texts with accents correctly only then.
-            File.WriteAllText(path, AlarmCsv.Format(History), new UTF8Encoding(encoderShouldEmitUTF8Identifier: true));
-            Message = $"Exported {History.Count} history entries to {path}.";
-        }
-        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or NotSupportedException)
-        {
-            Message = $"The alarm history could not be exported to {path}: {ex.Message}";
-        }
-    }
-
-    private bool HasHistory() => History.Count > 0;
 }

@@ -1,5 +1,7 @@
 using System.Collections.ObjectModel;
 using CommunityToolkit.Mvvm.ComponentModel;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
@@ -55,6 +57,9 @@ public sealed partial class PanelSession : ObservableObject
     /// <summary>The project is replaced, edited or saved. Raised on the UI thread.</summary>
     public event EventHandler<ProjectChangedEventArgs>? ProjectChanged;
 
+    /// <summary>Where the session hands work to the UI thread; the shell's history reports problems through it too.</summary>
+    public IUiDispatcher Dispatcher => _dispatcher;
+
     /// <summary>The line's values: a row subscribes to its address and hears every change on the UI thread.</summary>
     public ILineValues Values => _line;
 
@@ -73,7 +78,16 @@ public sealed partial class PanelSession : ObservableObject
     [ObservableProperty]
     public partial bool IsReadOnly { get; set; }
 
-    /// <summary>Writes through the station's engine; the outcome is the PLC's read-back, never the request.</summary>
+    /// <summary>Where each write and STOP is recorded, intent before it is sent and outcome after (the project's history).</summary>
+    public IAuditTrail Audit { get; set; } = NoAuditTrail.Instance;
+
+    /// <summary>Who works the panel, as the audit and the alarm journal record it: the Windows user.</summary>
+    public string User { get; init; } = Environment.UserName;
+
+    /// <summary>
+    /// Writes through the station's engine; the outcome is the PLC's read-back, never the request. The audit gets the
+    /// intent (with the last polled value) before the write is queued, and the outcome after.
+    /// </summary>
     public async Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default)
     {
         ArgumentNullException.ThrowIfNull(request);
@@ -82,10 +96,27 @@ public sealed partial class PanelSession : ObservableObject
             return new WriteOutcome.Failed($"{request.Address}: read-only mode, nothing written", WriteFailureKind.InvalidRequest);
         }
 
-        var outcome = await _line.WriteAsync(request, cancellationToken);
+        _line.TryGetValue(request.Station, request.Address, out var old);
+        var intent = AuditEntries.WriteIntent(AuditEntries.NextOperation(), _time.GetUtcNow(), request, old.Raw, User);
+        Audit.Record(intent);
+        WriteOutcome outcome;
+        try
+        {
+            outcome = await _line.WriteAsync(request, cancellationToken);
+        }
+        catch (OperationCanceledException)
+        {
+            Audit.Record(AuditEntries.Withdrawn(intent, _time.GetUtcNow()));
+            throw;
+        }
+
+        Audit.Record(AuditEntries.WriteResult(intent, _time.GetUtcNow(), outcome));
         UpdateStations();
         return outcome;
     }
+
+    /// <summary>The station's polling status (no exchange: the engine's own state); null when not connected.</summary>
+    public StationStatus? StatusOf(Station station) => _line.StatusOf(station);
 
     /// <summary>Takes another project (new, opened, demo). Disconnect first: the old line belongs to the old project.</summary>
     public void Load(PanelProject project)

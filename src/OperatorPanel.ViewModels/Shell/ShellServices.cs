@@ -1,11 +1,12 @@
 using OperatorPanel.Core.Line;
+using OperatorPanel.Historian;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Wizard;
 
 namespace OperatorPanel.ViewModels.Shell;
 
-/// <summary>What the App gives the shell: its dialogs, the line connector (serial ports), the demo and the wizard.</summary>
+/// <summary>What the App gives the shell: its dialogs, the line connector (serial ports), the demo, the wizard, the history folder and the alarm sound.</summary>
 /// <param name="Dialogs">Questions and error messages.</param>
 /// <param name="Files">Open and save file pickers, and the folder picker of Generate PLC code.</param>
 /// <param name="Connector">Real serial ports for Connect.</param>
@@ -14,6 +15,10 @@ namespace OperatorPanel.ViewModels.Shell;
 /// <param name="Wizards">Shows the wizard window for Edit project; null disables the command.</param>
 /// <param name="ConnectionTester">The wizard's "test connection" (the shell guards it with <see cref="PortInUseGuard"/>).</param>
 /// <param name="Ports">The serial ports the wizard's link page offers.</param>
+/// <param name="History">Where the projects' history databases are; null: no history (tests that do not look at it).</param>
+/// <param name="Sound">The alarm tones; null: a silent panel.</param>
+/// <param name="Documents">Opens the alarm journal's print page.</param>
+/// <param name="PrintFolder">Where print pages are written; null: the temp folder.</param>
 public sealed record ShellServices(
     IDialogService Dialogs,
     IFileDialogService Files,
@@ -22,4 +27,8 @@ public sealed record ShellServices(
     INewProjectSource NewProjects,
     IWizardPresenter? Wizards = null,
     IConnectionTester? ConnectionTester = null,
-    ISerialPortCatalog? Ports = null);
+    ISerialPortCatalog? Ports = null,
+    HistoryFolder? History = null,
+    IAlarmSound? Sound = null,
+    IDocumentLauncher? Documents = null,
+    string? PrintFolder = null);

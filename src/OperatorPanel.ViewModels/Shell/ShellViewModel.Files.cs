@@ -23,6 +23,7 @@ public sealed partial class ShellViewModel
         }
 
         await Session.DisconnectAsync();
+        await History.DisposeAsync();
         return true;
     }
 

@@ -5,10 +5,12 @@ using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Alarms;
 using OperatorPanel.ViewModels.Diagnostics;
+using OperatorPanel.ViewModels.History;
 using OperatorPanel.ViewModels.Inputs;
 using OperatorPanel.ViewModels.Memory;
 using OperatorPanel.ViewModels.Outputs;
 using OperatorPanel.ViewModels.Session;
+using OperatorPanel.ViewModels.Trends;
 using Serilog;
 using Serilog.Core;
 
@@ -43,8 +45,10 @@ public sealed partial class ShellViewModel : ObservableObject
         Outputs = new OutputsViewModel(session, services.Dialogs, options, logger);
         Memory = new MemoryViewModel(session, services.Dialogs, options, logger);
         Diagnostics = new DiagnosticsViewModel(session, services.Dialogs);
-        AlarmsPane = new AlarmsPaneViewModel(CreateAlarms(session.Project, path: null));
-        Panes = [Inputs, Outputs, Memory, AlarmsPane, Diagnostics];
+        History = new ProjectHistory(session, services.History, session.Dispatcher, _time, _logger);
+        AlarmsPane = new AlarmsPaneViewModel(CreateAlarms(session.Project));
+        Trends = new TrendsViewModel(session, History, _time);
+        Panes = [Inputs, Outputs, Memory, AlarmsPane, Diagnostics, Trends];
         GenerateCodeCommand = new RelayCommand(OpenGenerateCode, () => HasProject);
         session.ProjectChanged += OnProjectChanged;
         session.PropertyChanged += OnSessionChanged;
@@ -65,7 +69,12 @@ public sealed partial class ShellViewModel : ObservableObject
 
     public DiagnosticsViewModel Diagnostics { get; }
 
-    /// <summary>The dockable panes, for the docking manager's items source: Inputs, Outputs, Memory, Alarms, Diagnostics.</summary>
+    /// <summary>The project's history database: recording, the journal, the audit (docs/historian.md).</summary>
+    public ProjectHistory History { get; }
+
+    public TrendsViewModel Trends { get; }
+
+    /// <summary>The dockable panes, for the docking manager's items source: Inputs, Outputs, Memory, Alarms, Diagnostics, Trends.</summary>
     public ObservableCollection<PaneViewModel> Panes { get; }
 
     public ObservableCollection<StationStatusViewModel> Stations => Session.Stations;
@@ -101,7 +110,9 @@ public sealed partial class ShellViewModel : ObservableObject
     private void OnProjectChanged(object? sender, ProjectChangedEventArgs e)
     {
         IsDirty = e.Kind == ProjectChangeKind.Edited;
+        History.Follow(e.Project, IsDemo ? _services.Demo?.SampleProjectPath : ProjectPath, IsDemo);
         RenewAlarms(e);
+        Trends.Follow(e.Project);
         SelectedStationIndex = Math.Clamp(SelectedStationIndex, 0, Math.Max(0, e.Project.Stations.Length - 1));
         OnPropertyChanged(nameof(HasProject));
         OnPropertyChanged(nameof(ProjectName));

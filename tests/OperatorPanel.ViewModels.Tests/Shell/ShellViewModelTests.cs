@@ -227,7 +227,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
         _shell.ConnectCommand.CanExecute(null).Should().BeFalse();
         _shell.DisconnectCommand.CanExecute(null).Should().BeTrue();
         _shell.RefreshNowCommand.CanExecute(null).Should().BeTrue();
-        _shell.Panes.Select(p => p.ContentId).Should().Equal("inputs", "outputs", "memory", "alarms", "diagnostics");
+        _shell.Panes.Select(p => p.ContentId).Should().Equal("inputs", "outputs", "memory", "alarms", "diagnostics", "trends");
     }
 
     public async ValueTask DisposeAsync()
