@@ -1,5 +1,6 @@
 using Microsoft.Data.Sqlite;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Historian.Storage;
@@ -39,6 +40,30 @@ public sealed class HistoryReader(string path)
             }
 
             return spans;
+        },
+        []);
+
+    /// <summary>The audit of writes and STOPs in the range, oldest first: each action's intent, then its outcome.</summary>
+    public IReadOnlyList<AuditEntry> Audit(DateTimeOffset from, DateTimeOffset to) => Run(
+        connection =>
+        {
+            using var command = Command(
+                connection,
+                "SELECT t, operation, action, phase, station, address, old_value, new_value, outcome, detail, user FROM audit WHERE t >= $from AND t <= $to ORDER BY id",
+                from,
+                to);
+            using var reader = command.ExecuteReader();
+            var entries = new List<AuditEntry>();
+            while (reader.Read())
+            {
+                var station = Station.TryCreate(reader.GetInt32(4), out var s, out _) ? s : throw new HistoryException(HistoryErrorKind.Corrupt, "a station in the audit");
+                PlcAddress? address = reader.IsDBNull(5) ? null : PlcAddress.Parse(reader.GetString(5));
+                entries.Add(new AuditEntry(
+                    HistoryTime.FromMs(reader.GetInt64(0)), reader.GetInt64(1), Words.Parse<AuditAction>(reader.GetString(2)), Words.Parse<AuditPhase>(reader.GetString(3)),
+                    station, address, reader.GetString(6), reader.GetString(7), reader.IsDBNull(8) ? null : reader.GetString(8), reader.GetString(9), reader.GetString(10)));
+            }
+
+            return entries;
         },
         []);
 

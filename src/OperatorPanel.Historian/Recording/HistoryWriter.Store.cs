@@ -31,7 +31,7 @@ internal sealed partial class HistoryWriter
             {
                 using var rows = new RowWriter(connection, transaction, _tagIds);
                 batch.Rows.ForEach(rows.Write);
-                MarkSession(connection, transaction, now, stopping);
+                MarkSession(connection, transaction, now, Earliest(batch), stopping);
                 transaction.Commit();
             }
 
@@ -49,6 +49,24 @@ internal sealed partial class HistoryWriter
             Fail(HistoryErrors.Translate(ex, Path), batch);
             return null;
         }
+    }
+
+    /// <summary>
+    /// The session started when the writer was made, or with an earlier row (a value read before recording began, handed
+    /// over with its read time), so the first rows are inside their own session.
+    /// </summary>
+    private long Earliest(Batch batch)
+    {
+        var earliest = _created;
+        foreach (var row in batch.Rows)
+        {
+            if (row is SampleRow sample && sample.At < earliest)
+            {
+                earliest = sample.At;
+            }
+        }
+
+        return HistoryTime.ToMs(earliest);
     }
 
     private SqliteConnection Open()
@@ -75,14 +93,15 @@ internal sealed partial class HistoryWriter
     /// The recording session: its row is made with the first transaction and its "last" moved on with every one, so a
     /// reader knows the recorder ran until then (a value holds between its rows only while it did); "ended" at a clean stop.
     /// </summary>
-    private void MarkSession(SqliteConnection connection, SqliteTransaction transaction, long now, bool stopping)
+    private void MarkSession(SqliteConnection connection, SqliteTransaction transaction, long now, long started, bool stopping)
     {
         using var command = connection.CreateCommand();
         command.Transaction = transaction;
         command.Parameters.AddWithValue("$now", now);
         if (_session is not { } id)
         {
-            command.CommandText = "INSERT INTO sessions (started, last, ended, source) VALUES ($now, $now, NULL, $source) RETURNING id";
+            command.CommandText = "INSERT INTO sessions (started, last, ended, source) VALUES ($started, $now, NULL, $source) RETURNING id";
+            command.Parameters.AddWithValue("$started", Math.Min(started, now));
             command.Parameters.AddWithValue("$source", _source);
             _session = Convert.ToInt64(command.ExecuteScalar(), System.Globalization.CultureInfo.InvariantCulture);
             id = _session.Value;

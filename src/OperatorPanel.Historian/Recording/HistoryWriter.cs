@@ -30,6 +30,7 @@ internal sealed partial class HistoryWriter : IAsyncDisposable
     private readonly HistoryRetention _retention;
     private readonly Task _loop;
     private readonly WriterTuning _tuning;
+    private readonly DateTimeOffset _created;
     private int _queued;
     private long _lost;
     private long _written;
@@ -41,6 +42,7 @@ internal sealed partial class HistoryWriter : IAsyncDisposable
         (Path, _time, _log, _source) = (path, time, log, source);
         _tuning = tuning ?? new WriterTuning();
         _retention = new HistoryRetention(settings, time);
+        _created = time.GetUtcNow();
         _loop = Task.Run(RunAsync);
     }
 

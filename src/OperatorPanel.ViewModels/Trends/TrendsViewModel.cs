@@ -28,7 +28,8 @@ public sealed partial class TrendsViewModel : PaneViewModel, IDisposable
     private readonly ProjectHistory _history;
     private readonly TimeProvider _time;
     private readonly ITimer _timer;
-    private bool _refreshing;
+    private Task _running = Task.CompletedTask;
+    private bool _again;
 
     public TrendsViewModel(PanelSession session, ProjectHistory history, TimeProvider time)
         : base("Trends", "trends")
@@ -94,16 +95,37 @@ public sealed partial class TrendsViewModel : PaneViewModel, IDisposable
         _ = RefreshAsync();
     }
 
-    /// <summary>Reads the window from the history and rebuilds <see cref="Plot"/>; live, the window first moves to now.</summary>
-    [RelayCommand]
-    public async Task RefreshAsync()
+    /// <summary>
+    /// Reads the window from the history and rebuilds <see cref="Plot"/>; live, the window first moves to now. A call while
+    /// one runs makes it run once more when done (the window or the picks changed meanwhile), and waits for that.
+    /// </summary>
+    public Task RefreshAsync()
     {
-        if (_refreshing)
+        if (!_running.IsCompleted)
         {
-            return;
+            _again = true;
+            return _running;
         }
 
-        _refreshing = true;
+        _running = RefreshUntilCurrentAsync();
+        return _running;
+    }
+
+    [RelayCommand]
+    private Task RefreshNowAsync() => RefreshAsync();
+
+    private async Task RefreshUntilCurrentAsync()
+    {
+        do
+        {
+            _again = false;
+            await RefreshOnceAsync();
+        }
+        while (_again);
+    }
+
+    private async Task RefreshOnceAsync()
+    {
         try
         {
             if (IsLive)
@@ -129,10 +151,6 @@ public sealed partial class TrendsViewModel : PaneViewModel, IDisposable
         catch (HistoryException failure)
         {
             Message = failure.Message;
-        }
-        finally
-        {
-            _refreshing = false;
         }
     }
 
