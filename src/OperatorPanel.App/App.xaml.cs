@@ -5,6 +5,7 @@ using Microsoft.Extensions.DependencyInjection;
 using OperatorPanel.App.Services;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Historian;
 using OperatorPanel.ViewModels.Docking;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
@@ -95,6 +96,7 @@ public partial class App : Application
         services.AddSingleton(new DockingViewModel(Path.Combine(UserFolder, "layout.json")));
         services.AddSingleton(sp => new PanelSession(
             ShellViewModel.NoProject, sp.GetRequiredService<IUiDispatcher>(), TimeProvider.System, sp.GetRequiredService<ILogger>()));
+        services.AddSingleton(sp => new WpfAlarmSound(sp.GetRequiredService<ILogger>()));
         services.AddSingleton(sp =>
         {
             var presenter = new WizardPresenter();
@@ -109,7 +111,11 @@ public partial class App : Application
                 new WizardProjectSource(presenter, new PortInUseGuard(tester, sp.GetRequiredService<PanelSession>()), ports),
                 presenter,
                 tester,
-                ports);
+                ports,
+                HistoryFolder.Default,
+                sp.GetRequiredService<WpfAlarmSound>(),
+                new ShellDocumentLauncher(),
+                Path.Combine(UserFolder, "print"));
         });
         services.AddSingleton(sp => new ShellViewModel(
             sp.GetRequiredService<PanelSession>(),

@@ -41,6 +41,10 @@ public partial class MainWindow : Window
         }
 
         Docking.Initialize(docking, CreateView, this);
+        // The Trends window redraws from the history every second only while it is shown.
+        var trends = docking[DockPaneId.Trends];
+        shell.Trends.IsVisible = trends.IsVisible;
+        trends.PropertyChanged += (_, e) => shell.Trends.IsVisible = e.PropertyName == nameof(DockPaneViewModel.IsVisible) ? trends.IsVisible : shell.Trends.IsVisible;
         shell.PropertyChanged += OnShellChanged;
 
         BindingOperations.SetBinding(ZoomTransform, ScaleTransform.ScaleXProperty, new Binding(nameof(DockingViewModel.Zoom)) { Source = docking });
@@ -105,6 +109,7 @@ public partial class MainWindow : Window
             DockPaneId.Memory => new MemoryView(),
             DockPaneId.Alarms => new AlarmsView(),
             DockPaneId.Diagnostics => new DiagnosticsView(),
+            DockPaneId.Trends => new TrendsView(),
         };
         view.SetBinding(DataContextProperty, new Binding(id.ToString()) { Source = _shell });
         return view;

@@ -9,7 +9,8 @@ public sealed record DockLayout(ImmutableArray<PaneLayout> Panes)
     public const double MinimumDockedSize = 80;
 
     /// <summary>
-    /// Inputs and Outputs side by side on the left and right, Memory in the centre, Alarms below, Diagnostics hidden. The
+    /// Inputs and Outputs side by side on the left and right, Memory in the centre with Trends as its second tab, Alarms
+    /// below, Diagnostics hidden. The
     /// Alarms pane is tall enough for the sample project's eight alarms (tool bar, header and eight rows of 32 DIP, tab; 376 seen in the panel under Wine);
     /// on a lower window <see cref="DockFit"/> shrinks it and the pending alarms stay on top.
     /// </summary>
@@ -20,6 +21,7 @@ public sealed record DockLayout(ImmutableArray<PaneLayout> Panes)
         new PaneLayout(DockPaneId.Memory, true, DockPlacement.Center, 300, FloatBounds.Default, 0),
         new PaneLayout(DockPaneId.Alarms, true, DockPlacement.Bottom, 376, FloatBounds.Default, 0),
         new PaneLayout(DockPaneId.Diagnostics, false, DockPlacement.Center, 300, FloatBounds.Default, 1),
+        new PaneLayout(DockPaneId.Trends, true, DockPlacement.Center, 300, FloatBounds.Default, 2),
     ]);
 
     /// <summary>

@@ -1,6 +1,6 @@
 namespace OperatorPanel.ViewModels.Docking;
 
-/// <summary>The panel's dockable windows (seed 000, section 7: Input, Output, Memory, Alarms; plus Diagnostics).</summary>
+/// <summary>The panel's dockable windows (seed 000, section 7: Input, Output, Memory, Alarms; plus Diagnostics and Trends).</summary>
 public enum DockPaneId
 {
     Inputs,
@@ -8,4 +8,5 @@ public enum DockPaneId
     Memory,
     Alarms,
     Diagnostics,
+    Trends,
 }

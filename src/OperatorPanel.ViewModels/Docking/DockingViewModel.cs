@@ -59,6 +59,7 @@ public sealed partial class DockingViewModel : ObservableObject
         DockPaneId.Memory => "Memory",
         DockPaneId.Alarms => "Alarms",
         DockPaneId.Diagnostics => "Diagnostics",
+        DockPaneId.Trends => "Trends",
     };
 
     /// <summary>Restores the layout saved for this user (default layout and a message when the file is unusable).</summary>

@@ -52,6 +52,14 @@ public sealed partial class ShellViewModel : ObservableObject
         GenerateCodeCommand = new RelayCommand(OpenGenerateCode, () => HasProject);
         session.ProjectChanged += OnProjectChanged;
         session.PropertyChanged += OnSessionChanged;
+        History.PropertyChanged += (_, e) =>
+        {
+            // Said once when it starts (the historian reports a problem once); the line goes on regardless.
+            if (e.PropertyName == nameof(ProjectHistory.Problem) && History.Problem is { } problem)
+            {
+                StatusLine.ShowError("History not recorded: " + problem);
+            }
+        };
     }
 
     /// <summary>A placeholder before any project is opened: no stations, nothing to poll.</summary>
