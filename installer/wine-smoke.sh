@@ -3,7 +3,8 @@
 #
 # In a throwaway Wine prefix under Xvfb: installs the MSI silently (building it with build.sh when none is given),
 # checks the installed files, registry, shortcut and file association, starts the installed panel with --demo and
-# waits until its log says it showed a live value change, screenshots it, closes it, opens a project the way a
+# waits until its log says it showed a live value change, screenshots it, closes it, starts it again with its Trends
+# window in front and screenshots a live demo trend drawn from the demo's history, closes it, opens a project the way a
 # double-click does (ShellExecute through the .opproj association), upgrades to a build with a higher version, checks
 # that the older MSI is then refused, uninstalls, and checks that nothing of the panel is left while the user's
 # project and logs are. Screenshots and logs go to artifacts/wine-smoke/. Exits non-zero naming the failed step.
@@ -237,6 +238,46 @@ begin "close the panel"
 close_panel
 wait_for 30 bash -c "! kill -0 $app_pid 2>/dev/null" || fail "the panel process $app_pid is still running after its log said closed"
 app_pid=""
+
+begin "start the panel again showing its Trends window"
+# The panel's own saved layout (DockLayoutStore's file) with the Trends tab first in the centre, as a user leaves it.
+layout="$profile_unix/AppData/Local/OperatorPanel/layout.json"
+pane() { printf '{"Id":"%s","IsVisible":%s,"Placement":"%s","DockedSize":%s,"Float":{"Left":120,"Top":120,"Width":480,"Height":360},"Order":%s}' "$@"; }
+{
+  printf '['
+  pane Inputs true Left 260 0; printf ','
+  pane Outputs true Right 260 0; printf ','
+  pane Memory true Center 300 1; printf ','
+  pane Alarms true Bottom 300 0; printf ','
+  pane Diagnostics false Center 300 2; printf ','
+  pane Trends true Center 300 0
+  printf ']'
+} >"$layout"
+trends_before=$(log_count "Trend drawn:")
+wine 'C:\Program Files\Operator Panel\OperatorPanel.exe' --demo >"$work/panel-trends.out" 2>&1 &
+app_pid=$!
+wait_for 240 log_count_above "Trend drawn:" "$trends_before" || fail "the Trends window drew no live trend within 240 s (app alive: $(app_alive && echo yes || echo no); $(tail -5 "$work/panel-trends.out"))"
+grep -h -F "Trend drawn:" "$logs"/*.log | tail -n 1
+
+begin "screenshot the live trend"
+# Redrawn every second from the demo's history: pictures until three in a row differ (the trend moves), at most 90 s.
+shot="$art/trends-demo.png"
+screenshot "$work/a.png"
+changes=0
+for _ in $(seq 1 30); do
+  sleep 3
+  screenshot "$work/b.png"
+  if cmp -s "$work/a.png" "$work/b.png"; then changes=0; else changes=$((changes + 1)); fi
+  mv "$work/b.png" "$work/a.png"
+  [ "$changes" -lt 2 ] || break
+done
+cp "$work/a.png" "$shot"
+[ "$changes" -ge 2 ] || fail "the Trends window did not change for 90 s after the log said it drew (see $shot)"
+[ "$(colours "$shot")" -gt 100 ] || fail "the Trends screenshot is nearly blank ($(colours "$shot") colours)"
+ls "$profile_unix/AppData/Local/OperatorPanel/history/"*-demo.history.db >/dev/null 2>&1 || fail "no demo history database in the user's history folder"
+close_panel
+app_pid=""
+rm -f "$layout"
 
 begin "open a project the way a double-click does"
 project_unix="$profile_unix/Documents/Smoke line.opproj"

@@ -39,6 +39,7 @@ public partial class App : Application
         var shell = _services.GetRequiredService<ShellViewModel>();
         _services.GetRequiredService<DockingViewModel>().Load();
         _services.GetRequiredService<LiveValueWitness>();
+        _services.GetRequiredService<TrendWitness>();
         var window = _services.GetRequiredService<MainWindow>();
         MainWindow = window;
         window.Closed += OnMainWindowClosed;
@@ -124,6 +125,7 @@ public partial class App : Application
             TimeProvider.System,
             sp.GetRequiredService<ILogger>()));
         services.AddSingleton(sp => new LiveValueWitness(sp.GetRequiredService<ShellViewModel>().Memory, Dispatcher, sp.GetRequiredService<ILogger>()));
+        services.AddSingleton(sp => new TrendWitness(sp.GetRequiredService<ShellViewModel>().Trends, Dispatcher, sp.GetRequiredService<ILogger>()));
         services.AddSingleton<MainWindow>();
         return services.BuildServiceProvider();
     }
