@@ -3,6 +3,7 @@ using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Historian;
+using OperatorPanel.Historian.Recording;
 using OperatorPanel.Historian.Storage;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
@@ -25,6 +26,7 @@ public sealed partial class ProjectHistory : ObservableObject, IAsyncDisposable
     private readonly ILogger _logger;
     private readonly List<Task> _closing = [];
     private IDisposable? _recording;
+    private IReadOnlyList<RecordedTag> _recorded = [];
 
     /// <param name="session">Its values are recorded; its audit trail is set here.</param>
     /// <param name="folder">Where the databases are; null: no history at all (tests that do not look at it).</param>
@@ -57,9 +59,16 @@ public sealed partial class ProjectHistory : ObservableObject, IAsyncDisposable
     public void Follow(PanelProject project, string? path, bool demo)
     {
         ArgumentNullException.ThrowIfNull(project);
+        var database = path is not null && _folder is not null ? _folder.DatabaseFor(path, demo) : null;
+        var tags = project.History.Enabled ? RecordedTag.Of(project) : [];
+        if (Current is { } same && same.DatabasePath == database && same.Settings == project.History && _recording is not null && tags.SequenceEqual(_recorded))
+        {
+            // Saved, or edited in what is not recorded (alarm texts, descriptions): the recording goes on as it is.
+            return;
+        }
+
         _recording?.Dispose();
         _recording = null;
-        var database = path is not null && _folder is not null ? _folder.DatabaseFor(path, demo) : null;
         if (Current is { } open && (open.DatabasePath != database || open.Settings != project.History))
         {
             Close(open);
@@ -75,6 +84,7 @@ public sealed partial class ProjectHistory : ObservableObject, IAsyncDisposable
 
         _session.Audit = Current?.Audit ?? NoAuditTrail.Instance;
         _recording = Current?.RecordLine(project, _session.Values, _session.StatusOf);
+        _recorded = tags;
         Problem = Current?.Problem;
     }
 
