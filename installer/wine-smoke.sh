@@ -3,11 +3,15 @@
 #
 # In a throwaway Wine prefix under Xvfb: installs the MSI silently (building it with build.sh when none is given),
 # checks the installed files, registry, shortcut and file association, starts the installed panel with --demo and
-# waits until its log says it showed a live value change, screenshots it, closes it, starts it again with its Trends
-# window in front and screenshots a live demo trend drawn from the demo's history, closes it, opens a project the way a
-# double-click does (ShellExecute through the .opproj association), upgrades to a build with a higher version, checks
-# that the older MSI is then refused, uninstalls, and checks that nothing of the panel is left while the user's
-# project and logs are. Screenshots and logs go to artifacts/wine-smoke/. Exits non-zero naming the failed step.
+# waits until its log says it showed a live value change, screenshots it, opens the project wizard and Generate PLC
+# code and screenshots them, floats a pane, closes the panel with the pane floating, starts it again and sees the
+# window and the floating pane, closes the floating pane with its own close button, starts it again with its Trends
+# pane in front and screenshots a live demo trend drawn from the demo's history, opens a project the way a
+# double-click does (ShellExecute through the .opproj association) over a corrupt layout file, upgrades to a build
+# with a higher version, checks that the older MSI is then refused, uninstalls, and checks that nothing of the panel is
+# left while the user's project and logs are. At every step the panel's log must hold no WPF binding error (the panel
+# routes WPF's binding trace into it) and no unhandled error, and no unexpected-error dialog may be open. Screenshots
+# and logs go to artifacts/wine-smoke/. Exits non-zero naming the failed step.
 #
 # Test-environment settings, never shipped: a font named "Arial" (Liberation Sans renamed; WPF fails fast without
 # one, dotnet/wpf#4464), DOTNET_EnableWriteXorExecute=0 (Wine 8 otherwise crashes the CLR within ~25 s), WPF's
@@ -198,6 +202,32 @@ screenshot() { /usr/bin/import -display "$DISPLAY" -window root "$1"; }
 colours() { /usr/bin/convert "$1" -format %k info:; }
 # A panel window is up when Wine has mapped a top-level window whose title names the panel.
 window_titled() { xdotool search --onlyvisible --name "$1" >/dev/null 2>&1; }
+# Every step ends with the panel healthy: no binding WPF could not resolve, no error the panel did not expect.
+panel_clean() {
+  local bindings
+  bindings=$(grep -hsF "WPF binding error" "$logs"/*.log | head -3 || true)
+  [ -z "$bindings" ] || fail "the panel's log has WPF binding errors: $bindings"
+  ! log_has "Unhandled error in the panel" || fail "the panel logged an unhandled error: $(grep -hF -A2 'Unhandled error in the panel' "$logs"/*.log | head -3)"
+  ! log_has "The panel could not start" || fail "the panel could not start: $(grep -hF -A2 'The panel could not start' "$logs"/*.log | head -3)"
+  ! window_titled "unexpected error" || fail "an unexpected-error dialog is open"
+}
+window_of() { xdotool search --onlyvisible --name "$1" 2>/dev/null | head -n 1; }
+# Keys to one window. Xvfb has no window manager and Wine gives keys to the window it holds active: with a floating
+# pane open that is the pane's window, whatever X focus says. activate_at clicks a harmless spot of a window first (a
+# click makes it Wine's active window); keys_to then sends the keys to the window itself.
+activate_at() {
+  xdotool mousemove "$1" "$2" click 1
+  sleep 1
+}
+keys_to() {
+  local id
+  id=$(window_of "$1")
+  [ -n "$id" ] || fail "no window titled '$1' to type into"
+  xdotool windowfocus "$id" 2>/dev/null || true
+  sleep 1
+  xdotool key --window "$id" --delay 150 "${@:2}" 2>/dev/null
+}
+window_gone() { ! window_titled "$1"; }
 close_panel() {
   local closed_before
   closed_before=$(log_count "Operator Panel closed")
@@ -232,31 +262,109 @@ done
 cp "$work/a.png" "$shot"
 [ "$changes" -ge 2 ] || fail "the screen did not change for 90 s after the log showed live values (see $shot)"
 [ "$(colours "$shot")" -gt 100 ] || fail "the screenshot is nearly blank ($(colours "$shot") colours)"
-window_titled 'Bottling line 1 \(demo\) - Operator Panel' || fail "no window titled 'Bottling line 1 (demo) - Operator Panel'"
+main_title='Bottling line 1 \(demo\) - Operator Panel'
+window_titled "$main_title" || fail "no window titled 'Bottling line 1 (demo) - Operator Panel'"
+panel_clean
+
+begin "the project wizard (File > New)"
+keys_to "$main_title" ctrl+n
+wait_for 30 window_titled '^Project wizard$' || fail "Ctrl+N opened no window titled 'Project wizard'"
+sleep 3
+screenshot "$art/wizard-cpu.png"
+keys_to '^Project wizard$' alt+n
+sleep 3
+screenshot "$art/wizard-io.png"
+keys_to '^Project wizard$' alt+n alt+n alt+n
+sleep 3
+screenshot "$art/wizard-link.png"
+keys_to '^Project wizard$' Escape
+wait_for 30 window_gone '^Project wizard$' || fail "Esc did not close the wizard"
+panel_clean
+
+begin "Generate PLC code"
+keys_to "$main_title" alt+f g
+wait_for 30 window_titled '^Generate PLC code$' || fail "File > Generate PLC code opened no window titled 'Generate PLC code'"
+keys_to '^Generate PLC code$' alt+g
+sleep 5
+screenshot "$art/generate.png"
+keys_to '^Generate PLC code$' Escape
+wait_for 30 window_gone '^Generate PLC code$' || fail "Esc did not close Generate PLC code"
+panel_clean
+
+begin "float a pane"
+# The Inputs pane's tab sits at the bottom left of the 1280x800 window (default layout); its float button is the
+# first icon after the title. A new top-level window titled Inputs proves the click floated it.
+xdotool mousemove 62 731 click 1
+if ! wait_for 30 window_titled '^Inputs$'; then
+  screenshot "$art/float-missed.png"
+  fail "clicking the Inputs pane's float button (62,731) opened no window titled Inputs (see $art/float-missed.png)"
+fi
+sleep 2
+screenshot "$art/pane-floating.png"
+panel_clean
+
+begin "close the panel with the pane floating"
+closed_before=$(log_count "Operator Panel closed")
+# The main window's close (Alt+F4 as its close button), not taskkill: taskkill closes every window of the process,
+# the floating pane's first, and that hides the pane before the layout is saved. The status bar is the harmless spot.
+activate_at 640 772
+keys_to "$main_title" alt+F4
+wait_for 90 log_count_above "Operator Panel closed" "$closed_before" || fail "the panel did not close within 90 s"
+settle
+wait_for 30 bash -c "! kill -0 $app_pid 2>/dev/null" || fail "the panel process $app_pid is still running after its log said closed"
+app_pid=""
+layout="$(dirname "$logs")/layout.json"
+python3 - "$layout" <<'PY' || fail "layout.json does not keep the Inputs pane floating and shown: $(cat "$layout")"
+import json, sys
+panes = {p["ContentId"]: p for p in json.load(open(sys.argv[1]))["Panes"]}
+sys.exit(0 if panes["Inputs"]["Placement"] == "Floating" and panes["Inputs"]["IsVisible"] else 1)
+PY
+
+begin "start again with the pane floating"
+started_before=$(log_count "Operator Panel $version.0 started")
+wine 'C:\Program Files\Operator Panel\OperatorPanel.exe' --demo >"$work/panel-restart.out" 2>&1 &
+app_pid=$!
+wait_for 180 log_count_above "Operator Panel $version.0 started" "$started_before" || fail "no second start in the log within 180 s ($(tail -5 "$work/panel-restart.out"))"
+wait_for 60 window_titled "$main_title" || fail "the panel started again without its main window"
+wait_for 30 window_titled '^Inputs$' || fail "the Inputs pane did not come back floating"
+sleep 8
+screenshot "$art/panel-restart.png"
+[ "$(colours "$art/panel-restart.png")" -gt 100 ] || fail "the screenshot after the restart is nearly blank"
+panel_clean
+
+begin "close the floating pane with its own close button"
+# The floating pane opens at 120,120, 480x360 (FloatBounds.Default); its lamp list is the harmless spot.
+activate_at 450 300
+keys_to '^Inputs$' alt+F4
+wait_for 30 window_gone '^Inputs$' || fail "the floating Inputs pane did not close"
+sleep 2
+window_titled "$main_title" || fail "the main window went with the floating pane"
+screenshot "$art/pane-closed.png"
+panel_clean
 
 begin "close the panel"
 close_panel
 wait_for 30 bash -c "! kill -0 $app_pid 2>/dev/null" || fail "the panel process $app_pid is still running after its log said closed"
 app_pid=""
 
-begin "start the panel again showing its Trends window"
-# The panel's own saved layout (DockLayoutStore's file) with the Trends tab first in the centre, as a user leaves it.
-layout="$profile_unix/AppData/Local/OperatorPanel/layout.json"
-pane() { printf '{"Id":"%s","IsVisible":%s,"Placement":"%s","DockedSize":%s,"Float":{"Left":120,"Top":120,"Width":480,"Height":360},"Order":%s}' "$@"; }
-{
-  printf '['
-  pane Inputs true Left 260 0; printf ','
-  pane Outputs true Right 260 0; printf ','
-  pane Memory true Center 300 1; printf ','
-  pane Alarms true Bottom 300 0; printf ','
-  pane Diagnostics false Center 300 2; printf ','
-  pane Trends true Center 300 0
-  printf ']'
-} >"$layout"
+begin "start the panel again showing its Trends pane"
+# The layout the panel saved, changed as a user leaves it: Inputs docked again at the left, the Trends tab in front of
+# Memory in the centre (the first tab by order is the one shown).
+python3 - "$layout" <<'PY' || fail "layout.json could not be set to show the Trends pane: $(cat "$layout")"
+import json, sys
+path = sys.argv[1]
+layout = json.load(open(path))
+panes = {p["ContentId"]: p for p in layout["Panes"]}
+panes["Inputs"].update(IsVisible=True, Placement="Left")
+panes["Memory"]["Order"] = 1
+panes["Diagnostics"].update(IsVisible=False, Order=2)
+panes["Trends"].update(IsVisible=True, Placement="Center", Order=0)
+json.dump(layout, open(path, "w"))
+PY
 trends_before=$(log_count "Trend drawn:")
 wine 'C:\Program Files\Operator Panel\OperatorPanel.exe' --demo >"$work/panel-trends.out" 2>&1 &
 app_pid=$!
-wait_for 240 log_count_above "Trend drawn:" "$trends_before" || fail "the Trends window drew no live trend within 240 s (app alive: $(app_alive && echo yes || echo no); $(tail -5 "$work/panel-trends.out"))"
+wait_for 240 log_count_above "Trend drawn:" "$trends_before" || fail "the Trends pane drew no live trend within 240 s (app alive: $(app_alive && echo yes || echo no); $(tail -5 "$work/panel-trends.out"))"
 grep -h -F "Trend drawn:" "$logs"/*.log | tail -n 1
 
 begin "screenshot the live trend"
@@ -272,14 +380,17 @@ for _ in $(seq 1 30); do
   [ "$changes" -lt 2 ] || break
 done
 cp "$work/a.png" "$shot"
-[ "$changes" -ge 2 ] || fail "the Trends window did not change for 90 s after the log said it drew (see $shot)"
+[ "$changes" -ge 2 ] || fail "the Trends pane did not change for 90 s after the log said it drew (see $shot)"
 [ "$(colours "$shot")" -gt 100 ] || fail "the Trends screenshot is nearly blank ($(colours "$shot") colours)"
 ls "$profile_unix/AppData/Local/OperatorPanel/history/"*-demo.history.db >/dev/null 2>&1 || fail "no demo history database in the user's history folder"
+panel_clean
 close_panel
+wait_for 30 bash -c "! kill -0 $app_pid 2>/dev/null" || fail "the panel process $app_pid is still running after its log said closed"
 app_pid=""
-rm -f "$layout"
 
-begin "open a project the way a double-click does"
+begin "open a project the way a double-click does, over a corrupt layout file"
+# A layout that cannot be restored costs the operator the layout, never the panel: default layout and a notice.
+printf '{ "Panes": [ { "ContentId": ' >"$layout"
 project_unix="$profile_unix/Documents/Smoke line.opproj"
 mkdir -p "$(dirname "$project_unix")"
 sed 's/"name": "Bottling line 1"/"name": "Smoke line"/' samples/bottling-line.opproj >"$project_unix"
@@ -289,8 +400,10 @@ wine start /unix "$project_unix" >"$work/panel-project.out" 2>&1 &
 app_pid=$!
 wait_for 180 log_has "Opened $project_win from the command line: Smoke line" || fail "the log does not say the panel opened $project_win ($(tail -5 "$work/panel-project.out"))"
 wait_for 60 window_titled "Smoke line - Operator Panel" || fail "no window titled 'Smoke line - Operator Panel'"
+log_has "Window layout not restored" || fail "the corrupt layout file was not reported in the log"
 sleep 5
 screenshot "$art/panel-project.png"
+panel_clean
 close_panel
 app_pid=""
 

@@ -6,7 +6,6 @@ using OperatorPanel.App.Services;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Historian;
-using OperatorPanel.ViewModels.Docking;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Shell;
@@ -34,16 +33,31 @@ public partial class App : Application
             .WriteTo.File(Path.Combine(UserFolder, "logs", "panel-.log"), rollingInterval: RollingInterval.Day, retainedFileCountLimit: 31, shared: true)
             .CreateLogger();
         DispatcherUnhandledException += OnUnhandled;
+        BindingErrorLog.Attach(Log.Logger);
 
-        _services = Compose();
-        var shell = _services.GetRequiredService<ShellViewModel>();
-        _services.GetRequiredService<DockingViewModel>().Load();
-        _services.GetRequiredService<LiveValueWitness>();
-        _services.GetRequiredService<TrendWitness>();
-        var window = _services.GetRequiredService<MainWindow>();
-        MainWindow = window;
-        window.Closed += OnMainWindowClosed;
-        window.Show();
+        ShellViewModel shell;
+        try
+        {
+            _services = Compose();
+            shell = _services.GetRequiredService<ShellViewModel>();
+            shell.Docking.Load();
+            _services.GetRequiredService<LiveValueWitness>();
+            _services.GetRequiredService<TrendWitness>();
+            var window = new MainWindow(shell);
+            MainWindow = window;
+            window.Closed += OnMainWindowClosed;
+            window.Show();
+        }
+        catch (Exception failure) when (failure is not OutOfMemoryException)
+        {
+            // Never a process without a window: what cannot be shown is said, logged, and the panel ends.
+            Log.Fatal(failure, "The panel could not start");
+            MessageBox.Show($"Operator Panel could not start: {failure.Message}", "Operator Panel", MessageBoxButton.OK, MessageBoxImage.Error);
+            Log.CloseAndFlush();
+            Shutdown(1);
+            return;
+        }
+
         Log.Information("Operator Panel {Version} started", typeof(App).Assembly.GetName().Version);
 
         var project = e.Args.FirstOrDefault(a => !a.StartsWith("--", StringComparison.Ordinal));
@@ -78,7 +92,13 @@ public partial class App : Application
         {
             _services = null;
             services.GetRequiredService<PanelOptionsStore>().Save(services.GetRequiredService<PanelOptions>());
-            await services.DisposeAsync();
+            // The shell has disconnected (or given up waiting on a port, ShellViewModel.CloseWait); a port that still will
+            // not let go must not hold the closing panel either.
+            var disposing = services.DisposeAsync().AsTask();
+            if (await Task.WhenAny(disposing, Task.Delay(ShellViewModel.CloseWait)) != disposing)
+            {
+                Log.Warning("The panel's services did not stop within {Seconds} s; the panel closes without waiting for them", ShellViewModel.CloseWait.TotalSeconds);
+            }
         }
 
         Shutdown();
@@ -94,7 +114,6 @@ public partial class App : Application
         services.AddSingleton<IFileDialogService, WpfFileDialogService>();
         services.AddSingleton(sp => new PanelOptionsStore(Path.Combine(UserFolder, "options.json"), sp.GetRequiredService<ILogger>()));
         services.AddSingleton(sp => sp.GetRequiredService<PanelOptionsStore>().Load());
-        services.AddSingleton(new DockingViewModel(Path.Combine(UserFolder, "layout.json")));
         services.AddSingleton(sp => new PanelSession(
             ShellViewModel.NoProject, sp.GetRequiredService<IUiDispatcher>(), TimeProvider.System, sp.GetRequiredService<ILogger>()));
         services.AddSingleton(sp => new WpfAlarmSound(sp.GetRequiredService<ILogger>()));
@@ -113,9 +132,11 @@ public partial class App : Application
                 presenter,
                 tester,
                 ports,
+                Path.Combine(UserFolder, "layout.json"),
+                Path.Combine(AppContext.BaseDirectory, "README.txt"),
+                new ShellDocumentLauncher(),
                 HistoryFolder.Default,
                 sp.GetRequiredService<WpfAlarmSound>(),
-                new ShellDocumentLauncher(),
                 Path.Combine(UserFolder, "print"));
         });
         services.AddSingleton(sp => new ShellViewModel(
@@ -126,11 +147,13 @@ public partial class App : Application
             sp.GetRequiredService<ILogger>()));
         services.AddSingleton(sp => new LiveValueWitness(sp.GetRequiredService<ShellViewModel>().Memory, Dispatcher, sp.GetRequiredService<ILogger>()));
         services.AddSingleton(sp => new TrendWitness(sp.GetRequiredService<ShellViewModel>().Trends, Dispatcher, sp.GetRequiredService<ILogger>()));
-        services.AddSingleton<MainWindow>();
         return services.BuildServiceProvider();
     }
 
-    /// <summary>A fault in a view or command is logged and shown; the panel goes on (the line keeps being watched).</summary>
+    /// <summary>
+    /// A fault in a view or command is logged and shown; the panel goes on (the line keeps being watched). The log line
+    /// starts "Unhandled error" (installer/wine-smoke.sh fails on it).
+    /// </summary>
     private void OnUnhandled(object sender, DispatcherUnhandledExceptionEventArgs e)
     {
         Log.Error(e.Exception, "Unhandled error in the panel");

@@ -1,60 +1,39 @@
 using System.ComponentModel;
 using System.Windows;
-using System.Windows.Automation;
-using System.Windows.Controls;
-using System.Windows.Data;
 using System.Windows.Media;
 using OperatorPanel.App.Generate;
-using OperatorPanel.App.Views;
+using OperatorPanel.App.Help;
 using OperatorPanel.ViewModels.Docking;
 using OperatorPanel.ViewModels.Shell;
 
 namespace OperatorPanel.App;
 
 /// <summary>
-/// The shell window. Code-behind is visual only: it places the pane views in the docking host, fills the View menu
-/// from the panes, zooms the window for Large display as DockingViewModel.FitZoom says, shows Generate PLC code while
-/// the shell has one open, and turns the window's Closing into the shell's "save changes?" question.
+/// The shell window. Code-behind is visual only: it hands the docking host its panes, feeds DockingViewModel.FitZoom
+/// the window's size for Large display, puts the window where the layout says and remembers where it was, shows
+/// Generate PLC code while the shell has one open and Help > About as a dialog, and turns the window's Closing into the shell's "save changes?"
+/// question.
 /// </summary>
 public partial class MainWindow : Window
 {
     private readonly ShellViewModel _shell;
-    private readonly DockingViewModel _docking;
     private bool _closeConfirmed;
     private GenerateCodeWindow? _generateWindow;
 
-    public MainWindow(ShellViewModel shell, DockingViewModel docking)
+    public MainWindow(ShellViewModel shell)
     {
         ArgumentNullException.ThrowIfNull(shell);
-        ArgumentNullException.ThrowIfNull(docking);
         _shell = shell;
-        _docking = docking;
         DataContext = shell;
         InitializeComponent();
-        ResetLayoutItem.Command = docking.ResetLayoutCommand;
-        foreach (var pane in docking.Panes)
-        {
-            var item = new MenuItem { Header = pane.Title, IsCheckable = true, DataContext = pane };
-            item.SetBinding(MenuItem.IsCheckedProperty, new Binding(nameof(DockPaneViewModel.IsVisible)) { Mode = BindingMode.TwoWay });
-            AutomationProperties.SetAutomationId(item, $"Show{pane.Id}MenuItem");
-            ViewMenu.Items.Add(item);
-        }
-
-        Docking.Initialize(docking, CreateView, this);
-        // The Trends window redraws from the history every second only while it is shown.
-        var trends = docking[DockPaneId.Trends];
-        shell.Trends.IsVisible = trends.IsVisible;
-        trends.PropertyChanged += (_, e) => shell.Trends.IsVisible = e.PropertyName == nameof(DockPaneViewModel.IsVisible) ? trends.IsVisible : shell.Trends.IsVisible;
+        Place(shell.Docking.Window);
+        Docking.Initialize(shell.Docking, this);
         shell.PropertyChanged += OnShellChanged;
 
-        BindingOperations.SetBinding(ZoomTransform, ScaleTransform.ScaleXProperty, new Binding(nameof(DockingViewModel.Zoom)) { Source = docking });
-        BindingOperations.SetBinding(ZoomTransform, ScaleTransform.ScaleYProperty, new Binding(nameof(DockingViewModel.Zoom)) { Source = docking });
-        LargeDisplayItem.SetBinding(MenuItem.InputGestureTextProperty, new Binding(nameof(DockingViewModel.ZoomText)) { Source = docking });
         SizeChanged += (_, _) => FitZoom();
-        // Shown or hidden as alarms come and go; one line high, so its height does not depend on the zoom.
         AlarmBanner.SizeChanged += (_, _) => FitZoom();
-        shell.Options.PropertyChanged += (_, e) => FitZoom();
-        foreach (var pane in docking.Panes)
+        shell.Options.PropertyChanged += (_, _) => FitZoom();
+        foreach (var pane in shell.Docking.Panes)
         {
             pane.PropertyChanged += (_, e) =>
             {
@@ -79,7 +58,8 @@ public partial class MainWindow : Window
         if (await _shell.CloseAsync())
         {
             _closeConfirmed = true;
-            _docking.Save();
+            _shell.Docking.Window = Placement();
+            _shell.Docking.Save();
             Docking.CloseFloatingWindows();
             // Closed again after this Closing has returned: when the shell answers at once (no line to disconnect), the
             // await does not yield and WPF refuses Close() from inside Closing.
@@ -87,32 +67,42 @@ public partial class MainWindow : Window
         }
     }
 
-    /// <summary>
-    /// The client area (the zoomed root's parent) and the unzoomed height of menu, banner and status bar go to the view
-    /// model.
-    /// </summary>
+    /// <summary>Where the layout file says, moved onto today's desktop; the system places a window saved without a position.</summary>
+    private void Place(WindowPlacement? saved)
+    {
+        var desktop = (SystemParameters.VirtualScreenLeft, SystemParameters.VirtualScreenTop, SystemParameters.VirtualScreenWidth, SystemParameters.VirtualScreenHeight);
+        var place = (saved ?? WindowPlacement.Default).FitTo(desktop);
+        (Width, Height) = (place.Width, place.Height);
+        if (double.IsFinite(place.Left) && double.IsFinite(place.Top))
+        {
+            WindowStartupLocation = WindowStartupLocation.Manual;
+            (Left, Top) = (place.Left, place.Top);
+        }
+        else
+        {
+            WindowStartupLocation = WindowStartupLocation.CenterScreen;
+        }
+
+        WindowState = place.Maximized ? WindowState.Maximized : WindowState.Normal;
+    }
+
+    /// <summary>The normal bounds (also while maximised or minimised) and whether the window is maximised.</summary>
+    private WindowPlacement Placement()
+    {
+        var bounds = WindowState == WindowState.Normal ? new Rect(Left, Top, ActualWidth, ActualHeight) : RestoreBounds;
+        return bounds.IsEmpty
+            ? WindowPlacement.Default with { Maximized = WindowState == WindowState.Maximized }
+            : new WindowPlacement(bounds.Left, bounds.Top, bounds.Width, bounds.Height, WindowState == WindowState.Maximized);
+    }
+
+    /// <summary>The client area (the zoomed root's parent) and the unzoomed height of menu, banner and status bar go to the view model.</summary>
     private void FitZoom()
     {
         if (VisualTreeHelper.GetParent(Root) is FrameworkElement client)
         {
             var chrome = MainMenu.ActualHeight + AlarmBanner.ActualHeight + StatusBar.ActualHeight;
-            _docking.FitZoom(client.ActualWidth, client.ActualHeight, chrome, _shell.Options.LargeDisplay);
+            _shell.Docking.FitZoom(client.ActualWidth, client.ActualHeight, chrome, _shell.Options.LargeDisplay);
         }
-    }
-
-    private FrameworkElement CreateView(DockPaneId id)
-    {
-        FrameworkElement view = id switch
-        {
-            DockPaneId.Inputs => new InputsView(),
-            DockPaneId.Outputs => new OutputsView(),
-            DockPaneId.Memory => new MemoryView(),
-            DockPaneId.Alarms => new AlarmsView(),
-            DockPaneId.Diagnostics => new DiagnosticsView(),
-            DockPaneId.Trends => new TrendsView(),
-        };
-        view.SetBinding(DataContextProperty, new Binding(id.ToString()) { Source = _shell });
-        return view;
     }
 
     private void OnExit(object sender, RoutedEventArgs e) => Close();
@@ -122,6 +112,12 @@ public partial class MainWindow : Window
         if (e.PropertyName == nameof(ShellViewModel.GenerateCode))
         {
             ShowGenerateCode();
+        }
+
+        if (e.PropertyName == nameof(ShellViewModel.About) && _shell.About is { } about)
+        {
+            new AboutWindow(about) { Owner = this }.ShowDialog();
+            _shell.CloseAbout();
         }
     }
 

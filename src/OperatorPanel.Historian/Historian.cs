@@ -30,7 +30,7 @@ public sealed class Historian : IAsyncDisposable
         _writer = new HistoryWriter(path, project.History, time, logger.ForContext<Historian>(), source, tuning);
         _writer.ProblemChanged += (_, _) => ProblemChanged?.Invoke(this, EventArgs.Empty);
         Journal = new AlarmJournal(path, _writer);
-        Audit = new AuditTrail(_writer);
+        Audit = new AuditTable(_writer);
         Reader = new HistoryReader(path);
     }
 

@@ -34,4 +34,13 @@ public sealed record AwlBlock(
     };
 
     public IEnumerable<AwlInstruction> Instructions => Networks.SelectMany(n => n.Instructions);
+
+    /// <summary>False for a header without a name (<c>ORGANIZATION_BLOCK OB1</c>): Micro/WIN writes <c>NAME:OB1</c>.</summary>
+    public bool HasName { get; init; } = true;
+
+    /// <summary>
+    /// True for a block with BEGIN and no network at all: Micro/WIN writes at least <c>Network 1</c> for an empty block,
+    /// and exports a password-protected POU without its body (docs/awl-exports.md, "Protected POUs").
+    /// </summary>
+    public bool HasNoBody => Networks.IsEmpty;
 }

@@ -3,7 +3,7 @@ using System.Collections.Immutable;
 namespace OperatorPanel.Stl;
 
 /// <summary>Collects one block while <see cref="AwlReader"/> walks its lines.</summary>
-internal sealed class AwlBlockBuilder(AwlBlockKind kind, string name, int number, int startLine)
+internal sealed class AwlBlockBuilder(AwlBlockKind kind, string name, int number, int startLine, bool hasName)
 {
     private readonly ImmutableArray<string>.Builder _comments = ImmutableArray.CreateBuilder<string>();
     private readonly ImmutableArray<AwlVariable>.Builder _variables = ImmutableArray.CreateBuilder<AwlVariable>();
@@ -66,7 +66,8 @@ internal sealed class AwlBlockBuilder(AwlBlockKind kind, string name, int number
     {
         CloseNetwork();
         return new AwlBlock(
-            Kind, Name, number, Title, _comments.ToImmutable(), _variables.ToImmutable(), _networks.ToImmutable(), startLine, endLine);
+            Kind, Name, number, Title, _comments.ToImmutable(), _variables.ToImmutable(), _networks.ToImmutable(), startLine, endLine)
+        { HasName = hasName };
     }
 
     private void CloseNetwork()

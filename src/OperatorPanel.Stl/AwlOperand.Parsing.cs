@@ -206,11 +206,12 @@ public sealed partial record AwlOperand
         && text.Length > 3 && text.Length <= 6 && text[3..].All(char.IsAsciiDigit);
 
     /// <summary>
-    /// Letters, digits and _, not starting with a digit. Letters include the code-page characters 128-255 (umlauts in
-    /// German exports): .awl files are read one character per byte (Latin-1), so each such byte is one char U+0080-U+00FF.
+    /// Letters, digits and _, not starting with a digit. Letters are those of the file's encoding as decoded
+    /// (<see cref="AwlSource"/>: umlauts of a 1252 export, Chinese of a GBK one), and the characters 128-255 of a text
+    /// read one character per byte (a caller that did not decode it).
     /// </summary>
     internal static bool IsIdentifier(string text) =>
         text.Length > 0 && IsNameLetter(text[0]) && text.All(c => IsNameLetter(c) || char.IsAsciiDigit(c));
 
-    private static bool IsNameLetter(char c) => char.IsAsciiLetter(c) || c == '_' || c is >= '\u0080' and <= '\u00FF';
+    private static bool IsNameLetter(char c) => char.IsAsciiLetter(c) || c == '_' || c is >= '\u0080' and <= '\u00FF' || (c > '\u00FF' && char.IsLetter(c));
 }

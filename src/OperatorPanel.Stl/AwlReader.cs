@@ -84,7 +84,7 @@ internal sealed class AwlReader
             Report(line, $"'{header}' is not a block header of the form NAME:{prefix}n");
         }
 
-        _block = new AwlBlockBuilder(kind, name.Length == 0 ? id : name, number, line);
+        _block = new AwlBlockBuilder(kind, name.Length == 0 ? id : name, number, line, hasName: colon >= 0);
     }
 
     private void Close(AwlBlockKind kind, int line)

@@ -3,6 +3,8 @@ using System.Diagnostics.CodeAnalysis;
 using System.Globalization;
 using System.Text;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Stl;
+using OperatorPanel.Stl.Symbols;
 using OperatorPanel.StlGen.Merge;
 using OperatorPanel.StlGen.Options;
 
@@ -12,8 +14,8 @@ namespace OperatorPanel.StlGen;
 /// What Generate PLC code and <c>opanel generate</c> save for one station, decided once for both: the handler
 /// (<see cref="HandlerGenerator"/>), merged into the user's exported program when one is given (<see cref="HandlerMerger"/>),
 /// the file names (STEM-handler.awl, STEM-symbols.txt, STEM-README.txt, STEM-merged.awl), the size limit of the user's
-/// program and the writing (each file atomically, one byte per character: the generated text is ASCII, the user's lines
-/// in the merged file go back in the code page they came in).
+/// program and the writing (each file atomically: the generated text is ASCII, the user's lines in the merged file go
+/// back in the bytes they came in).
 /// </summary>
 public sealed record HandlerPackage
 {
@@ -32,13 +34,13 @@ public sealed record HandlerPackage
     /// <summary>True when there is something to save: a handler, and a merge without collisions if one was asked for.</summary>
     public bool Ok => Handler.Ok && Merge is null or { Ok: true };
 
-    /// <summary>The files to save, name and text; empty unless <see cref="Ok"/>.</summary>
-    public ImmutableArray<(string Name, string Text)> Files => !Ok ? [] :
+    /// <summary>The files to save, name and content; empty unless <see cref="Ok"/>.</summary>
+    public ImmutableArray<(string Name, byte[] Content)> Files => !Ok ? [] :
     [
-        ($"{Stem}-handler.awl", Handler.AwlText),
-        ($"{Stem}-symbols.txt", Handler.SymbolTableText),
-        ($"{Stem}-README.txt", Handler.TechnicianText),
-        .. Merge is { } merge ? [($"{Stem}-merged.awl", merge.MergedText)] : Array.Empty<(string, string)>(),
+        ($"{Stem}-handler.awl", Encoding.ASCII.GetBytes(Handler.AwlText)),
+        ($"{Stem}-symbols.txt", Encoding.ASCII.GetBytes(Handler.SymbolTableText)),
+        ($"{Stem}-README.txt", Encoding.ASCII.GetBytes(Handler.TechnicianText)),
+        .. Merge is { } merge ? [($"{Stem}-merged.awl", merge.MergedBytes)] : Array.Empty<(string, byte[])>(),
     ];
 
     /// <summary>A station name as part of a file name: letters, digits, '-' and '_' kept, anything else '_'.</summary>
@@ -49,30 +51,51 @@ public sealed record HandlerPackage
         return chars.Length == 0 ? "station" + station.Address.Address.ToString(CultureInfo.InvariantCulture) : new string(chars);
     }
 
-    /// <summary>Generates the handler for <paramref name="options"/> and, with <paramref name="userProgram"/>, merges it in.</summary>
-    public static HandlerPackage Generate(HandlerOptions options, string stem, string? userProgram = null)
+    /// <summary>
+    /// Generates the handler for <paramref name="options"/> and, with <paramref name="userProgram"/>, merges it in (its
+    /// symbolic operands resolved by <paramref name="symbols"/> when given).
+    /// </summary>
+    public static HandlerPackage Generate(HandlerOptions options, string stem, AwlSource? userProgram = null, AwlSymbolTable? symbols = null)
     {
         ArgumentNullException.ThrowIfNull(options);
         ArgumentException.ThrowIfNullOrWhiteSpace(stem);
         var handler = HandlerGenerator.Generate(options);
-        var merge = handler.Ok && userProgram is not null ? HandlerMerger.Merge(userProgram, options) : null;
+        var merge = handler.Ok && userProgram is not null ? HandlerMerger.Merge(userProgram, options, symbols) : null;
         return new HandlerPackage(stem, handler, merge);
     }
 
     /// <summary>
-    /// Reads a program exported from Micro/WIN. It is in the Windows code page; Latin-1 keeps one character per byte, so
-    /// the merged file can give every byte back unchanged (<see cref="TryWrite"/>).
+    /// <see cref="Generate"/> with the user's program read from <paramref name="programPath"/> when one is given; false
+    /// with the reason when the file cannot be read.
     /// </summary>
-    public static bool TryReadProgram(string path, [NotNullWhen(true)] out string? text, [NotNullWhen(false)] out string? error)
+    public static bool TryGenerate(
+        HandlerOptions options, string stem, string? programPath, [NotNullWhen(true)] out HandlerPackage? package, [NotNullWhen(false)] out string? error)
+    {
+        AwlSource? program = null;
+        if (programPath is not null && !TryReadProgram(programPath, out program, out error))
+        {
+            package = null;
+            return false;
+        }
+
+        (package, error) = (Generate(options, stem, program), null);
+        return true;
+    }
+
+    /// <summary>
+    /// Reads a program exported from Micro/WIN: its encoding is detected (<see cref="AwlSource"/>) for the diagnostics,
+    /// and its bytes are kept, so the merged file gives every one of them back unchanged (<see cref="TryWrite"/>).
+    /// </summary>
+    public static bool TryReadProgram(string path, [NotNullWhen(true)] out AwlSource? program, [NotNullWhen(false)] out string? error)
     {
         ArgumentNullException.ThrowIfNull(path);
         if (!AtomicFile.TryReadAll(path, MaxProgramBytes, out var bytes, out var reason))
         {
-            (text, error) = (null, $"cannot read {path}: {reason}");
+            (program, error) = (null, $"cannot read {path}: {reason}");
             return false;
         }
 
-        (text, error) = (Encoding.Latin1.GetString(bytes), null);
+        (program, error) = (AwlSource.Decode(bytes), null);
         return true;
     }
 
@@ -105,10 +128,10 @@ public sealed record HandlerPackage
         }
 
         var paths = new List<string>();
-        foreach (var (name, text) in Files)
+        foreach (var (name, content) in Files)
         {
             var path = Path.Combine(folder, name);
-            if (!AtomicFile.TryWrite(path, Encoding.Latin1.GetBytes(text), out var failed))
+            if (!AtomicFile.TryWrite(path, content, out var failed))
             {
                 (written, error) = ([.. paths], $"{path}: {failed}");
                 return false;

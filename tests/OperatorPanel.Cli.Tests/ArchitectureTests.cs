@@ -39,14 +39,18 @@ public sealed partial class ArchitectureTests
     [InlineData("Link", "Polling")]
     [InlineData("Link", "Line")]
     [InlineData("Polling", "Line")]
+    [InlineData("Ppi", "Link")]
+    [InlineData("Ppi", "Polling")]
+    [InlineData("Ppi", "Line")]
+    [InlineData("Ppi", "Protocol")]
     public void CoreFolders_TheWireLayersDoNotImportTheLayersAboveThem(string folder, string above)
     {
         var core = Path.Combine(RepositoryRoot(), "src", "OperatorPanel.Core");
-        var importing = Directory.EnumerateFiles(Path.Combine(core, folder), "*.cs")
+        var importing = Directory.EnumerateFiles(Path.Combine(core, folder), "*.cs", SearchOption.AllDirectories)
             .Where(f => File.ReadAllText(f).Contains($"OperatorPanel.Core.{above}", StringComparison.Ordinal) || File.ReadAllText(f).Contains($" {above}.", StringComparison.Ordinal))
             .Select(Path.GetFileName);
 
-        importing.Should().BeEmpty($"Core/{folder} sits below Core/{above} (one direction: transport, link, polling, line)");
+        importing.Should().BeEmpty($"Core/{folder} sits below Core/{above} (one direction: transport, link, polling, line; PPI beside the Freeport protocol, below the bus owner)");
     }
 
     [Fact]
@@ -100,6 +104,24 @@ public sealed partial class ArchitectureTests
         var projects = ReferencedNames(Assembly.Load(assembly)).Where(r => r.StartsWith("OperatorPanel.", StringComparison.Ordinal));
 
         projects.Should().BeSubsetOf(["OperatorPanel.Core", "OperatorPanel.Stl"]);
+    }
+
+    [Fact]
+    public void Demo_DependsOnCoreStlGenAndSimulatorOnly()
+    {
+        var projects = ReferencedNames(Assembly.Load("OperatorPanel.Demo")).Where(r => r.StartsWith("OperatorPanel.", StringComparison.Ordinal));
+
+        projects.Should().BeSubsetOf(["OperatorPanel.Core", "OperatorPanel.StlGen", "OperatorPanel.Simulator"]);
+    }
+
+    [Fact]
+    public void ProjectFiles_TheAppAndTheCliTakeTheDemoLineFromDemo()
+    {
+        // One demo line for both front ends (issue 19): the App reaches the simulator only through OperatorPanel.Demo.
+        ProjectReferencesOf("src/OperatorPanel.App/OperatorPanel.App.csproj").Should().BeEquivalentTo(["OperatorPanel.ViewModels", "OperatorPanel.Demo"]);
+        ProjectReferencesOf("src/OperatorPanel.Cli/OperatorPanel.Cli.csproj").Should().Contain("OperatorPanel.Demo");
+        SourceFiles().Select(f => f.Relative).Where(f => Path.GetFileName(f) is "DemoLine.cs" or "DemoLineConnector.cs")
+            .Should().BeEquivalentTo(["OperatorPanel.Demo/DemoLine.cs", "OperatorPanel.Demo/DemoLineConnector.cs"]);
     }
 
     [Fact]

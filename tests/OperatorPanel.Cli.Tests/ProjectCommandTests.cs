@@ -36,6 +36,18 @@ public sealed class ProjectCommandTests : IDisposable
     }
 
     [Fact]
+    public void New_IntoAFolderThatDoesNotExist_CreatesIt()
+    {
+        var file = Path.Combine(_folder, "plant", "line3", "line.opproj");
+
+        var run = Run("project", "new", "--cpu", "224", "-o", file);
+
+        run.Code.Should().Be(0, run.Error);
+        Run("project", "check", file).Code.Should().Be(0);
+        Directory.GetFiles(Path.GetDirectoryName(file)!).Select(Path.GetFileName).Should().Equal("line.opproj");
+    }
+
+    [Fact]
     public void New_Options_AreWrittenIntoTheProject()
     {
         var file = FileIn("line.opproj");

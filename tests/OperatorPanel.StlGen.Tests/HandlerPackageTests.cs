@@ -1,4 +1,5 @@
 using System.Text;
+using OperatorPanel.Stl;
 using OperatorPanel.StlGen.Tests.Merge.UserPrograms;
 
 namespace OperatorPanel.StlGen.Tests;
@@ -18,7 +19,7 @@ public sealed class HandlerPackageTests : IDisposable
     [Fact]
     public void Generate_WithUserProgram_WritesHandlerSymbolsNotesAndMergedUnderTheStem()
     {
-        var package = HandlerPackage.Generate(UserProgram.Cpu224, "Filler", UserProgram.Ob1("LD     SM0.0", "=      Q0.0"));
+        var package = HandlerPackage.Generate(UserProgram.Cpu224, "Filler", AwlSource.FromText(UserProgram.Ob1("LD     SM0.0", "=      Q0.0")));
 
         package.TryWrite(_folder, out var written, out var error).Should().BeTrue(error);
 
@@ -32,7 +33,7 @@ public sealed class HandlerPackageTests : IDisposable
     {
         byte[] comment = [0x2F, 0x2F, 0x20, 0x46, 0xFC, 0x6C, 0x6C, 0x73, 0x74, 0x61, 0x6E, 0x64];
         var user = UserProgram.Ob1("LD     SM0.0 " + Encoding.Latin1.GetString(comment), "=      Q0.0");
-        var package = HandlerPackage.Generate(UserProgram.Cpu224, "Filler", user);
+        var package = HandlerPackage.Generate(UserProgram.Cpu224, "Filler", AwlSource.FromText(user));
 
         package.TryWrite(_folder, out _, out var error).Should().BeTrue(error);
 
@@ -44,7 +45,7 @@ public sealed class HandlerPackageTests : IDisposable
     [Fact]
     public void Generate_ProgramCollides_NothingToWriteAndTheFolderIsNotCreated()
     {
-        var package = HandlerPackage.Generate(UserProgram.Cpu224, "Filler", UserProgram.Ob1("LD     SM0.0", "MOVB   1, VB8000"));
+        var package = HandlerPackage.Generate(UserProgram.Cpu224, "Filler", AwlSource.FromText(UserProgram.Ob1("LD     SM0.0", "MOVB   1, VB8000")));
 
         package.Ok.Should().BeFalse();
         package.Files.Should().BeEmpty();
@@ -67,14 +68,16 @@ public sealed class HandlerPackageTests : IDisposable
     }
 
     [Fact]
-    public void TryReadProgram_WindowsCodePageBytes_KeptOneCharacterPerByte()
+    public void TryReadProgram_WindowsCodePageBytes_DecodedAsCodePage1252AndKept()
     {
         Directory.CreateDirectory(_folder);
         var path = Path.Combine(_folder, "user.awl");
         File.WriteAllBytes(path, [0x4C, 0x44, 0x20, 0xE4]);
 
-        HandlerPackage.TryReadProgram(path, out var text, out _).Should().BeTrue();
+        HandlerPackage.TryReadProgram(path, out var program, out _).Should().BeTrue();
 
-        text.Should().Be(Encoding.Latin1.GetString([0x4C, 0x44, 0x20, 0xE4])).And.HaveLength(4);
+        program!.Text.Should().Be("LD ä");
+        program.Kind.Should().Be(AwlTextEncoding.Windows1252);
+        program.Bytes.Should().Equal(0x4C, 0x44, 0x20, 0xE4);
     }
 }

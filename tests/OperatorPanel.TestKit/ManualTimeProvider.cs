@@ -20,6 +20,11 @@ public sealed class ManualTimeProvider : TimeProvider
 
     public override long TimestampFrequency => TimeSpan.TicksPerSecond;
 
+    /// <summary>The zone of "local" times (UTC unless a test sets a shop floor's zone).</summary>
+    public TimeZoneInfo LocalZone { get; init; } = TimeZoneInfo.Utc;
+
+    public override TimeZoneInfo LocalTimeZone => LocalZone;
+
     /// <summary>Timers not yet fired or disposed, for assertions such as "the read armed its timeout".</summary>
     public int ActiveTimers
     {

@@ -2,6 +2,7 @@ using System.ComponentModel;
 using System.Windows;
 using System.Windows.Automation;
 using System.Windows.Controls;
+using System.Windows.Data;
 using OperatorPanel.ViewModels.Docking;
 
 namespace OperatorPanel.App.Docking;
@@ -15,8 +16,8 @@ public sealed class DockHost : ContentControl
 {
     private readonly Grid _grid = new();
     private readonly Dictionary<DockPlacement, TabControl> _regions = [];
-    private readonly Dictionary<DockPaneId, TabItem> _tabs = [];
-    private readonly Dictionary<DockPaneId, FloatingPaneWindow> _floating = [];
+    private readonly Dictionary<string, TabItem> _tabs = [];
+    private readonly Dictionary<string, FloatingPaneWindow> _floating = [];
     private DockingViewModel? _docking;
     private Window? _owner;
 
@@ -35,19 +36,31 @@ public sealed class DockHost : ContentControl
         SizeChanged += (_, _) => SizeRegions();
     }
 
-    /// <summary>Shows the panes of <paramref name="docking"/>, each with the view <paramref name="createView"/> makes for it once.</summary>
-    public void Initialize(DockingViewModel docking, Func<DockPaneId, FrameworkElement> createView, Window owner)
+    /// <summary>
+    /// Shows the panes of <paramref name="docking"/>: each pane's <see cref="DockPaneViewModel.Content"/> in a content
+    /// control, drawn by the DataTemplate for its type (App.xaml), made once and moved between its tab and its window.
+    /// </summary>
+    public void Initialize(DockingViewModel docking, Window owner)
     {
         ArgumentNullException.ThrowIfNull(docking);
-        ArgumentNullException.ThrowIfNull(createView);
+        ArgumentNullException.ThrowIfNull(owner);
         _docking = docking;
         _owner = owner;
         foreach (var pane in docking.Panes)
         {
-            var tab = new TabItem { Header = new DockPaneHeader(pane), Content = createView(pane.Id), DataContext = pane };
+            var view = new ContentControl { Focusable = false, IsTabStop = false };
+            view.SetBinding(ContentProperty, new Binding(nameof(DockPaneViewModel.Content)) { Source = pane });
+            var tab = new TabItem { Header = new DockPaneHeader(pane), Content = view, DataContext = pane };
             AutomationProperties.SetAutomationId(tab, pane.AutomationId);
-            _tabs[pane.Id] = tab;
+            _tabs[pane.ContentId] = tab;
             pane.PropertyChanged += OnPaneChanged;
+        }
+
+        // A floating pane's window is owned by the main window, which can own windows only once it has been shown: a
+        // layout saved with a floating pane is arranged again when the owner is loaded.
+        if (!owner.IsLoaded)
+        {
+            owner.Loaded += OnOwnerLoaded;
         }
 
         Arrange();
@@ -60,6 +73,12 @@ public sealed class DockHost : ContentControl
         {
             CloseFloating(id, _tabs[id]);
         }
+    }
+
+    private void OnOwnerLoaded(object sender, RoutedEventArgs e)
+    {
+        _owner!.Loaded -= OnOwnerLoaded;
+        Arrange();
     }
 
     private void OnPaneChanged(object? sender, PropertyChangedEventArgs e)
@@ -84,14 +103,14 @@ public sealed class DockHost : ContentControl
 
         foreach (var pane in _docking.Panes.OrderBy(p => p.Order))
         {
-            var tab = _tabs[pane.Id];
+            var tab = _tabs[pane.ContentId];
             if (pane.IsVisible && pane.IsFloating)
             {
-                Float(pane, tab);
+                TryFloat(pane, tab);
                 continue;
             }
 
-            CloseFloating(pane.Id, tab);
+            CloseFloating(pane.ContentId, tab);
             if (pane.IsVisible)
             {
                 _regions[pane.Placement].Items.Add(tab);
@@ -106,23 +125,45 @@ public sealed class DockHost : ContentControl
         SizeRegions();
     }
 
+    /// <summary>
+    /// A window WPF refuses to show (whatever the saved layout held) must not leave the panel without its panes: the
+    /// layout goes back to the default, after this arrangement, and the shell says so in one line.
+    /// </summary>
+    private void TryFloat(DockPaneViewModel pane, TabItem tab)
+    {
+        try
+        {
+            Float(pane, tab);
+        }
+        catch (InvalidOperationException failure)
+        {
+            if (_floating.Remove(pane.ContentId, out var window))
+            {
+                tab.Content = window.Release();
+            }
+
+            var docking = _docking!;
+            Dispatcher.BeginInvoke(() => docking.ResetAfterFailure(failure.Message));
+        }
+    }
+
     private void Float(DockPaneViewModel pane, TabItem tab)
     {
-        if (_floating.ContainsKey(pane.Id))
+        if (_floating.ContainsKey(pane.ContentId) || _owner is not { IsLoaded: true } owner)
         {
             return;
         }
 
         var view = (UIElement)tab.Content;
         tab.Content = null;
-        var window = new FloatingPaneWindow(pane, view) { Owner = _owner };
-        _floating[pane.Id] = window;
+        var window = new FloatingPaneWindow(pane, view, _docking!) { Owner = owner };
+        _floating[pane.ContentId] = window;
         window.Show();
     }
 
-    private void CloseFloating(DockPaneId id, TabItem tab)
+    private void CloseFloating(string contentId, TabItem tab)
     {
-        if (!_floating.Remove(id, out var window))
+        if (!_floating.Remove(contentId, out var window))
         {
             return;
         }
@@ -168,20 +209,22 @@ public sealed class DockHost : ContentControl
         _grid.RowDefinitions.Add(new RowDefinition());
         _grid.RowDefinitions.Add(new RowDefinition());
 
-        Place(_regions[DockPlacement.Left], 0, 0);
+        // The sides run the window's full height and the bottom region sits under the centre only: the Inputs and
+        // Outputs lists keep their height when Alarms is docked below Memory (every point of a CPU 226 at 1280x800).
+        Place(_regions[DockPlacement.Left], 0, 0, rowSpan: 3);
         Place(_regions[DockPlacement.Center], 0, 2);
-        Place(_regions[DockPlacement.Right], 0, 4);
-        Place(_regions[DockPlacement.Bottom], 2, 0, columnSpan: 5);
+        Place(_regions[DockPlacement.Right], 0, 4, rowSpan: 3);
+        Place(_regions[DockPlacement.Bottom], 2, 2);
         AddSplitter(0, 1, DockPlacement.Left, vertical: true);
         AddSplitter(0, 3, DockPlacement.Right, vertical: true);
-        AddSplitter(1, 0, DockPlacement.Bottom, vertical: false);
+        AddSplitter(1, 2, DockPlacement.Bottom, vertical: false);
     }
 
-    private void Place(UIElement element, int row, int column, int columnSpan = 1)
+    private void Place(UIElement element, int row, int column, int rowSpan = 1)
     {
         Grid.SetRow(element, row);
         Grid.SetColumn(element, column);
-        Grid.SetColumnSpan(element, columnSpan);
+        Grid.SetRowSpan(element, rowSpan);
         _grid.Children.Add(element);
     }
 
@@ -196,7 +239,7 @@ public sealed class DockHost : ContentControl
         };
         AutomationProperties.SetAutomationId(splitter, $"Dock{region}Splitter");
         splitter.DragCompleted += (_, _) => RememberSize(region);
-        Place(splitter, row, column, vertical ? 1 : 5);
+        Place(splitter, row, column, vertical ? 3 : 1);
     }
 
     /// <summary>A splitter moved: every pane in that region takes the region's new size.</summary>

@@ -26,15 +26,29 @@ public sealed class DockPaneHeader : StackPanel
         var menu = new ContextMenu();
         foreach (var placement in new[] { DockPlacement.Left, DockPlacement.Right, DockPlacement.Bottom, DockPlacement.Center })
         {
-            var item = new MenuItem { Header = $"Dock {placement.ToString().ToLowerInvariant()}", Command = pane.DockCommand, CommandParameter = placement };
-            AutomationProperties.SetAutomationId(item, $"{pane.AutomationId}Dock{placement}");
-            menu.Items.Add(item);
+            menu.Items.Add(MenuItem($"Dock {placement.ToString().ToLowerInvariant()}", pane.DockCommand, placement, $"{pane.AutomationId}Dock{placement}"));
         }
 
-        var floatItem = new MenuItem { Header = "Float", Command = pane.FloatCommand };
-        AutomationProperties.SetAutomationId(floatItem, $"{pane.AutomationId}FloatMenu");
-        menu.Items.Add(floatItem);
+        menu.Items.Add(MenuItem("Float", pane.FloatCommand, null, $"{pane.AutomationId}FloatMenu"));
         ContextMenu = menu;
+    }
+
+    /// <summary>
+    /// A context menu item made in code, before it is in any menu: its content alignment is set here, or the theme's
+    /// binding of it to the parent menu finds none and WPF logs a binding error.
+    /// </summary>
+    private static MenuItem MenuItem(string header, ICommand command, object? parameter, string automationId)
+    {
+        var item = new MenuItem
+        {
+            Header = header,
+            Command = command,
+            CommandParameter = parameter,
+            HorizontalContentAlignment = HorizontalAlignment.Left,
+            VerticalContentAlignment = VerticalAlignment.Center,
+        };
+        AutomationProperties.SetAutomationId(item, automationId);
+        return item;
     }
 
     private static Button Button(string tip, Geometry icon, ICommand command, string automationId)

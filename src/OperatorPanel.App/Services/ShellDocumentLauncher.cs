@@ -4,7 +4,7 @@ using OperatorPanel.ViewModels.Services;
 
 namespace OperatorPanel.App.Services;
 
-/// <summary>Opens a file the way a double-click in Explorer does (the alarm journal's print page opens in the browser).</summary>
+/// <summary>Opens a document with the program Windows associates with its extension (README.txt: the text editor).</summary>
 public sealed class ShellDocumentLauncher : IDocumentLauncher
 {
     public bool TryOpen(string path, out string? error)
@@ -15,7 +15,7 @@ public sealed class ShellDocumentLauncher : IDocumentLauncher
             error = null;
             return true;
         }
-        catch (Win32Exception ex)
+        catch (Exception ex) when (ex is Win32Exception or InvalidOperationException or System.IO.FileNotFoundException)
         {
             error = ex.Message;
             return false;

@@ -28,7 +28,7 @@ public sealed class TrendWitness : IDisposable
 
     private void OnChanged(object? sender, PropertyChangedEventArgs e)
     {
-        if (_witnessed || e.PropertyName != nameof(TrendsViewModel.Plot) || !_trends.IsVisible)
+        if (_witnessed || e.PropertyName != nameof(TrendsViewModel.Plot) || !_trends.IsShown)
         {
             return;
         }

@@ -6,8 +6,9 @@ namespace OperatorPanel.App.Services;
 /// <summary>The view models' questions as WPF message boxes, owned by the main window.</summary>
 public sealed class WpfDialogService : IDialogService
 {
-    public Task<bool> ConfirmAsync(string title, string message) =>
-        Task.FromResult(MessageBox.Show(Owner(), message, title, MessageBoxButton.YesNo, MessageBoxImage.Question) == MessageBoxResult.Yes);
+    public Task<bool> ConfirmAsync(string title, string message, bool noByDefault = false) =>
+        Task.FromResult(MessageBox.Show(
+            Owner(), message, title, MessageBoxButton.YesNo, MessageBoxImage.Question, noByDefault ? MessageBoxResult.No : MessageBoxResult.Yes) == MessageBoxResult.Yes);
 
     public Task<SaveChangesAnswer> AskSaveChangesAsync(string projectName)
     {

@@ -19,10 +19,15 @@ public partial class AlarmsView : UserControl
 
     private void OnAlarmGridScrollChanged(object sender, ScrollChangedEventArgs e) => ReportVisibleRows();
 
+    /// <summary>The History tab hides the alarm table: none of its rows is in view then, and all again when it returns.</summary>
+    private void OnAlarmGridVisibleChanged(object sender, DependencyPropertyChangedEventArgs e) =>
+        Dispatcher.BeginInvoke(ReportVisibleRows, System.Windows.Threading.DispatcherPriority.Loaded);
+
     private void OnShowHiddenPending(object sender, RoutedEventArgs e)
     {
         if (DataContext is AlarmsViewModel { FirstHiddenPending: { } row })
         {
+            AlarmTabs.SelectedIndex = 0;
             AlarmGrid.ScrollIntoView(row);
         }
     }

@@ -6,7 +6,7 @@ namespace OperatorPanel.App.Wizard;
 
 /// <summary>
 /// The five-step project wizard (also the editor of an existing project). Visual concerns only: it closes itself
-/// when the view model has a result, and hands clipboard text to the symbol paste.
+/// when the view model has a result, tells the view model when it closed, and hands clipboard text to the symbol paste.
 /// </summary>
 public partial class WizardWindow : Window
 {
@@ -19,6 +19,7 @@ public partial class WizardWindow : Window
         DataContext = wizard;
         InitializeComponent();
         wizard.PropertyChanged += OnWizardChanged;
+        Closed += (_, _) => wizard.Close();
     }
 
     private void OnWizardChanged(object? sender, PropertyChangedEventArgs e)

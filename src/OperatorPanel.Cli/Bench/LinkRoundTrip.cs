@@ -1,6 +1,6 @@
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
-using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
@@ -9,7 +9,7 @@ namespace OperatorPanel.Cli.Bench;
 
 /// <summary>
 /// The measured part of `opanel bench link`: the line's reference PLC served by SimulatedPlcHost on one end of a socat
-/// pty pair, the panel's PlcLink and PollingEngine (triggered mode) on the other, and N full refreshes requested one
+/// pty pair, the panel's PlcLink and Bus (triggered mode, stored lists) on the other, and N full refreshes requested one
 /// after the other, after one IDENTIFY as the panel sends on connecting (so a handler with 09 is read with it). A pty
 /// does not pace characters at the baud rate, so this measures software turnaround plus the configured reply delay,
 /// not line time.
@@ -29,49 +29,43 @@ internal static class LinkRoundTrip
         using var pty = await SocatPty.StartAsync(socatPath, time, cancellationToken).ConfigureAwait(false);
         var plc = new ReferencePlc(new HandlerConfig(line.Station, line.Cpu, replyDelayMs: ReplyDelayMs));
         Fill(plc.Memory);
-        var bus = new BusSimulator();
-        bus.Attach(plc);
+        var simulator = new BusSimulator();
+        simulator.Attach(plc);
         var panelSerial = new SerialSettings { PortName = pty.PanelEnd, BaudRate = Baud };
         await using var plcPort = new SerialPortTransport(panelSerial with { PortName = pty.PlcEnd });
         await plcPort.OpenAsync(cancellationToken).ConfigureAwait(false);
-        var host = new SimulatedPlcHost(plcPort, bus, [], time);
+        var host = new SimulatedPlcHost(plcPort, simulator, [], time);
         var options = LinkOptions.For(panelSerial, ReplyDelayMs);
-        await using var link = new PlcLink(new SerialPortTransport(panelSerial), options, time);
-        var engine = new PollingEngine(link, line.Plan(), time) { Mode = RefreshMode.OnDemand };
-
         using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
         var hostRun = Task.Run(() => host.RunAsync(stop.Token), CancellationToken.None);
-        // As the panel does on connecting: IDENTIFY tells the engine the handler's features (09 READ CHANGES OF LISTS).
-        if (await link.ExchangeAsync(new IdentifyRequest(line.Station), cancellationToken).ConfigureAwait(false) is IdentifyResponse identity)
-        {
-            engine.NoteIdentity(identity);
-        }
-
-        var engineRun = Task.Run(() => engine.RunAsync(stop.Token), CancellationToken.None);
+        await using var bus = Bus.Start(
+            new PlcLink(new SerialPortTransport(panelSerial), options, time), line.Plan(), new BusSettings { Mode = RefreshMode.OnDemand }, time);
         var refreshes = new List<double>(cycles);
         var failed = 0;
         try
         {
+            // As the panel does on connecting: IDENTIFY tells the bus the handler's features (09 READ CHANGES OF LISTS).
+            await bus.IdentifyAsync(line.Station, cancellationToken).ConfigureAwait(false);
             for (var i = 0; i < cycles; i++)
             {
-                var result = await engine.RequestRefreshAsync(cancellationToken).WaitAsync(RefreshLimit, time, cancellationToken).ConfigureAwait(false);
+                var result = await bus.RefreshAsync(cancellationToken).WaitAsync(RefreshLimit, time, cancellationToken).ConfigureAwait(false);
                 refreshes.Add((result.FinishedAt - result.StartedAt).TotalMilliseconds);
                 failed += result.FramesFailed;
             }
         }
         finally
         {
+            await bus.StopPollingAsync().ConfigureAwait(false);
             await stop.CancelAsync().ConfigureAwait(false);
-            await engineRun.ConfigureAwait(false);
             await StopHostAsync(hostRun).ConfigureAwait(false);
         }
 
         return new MeasuredRoundTrip(
             $"{Baud} 8N1, reply delay {ReplyDelayMs} ms, inter-frame gap {options.InterFrameGap.TotalMilliseconds:0} ms",
             cycles,
-            engine.Plan.FrameCount,
+            bus.Plan.FrameCount,
             failed,
-            link.StatisticsFor(line.Station),
+            bus.StatisticsFor(line.Station),
             refreshes.Min(),
             refreshes.Average(),
             refreshes.Max());

@@ -6,7 +6,8 @@ using OperatorPanel.Core.Transport;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel bench link [--radio] [--scan-ms M] [--air-baud B] [--cycles N]</c> (and <c>bench stl</c>, <c>bench plan</c>, <c>bench history</c>):
+/// <c>opanel bench link [--radio] [--scan-ms M] [--air-baud B] [--cycles N]</c>, <c>opanel bench link --ppi [--baud 9600|19200|187500]</c>
+/// (and <c>bench stl</c>, <c>bench plan</c>, <c>bench history</c>):
 /// the characters of a full refresh of the reference line against one item per request and the hex bound, the
 /// MODELLED time of a steady and an idle refresh on the PC/PPI cable or (--radio) the radio modules, the targets
 /// judged PASS/FAIL, then the round trip MEASURED over a socat pty; the text ends with one summary line.
@@ -19,6 +20,9 @@ internal static class BenchCommand
 
     /// <summary>The reference line's setting: the handler's usual 9600 8N1 (docs/protocol.md section 6).</summary>
     private static readonly LineSetting Setting = LineSetting.Modeled[0];
+
+    /// <summary>Refreshes the PPI bench simulates back to back: enough for the scan's phase to take many values.</summary>
+    private const int PpiRefreshes = 40;
 
     public static Command Create(Func<ParseResult, CliContext> context)
     {
@@ -44,9 +48,19 @@ internal static class BenchCommand
             Description = "The radio modules' air data rate in baud (default 38400, an assumption)",
             DefaultValueFactory = _ => (int)RadioModuleTiming.Default.AirBaud,
         };
-        var command = new Command("link", "Characters, modelled refresh time (cable or --radio) and targets of the reference line; measured round trip")
+        var ppi = new Option<bool>("--ppi")
         {
-            cycles, radio, scan, air,
+            Description = "The reference line read over PPI with no handler (simulated CPU, the panel's PPI master); with --baud",
+        };
+        var baud = new Option<int>("--baud") { Description = "With --ppi: 9600 (default), 19200 or 187500", DefaultValueFactory = _ => 9600 };
+        var usbLatency = new Option<double>("--usb-latency-ms")
+        {
+            Description = "With --ppi at 187500 baud: the USB-RS485 adapter's latency timer in ms (default 16, FTDI's default)",
+            DefaultValueFactory = _ => 16,
+        };
+        var command = new Command("link", "Characters, modelled refresh time (cable, --radio or --ppi) and targets of the reference line; measured round trip")
+        {
+            cycles, radio, scan, air, ppi, baud, usbLatency,
         };
         command.SetAction(async (parse, cancellationToken) =>
         {
@@ -67,6 +81,11 @@ internal static class BenchCommand
             if (airBaud is < 600 or > 500_000)
             {
                 return cli.Fail(ExitCodes.BadInput, $"--air-baud {airBaud}: the CC1100 runs at 600-500000 baud");
+            }
+
+            if (parse.GetValue(ppi))
+            {
+                return await RunPpiAsync(cli, parse.GetValue(baud), scanMs, parse.GetValue(usbLatency), parse.GetValue(radio));
             }
 
             var line = ReferenceLine.Create();
@@ -95,6 +114,49 @@ internal static class BenchCommand
                 : ExitCodes.Ok;
         });
         return command;
+    }
+
+    /// <summary><c>bench link --ppi</c>: the reference line over PPI (<see cref="PpiBench"/>); modelled only, no pty part.</summary>
+    private static async Task<int> RunPpiAsync(CliContext cli, int baud, double scanMs, double usbLatencyMs, bool radio)
+    {
+        if (radio)
+        {
+            return cli.Fail(ExitCodes.BadInput, "--ppi and --radio: the radio modules carry Freeport frames ('<' ... '>'), not PPI");
+        }
+
+        if (baud is not (9600 or 19200 or 187500))
+        {
+            return cli.Fail(ExitCodes.BadInput, $"--baud {baud}: PPI runs at 9600, 19200 or 187500");
+        }
+
+        if (!(usbLatencyMs >= 1 && usbLatencyMs <= 255))
+        {
+            return cli.Fail(ExitCodes.BadInput, $"--usb-latency-ms {usbLatencyMs}: an FT232R's latency timer is 1-255 ms");
+        }
+
+        var report = await PpiBench.RunAsync(ReferenceLine.Create(), baud, scanMs, PpiRefreshes, usbLatencyMs);
+        if (cli.Json)
+        {
+            cli.WriteJson(new
+            {
+                link = "ppi",
+                baud,
+                scanMs,
+                pcSide = report.Pc.Name,
+                jobs = report.Plan.Requests.Length,
+                steadyChars = report.SteadyChars,
+                steadyMs = Math.Round(report.SteadyMs, 1),
+                hexBoundMs = Math.Round(report.HexBoundMs, 1),
+                summary = report.SummaryLine,
+            });
+        }
+        else
+        {
+            PpiBenchText.Write(cli.Out, report);
+        }
+
+        cli.Log.Information("{Summary}", report.SummaryLine);
+        return ExitCodes.Ok;
     }
 
     /// <summary>The time model for the chosen medium, with the gap the panel's link keeps on it (LinkOptions).</summary>

@@ -4,6 +4,8 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Freeport;
+using OperatorPanel.Stl;
+using OperatorPanel.Stl.Symbols;
 using OperatorPanel.StlGen;
 using OperatorPanel.StlGen.Options;
 
@@ -33,9 +35,10 @@ internal static class GenerateCommand
         var copyBytes = new Option<int>("--copy-bytes") { Description = "V bytes for READ CHANGES copies after the work bytes, 0-255 (0 = none: every READ CHANGES answers the whole list; default 120)", DefaultValueFactory = _ => HandlerDefaults.CopyBytes };
         var allowStop = new Option<bool>("--allow-stop") { Description = "Include 07 STOP: the panel may put the CPU in STOP (default: the station's \"allowStop\" in the project, off unless set; off = no STOP code, the command is refused with error 05)" };
         var merge = new Option<string?>("--merge") { Description = "A program exported from Micro/WIN (File > Export): check for collisions and write STATION-merged.awl" };
+        var symbols = new Option<string?>("--symbols") { Description = "With --merge: the program's symbol table exported from Micro/WIN (symbol, address, comment, tab-separated), so symbolic operands are checked as their addresses" };
         var command = new Command("generate", "Generate the S7-200 handler program (.awl), symbol table and technician notes. Exit codes: 0 written, 1 bad input, 2 impossible settings")
         {
-            project, output, station, stats, plcPort, buffer, replyDelay, writable, charTimeout, sbr, interrupt, copyBytes, allowStop, merge,
+            project, output, station, stats, plcPort, buffer, replyDelay, writable, charTimeout, sbr, interrupt, copyBytes, allowStop, merge, symbols,
         };
         command.SetAction(parse =>
         {
@@ -76,14 +79,28 @@ internal static class GenerateCommand
                 CopyBytes = parse.GetValue(copyBytes),
                 AllowStop = chosen.AllowStop || parse.GetValue(allowStop),
             };
-            string? userProgram = null;
+            AwlSource? userProgram = null;
             var userPath = parse.GetValue(merge);
-            if (userPath is not null && !HandlerPackage.TryReadProgram(userPath, out userProgram, out error))
+            if (userPath is not null && !AwlFiles.TryRead(userPath, out userProgram, out error))
             {
                 return cli.Fail(ExitCodes.BadInput, error);
             }
 
-            var package = HandlerPackage.Generate(options, HandlerPackage.FileStem(chosen), userProgram);
+            AwlSymbolTable? table = null;
+            if (parse.GetValue(symbols) is { } symbolsPath)
+            {
+                if (userPath is null)
+                {
+                    return cli.Fail(ExitCodes.BadInput, "--symbols goes with --merge: it gives the symbols of the program merged");
+                }
+
+                if (!AwlFiles.TryReadSymbols(cli, symbolsPath, out table, out error))
+                {
+                    return cli.Fail(ExitCodes.BadInput, error);
+                }
+            }
+
+            var package = HandlerPackage.Generate(options, HandlerPackage.FileStem(chosen), userProgram, table);
             if (!package.Handler.Ok)
             {
                 GenerateView.WriteRefused(cli, package.Handler.Diagnostics);

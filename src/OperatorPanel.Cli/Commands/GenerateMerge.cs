@@ -25,7 +25,7 @@ internal static class GenerateMerge
                     cli.Error.WriteLine(Format(name, diagnostic));
                 }
 
-                cli.Error.WriteLine($"opanel: nothing written: the handler collides with {name}");
+                cli.Error.WriteLine($"opanel: nothing written: the merge with {name} was refused ({result.Errors.Count()} problem(s))");
             }
 
             return [];

@@ -1,7 +1,7 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
-using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Cli.Commands;
 
@@ -25,25 +25,21 @@ internal static class IdentifyCommand
                 return ExitCodes.BadInput;
             }
 
-            if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
+            if (!LinkSession.TryOpen(target, PollPlan.Empty, cli.Log, out var opened, out var openError))
             {
                 return cli.Fail(ExitCodes.BadInput, openError);
             }
 
             await using var session = opened;
-            PlcResponse response;
-            try
+            var reply = await session.Bus.IdentifyAsync(target.Station, cancellationToken);
+            if (reply.Failure is { } failure)
             {
-                response = await session.Link.ExchangeAsync(new IdentifyRequest(target.Station), cancellationToken);
-            }
-            catch (PlcCommunicationException ex)
-            {
-                return LinkFailure.From(target, ex).Report(cli);
+                return LinkFailure.From(target, failure).Report(cli);
             }
 
-            if (response is not IdentifyResponse identity)
+            if (reply.Response is not IdentifyResponse identity)
             {
-                return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: IDENTIFY answered with {response}");
+                return cli.Fail(ExitCodes.LinkFailure, $"{target.Describe()}: IDENTIFY answered with {reply.Response}");
             }
 
             var view = IdentifyView.From(target, identity);

@@ -39,6 +39,9 @@ internal sealed record LinkFailure(string Error, PlcErrorKind? Kind, string? Hin
             PlcErrorKind.FrameCorrupt =>
                 $"replies arrive garbled: check that {line} is the handler's setting (--baud, --parity, --data-bits), that no "
                 + $"other PLC on the bus also has station number {station}, and the RS-485 wiring",
+            PlcErrorKind.AnotherMaster =>
+                "another PPI master (Micro/WIN, a TD 200, an HMI or a CPU in PPI master mode) is on the bus: the panel does not share "
+                + "the bus with another master; disconnect it or give the panel its own port",
             PlcErrorKind.NegativeReply or PlcErrorKind.HandlerProtocolV1 or null => null,
         };
     }

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 
@@ -52,6 +53,11 @@ internal static class ProjectNewCommand
                 return cli.Fail(ExitCodes.BadInput, $"{file} already exists; add --force to replace it (the old file is kept as {file}.bak)");
             }
 
+            if (!TryCreateFolder(file, out var folderError))
+            {
+                return cli.Fail(ExitCodes.BadInput, folderError);
+            }
+
             var project = StarterProject.Create(parse.GetValue(name) ?? Path.GetFileNameWithoutExtension(file), profile, address, portName);
             if (!ProjectFile.TrySave(project, file, out var saveError))
             {
@@ -73,5 +79,27 @@ internal static class ProjectNewCommand
             return ExitCodes.Ok;
         });
         return command;
+    }
+
+    /// <summary>A new project goes where it is asked to, its folder made first (<c>-o plant/line3.opproj</c>).</summary>
+    private static bool TryCreateFolder(string file, [NotNullWhen(false)] out string? error)
+    {
+        var folder = Path.GetDirectoryName(Path.GetFullPath(file));
+        error = null;
+        if (folder is null || Directory.Exists(folder))
+        {
+            return true;
+        }
+
+        try
+        {
+            Directory.CreateDirectory(folder);
+            return true;
+        }
+        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
+        {
+            error = $"cannot create the folder {folder} for {Path.GetFileName(file)}: {ex.Message}";
+            return false;
+        }
     }
 }

@@ -1,7 +1,6 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 
@@ -57,21 +56,20 @@ internal static class ReadCommand
 
     private static async Task<int> ReadAsync(CliContext cli, LinkTarget target, List<(PlcAddress Address, DisplayFormat? Format)> addresses, CancellationToken cancellationToken)
     {
-        if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
+        if (!LinkSession.TryOpen(target, PlanFor(target, addresses.Select(a => a.Address)), cli.Log, out var opened, out var openError))
         {
             return cli.Fail(ExitCodes.BadInput, openError);
         }
 
         await using var session = opened;
-        await using var run = BusLine.OnDemand(session.Link, PlanFor(target, addresses.Select(a => a.Address)), TimeProvider.System, cli.Log);
-        await run.Engine.RequestRefreshAsync(cancellationToken);
-        var status = run.Engine.GetStationStatus(target.Station);
+        await session.Bus.RefreshAsync(cancellationToken);
+        var status = session.Bus.StatusOf(target.Station);
         if (status.State != StationState.Online)
         {
             return LinkFailure.From(target, status.LastError, status.LastErrorKind).Report(cli);
         }
 
-        var views = addresses.Distinct().Select(a => ReadValueView.From(a.Address, run.Engine.TryGetValue(target.Station, a.Address, out var v) ? v : null, a.Format)).ToList();
+        var views = addresses.Distinct().Select(a => ReadValueView.From(a.Address, session.Bus.TryGetValue(target.Station, a.Address, out var v) ? v : null, a.Format)).ToList();
         if (cli.Json)
         {
             cli.WriteJson(views);

@@ -3,6 +3,7 @@ using OperatorPanel.Cli.Hosting;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Demo;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 
@@ -11,7 +12,8 @@ namespace OperatorPanel.Cli.Commands;
 /// <summary>
 /// <c>opanel simulate --cpu M --station N [--station N2 ...] --device PATH</c>, or <c>opanel simulate --project FILE --device
 /// PATH</c> for a project's bus (each station with its own CPU): simulated PLCs with the protocol handler on a real serial
-/// device (a USB-RS485 adapter, or one end of a socat pty pair), until Ctrl+C, SIGTERM or --duration.
+/// device (a USB-RS485 adapter, or one end of a socat pty pair), until Ctrl+C, SIGTERM or --duration. With --ppi the
+/// CPUs run no handler and their ports speak PPI (docs/ppi.md section 11).
 /// </summary>
 internal static class SimulateCommand
 {
@@ -30,9 +32,15 @@ internal static class SimulateCommand
         var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
         var model = ModelOption.Create();
         var allowStop = new Option<bool>("--allow-stop") { Description = "The handler carries 07 STOP (opanel generate --allow-stop): the panel may put the simulated CPU in STOP" };
+        var ppi = new Option<bool>("--ppi")
+        {
+            Description = "No handler: the CPUs run an empty program and their ports speak PPI, the S7-200's own protocol, at PPI address = "
+                + "station, 9600 (default), 19200 or 187500 baud, 8 data bits, even parity (docs/ppi.md). Without --ppi the ports still "
+                + "speak PPI whenever the handler does not hold them in Freeport (STOP, switch at TERM)",
+        };
         var command = new Command("simulate", "Serve simulated S7-200 PLCs running the protocol handler on a serial device. Exit codes: 0 stopped, 1 bad input, 2 port failure")
         {
-            project, cpu, revision, stations, replyDelay, noProcess, duration, model, allowStop,
+            project, cpu, revision, stations, replyDelay, noProcess, duration, model, allowStop, ppi,
         };
         serial.AddTo(command);
         command.SetAction(async parse =>
@@ -59,7 +67,13 @@ internal static class SimulateCommand
                 }
             }
 
-            if (!SimulatedStations.TryBuild(parse, fromProject, cpu, revision, stations, serial, (byte)delay, parse.GetValue(allowStop), out var configs, out var settings, out var error))
+            var speaksPpi = parse.GetValue(ppi);
+            if (speaksPpi && parse.GetValue(model) == SimulationModel.Reference)
+            {
+                return cli.Fail(ExitCodes.BadInput, "--ppi needs the STL model (the reference model has no PPI side): leave out --model reference");
+            }
+
+            if (!SimulatedStations.TryBuild(parse, fromProject, cpu, revision, stations, serial, (byte)delay, parse.GetValue(allowStop), speaksPpi, out var configs, out var settings, out var error))
             {
                 return cli.Fail(ExitCodes.BadInput, error);
             }
@@ -70,20 +84,21 @@ internal static class SimulateCommand
                 return cli.Fail(ExitCodes.BadInput, "--duration must be a positive number of seconds");
             }
 
-            if (!SimulatedLine.TryCreate(configs, parse.GetValue(model), settings, !parse.GetValue(noProcess), out var line, out error))
+            var mode = speaksPpi ? PpiMode.WithoutHandler : PpiMode.BesideHandler;
+            if (!SimulatedLine.TryCreate(configs, parse.GetValue(model), settings, !parse.GetValue(noProcess), mode, out var line, out error))
             {
                 return cli.Fail(ExitCodes.BadInput, error);
             }
 
-            return await ServeAsync(cli, line, settings, configs, seconds is { } s ? TimeSpan.FromSeconds(s) : null, parse.GetValue(model));
+            return await ServeAsync(cli, line, settings, configs, seconds is { } s ? TimeSpan.FromSeconds(s) : null, parse.GetValue(model), speaksPpi);
         });
         return command;
     }
 
     private static async Task<int> ServeAsync(
-        CliContext cli, SimulatedLine line, SerialSettings settings, List<HandlerConfig> configs, TimeSpan? duration, SimulationModel model)
+        CliContext cli, SimulatedLine line, SerialSettings settings, List<HandlerConfig> configs, TimeSpan? duration, SimulationModel model, bool ppi)
     {
-        var serving = new SimulationView(configs, settings, line.RunsProcess, model.ToString().ToLowerInvariant());
+        var serving = new SimulationView(configs, settings, line.RunsProcess, model.ToString().ToLowerInvariant()) { Ppi = ppi };
         serving.WriteStart(cli);
         await using var port = new SerialPortTransport(settings);
         var host = line.HostOn(port, TimeProvider.System, cli.Log);
@@ -101,7 +116,7 @@ internal static class SimulateCommand
             return cli.Fail(ExitCodes.LinkFailure, $"{ex.Message}; the simulated PLCs stopped");
         }
 
-        serving.WriteSummary(cli, host.Replies, line.Line.FramesReceived);
+        serving.WriteSummary(cli, host.Replies, line.Line.FramesReceived, (line.Line as StlLine)?.PpiFramesAnswered ?? 0);
         return ExitCodes.Ok;
     }
 }

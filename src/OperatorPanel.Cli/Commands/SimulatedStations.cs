@@ -20,7 +20,7 @@ internal static class SimulatedStations
     /// </summary>
     public static bool TryBuild(
         ParseResult parse, IReadOnlyList<ProjectStation>? fromProject, Option<string> cpu, Option<string?> revision, Option<int[]> stations,
-        SerialOptionSet serial, byte replyDelayMs, bool allowStop,
+        SerialOptionSet serial, byte replyDelayMs, bool allowStop, bool ppi,
         [NotNullWhen(true)] out List<HandlerConfig>? configs, [NotNullWhen(true)] out SerialSettings? settings, [NotNullWhen(false)] out string? error)
     {
         configs = null;
@@ -39,7 +39,9 @@ internal static class SimulatedStations
             }
 
             var link = fromProject[0].Link;
-            settings = device with { BaudRate = link.BaudRate, Parity = link.Parity, DataBits = link.DataBits };
+            settings = ppi
+                ? device with { BaudRate = Simulator.Stl.Ppi.PpiSettings.ForLine(0, link.BaudRate).Baud, Parity = Core.Transport.Parity.Even, DataBits = 8 }
+                : device with { BaudRate = link.BaudRate, Parity = link.Parity, DataBits = link.DataBits };
             configs = [.. fromProject.Select(s => new HandlerConfig(s.Address, s.Cpu, replyDelayMs: replyDelayMs, allowStop: s.AllowStop || allowStop))];
             return true;
         }
@@ -51,7 +53,7 @@ internal static class SimulatedStations
         }
 
         if (!CpuOptions.TryResolve(parse.GetValue(cpu), parse.GetValue(revision), out var profile, out error)
-            || !serial.TryBind(parse, null, out settings, out error))
+            || !(ppi ? serial.TryBindPpi(parse, out settings, out error) : serial.TryBind(parse, null, out settings, out error)))
         {
             return false;
         }

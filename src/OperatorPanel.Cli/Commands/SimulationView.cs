@@ -24,6 +24,9 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
         _cpus = [.. configs.Select(c => c.Cpu.DisplayName)];
     }
 
+    /// <summary>The CPUs run no handler and speak PPI (simulate --ppi).</summary>
+    public bool Ppi { get; init; }
+
     public void WriteStart(CliContext cli)
     {
         if (cli.Json)
@@ -35,19 +38,25 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
         var plcs = _cpus.Distinct().Count() > 1
             ? string.Join(", ", Stations.Select((s, i) => $"station {s} ({_cpus[i]})"))
             : $"{Cpu} at station{(Stations.Count == 1 ? string.Empty : "s")} {string.Join(", ", Stations)}";
+        var handler = Ppi ? "no handler, PPI at the station addresses" : $"reply delay {ReplyDelayMs} ms";
         cli.Out.WriteLine($"simulating {plcs} on {Port} {Line}, "
-            + $"reply delay {ReplyDelayMs} ms, model {Model}, demo process {(Process ? "on" : "off")}; Ctrl+C to stop");
+            + $"{handler}, model {Model}, demo process {(Process ? "on" : "off")}; Ctrl+C to stop");
         cli.Out.Flush();
     }
 
-    public void WriteSummary(CliContext cli, int replies, int framesReceived)
+    public void WriteSummary(CliContext cli, int replies, int framesReceived, int ppiFramesAnswered)
     {
         if (cli.Json)
         {
-            cli.WriteJsonLine(new { @event = "stopped", port = Port, framesReceived, framesAnswered = replies });
+            cli.WriteJsonLine(Ppi
+                ? new { @event = "stopped", port = Port, ppiTelegramsAnswered = ppiFramesAnswered }
+                : (object)new { @event = "stopped", port = Port, framesReceived, framesAnswered = replies, ppiTelegramsAnswered = ppiFramesAnswered });
             return;
         }
 
-        cli.Out.WriteLine($"stopped serving {Port}: {framesReceived} frames received, {replies} answered");
+        cli.Out.WriteLine(Ppi
+            ? $"stopped serving {Port}: {ppiFramesAnswered} PPI telegrams answered"
+            : $"stopped serving {Port}: {framesReceived} frames received, {replies} answered"
+                + (ppiFramesAnswered > 0 ? $", {ppiFramesAnswered} PPI telegrams answered" : string.Empty));
     }
 }

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Link;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Stop;
 
 namespace OperatorPanel.Cli.Commands;
@@ -51,13 +52,13 @@ internal static class StopCommand
                     + "until someone sets RUN. Nothing sent; to do it, give the same command with --yes");
             }
 
-            if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
+            if (!LinkSession.TryOpen(target, PollPlan.Empty, cli.Log, out var opened, out var openError))
             {
                 return cli.Fail(ExitCodes.BadInput, openError);
             }
 
             await using var session = opened;
-            var outcome = await new RemoteStop(session.Link, cli.Log).StopAsync(target.Station, cancellationToken);
+            var outcome = await session.Bus.StopAsync(target.Station, cancellationToken);
             var view = StopResultView.From(target, outcome);
             if (cli.Json)
             {

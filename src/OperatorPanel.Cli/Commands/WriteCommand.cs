@@ -1,6 +1,5 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Link;
-using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 
 namespace OperatorPanel.Cli.Commands;
@@ -58,15 +57,14 @@ internal static class WriteCommand
 
     private static async Task<int> WriteAsync(CliContext cli, LinkTarget target, List<WriteItem> items, CancellationToken cancellationToken)
     {
-        if (!LinkSession.TryOpen(target, cli.Log, out var opened, out var openError))
+        if (!LinkSession.TryOpen(target, ReadCommand.PlanFor(target, items.Select(i => i.Address)), cli.Log, out var opened, out var openError))
         {
             return cli.Fail(ExitCodes.BadInput, openError);
         }
 
         await using var session = opened;
-        await using var run = BusLine.OnDemand(session.Link, ReadCommand.PlanFor(target, items.Select(i => i.Address)), TimeProvider.System, cli.Log);
-        await run.Engine.RequestRefreshAsync(cancellationToken);
-        var status = run.Engine.GetStationStatus(target.Station);
+        await session.Bus.RefreshAsync(cancellationToken);
+        var status = session.Bus.StatusOf(target.Station);
         if (status.State != StationState.Online)
         {
             return LinkFailure.From(target, status.LastError, status.LastErrorKind).Report(cli, "nothing written");
@@ -75,8 +73,8 @@ internal static class WriteCommand
         var results = new List<WriteResultView>();
         foreach (var item in items)
         {
-            var old = run.Engine.TryGetValue(target.Station, item.Address, out var value) ? value : null;
-            var outcome = await run.Engine.WriteAsync(item.Request, cancellationToken);
+            var old = session.Bus.TryGetValue(target.Station, item.Address, out var value) ? value : null;
+            var outcome = await session.Bus.WriteAsync(item.Request, cancellationToken);
             results.Add(WriteResultView.From(item, old, outcome));
         }
 

@@ -1,44 +1,49 @@
 using System.Diagnostics.CodeAnalysis;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Transport;
-using OperatorPanel.Simulator.Hosting;
+using OperatorPanel.Demo;
 using OperatorPanel.Simulator.Reference;
 using Serilog;
 
 namespace OperatorPanel.Cli.Link;
 
-/// <summary>One bus opened for a verb: a <see cref="PlcLink"/> over a serial port, or over an in-process <see cref="DemoLine"/>.</summary>
+/// <summary>
+/// One bus opened for a verb: a <see cref="Core.Line.Bus"/> polling on demand with plain READs, over a serial port or an
+/// in-process <see cref="DemoLine"/>. IDENTIFY, STOP, reads and writes all go through the bus's queue.
+/// </summary>
 internal sealed class LinkSession : IAsyncDisposable
 {
     private readonly DemoLine? _demo;
 
-    private LinkSession(PlcLink link, DemoLine? demo)
+    private LinkSession(Bus bus, DemoLine? demo)
     {
-        Link = link;
+        Bus = bus;
         _demo = demo;
     }
 
-    public PlcLink Link { get; }
+    public Bus Bus { get; }
 
-    public string PortName => Link.PortName;
+    public string PortName => Bus.PortName;
 
     /// <summary>
-    /// Opens <paramref name="serial"/>, or with <paramref name="demoStations"/> a demo line simulating them with
-    /// <paramref name="model"/>; false with the reason when the demo line cannot simulate a station.
+    /// Opens the target's port, or with <c>--demo</c> a demo line simulating its station, and a bus watching
+    /// <paramref name="plan"/> on it; false with the reason when the demo line cannot simulate the station.
     /// </summary>
-    public static bool TryOpen(
-        SerialSettings serial, IReadOnlyList<HandlerConfig>? demoStations, SimulationModel model, ILogger log,
-        TimeSpan? scanAllowance, [NotNullWhen(true)] out LinkSession? session, [NotNullWhen(false)] out string? error)
+    public static bool TryOpen(LinkTarget target, PollPlan plan, ILogger log, [NotNullWhen(true)] out LinkSession? session, [NotNullWhen(false)] out string? error)
     {
+        ArgumentNullException.ThrowIfNull(target);
         session = null;
         DemoLine? demo = null;
-        if (demoStations is not null && !DemoLine.TryStart(serial, demoStations, model, log, out demo, out error))
+        if (target.Demo && !DemoLine.TryStart(target.Serial, [DemoStation(target)], target.Model, log, out demo, out error))
         {
             return false;
         }
 
-        ITransport transport = demo is null ? new SerialPortTransport(serial) : demo.PanelSide;
-        session = new LinkSession(new PlcLink(transport, OptionsFor(serial, scanAllowance, demo is not null), TimeProvider.System, log), demo);
+        ITransport transport = demo is null ? new SerialPortTransport(target.Serial) : demo.PanelSide;
+        var link = new PlcLink(transport, OptionsFor(target.Serial, target.ScanAllowance, demo is not null), TimeProvider.System, log);
+        session = new LinkSession(Bus.OnDemand(link, plan, TimeProvider.System, log), demo);
         error = null;
         return true;
     }
@@ -51,19 +56,18 @@ internal sealed class LinkSession : IAsyncDisposable
         return demo ? options with { ScanAllowance = options.ScanAllowance + DemoLine.HostAllowance } : options;
     }
 
-    public static bool TryOpen(LinkTarget target, ILogger log, [NotNullWhen(true)] out LinkSession? session, [NotNullWhen(false)] out string? error) =>
-        TryOpen(target.Serial, target.Demo ? [DemoStation(target)] : null, target.Model, log, target.ScanAllowance, out session, out error);
-
     /// <summary>The --demo PLC: the target's station and CPU, its handler with STOP so <c>opanel stop --demo</c> can be tried.</summary>
     private static HandlerConfig DemoStation(LinkTarget target) => new(target.Station, target.Cpu!, allowStop: true);
 
+    /// <summary>The bus stops polling, then the demo line, then the port closes (the demo would see an unplugged line otherwise).</summary>
     public async ValueTask DisposeAsync()
     {
+        await Bus.StopPollingAsync();
         if (_demo is not null)
         {
             await _demo.DisposeAsync();
         }
 
-        await Link.DisposeAsync();
+        await Bus.DisposeAsync();
     }
 }

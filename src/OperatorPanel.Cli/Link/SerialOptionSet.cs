@@ -10,6 +10,9 @@ internal sealed class SerialOptionSet
     /// <summary>S7-200 Freeport rates (SMB30 bits 4-2; 57600 and 115200 need a Current CPU; docs/cpu-profiles.md).</summary>
     private static readonly int[] FreeportRates = [1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200];
 
+    /// <summary>The S7-200's PPI rates (seed 002, Tables A-2 to A-4: "PPI/MPI baud rates 9.6, 19.2, and 187.5 kbaud").</summary>
+    private static readonly int[] PpiRates = [9600, 19200, 187500];
+
     private readonly bool _panelSide;
 
     /// <param name="panelSide">
@@ -43,8 +46,41 @@ internal sealed class SerialOptionSet
         }
     }
 
+    /// <summary>
+    /// A PPI line: --baud 9600, 19200 or 187500 (the S7-200's PPI rates, seed 002 Tables A-2 to A-4), always 8 data bits,
+    /// even parity and one stop bit (ML801761 p. 228): --parity and --data-bits may only say so.
+    /// </summary>
+    public bool TryBindPpi(ParseResult parse, [NotNullWhen(true)] out SerialSettings? serial, [NotNullWhen(false)] out string? error)
+    {
+        serial = null;
+        var baud = parse.GetValue(Baud);
+        if (!PpiRates.Contains(baud))
+        {
+            error = $"baud {baud} is not a PPI rate; PPI runs at {string.Join(", ", PpiRates)}";
+            return false;
+        }
+
+        if ((parse.GetResult(Parity) is { Implicit: false } && parse.GetValue(Parity) != Core.Transport.Parity.Even)
+            || (parse.GetResult(DataBits) is { Implicit: false } && parse.GetValue(DataBits) != 8))
+        {
+            error = "PPI characters are always 8 data bits, even parity, one stop bit: leave out --parity and --data-bits or give even and 8";
+            return false;
+        }
+
+        if (!TryBind(parse, null, baud: 9600, out var line, out error))
+        {
+            return false;
+        }
+
+        serial = line with { BaudRate = baud, Parity = Core.Transport.Parity.Even, DataBits = 8 };
+        return true;
+    }
+
     /// <summary>The line settings; <paramref name="fallbackPort"/> names the port when --device is absent (the demo line).</summary>
-    public bool TryBind(ParseResult parse, string? fallbackPort, [NotNullWhen(true)] out SerialSettings? serial, [NotNullWhen(false)] out string? error)
+    public bool TryBind(ParseResult parse, string? fallbackPort, [NotNullWhen(true)] out SerialSettings? serial, [NotNullWhen(false)] out string? error) =>
+        TryBind(parse, fallbackPort, parse.GetValue(Baud), out serial, out error);
+
+    private bool TryBind(ParseResult parse, string? fallbackPort, int baud, [NotNullWhen(true)] out SerialSettings? serial, [NotNullWhen(false)] out string? error)
     {
         serial = null;
         var device = parse.GetValue(Device);
@@ -57,7 +93,6 @@ internal sealed class SerialOptionSet
             return false;
         }
 
-        var baud = parse.GetValue(Baud);
         if (!FreeportRates.Contains(baud))
         {
             error = $"baud {baud} is not a Freeport rate; use one of {string.Join(", ", FreeportRates)}";

@@ -1,11 +1,12 @@
 using System.Collections.Concurrent;
-using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Demo;
 using OperatorPanel.Simulator.Hosting;
 using Serilog;
 
@@ -46,7 +47,6 @@ internal sealed class WatchSession : IAsyncDisposable
         ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector();
         var options = new ProjectLineOptions
         {
-            LinkOptionsFor = serial => LinkSession.OptionsFor(serial, scanAllowance: null, demo),
             // A triggered watch refreshes once a second at most: registering read lists would only add exchanges.
             UseReadLists = project.Refresh.Mode == RefreshMode.Continuous,
         };
@@ -90,7 +90,7 @@ internal sealed class WatchSession : IAsyncDisposable
     }
 
     /// <summary>
-    /// IDENTIFY each station beside the polling, as the panel does on connecting: the engine learns what the handler has
+    /// IDENTIFY each station through its bus, as the panel does on connecting: the bus learns what the handler has
     /// (READ CHANGES copies, 09 READ CHANGES OF LISTS) and polls accordingly from then on. Not awaited on opening, so
     /// a silent station does not hold up the view; it is polled as before and shows up offline. A v1 handler's message
     /// is logged. What it found is kept for the view (<see cref="HandlerCheckOf"/>): the watch is where a technician sees
@@ -102,22 +102,10 @@ internal sealed class WatchSession : IAsyncDisposable
         {
             for (var attempt = 1; attempt <= IdentifyAttempts; attempt++)
             {
+                LinkReply reply;
                 try
                 {
-                    var reply = await Line.IdentifyAsync(station.Address, cancellationToken);
-                    _handlerChecks[station.Address] = HandlerCheck.Describe(station, reply);
-                    if (reply is ErrorResponse refused)
-                    {
-                        log.Warning("{Station}: IDENTIFY refused: {Error}", station.Address, refused.Error);
-                    }
-
-                    break;
-                }
-                catch (PlcCommunicationException failure) when (failure.Kind == PlcErrorKind.HandlerProtocolV1 || attempt == IdentifyAttempts)
-                {
-                    _handlerChecks[station.Address] = $"not identified: {failure.Message}";
-                    log.Warning("{Station}: IDENTIFY failed: {Reason}", station.Address, failure.Message);
-                    break;
+                    reply = await Line.IdentifyAsync(station.Address, cancellationToken);
                 }
                 catch (InvalidOperationException notConnected)
                 {
@@ -125,10 +113,27 @@ internal sealed class WatchSession : IAsyncDisposable
                     log.Warning("{Station}: not identified: {Reason}", station.Address, notConnected.Message);
                     break;
                 }
-                catch (PlcCommunicationException failure)
+
+                if (reply is LinkReply.Answered answered)
                 {
-                    log.Debug("{Station}: IDENTIFY attempt {Attempt} failed: {Reason}", station.Address, attempt, failure.Message);
+                    _handlerChecks[station.Address] = HandlerCheck.Describe(station, answered.Response);
+                    if (answered.Response is ErrorResponse refused)
+                    {
+                        log.Warning("{Station}: IDENTIFY refused: {Error}", station.Address, refused.Error);
+                    }
+
+                    break;
                 }
+
+                var failure = reply.Failure!;
+                if (failure.Kind == PlcErrorKind.HandlerProtocolV1 || attempt == IdentifyAttempts)
+                {
+                    _handlerChecks[station.Address] = $"not identified: {failure.Message}";
+                    log.Warning("{Station}: IDENTIFY failed: {Reason}", station.Address, failure.Message);
+                    break;
+                }
+
+                log.Debug("{Station}: IDENTIFY attempt {Attempt} failed: {Reason}", station.Address, attempt, failure.Message);
             }
         }
     }

@@ -1,11 +1,11 @@
 namespace OperatorPanel.Core.Audit;
 
-/// <summary>What the panel did to a PLC.</summary>
+/// <summary>What the panel did to the PLC.</summary>
 public enum AuditAction
 {
-    /// <summary>A write of an output or memory cell (Core/Writes).</summary>
+    /// <summary>A value written to an output or memory cell.</summary>
     Write,
 
-    /// <summary>A remote STOP (Core/Stop, docs/protocol.md "07 STOP").</summary>
+    /// <summary>The PLC put into STOP (docs/protocol.md, "07 STOP").</summary>
     Stop,
 }

@@ -1,11 +1,14 @@
 namespace OperatorPanel.Core.Audit;
 
 /// <summary>
-/// Where the panel's actions on a PLC are recorded for later (the historian's audit table): each write and each STOP
-/// twice, its intent before it is sent and its outcome after (<see cref="AuditEntry"/>). Implementations never throw and
-/// never block: the caller is on its way to the wire.
+/// A record keeper of writes and STOPs: the write journal, a historian. The one interface every front end hands its
+/// polling engines and STOPs (<see cref="AuditContext"/>), so nothing changes a PLC off the record.
 /// </summary>
 public interface IAuditTrail
 {
-    void Record(AuditEntry entry);
+    /// <summary>
+    /// Puts <paramref name="entry"/> on record. An intent's frame waits for this: when the task ends the entry must be
+    /// kept even if the program is killed next. Returns null when recorded, otherwise why not (then the action is not sent).
+    /// </summary>
+    ValueTask<string?> RecordAsync(AuditEntry entry, CancellationToken cancellationToken);
 }

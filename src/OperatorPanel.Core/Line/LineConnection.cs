@@ -12,6 +12,13 @@ public sealed class LineConnection(IReadOnlyDictionary<string, ITransport> trans
     private readonly Dictionary<string, ITransport> _transports = new(transports, StringComparer.OrdinalIgnoreCase);
     private Func<ValueTask>? _onClose = onClose;
 
+    /// <summary>
+    /// Added to the scan allowance of every link over these transports: what the connector's own medium may add to a
+    /// reply beyond the line's timing (the demo line's PLCs are simulated on a thread of this PC, which may wait for a
+    /// core). Zero for real ports.
+    /// </summary>
+    public TimeSpan ScanAllowance { get; init; }
+
     /// <summary>The transport for <paramref name="portName"/>; throws when the connector gave none (its bug).</summary>
     public ITransport TransportFor(string portName) =>
         _transports.TryGetValue(portName, out var transport)

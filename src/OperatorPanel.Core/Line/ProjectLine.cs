@@ -11,21 +11,21 @@ using Serilog.Core;
 namespace OperatorPanel.Core.Line;
 
 /// <summary>
-/// A project's line. While connected, each <see cref="ProjectBus"/> (the stations on one serial port) has a transport
-/// from the <see cref="ILineConnector"/>, a <see cref="PlcLink"/> over it and a <see cref="PollingEngine"/> looping on
-/// the link (<see cref="BusLine"/>). A value travels one way: the transport's bytes → <see cref="PlcLink"/> (FrameReader,
-/// ResponseCodec: the reply to the link's own sequence number) → <see cref="PollingEngine"/> (ValueStore: a
-/// <see cref="ValueChange"/> batch per cycle) → this line, which routes each change by <see cref="WatchedItem"/> to the
-/// <see cref="ILineValues"/> subscribers of that address only, through <see cref="ProjectLineOptions.Deliver"/> (the UI
-/// dispatcher in the panel). The panel's session and <c>opanel watch</c> both open their line here. Connect, disconnect
-/// and edits run on one thread (the UI thread in the panel); the loops run on their own.
+/// A project's line: its buses. While connected, each <see cref="ProjectBus"/> (the stations on one serial port) is a
+/// running <see cref="Bus"/> over a transport from the <see cref="ILineConnector"/>. A value travels one way: the
+/// transport's bytes → <see cref="PlcLink"/> (FrameReader, ResponseCodec: the reply to the link's own sequence number) →
+/// the bus's polling loop (a reader per way of reading, ValueStore: a <see cref="ValueChange"/> batch per cycle) → this
+/// line, which routes each change by <see cref="WatchedItem"/> to the <see cref="ILineValues"/> subscribers of that
+/// address only, through <see cref="ProjectLineOptions.Deliver"/> (the UI dispatcher in the panel); docs/architecture.md
+/// walks it hop by hop. The panel's session and <c>opanel watch</c> both open their line here. Connect, disconnect and
+/// edits run on one thread (the UI thread in the panel); the loops run on their own.
 /// </summary>
 public sealed partial class ProjectLine : IAsyncDisposable
 {
     private readonly ProjectLineOptions _options;
     private readonly TimeProvider _time;
     private readonly ILogger _logger;
-    private readonly List<Bus> _buses = [];
+    private readonly List<LineBus> _buses = [];
     private LineConnection? _connection;
     private RefreshMode _mode;
 
@@ -44,16 +44,16 @@ public sealed partial class ProjectLine : IAsyncDisposable
     public bool IsConnected => _connection is not null;
 
     /// <summary>The ports in use while connected ("COM3", "COM7 (demo)").</summary>
-    public IEnumerable<string> PortNames => _buses.Select(b => b.Line.Link.PortName);
+    public IEnumerable<string> PortNames => _buses.Select(b => b.Bus.PortName);
 
-    /// <summary>Switches the running engines at once; new engines start in it.</summary>
+    /// <summary>Switches the running buses at once; new buses start in it.</summary>
     public RefreshMode Mode
     {
         get => _mode;
         set
         {
             _mode = value;
-            _buses.ForEach(b => b.Line.Engine.Mode = value);
+            _buses.ForEach(b => b.Bus.Mode = value);
         }
     }
 
@@ -69,8 +69,16 @@ public sealed partial class ProjectLine : IAsyncDisposable
         var connection = await connector.ConnectAsync(Project, cancellationToken).ConfigureAwait(false);
         foreach (var bus in ProjectBus.Of(Project))
         {
-            var link = new PlcLink(connection.TransportFor(bus.Serial.PortName), _options.LinkOptionsFor(bus.Serial), _time, _logger);
-            _buses.Add(new Bus(bus, Start(bus, link)));
+            var options = _options.LinkOptionsFor(bus.Serial);
+            options = options with { ScanAllowance = options.ScanAllowance + connection.ScanAllowance };
+            var link = new PlcLink(connection.TransportFor(bus.Serial.PortName), options, _time, _logger);
+            var settings = new BusSettings
+            {
+                Mode = Mode,
+                MinimumPeriod = Project.Refresh.MinimumPeriod,
+                Polling = new PollingOptions { UseReadLists = _options.UseReadLists },
+            };
+            _buses.Add(new LineBus(bus, Bus.Start(link, bus.Plan(), settings, _time, _logger, OnBusChanges)));
         }
 
         _connection = connection;
@@ -87,14 +95,14 @@ public sealed partial class ProjectLine : IAsyncDisposable
 
         foreach (var bus in _buses)
         {
-            await bus.Line.DisposeAsync().ConfigureAwait(false);
+            await bus.Bus.StopPollingAsync().ConfigureAwait(false);
         }
 
         // The connector's own parts stop before the ports close, or they would see an unplugged line.
         await connection.DisposeAsync().ConfigureAwait(false);
         foreach (var bus in _buses)
         {
-            await bus.Line.Link.DisposeAsync().ConfigureAwait(false);
+            await bus.Bus.DisposeAsync().ConfigureAwait(false);
         }
 
         _buses.Clear();
@@ -118,8 +126,9 @@ public sealed partial class ProjectLine : IAsyncDisposable
 
     /// <summary>
     /// Takes an edited version of the same project (memory cells added, removed, moved, reformatted). While connected,
-    /// each bus whose watch list changed gets a new engine on its open link (the link and its counters carry over). A
-    /// changed set of ports or stations (<see cref="SameStations"/> false) needs other ports: disconnect first.
+    /// each bus whose watch list changed polls its new plan on its open port (<see cref="Bus.WatchAsync"/>: the link, its
+    /// counters, the station states and what IDENTIFY said carry over). A changed set of ports or stations
+    /// (<see cref="SameStations"/> false) needs other ports: disconnect first.
     /// </summary>
     public async Task EditAsync(PanelProject edited)
     {
@@ -142,9 +151,10 @@ public sealed partial class ProjectLine : IAsyncDisposable
             var old = _buses[i];
             if (!old.Project.WatchedItems().SequenceEqual(buses[i].WatchedItems()))
             {
-                await old.Line.DisposeAsync().ConfigureAwait(false);
-                _buses[i] = new Bus(buses[i], Start(buses[i], old.Line.Link));
+                await old.Bus.WatchAsync(buses[i].Plan()).ConfigureAwait(false);
             }
+
+            _buses[i] = old with { Project = buses[i] };
         }
 
         PushAll();
@@ -152,80 +162,57 @@ public sealed partial class ProjectLine : IAsyncDisposable
 
     /// <summary>One full cycle of every bus: on demand the only way values change; in continuous mode the next regular cycle.</summary>
     public Task RefreshAsync(CancellationToken cancellationToken = default) =>
-        Task.WhenAll(_buses.Select(b => b.Line.Engine.RequestRefreshAsync(cancellationToken)));
+        Task.WhenAll(_buses.Select(b => b.Bus.RefreshAsync(cancellationToken)));
 
-    /// <summary>Writes through the station's engine; the outcome is the PLC's read-back, never the request.</summary>
+    /// <summary>Writes through the station's bus; the outcome is the PLC's read-back, never the request.</summary>
     public Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default)
     {
         ArgumentNullException.ThrowIfNull(request);
         return BusOf(request.Station) is { } bus
-            ? bus.Line.Engine.WriteAsync(request, cancellationToken)
+            ? bus.WriteAsync(request, cancellationToken)
             : Task.FromResult<WriteOutcome>(new WriteOutcome.Failed($"{request.Address}: not connected, nothing written", WriteFailureKind.InvalidRequest));
     }
 
     /// <summary>
-    /// IDENTIFY to one station, beside the polling (one request on the wire at a time). The engine hears the reply: a
-    /// handler without READ CHANGES copies gets its lists read with READ LIST.
+    /// IDENTIFY to one station through its bus's queue. What the reply says chooses how its lists are read (READ LIST
+    /// for a handler without READ CHANGES copies, one 09 for the lists in step with FEATURES bit 2).
     /// </summary>
-    public Task<PlcResponse> IdentifyAsync(Station station, CancellationToken cancellationToken = default) =>
+    public Task<LinkReply> IdentifyAsync(Station station, CancellationToken cancellationToken = default) =>
         BusOf(station) is { } bus
-            ? IdentifyOnAsync(bus, station, cancellationToken)
+            ? bus.IdentifyAsync(station, cancellationToken)
             : throw new InvalidOperationException($"{station} is not on a connected bus");
 
     /// <summary>
-    /// STOP to one station beside the polling (<see cref="RemoteStop"/>: IDENTIFY, 07 once, IDENTIFY). A STOP that left
-    /// the station silent tells its engine, which then shows it as stopped by the panel instead of offline.
+    /// STOP to one station through its bus's queue (<see cref="RemoteStop"/>: IDENTIFY, 07 once, IDENTIFY). A STOP that
+    /// left the station silent shows it as stopped by the panel instead of offline.
     /// </summary>
-    public async Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default)
-    {
-        if (BusOf(station) is not { } bus)
-        {
-            return new StopOutcome.NotSent(station, "not connected");
-        }
+    public Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default) =>
+        BusOf(station) is { } bus
+            ? bus.StopAsync(station, cancellationToken)
+            : Task.FromResult<StopOutcome>(new StopOutcome.NotSent(station, "not connected"));
 
-        var outcome = await new RemoteStop(bus.Line.Link, _logger).StopAsync(station, cancellationToken).ConfigureAwait(false);
-        if (outcome.IsStopped)
-        {
-            bus.Line.Engine.NoteStoppedByPanel(station);
-        }
+    /// <summary>What the station said in its last answered IDENTIFY while connected; null before one answered or when not connected.</summary>
+    public IdentifyResponse? IdentityOf(Station station) => BusOf(station)?.IdentityOf(station);
 
-        return outcome;
-    }
+    /// <summary>What the station's last IDENTIFY brought (its reply or the failure); null before any or when not connected.</summary>
+    public LinkReply? LastIdentifyOf(Station station) => BusOf(station)?.LastIdentifyOf(station);
 
     /// <summary>The station's polling status; null when not connected.</summary>
-    public StationStatus? StatusOf(Station station) => BusOf(station)?.Line.Engine.GetStationStatus(station);
+    public StationStatus? StatusOf(Station station) => BusOf(station)?.StatusOf(station);
 
-    public LinkStatistics StatisticsFor(Station station) => BusOf(station)?.Line.Link.StatisticsFor(station) ?? LinkStatistics.Empty;
+    public LinkStatistics StatisticsFor(Station station) => BusOf(station)?.StatisticsFor(station) ?? LinkStatistics.Empty;
 
     /// <summary>The port the station is reached on while connected.</summary>
-    public string? PortOf(Station station) => BusOf(station)?.Line.Link.PortName;
+    public string? PortOf(Station station) => BusOf(station)?.PortName;
 
     public async ValueTask DisposeAsync() => await DisconnectAsync().ConfigureAwait(false);
 
-    private BusLine Start(ProjectBus bus, PlcLink link)
-    {
-        var line = BusLine.Start(link, bus.Plan(), Mode, Project.Refresh.MinimumPeriod, _options.UseReadLists, _time, _logger);
-        line.Engine.Subscribe(OnEngineChanges);
-        return line;
-    }
-
-    private static async Task<PlcResponse> IdentifyOnAsync(Bus bus, Station station, CancellationToken cancellationToken)
-    {
-        var reply = await bus.Line.Link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
-        if (reply is IdentifyResponse identity)
-        {
-            bus.Line.Engine.NoteIdentity(identity);
-        }
-
-        return reply;
-    }
-
-    private Bus? BusOf(Station station) => _buses.FirstOrDefault(b => b.Project.StationAt(station) is not null);
+    private Bus? BusOf(Station station) => _buses.FirstOrDefault(b => b.Project.StationAt(station) is not null)?.Bus;
 
     /// <summary>True when <paramref name="b"/> keeps <paramref name="a"/>'s stations, CPUs and ports: an edit the running line can follow.</summary>
     public static bool SameStations(PanelProject a, PanelProject b) =>
         a.Stations.Select(s => (s.Name, s.Address, s.Cpu, s.Link)).SequenceEqual(b.Stations.Select(s => (s.Name, s.Address, s.Cpu, s.Link)));
 
-    /// <summary>A bus of the project and, while connected, its running line.</summary>
-    private sealed record Bus(ProjectBus Project, BusLine Line);
+    /// <summary>A bus of the project and, while connected, the running bus.</summary>
+    private sealed record LineBus(ProjectBus Project, Bus Bus);
 }

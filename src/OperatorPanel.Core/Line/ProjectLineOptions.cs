@@ -15,6 +15,6 @@ public sealed record ProjectLineOptions
     /// </summary>
     public Action<Action> Deliver { get; init; } = work => work();
 
-    /// <summary>DEFINE LIST / READ LIST (default) or plain READs only (see PollingEngine.UseReadLists).</summary>
+    /// <summary>Stored lists (default) or plain READs only (PollingOptions.UseReadLists).</summary>
     public bool UseReadLists { get; init; } = true;
 }

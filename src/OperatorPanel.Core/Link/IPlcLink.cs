@@ -1,31 +1,23 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol;
-using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Link;
 
 /// <summary>
-/// Request/response to the stations of one bus, one request in flight at a time, with retries. The polling engine talks
-/// to this; PlcLink implements it over an <see cref="Transport.ITransport"/>.
+/// Request/response to the stations of one bus, with retries. The readers and writers of the polling loop talk to this;
+/// <see cref="PlcLink"/> implements it over a <see cref="Transport.ITransport"/>. Not for concurrent callers: its bus
+/// (Line/Bus) is its one user and puts one request on the wire at a time.
 /// </summary>
 public interface IPlcLink
 {
     /// <summary>
-    /// Sends <paramref name="request"/> under the link's next sequence number and returns the matching reply (an <see cref="ErrorResponse"/> included). Throws
-    /// <see cref="PlcCommunicationException"/> when no valid reply came after the retries. A request that acts on
-    /// the process (<see cref="PlcLink.ActsOnProcess"/>) gets no retries.
+    /// Sends <paramref name="request"/> under the link's next sequence number and returns the matching reply (an
+    /// <see cref="ErrorResponse"/> included) or, when no valid reply came after the retries, the failure. A request
+    /// that acts on the process (<see cref="PlcLink.ActsOnProcess"/>) is sent once, never repeated; its failure says
+    /// whether the frame left the PC. Throws only when cancelled.
     /// </summary>
-    Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken);
-
-    /// <summary>
-    /// Sends a request that acts on the process once, never repeated, and says whether it was answered, never left the
-    /// PC, or may have acted without an answer (the caller then reads the target back).
-    /// </summary>
-    Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken);
+    Task<LinkReply> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken);
 
     /// <summary>Counters and round-trip times per station since the link was created.</summary>
     LinkStatistics StatisticsFor(Station station);
-
-    /// <summary>Online after a valid reply; offline after a request that got none.</summary>
-    bool IsOnline(Station station);
 }

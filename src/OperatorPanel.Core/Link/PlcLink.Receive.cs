@@ -35,14 +35,16 @@ public sealed partial class PlcLink
                     return AttemptOutcome.Failed(PlcErrorKind.FrameCorrupt, request, $"reply unusable: {result.Error}");
                 }
 
-                if (ResponseCodec.TryDecode(result.Frame.AsSpan(), request, requestCheck, out var response, out var error))
+                // Decoded once: the frame itself serves the REQCHECK mismatch below.
+                if (FrameCodec.TryDecode(result.Frame.AsSpan(), out var frame, out var error)
+                    && ResponseCodec.TryDecode(frame, request, requestCheck, out var response, out error))
                 {
                     return AttemptOutcome.Answered(response, _time.GetElapsedTime(started));
                 }
 
                 if (error == FrameError.RequestCheckMismatch)
                 {
-                    return AnsweredACorruptedCopy(request, requestCheck, result.Frame.AsSpan(), _time.GetElapsedTime(started));
+                    return AnsweredACorruptedCopy(request, requestCheck, frame, _time.GetElapsedTime(started));
                 }
 
                 if (error is not (FrameError.NotAReply or FrameError.StationMismatch or FrameError.SequenceMismatch))
@@ -60,9 +62,8 @@ public sealed partial class PlcLink
     /// noise changed and that still passed its check. An error reply is then no refusal of our request (retried once);
     /// any other reply is no answer to it, and for a write the PLC executed something else.
     /// </summary>
-    private AttemptOutcome AnsweredACorruptedCopy(PlcRequest request, ushort requestCheck, ReadOnlySpan<byte> frameChars, TimeSpan elapsed)
+    private AttemptOutcome AnsweredACorruptedCopy(PlcRequest request, ushort requestCheck, FreeportFrame frame, TimeSpan elapsed)
     {
-        FrameCodec.TryDecode(frameChars, out var frame, out _);
         var theirs = (ushort)((frame.Payload[1] << 8) | frame.Payload[2]);
         var status = frame.Payload[0];
         var message = string.Create(

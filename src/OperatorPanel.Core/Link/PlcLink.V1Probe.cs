@@ -13,7 +13,7 @@ namespace OperatorPanel.Core.Link;
 public sealed partial class PlcLink
 {
     /// <summary>
-    /// Under the turn, after IDENTIFY got no answer: sends the v1 probe under the next sequence number and waits one
+    /// In the same exchange, after IDENTIFY got no answer: sends the v1 probe under the next sequence number and waits one
     /// IDENTIFY reply time. True when a v1 handler answered. Counted as one more request (and its reply or timeout) once it
     /// has ended.
     /// </summary>

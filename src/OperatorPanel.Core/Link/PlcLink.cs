@@ -8,10 +8,14 @@ using Serilog.Events;
 namespace OperatorPanel.Core.Link;
 
 /// <summary>
-/// Request/response over one bus: one request in flight (<see cref="BusArbiter"/>), a reply-time budget per request,
-/// retries of the identical frame, per-station statistics and online state. The link stamps every request with its own
-/// next sequence number (whatever the caller put there), so replies for an older request, and the echo of our own
-/// request that some RS-485 adapters return, are skipped rather than taken for the answer.
+/// Request/response over one bus: a reply-time budget per request, retries of the identical frame, per-station
+/// statistics. The link stamps every request with its own next sequence number (whatever the caller put there), so
+/// replies for an older request, and the echo of our own request that some RS-485 adapters return, are skipped rather
+/// than taken for the answer. One request at a time: its bus (Line/Bus) is its one caller, through the bus's queue.
+/// Whether a station is online is not the link's business: the bus's station states (Polling/StationTracker) keep it.
+/// Four files by concern, one type because all four share the transport, the frame reader, the sequence number and the
+/// gap timing of one wire: the exchange and its retries (here), receiving one attempt's reply (.Receive), getting a
+/// vanished port back (.Reconnect), the v1 IDENTIFY probe (.V1Probe).
 /// </summary>
 public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
 {
@@ -19,11 +23,9 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     private readonly LinkOptions _options;
     private readonly TimeProvider _time;
     private readonly ILogger _log;
-    private readonly BusArbiter _arbiter = new();
     private readonly FrameReader _reader = new();
     private readonly byte[] _buffer = new byte[512];
     private readonly ConcurrentDictionary<Station, StationStatistics> _statistics = new();
-    private readonly ConcurrentDictionary<Station, bool> _online = new();
 
     /// <summary>Stations that gave a valid v2 reply on this link: their silence is never a v1 handler's.</summary>
     private readonly ConcurrentDictionary<Station, bool> _spokeV2 = new();
@@ -48,25 +50,6 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     public LinkStatistics StatisticsFor(Station station) =>
         _statistics.TryGetValue(station, out var statistics) ? statistics.Snapshot() : LinkStatistics.Empty;
 
-    public bool IsOnline(Station station) => _online.TryGetValue(station, out var online) && online;
-
-    public async Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
-    {
-        var result = await RunAsync(request, cancellationToken).ConfigureAwait(false);
-        return result.Response ?? throw result.Failure!;
-    }
-
-    public async Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken)
-    {
-        var result = await RunAsync(request, cancellationToken).ConfigureAwait(false);
-        return result switch
-        {
-            { Response: { } response } => new OnceReply.Answered(response),
-            { Sent: false } => new OnceReply.NotSent(result.Failure!),
-            _ => new OnceReply.ReplyLost(result.Failure!.Message, result.CorruptedCopy),
-        };
-    }
-
     /// <summary>
     /// True for the commands that act on the process: WRITE, WRITE BIT, STOP. They are sent once: after a lost reply the
     /// PLC may have acted, and a repeat could act twice (a bit the PLC program resets at once, a value it changed meanwhile).
@@ -86,18 +69,13 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
     private int RetriesFor(PlcRequest request) =>
         ActsOnProcess(request.Command) || request is ReadChangesRequest { Full: false } or ReadChangesOfListsRequest ? 0 : _options.Retries;
 
-    public async ValueTask DisposeAsync()
-    {
-        _arbiter.Dispose();
-        await _transport.DisposeAsync().ConfigureAwait(false);
-    }
+    public async ValueTask DisposeAsync() => await _transport.DisposeAsync().ConfigureAwait(false);
 
-    private async Task<ExchangeResult> RunAsync(PlcRequest request, CancellationToken cancellationToken)
+    public async Task<LinkReply> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(request);
-        using var turn = await _arbiter.AcquireAsync(cancellationToken).ConfigureAwait(false);
 
-        // Under the turn, so numbers go out in order; retries resend the same frame and so the same number.
+        // Retries resend the same frame and so the same number.
         request = request with { Sequence = unchecked(++_sequence) };
         var statistics = _statistics.GetOrAdd(request.Station, _ => new StationStatistics());
         var frame = RequestCodec.Encode(request);
@@ -128,7 +106,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
                     statistics.Request();
                 }
 
-                return new ExchangeResult(null, portFailure, _frameSent, CorruptedCopy: false);
+                return new LinkReply.Failed(portFailure, _frameSent);
             }
 
             // Counted once the attempt has ended, so a snapshot taken while a frame is in flight does not show a
@@ -173,10 +151,8 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
                     _log.Debug("{Station}: {Command} refused: {Error}", request.Station, request.Command, negative.Error);
                 }
 
-                // A CPU that acknowledged STOP goes to STOP and answers no more: its silence from here on is expected, not news.
-                _online[request.Station] = response is not StopResponse;
                 _spokeV2[request.Station] = true;
-                return new ExchangeResult(response, null, Sent: true, CorruptedCopy: false);
+                return new LinkReply.Answered(response);
             }
 
             lastFailure = outcome.Failure!;
@@ -191,20 +167,18 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             }
         }
 
-        // Warning once when a station falls silent; while it stays silent each further failure is Debug (callers report state).
-        var wasOnline = !_online.TryGetValue(request.Station, out var known) || known;
-        _online[request.Station] = false;
         var kind = lastFailure!.Kind == PlcErrorKind.Timeout ? PlcErrorKind.NoAnswer : PlcErrorKind.FrameCorrupt;
         var attempts = ActsOnProcess(request.Command) ? "sent once, never repeated" : $"after {retries + 1} attempts";
         var message = $"{request.Station} on {_transport.Name}: no valid reply to {request.Command} {attempts} ({lastFailure.Message})";
         if (kind == PlcErrorKind.NoAnswer && request is IdentifyRequest identify && !_spokeV2.ContainsKey(identify.Station)
             && await AnswersV1ProbeAsync(identify, statistics, cancellationToken).ConfigureAwait(false))
         {
-            return new ExchangeResult(null, new PlcCommunicationException(PlcErrorKind.HandlerProtocolV1, request.Station, HandlerV1.Message(request.Station)), Sent: true, CorruptedCopy: false);
+            return new LinkReply.Failed(new PlcCommunicationException(PlcErrorKind.HandlerProtocolV1, request.Station, HandlerV1.Message(request.Station)), Sent: true);
         }
 
-        _log.Write(wasOnline ? LogEventLevel.Warning : LogEventLevel.Debug, "{Message}", message);
-        return new ExchangeResult(null, new PlcCommunicationException(kind, request.Station, message), Sent: true, corruptedCopy);
+        // Debug: the bus's station states log a station falling silent, once (Polling/StationTracker).
+        _log.Debug("{Message}", message);
+        return new LinkReply.Failed(new PlcCommunicationException(kind, request.Station, message), Sent: true, corruptedCopy);
     }
 
     private async Task<AttemptOutcome> AttemptAsync(PlcRequest request, byte[] frame, TimeSpan timeout, CancellationToken cancellationToken)
@@ -224,13 +198,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         }
         catch (PlcCommunicationException ex) when (ex.Station is null)
         {
-            _online[request.Station] = false;
             throw new PlcCommunicationException(ex.Kind, request.Station, $"{request.Station}: {PortFailureMessage(ex)}", ex);
-        }
-        catch (PlcCommunicationException)
-        {
-            _online[request.Station] = false;
-            throw;
         }
     }
 
@@ -248,7 +216,4 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
             await Task.Delay(TimeSpan.FromMilliseconds(Math.Ceiling(wait.TotalMilliseconds)), _time, cancellationToken).ConfigureAwait(false);
         }
     }
-
-    /// <summary>An exchange's end: the reply, or the failure and whether the frame went out.</summary>
-    private sealed record ExchangeResult(PlcResponse? Response, PlcCommunicationException? Failure, bool Sent, bool CorruptedCopy);
 }

@@ -1,7 +1,8 @@
-using System.Collections.Concurrent;
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Polling.Readers;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Writes;
 using Serilog;
 using Serilog.Core;
@@ -9,80 +10,80 @@ using Serilog.Core;
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
-/// Keeps the watched values of a <see cref="PollPlan"/> up to date over an <see cref="IPlcLink"/> and carries the
-/// operator's writes, in the two modes of seed 000 §7. One loop (<see cref="RunAsync"/>) does all link traffic, so one
-/// request is on the wire at a time; queued writes go ahead of the next READ. Failures never escape the loop: they
-/// become value qualities, <see cref="StationStatus"/>es and log entries, and polling goes on.
-/// All waiting uses the injected <see cref="TimeProvider"/>.
+/// The polling loop of one bus: keeps the watched values of a <see cref="PollPlan"/> up to date over an
+/// <see cref="IPlcLink"/> and carries the operator's writes, in the two modes of seed 000 §7. One loop
+/// (<see cref="RunAsync"/>, PollingEngine.Loop.cs) does all link traffic, so one request is on the wire at a time: a cycle
+/// asks each station's readers (Readers/ReaderChoice, chosen from its IDENTIFY) for its frames, and queued writes go
+/// ahead of the next exchange (Writes/IStationWriter). Failures never escape the loop: they become value qualities,
+/// <see cref="StationStatus"/>es and log entries, and polling goes on. All waiting uses the injected
+/// <see cref="TimeProvider"/>. Two files: this one holds the state, what callers use and the write job; the loop is the
+/// other. Outside Core a bus is reached through Line/Bus, which owns its engine.
 /// </summary>
-public sealed partial class PollingEngine
+internal sealed partial class PollingEngine
 {
-    private readonly IPlcLink _link;
-    private readonly PollPlan _plan;
-    private readonly TimeProvider _time;
-    private readonly ILogger _logger;
+    private readonly PollingContext _context;
     private readonly ValueStore _values;
-    private readonly StationTracker _stations;
-    private readonly WakeSignal _wake = new();
-    private readonly ConcurrentQueue<PendingWrite> _writes = new();
-    private readonly Lock _gate = new();
-    private readonly List<TaskCompletionSource<PollResult>> _refreshWaiters = [];
-    private ImmutableArray<Action<IReadOnlyList<ValueChange>>> _subscribers = [];
-    private RefreshMode _mode = RefreshMode.Continuous;
-    private TimeSpan _minimumPeriod = TimeSpan.FromMilliseconds(100);
-    private PollResult? _lastResult;
-    private int _running;
+    private readonly ReaderChoice _readers;
+    private readonly OfflineRest _rest;
+    private readonly BusQueue _queue;
+    private readonly CycleSchedule _schedule;
+    private readonly Action<IReadOnlyList<ValueChange>> _onChanges;
 
-    public PollingEngine(IPlcLink link, PollPlan plan, TimeProvider? timeProvider = null, ILogger? logger = null)
+    /// <summary>The changes of the cycle or job under way, handed on whole at its end; the loop's thread only.</summary>
+    private readonly List<ValueChange> _batch = [];
+
+    /// <param name="link">The bus's link.</param>
+    /// <param name="plan">What to read.</param>
+    /// <param name="timeProvider">The clock of every wait.</param>
+    /// <param name="logger">Where failures and writes are logged.</param>
+    /// <param name="options">How lists are read and silent stations rested.</param>
+    /// <param name="onChanges">
+    /// Hears, on the loop's thread, the batch of changed values (value or quality) after every cycle and every job of the
+    /// queue (a write's read-back), an empty batch included: the bus's owner (Line/ProjectLine) routes the changes and
+    /// refreshes what shows station states and link counters. A throwing listener is logged; polling goes on.
+    /// </param>
+    public PollingEngine(
+        IPlcLink link, PollPlan plan, TimeProvider? timeProvider = null, ILogger? logger = null, PollingOptions? options = null, Action<IReadOnlyList<ValueChange>>? onChanges = null)
+        : this(link, plan, null, null, timeProvider ?? TimeProvider.System, logger ?? Logger.None, options ?? new PollingOptions(), onChanges)
+    {
+    }
+
+    /// <summary>An engine for a bus that keeps its station states and its queue across plans (Line/Bus).</summary>
+    public PollingEngine(
+        IPlcLink link, PollPlan plan, StationTracker? stations, BusQueue? queue, TimeProvider time, ILogger logger, PollingOptions options, Action<IReadOnlyList<ValueChange>>? onChanges)
     {
         ArgumentNullException.ThrowIfNull(link);
         ArgumentNullException.ThrowIfNull(plan);
-        _link = link;
-        _plan = plan;
-        _time = timeProvider ?? TimeProvider.System;
-        _logger = (logger ?? Logger.None).ForContext<PollingEngine>();
-        _values = new ValueStore(plan.Values.Select(v => v.Item), _time.GetUtcNow());
-        _stations = new StationTracker(_time, _logger);
-        _listIds = ReadListAssignment.For(plan);
+        var log = logger.ForContext<PollingEngine>();
+        stations ??= new StationTracker(time, log);
+        _context = new PollingContext(plan, link, new FrameJudge(stations), options, time, log);
+        _values = new ValueStore(plan.Values.Select(v => v.Item), time.GetUtcNow());
+        _readers = new ReaderChoice(_context);
+        _rest = new OfflineRest(stations, log);
+        _queue = queue ?? new BusQueue(log);
+        _schedule = new CycleSchedule(_queue.Wake, time);
+        _onChanges = onChanges ?? (_ => { });
     }
 
-    public PollPlan Plan => _plan;
+    public PollPlan Plan => _context.Plan;
+
+    private PollingOptions Options => _context.Options;
 
     /// <summary>Switchable while running; the loop notices at once.</summary>
     public RefreshMode Mode
     {
-        get { lock (_gate) { return _mode; } }
-        set { lock (_gate) { _mode = value; } _wake.Set(); }
+        get => _schedule.Mode;
+        set => _schedule.Mode = value;
     }
 
     /// <summary>In continuous mode a cycle never starts sooner than this after the previous cycle started. Default 100 ms.</summary>
     public TimeSpan MinimumPeriod
     {
-        get { lock (_gate) { return _minimumPeriod; } }
-        set
-        {
-            ArgumentOutOfRangeException.ThrowIfLessThan(value, TimeSpan.Zero);
-            lock (_gate) { _minimumPeriod = value; }
-            _wake.Set();
-        }
+        get => _schedule.MinimumPeriod;
+        set => _schedule.MinimumPeriod = value;
     }
 
-    public PollResult? LastResult
-    {
-        get { lock (_gate) { return _lastResult; } }
-    }
-
-    /// <summary>
-    /// Calls <paramref name="onChanges"/> with every batch of changed values (value or quality), once per cycle and
-    /// once per write read-back, on the polling loop's thread; marshal to the UI yourself. A throwing subscriber is
-    /// logged and stays subscribed. Dispose the result to unsubscribe. Outside Core, values come from Line/ILineValues.
-    /// </summary>
-    internal IDisposable Subscribe(Action<IReadOnlyList<ValueChange>> onChanges)
-    {
-        ArgumentNullException.ThrowIfNull(onChanges);
-        lock (_gate) { _subscribers = _subscribers.Add(onChanges); }
-        return new Subscription(() => { lock (_gate) { _subscribers = _subscribers.Remove(onChanges); } });
-    }
+    private StationTracker Stations => _context.Judge.Stations;
 
     /// <summary>The latest value of a watched address; false when the plan does not watch it.</summary>
     public bool TryGetValue(Station station, PlcAddress address, out PolledValue value) =>
@@ -91,53 +92,87 @@ public sealed partial class PollingEngine
     /// <summary>The station's link state; for a silent station resting between tries, when it is tried next.</summary>
     public StationStatus GetStationStatus(Station station)
     {
-        var status = _stations.Get(station);
-        return NextTry(station, status) is { } next ? status with { NextTryAt = next } : status;
+        var status = Stations.Get(station);
+        return _rest.NextTry(status, Mode, Options.OfflineRetryInterval) is { } next ? status with { NextTryAt = next } : status;
     }
 
     /// <summary>The panel stopped the station (Stop/RemoteStop confirmed it): its silence is no longer news.</summary>
-    public void NoteStoppedByPanel(Station station) => _stations.RecordStoppedByPanel(station);
+    public void NoteStoppedByPanel(Station station) => Stations.RecordStoppedByPanel(station);
+
+    /// <summary>What an IDENTIFY reply says about the station's handler chooses its readers from the next exchange on.</summary>
+    public void NoteIdentity(IdentifyResponse identity) => _readers.NoteIdentity(identity);
 
     /// <summary>
     /// Asks for one full cycle and returns its result. In <see cref="RefreshMode.OnDemand"/> this is what makes the
     /// engine poll; in continuous mode it completes with the next regular cycle. Cancelled when polling stops first.
     /// </summary>
-    public Task<PollResult> RequestRefreshAsync(CancellationToken cancellationToken = default)
+    public Task<PollResult> RequestRefreshAsync(CancellationToken cancellationToken = default) => _schedule.RequestRefresh(cancellationToken);
+
+    /// <summary>
+    /// Queues a write on the bus's queue and returns its outcome once sent and read back; it goes ahead of the next
+    /// exchange, never inside one. The write waits while <see cref="RunAsync"/> is not running. Cancelling
+    /// <paramref name="cancellationToken"/> withdraws it only while it is still queued. Every write is logged with old and
+    /// new value and its outcome (Writes/WriteLog).
+    /// </summary>
+    public Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default)
     {
-        var waiter = new TaskCompletionSource<PollResult>(TaskCreationOptions.RunContinuationsAsynchronously);
-        cancellationToken.Register(() => waiter.TrySetCanceled(cancellationToken));
-        lock (_gate) { _refreshWaiters.Add(waiter); }
-        _wake.Set();
-        return waiter.Task;
+        ArgumentNullException.ThrowIfNull(request);
+        return _queue.Enqueue($"Write {request}", ct => WriteNowAsync(request, ct), () => Record(request, OldValue(request), new WriteOutcome.Failed(
+            "polling stopped before the write was sent; nothing was written", WriteFailureKind.EngineStopped)), cancellationToken);
     }
 
-    private void Publish(List<ValueChange> changes)
+    /// <summary>The write job, on the loop between two exchanges: the bus's writer sends it, the read-back becomes values.</summary>
+    private async Task<WriteOutcome> WriteNowAsync(WriteRequest request, CancellationToken cancellationToken)
     {
-        if (changes.Count == 0)
+        var oldRaw = OldValue(request);
+        try
         {
-            return;
-        }
+            var result = await _readers.Writer.WriteAsync(request, oldRaw, cancellationToken).ConfigureAwait(false);
+            if (!result.ReadBack.IsDefault)
+            {
+                var area = ProtocolAreaExtensions.FromMemoryArea(request.Address.Area)!.Value;
+                _batch.AddRange(_values.Apply(request.Station, area, request.Address.ByteOffset, result.ReadBack, _context.Time.GetUtcNow()));
+            }
 
-        ImmutableArray<Action<IReadOnlyList<ValueChange>>> subscribers;
-        lock (_gate) { subscribers = _subscribers; }
-        var batch = changes.AsReadOnly();
-        foreach (var subscriber in subscribers)
+            return Record(request, oldRaw, result.Outcome);
+        }
+        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {
-            try
-            {
-                subscriber(batch);
-            }
-            catch (Exception exception)
-            {
-                _logger.Error(exception, "A value subscriber threw; polling continues");
-            }
+            return Record(request, oldRaw, new WriteOutcome.Unknown(
+                default, "polling stopped while the write was on the wire", "no read-back: the panel stopped polling"));
+        }
+        catch (Exception exception)
+        {
+            // A bug of ours must not leave the caller waiting forever: the write still gets an outcome.
+            _context.Logger.Error(exception, "Write {Request} broke the engine's own handling", request.ToString());
+            var outcome = new WriteOutcome.Unknown(
+                default, $"internal error: {exception.Message}", "the panel's own handling broke after the write may have been sent");
+            WriteLog.Record(_context.Logger, request, WriteLog.Unknown, outcome);
+            return outcome;
         }
     }
 
-    private sealed class Subscription(Action unsubscribe) : IDisposable
-    {
-        private Action? _unsubscribe = unsubscribe;
+    private ImmutableArray<byte> OldValue(WriteRequest request) =>
+        _values.TryGet(new WatchedItem(request.Station, request.Address), out var old) && old.HasValue ? old.Raw : default;
 
-        public void Dispose() => Interlocked.Exchange(ref _unsubscribe, null)?.Invoke();
+    private WriteOutcome Record(WriteRequest request, ImmutableArray<byte> oldRaw, WriteOutcome outcome)
+    {
+        WriteLog.Record(_context.Logger, request, WriteLog.Format(request.Address, oldRaw), outcome);
+        return outcome;
+    }
+
+    /// <summary>The end of a cycle or a job: its changes, maybe none, go to the listener in one batch.</summary>
+    private void Flush()
+    {
+        var batch = _batch.ToArray();
+        _batch.Clear();
+        try
+        {
+            _onChanges(batch);
+        }
+        catch (Exception exception)
+        {
+            _context.Logger.Error(exception, "A value subscriber threw; polling continues");
+        }
     }
 }

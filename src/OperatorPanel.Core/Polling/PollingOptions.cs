@@ -4,6 +4,13 @@ namespace OperatorPanel.Core.Polling;
 public sealed record PollingOptions
 {
     /// <summary>
+    /// Poll the plan's lists as stored lists (default: DEFINE LIST once, then READ CHANGES or READ LIST), or every frame
+    /// with plain READ, one exchange per frame and cycle (what a one-off read or a triggered watch wants: registering the
+    /// lists would only add exchanges).
+    /// </summary>
+    public bool UseReadLists { get; init; } = true;
+
+    /// <summary>
     /// Poll stored lists with READ CHANGES (default), so an unchanged byte costs nothing; false for READ LIST, whose
     /// reply always carries the whole list.
     /// </summary>

@@ -6,8 +6,9 @@ using OperatorPanel.Core.Transport;
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
-/// The stations of a project that share one serial port: one RS-485 bus, hence one link and one polling engine.
-/// The project file guarantees they share line settings and have distinct station addresses.
+/// A bus as the project file describes it: the stations that share one serial port (one RS-485 bus). While connected,
+/// each is a running Line/Bus with one link and one polling loop. The project file guarantees they share line settings
+/// and have distinct station addresses.
 /// </summary>
 public sealed record ProjectBus(SerialSettings Serial, ImmutableArray<ProjectStation> Stations)
 {

@@ -3,7 +3,7 @@ using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Polling;
 
-/// <summary>What the engine knows about one station's link, for the status bar and diagnostics.</summary>
+/// <summary>What the bus knows about one station's link (Polling/StationTracker), for the status bar and diagnostics.</summary>
 /// <param name="Station">The station.</param>
 /// <param name="State">Online, offline, or unknown before the first exchange.</param>
 /// <param name="LastError">The latest failure or refusal, kept after recovery so the user can read it; null if none yet.</param>

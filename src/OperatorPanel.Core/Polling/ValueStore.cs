@@ -4,7 +4,7 @@ using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Core.Polling;
 
-/// <summary>The latest <see cref="PolledValue"/> per watched (station, address); written by the engine loop, read by anyone.</summary>
+/// <summary>The latest <see cref="PolledValue"/> per watched (station, address); written by the polling loop, read by anyone.</summary>
 internal sealed class ValueStore
 {
     private readonly Lock _lock = new();

@@ -1,7 +1,7 @@
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
-/// Wakes the engine loop when work arrives (a write, a refresh request, a mode change). Take <see cref="Current"/>
+/// Wakes the polling loop when work arrives (a job of the bus's queue, a refresh request, a mode change). Take <see cref="Current"/>
 /// before looking for work, then await it: a <see cref="Set"/> in between is never lost.
 /// </summary>
 internal sealed class WakeSignal

@@ -50,10 +50,18 @@ public static class AtomicFile
     {
         string? temporary = null;
         string? backupCopy = null;
+        var target = path;
         try
         {
-            var target = Path.GetFullPath(path);
+            target = Path.GetFullPath(path);
             var folder = Path.GetDirectoryName(target) ?? ".";
+            if (!Directory.Exists(folder))
+            {
+                // Said in our words: the exception would name the hidden temporary file, not the folder.
+                error = $"cannot save the file: the folder {folder} does not exist";
+                return false;
+            }
+
             temporary = WriteTemporary(folder, target, content);
             RemoveLeftovers(folder, target, temporary);
 
@@ -73,7 +81,7 @@ public static class AtomicFile
         }
         catch (Exception ex) when (IsEnvironmental(ex))
         {
-            error = "cannot save the file: " + ex.Message;
+            error = "cannot save the file: " + WithoutTemporaryNames(ex.Message, target, temporary, backupCopy);
             return false;
         }
         finally
@@ -86,6 +94,20 @@ public static class AtomicFile
                 }
             }
         }
+    }
+
+    /// <summary>The system's message with our hidden temporary files named as the file the user asked to save.</summary>
+    private static string WithoutTemporaryNames(string message, string target, params string?[] temporaries)
+    {
+        foreach (var temporary in temporaries)
+        {
+            if (temporary is not null)
+            {
+                message = message.Replace(temporary, target, StringComparison.Ordinal);
+            }
+        }
+
+        return message;
     }
 
     /// <summary>A hidden file beside the target (same volume, so the final step is a rename), flushed to the disk.</summary>

@@ -25,7 +25,7 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
         if (outcome is null)
         {
             _log.Information("Station {Station} RUN -> STOP by operator: sending STOP", station.Address);
-            var sent = await _link.ExchangeOnceAsync(new StopRequest(station), cancellationToken).ConfigureAwait(false);
+            var sent = await _link.ExchangeAsync(new StopRequest(station), cancellationToken).ConfigureAwait(false);
             outcome = await JudgeAsync(station, sent, cancellationToken).ConfigureAwait(false);
         }
 
@@ -44,27 +44,22 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
     /// <summary>Null when the station answers IDENTIFY and its handler carries STOP; else why nothing may be sent.</summary>
     private async Task<StopOutcome?> CheckAsync(Station station, CancellationToken cancellationToken)
     {
-        try
+        var reply = await _link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
+        return reply.Response switch
         {
-            return await _link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false) switch
-            {
-                IdentifyResponse { StopEnabled: true } => null,
-                IdentifyResponse => new StopOutcome.NotInHandler(station),
-                ErrorResponse refused => new StopOutcome.NotSent(station, $"IDENTIFY refused: {ProtocolErrorText.Describe(refused.Error)}"),
-                var other => new StopOutcome.NotSent(station, $"IDENTIFY answered with a {other.Command} reply"),
-            };
-        }
-        catch (PlcCommunicationException failure)
-        {
-            return new StopOutcome.NotSent(station, failure.Message);
-        }
+            null => new StopOutcome.NotSent(station, reply.Failure!.Message),
+            IdentifyResponse { StopEnabled: true } => null,
+            IdentifyResponse => new StopOutcome.NotInHandler(station),
+            ErrorResponse refused => new StopOutcome.NotSent(station, $"IDENTIFY refused: {ProtocolErrorText.Describe(refused.Error)}"),
+            var other => new StopOutcome.NotSent(station, $"IDENTIFY answered with a {other.Command} reply"),
+        };
     }
 
-    private async Task<StopOutcome> JudgeAsync(Station station, OnceReply sent, CancellationToken cancellationToken)
+    private async Task<StopOutcome> JudgeAsync(Station station, LinkReply sent, CancellationToken cancellationToken)
     {
         switch (sent)
         {
-            case OnceReply.Answered { Response: StopResponse }:
+            case LinkReply.Answered { Response: StopResponse }:
                 var check = await CheckSilenceAsync(station, cancellationToken).ConfigureAwait(false);
                 return check.Answers switch
                 {
@@ -72,14 +67,14 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
                     false => new StopOutcome.Stopped(station),
                     null => new StopOutcome.Unknown(station, "the STOP reply came but the IDENTIFY after it failed", check.Failure),
                 };
-            case OnceReply.Answered { Response: ErrorResponse refused }:
+            case LinkReply.Answered { Response: ErrorResponse refused }:
                 return new StopOutcome.Refused(station, ProtocolErrorText.Describe(refused.Error));
-            case OnceReply.Answered answered:
+            case LinkReply.Answered answered:
                 return await SettleLostAsync(station, $"a {answered.Response.Command} reply came instead", cancellationToken).ConfigureAwait(false);
-            case OnceReply.NotSent notSent:
+            case LinkReply.Failed { Sent: false } notSent:
                 return new StopOutcome.NotSent(station, notSent.Failure.Message);
-            case OnceReply.ReplyLost lost:
-                return await SettleLostAsync(station, lost.Cause, cancellationToken).ConfigureAwait(false);
+            case LinkReply.Failed lost:
+                return await SettleLostAsync(station, lost.Failure.Message, cancellationToken).ConfigureAwait(false);
             default:
                 throw new ArgumentOutOfRangeException(nameof(sent), sent, null);
         }
@@ -103,21 +98,18 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null)
     /// </summary>
     private async Task<SilenceCheck> CheckSilenceAsync(Station station, CancellationToken cancellationToken)
     {
-        try
+        if ((await _link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false)).Failure is not { } failure)
         {
-            await _link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
             return new SilenceCheck(true, string.Empty);
         }
-        catch (PlcCommunicationException failure)
+
+        bool? answers = failure.Kind switch
         {
-            bool? answers = failure.Kind switch
-            {
-                PlcErrorKind.NoAnswer or PlcErrorKind.Timeout => false,
-                PlcErrorKind.HandlerProtocolV1 or PlcErrorKind.NegativeReply => true,
-                PlcErrorKind.PortUnavailable or PlcErrorKind.FrameCorrupt => null,
-            };
-            return new SilenceCheck(answers, failure.Message);
-        }
+            PlcErrorKind.NoAnswer or PlcErrorKind.Timeout => false,
+            PlcErrorKind.HandlerProtocolV1 or PlcErrorKind.NegativeReply => true,
+            PlcErrorKind.PortUnavailable or PlcErrorKind.FrameCorrupt or PlcErrorKind.AnotherMaster => null,
+        };
+        return new SilenceCheck(answers, failure.Message);
     }
 
     private readonly record struct SilenceCheck(bool? Answers, string Failure);

@@ -23,4 +23,10 @@ public enum PlcErrorKind
     /// every v2 frame, and must be regenerated and downloaded (<see cref="Link.HandlerV1"/>).
     /// </summary>
     HandlerProtocolV1,
+
+    /// <summary>
+    /// PPI: another master is on the bus (its token frames or its requests were seen). The panel is a PPI master that
+    /// never takes part in token passing, so it stops instead of fighting for the bus (docs/ppi.md section 4).
+    /// </summary>
+    AnotherMaster,
 }

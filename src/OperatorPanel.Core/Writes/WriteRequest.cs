@@ -28,6 +28,9 @@ public sealed record WriteRequest
     /// <summary>The bit to set (true) or reset (false); null for a byte, word or double word.</summary>
     public bool? BitValue { get; }
 
+    /// <summary>The address's symbol in the project ("FillSetpoint"), for the write's record; null when none is known.</summary>
+    public string? Symbol { get; init; }
+
     /// <summary>The new value as <see cref="Polling.PolledValue.Raw"/> holds it: the bytes, or 00/01 for a bit.</summary>
     public ImmutableArray<byte> Value => BitValue is { } bit ? [bit ? (byte)1 : (byte)0] : Data;
 

@@ -49,18 +49,19 @@ public sealed class HistoryReader(string path)
         {
             using var command = Command(
                 connection,
-                "SELECT t, operation, action, phase, station, address, old_value, new_value, outcome, detail, user FROM audit WHERE t >= $from AND t <= $to ORDER BY id",
+                "SELECT t, action_id, step, action, user, port, station, target, symbol, old_value, new_value, outcome, detail FROM audit WHERE t >= $from AND t <= $to ORDER BY id",
                 from,
                 to);
             using var reader = command.ExecuteReader();
             var entries = new List<AuditEntry>();
             while (reader.Read())
             {
-                var station = Station.TryCreate(reader.GetInt32(4), out var s, out _) ? s : throw new HistoryException(HistoryErrorKind.Corrupt, "a station in the audit");
-                PlcAddress? address = reader.IsDBNull(5) ? null : PlcAddress.Parse(reader.GetString(5));
+                var station = Station.TryCreate(reader.GetInt32(6), out var s, out _) ? s : throw new HistoryException(HistoryErrorKind.Corrupt, "a station in the audit");
+                string? Text(int column) => reader.IsDBNull(column) ? null : reader.GetString(column);
                 entries.Add(new AuditEntry(
-                    HistoryTime.FromMs(reader.GetInt64(0)), reader.GetInt64(1), Words.Parse<AuditAction>(reader.GetString(2)), Words.Parse<AuditPhase>(reader.GetString(3)),
-                    station, address, reader.GetString(6), reader.GetString(7), reader.IsDBNull(8) ? null : reader.GetString(8), reader.GetString(9), reader.GetString(10)));
+                    Guid.Parse(reader.GetString(1)), Words.Parse<AuditStep>(reader.GetString(2)), Words.Parse<AuditAction>(reader.GetString(3)),
+                    HistoryTime.FromMs(reader.GetInt64(0)), reader.GetString(4), reader.GetString(5), station, Text(7), Text(8), reader.GetString(9),
+                    reader.GetString(10), Text(11), Text(12)));
             }
 
             return entries;

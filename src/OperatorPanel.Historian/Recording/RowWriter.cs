@@ -41,11 +41,11 @@ internal sealed class RowWriter(SqliteConnection connection, SqliteTransaction t
             case AuditRow audit:
                 var a = audit.Entry;
                 Insert(
-                    "INSERT INTO audit (t, operation, action, phase, station, address, old_value, new_value, outcome, detail, user) "
-                    + "VALUES ($t, $op, $action, $phase, $station, $address, $old, $new, $outcome, $detail, $user)",
-                    ("$t", HistoryTime.ToMs(a.At)), ("$op", a.Operation), ("$action", Words.Of(a.Action)), ("$phase", Words.Of(a.Phase)),
-                    ("$station", a.Station.Address), ("$address", a.Address?.ToString()), ("$old", a.OldValue), ("$new", a.NewValue),
-                    ("$outcome", a.Outcome), ("$detail", a.Detail), ("$user", a.User));
+                    "INSERT INTO audit (t, action_id, step, action, user, port, station, target, symbol, old_value, new_value, outcome, detail) "
+                    + "VALUES ($t, $id, $step, $action, $user, $port, $station, $target, $symbol, $old, $new, $outcome, $detail)",
+                    ("$t", HistoryTime.ToMs(a.At)), ("$id", a.Id.ToString()), ("$step", Words.Of(a.Step)), ("$action", Words.Of(a.Action)),
+                    ("$user", a.User), ("$port", a.Port), ("$station", a.Station.Address), ("$target", a.Target), ("$symbol", a.Symbol),
+                    ("$old", a.OldValue), ("$new", a.NewValue), ("$outcome", a.Outcome), ("$detail", a.Detail));
                 break;
             case MetaRow meta:
                 Insert("INSERT OR REPLACE INTO meta (key, value) VALUES ($key, $value)", ("$key", meta.Key), ("$value", meta.Value));

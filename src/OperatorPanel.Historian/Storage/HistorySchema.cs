@@ -56,16 +56,18 @@ internal static class HistorySchema
         CREATE TABLE audit (
             id INTEGER PRIMARY KEY,
             t INTEGER NOT NULL,
-            operation INTEGER NOT NULL,
+            action_id TEXT NOT NULL,
+            step TEXT NOT NULL,
             action TEXT NOT NULL,
-            phase TEXT NOT NULL,
+            user TEXT NOT NULL,
+            port TEXT NOT NULL,
             station INTEGER NOT NULL,
-            address TEXT,
+            target TEXT,
+            symbol TEXT,
             old_value TEXT NOT NULL,
             new_value TEXT NOT NULL,
             outcome TEXT,
-            detail TEXT NOT NULL,
-            user TEXT NOT NULL);
+            detail TEXT);
         CREATE INDEX audit_t ON audit (t);
         """;
 }

@@ -2,6 +2,7 @@ using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Reference;
 using OperatorPanel.Simulator.Stl.Freeport;
+using OperatorPanel.Simulator.Stl.Ppi;
 
 namespace OperatorPanel.Simulator.Hosting;
 
@@ -19,12 +20,27 @@ public static class SimulatedLineFactory
     /// </summary>
     public static bool TryCreate(
         IEnumerable<HandlerConfig> stations, SimulationModel model, SerialSettings serial, bool runProcess, StlHandlerSource handlerSource,
-        [NotNullWhen(true)] out ISimulatedLine? line, [NotNullWhen(false)] out string? error)
+        [NotNullWhen(true)] out ISimulatedLine? line, [NotNullWhen(false)] out string? error) =>
+        TryCreate(stations, model, serial, runProcess, handlerSource, PpiMode.BesideHandler, out line, out error);
+
+    /// <summary>
+    /// As above, with the STL stations' PPI side: each answers PPI at its station number as PPI address, at the line's
+    /// baud where PPI has that rate (else 9600), <paramref name="ppi"/> saying whether the handler runs beside it.
+    /// </summary>
+    public static bool TryCreate(
+        IEnumerable<HandlerConfig> stations, SimulationModel model, SerialSettings serial, bool runProcess, StlHandlerSource handlerSource,
+        PpiMode ppi, [NotNullWhen(true)] out ISimulatedLine? line, [NotNullWhen(false)] out string? error)
     {
         ArgumentNullException.ThrowIfNull(stations);
         ArgumentNullException.ThrowIfNull(serial);
         ArgumentNullException.ThrowIfNull(handlerSource);
         line = null;
+        if (model == SimulationModel.Reference && ppi == PpiMode.WithoutHandler)
+        {
+            error = "PPI is simulated by the STL model only (--model stl)";
+            return false;
+        }
+
         if (model == SimulationModel.Reference)
         {
             line = CreateReference(stations, runProcess);
@@ -36,7 +52,8 @@ public static class SimulatedLineFactory
         var stl = new StlLine(pcLine);
         foreach (var config in stations)
         {
-            if (!handlerSource(config, serial, out var awlText, out var sourceError))
+            var awlText = EmptyProgram.Awl;
+            if (ppi == PpiMode.BesideHandler && !handlerSource(config, serial, out awlText, out var sourceError))
             {
                 error = $"{config.Station}: {sourceError}";
                 return false;
@@ -48,6 +65,7 @@ public static class SimulatedLineFactory
                 return false;
             }
 
+            station.AttachPpi(PpiSettings.ForLine(config.Station.Address, serial.BaudRate));
             stl.Attach(station, runProcess);
         }
 

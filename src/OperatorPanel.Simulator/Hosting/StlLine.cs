@@ -32,6 +32,9 @@ public sealed class StlLine : ISimulatedLine
 
     public int Replies { get; private set; }
 
+    /// <summary>PPI telegrams the stations' PPI sides answered (acknowledges, data and repeats).</summary>
+    public int PpiFramesAnswered => _stations.Sum(s => s.Ppi?.FramesAnswered ?? 0);
+
     public TimeSpan? NextOutput => null;
 
     /// <summary>Puts <paramref name="station"/> on the bus; with <paramref name="runProcess"/> the demo bottle filler drives its memory.</summary>
@@ -81,7 +84,7 @@ public sealed class StlLine : ISimulatedLine
     public IReadOnlyList<WireCharacter> TakeCharacters()
     {
         var sent = Bus.TakeTransmitted().Where(c => !c.IsBreak).ToList();
-        Replies += sent.Count(c => c.Value == FrameCodec.EndChar);
+        Replies += sent.Count(c => c.Value == FrameCodec.EndChar && !c.IsPpi);
         return sent;
     }
 }

@@ -3,6 +3,7 @@ using OperatorPanel.Core.Cpu;
 using OperatorPanel.Simulator.Reference;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Freeport;
+using OperatorPanel.Simulator.Stl.Ppi;
 
 namespace OperatorPanel.Simulator.Hosting;
 
@@ -63,6 +64,26 @@ public sealed class StlStation : IDemoPlc
         station = new StlStation(plc, freeport);
         error = string.Empty;
         return true;
+    }
+
+    /// <summary>The CPU's PPI station on its port, or null (<see cref="AttachPpi"/>).</summary>
+    public PpiSlave? Ppi { get; private set; }
+
+    /// <summary>
+    /// Gives the CPU its PPI side: whenever the program does not hold the port in Freeport, the port answers PPI
+    /// telegrams for <paramref name="settings"/>' address, and the jobs are done in the scan's communication phase on
+    /// the memory the program runs on.
+    /// </summary>
+    public PpiSlave AttachPpi(PpiSettings settings)
+    {
+        ArgumentNullException.ThrowIfNull(settings);
+        var slave = new PpiSlave(settings);
+        var memory = new StlPpiMemory(Plc);
+        Port.AttachPpi(slave);
+        Plc.StopCommunicationCycle = settings.StopCycle;
+        Plc.CommunicationPhase += (_, _) => slave.Serve(memory);
+        Ppi = slave;
+        return slave;
     }
 
     /// <summary>Runs the CPU to <paramref name="until"/>; outputs the handler changed on the way become the panel's.</summary>

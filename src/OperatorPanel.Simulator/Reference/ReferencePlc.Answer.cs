@@ -49,7 +49,12 @@ public sealed partial class ReferencePlc
         // would reach the floor, or a READ's descriptors below it, clears every list first. READ LIST and READ CHANGES
         // replies stay within the capacity rule, READ CHANGES OF LISTS replies within LAST_FREE by their REREAD rule;
         // STOP's reply (18 characters) is shorter than any list's.
-        var payload = Execute(request);
+        error = TryExecute(request, out var payload);
+        if (error != ProtocolError.None)
+        {
+            return Reply(frame, check, error, []);
+        }
+
         if (request is not (ReadListRequest or ReadChangesRequest or ReadChangesOfListsRequest or DefineListRequest))
         {
             _lists.ClearIfReached(ProtocolLimits.ReplyChars(payload.Length), request is ReadRequest read ? 4 * read.Items.Length : 0);

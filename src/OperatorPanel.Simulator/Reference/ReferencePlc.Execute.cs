@@ -5,10 +5,25 @@ namespace OperatorPanel.Simulator.Reference;
 /// <summary>Step 7's execution: the reply payload after STATUS and REQCHECK.</summary>
 public sealed partial class ReferencePlc
 {
-    private byte[] Execute(PlcRequest request)
+    /// <summary>
+    /// Executes a parsed request. A request this model does not execute (a command added to the protocol and not yet
+    /// here) is refused with 05 unknown command, as docs/protocol.md section 3 says of a CMD the handler does not have;
+    /// it is never answered as another command.
+    /// </summary>
+    internal ProtocolError TryExecute(PlcRequest request, out byte[] payload)
+    {
+        var executed = Execute(request);
+        payload = executed ?? [];
+        return executed is null ? ProtocolError.UnknownCommand : ProtocolError.None;
+    }
+
+    /// <summary>The payload; null for a request this model does not execute.</summary>
+    private byte[]? Execute(PlcRequest request)
     {
         switch (request)
         {
+            case IdentifyRequest:
+                return Identify();
             case ReadRequest read:
                 return ReadItems(read.Items);
             case ReadListRequest list:
@@ -37,7 +52,7 @@ public sealed partial class ReferencePlc
 
                 return [Memory.Area(bit.Area)[bit.Offset]];
             default:
-                return Identify();
+                return null;
         }
     }
 

@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
@@ -12,8 +13,8 @@ namespace OperatorPanel.Simulator.Soak;
 
 /// <summary>
 /// A soak run end to end: the simulated PLC (behind an <see cref="ExecutedWriteObserver"/>) on its pty, the
-/// <see cref="NoisyLineProxy"/> between the two pty pairs, and the real panel stack (SerialPortTransport, PlcLink,
-/// PollingEngine) on the panel's pty. The panel alternates, by the seed, between writing a new value to a double word
+/// <see cref="NoisyLineProxy"/> between the two pty pairs, and the real panel stack (SerialPortTransport, PlcLink, Bus
+/// and its polling loop) on the panel's pty. The panel alternates, by the seed, between writing a new value to a double word
 /// of the <see cref="SoakRegion"/> and refreshing the region, until the duration is up; then the
 /// <see cref="SoakJudge"/> holds what it showed and confirmed against what the PLC executed.
 /// </summary>
@@ -36,28 +37,29 @@ public static class SoakSession
         var proxyPlc = new SerialPortTransport(Serial(setup, setup.ProxyPlcSide));
         var proxy = new NoisyLineProxy(proxyPanel, proxyPlc, setup.Faults, setup.Seed);
         var panelSerial = Serial(setup, setup.PanelPort);
-        await using var link = new PlcLink(new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial), time, log);
         var items = region.Slots.Select(s => new WatchedItem(setup.Station, Address(s)));
-        var engine = new PollingEngine(link, PollPlanner.Build(items, new Dictionary<Station, Core.Cpu.CpuProfile> { [setup.Station] = setup.Cpu }), time, log)
-        {
-            Mode = RefreshMode.OnDemand,
-        };
+        await using var bus = Bus.Start(
+            new PlcLink(new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial), time, log),
+            PollPlanner.Build(items, new Dictionary<Station, Core.Cpu.CpuProfile> { [setup.Station] = setup.Cpu }),
+            new BusSettings { Mode = RefreshMode.OnDemand },
+            time,
+            log);
 
         using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
         var running = new[]
         {
             Task.Run(() => host.RunAsync(stop.Token), stop.Token),
             Task.Run(() => proxy.RunAsync(stop.Token), stop.Token),
-            Task.Run(() => engine.RunAsync(stop.Token), stop.Token),
         };
         var started = time.GetTimestamp();
-        var work = new SoakWork(setup, engine, link, time);
+        var work = new SoakWork(setup, bus, time);
         try
         {
             await work.RunAsync(running, stop.Token).ConfigureAwait(false);
         }
         finally
         {
+            await bus.StopPollingAsync().ConfigureAwait(false);
             await stop.CancelAsync().ConfigureAwait(false);
             await Ended(running).ConfigureAwait(false);
             await proxyPanel.DisposeAsync().ConfigureAwait(false);
@@ -66,7 +68,7 @@ public static class SoakSession
         }
 
         var judgement = new SoakJudge(region, initial).Judge(work.Writes, work.Shown, observer.Changes);
-        var statistics = link.StatisticsFor(setup.Station);
+        var statistics = bus.StatisticsFor(setup.Station);
         return new SoakFigures
         {
             Faults = setup.Faults.ToString(),
@@ -122,7 +124,7 @@ public static class SoakSession
     }
 
     /// <summary>The panel's side of the run: its writes and the good values it showed, recorded for the judge.</summary>
-    private sealed class SoakWork(SoakSetup setup, PollingEngine engine, PlcLink link, TimeProvider time)
+    private sealed class SoakWork(SoakSetup setup, Bus bus, TimeProvider time)
     {
         /// <summary>IDENTIFY attempts before the run goes on without: at 1% flips its 62-character reply rarely survives.</summary>
         private const int IdentifyAttempts = 30;
@@ -135,7 +137,7 @@ public static class SoakSession
 
         public List<SoakWrite> Writes { get; } = [];
 
-        /// <summary>The handler answered IDENTIFY, so the engine polls its lists with 09 as the panel does.</summary>
+        /// <summary>The handler answered IDENTIFY, so the bus polls its lists with 09 as the panel does.</summary>
         public bool Identified { get; private set; }
 
         public List<ShownValue> Shown { get; } = [];
@@ -171,21 +173,14 @@ public static class SoakSession
             }
         }
 
-        /// <summary>IDENTIFY as the panel sends it on connecting; the engine hears the reply (READ CHANGES copies, 09).</summary>
+        /// <summary>IDENTIFY as the panel sends it on connecting; the bus hears the reply (READ CHANGES copies, 09).</summary>
         private async Task IdentifyAsync(CancellationToken cancellationToken)
         {
             _identifyAttempts++;
-            try
+            // A failure means noise took it: the run polls as a panel that has not identified the handler yet.
+            if ((await bus.IdentifyAsync(setup.Station, cancellationToken).WaitAsync(StepLimit, cancellationToken).ConfigureAwait(false)).Response is IdentifyResponse)
             {
-                if (await link.ExchangeAsync(new IdentifyRequest(setup.Station), cancellationToken).WaitAsync(StepLimit, cancellationToken).ConfigureAwait(false) is IdentifyResponse identity)
-                {
-                    engine.NoteIdentity(identity);
-                    Identified = true;
-                }
-            }
-            catch (PlcCommunicationException)
-            {
-                // Noise took it: the run polls as a panel that has not identified the handler yet.
+                Identified = true;
             }
         }
 
@@ -198,18 +193,18 @@ public static class SoakSession
             var value = ValueOf(number);
             var data = new byte[4];
             BinaryPrimitives.WriteUInt32BigEndian(data, value);
-            var outcome = await engine.WriteAsync(WriteRequest.Bytes(setup.Station, Address(slot), [.. data]), cancellationToken)
+            var outcome = await bus.WriteAsync(WriteRequest.Bytes(setup.Station, Address(slot), [.. data]), cancellationToken)
                 .WaitAsync(StepLimit, cancellationToken).ConfigureAwait(false);
             Writes.Add(new SoakWrite(number, slot, value, outcome));
         }
 
         private async Task RefreshAsync(long from, CancellationToken cancellationToken)
         {
-            await engine.RequestRefreshAsync(cancellationToken).WaitAsync(StepLimit, cancellationToken).ConfigureAwait(false);
+            await bus.RefreshAsync(cancellationToken).WaitAsync(StepLimit, cancellationToken).ConfigureAwait(false);
             var until = time.GetTimestamp();
             foreach (var slot in setup.Region.Slots)
             {
-                if (engine.TryGetValue(setup.Station, Address(slot), out var value) && value.Quality == ValueQuality.Good && value.HasValue)
+                if (bus.TryGetValue(setup.Station, Address(slot), out var value) && value.Quality == ValueQuality.Good && value.HasValue)
                 {
                     Shown.Add(new ShownValue(slot, BinaryPrimitives.ReadUInt32BigEndian(value.Raw.AsSpan()), from, until));
                 }

@@ -1,4 +1,5 @@
 using OperatorPanel.Simulator.Stl.Freeport;
+using OperatorPanel.Simulator.Stl.Operations;
 
 namespace OperatorPanel.Simulator.Stl;
 

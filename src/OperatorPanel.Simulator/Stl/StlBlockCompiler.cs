@@ -1,14 +1,19 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Simulator.Stl.Operations;
 using OperatorPanel.Stl;
+using OperatorPanel.Stl.Instructions;
 
 namespace OperatorPanel.Simulator.Stl;
 
 /// <summary>Compiles the instructions of one block into ops: operands resolved, jumps and FOR/NEXT pairs linked, costs set.</summary>
-internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlock> blocks, List<AwlDiagnostic> diagnostics)
+internal sealed class StlBlockCompiler(
+    CpuProfile cpu, Dictionary<string, StlBlock> blocks, List<AwlDiagnostic> diagnostics, List<AwlDiagnostic> warnings, StlLoadOptions options)
 {
     private readonly StlOperandResolver _resolver = new(cpu);
     private readonly StlTimerNumbers _rules = new();
+    private readonly HashSet<int> _silentEvents = [];
 
     public int EdgeCount { get; private set; }
 
@@ -116,12 +121,26 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
         StlBlock block, AwlInstruction instruction, IReadOnlyDictionary<string, (StlLoc Loc, int Bytes, bool IsBit)> locals)
     {
         var line = instruction.Line;
-        if (!StlInstructionSet.TryGet(instruction.Mnemonic, out var code, out var types))
+        if (!StlOperations.TryGet(instruction.Mnemonic, out var operation) || !StlInstructionTable.TryGet(instruction.Mnemonic, out var spec))
         {
-            Report(line, $"{instruction.Mnemonic} is not implemented by the simulator");
+            var why = StlOperations.NotExecuted.TryGetValue(instruction.Mnemonic, out var reason) ? $": {reason}" : string.Empty;
+            Report(line, $"{instruction.Mnemonic} is not implemented by the simulator{why}");
             return null;
         }
 
+        if (operation.NotSimulated is { } notSimulated)
+        {
+            if (options.Strict)
+            {
+                Report(line, $"{instruction.Mnemonic} is not implemented by the simulator: {notSimulated} (--strict)");
+                return null;
+            }
+
+            warnings.Add(new AwlDiagnostic(line, $"{instruction.Mnemonic}: {notSimulated}; it does nothing here (--strict refuses it)"));
+        }
+
+        var code = operation.Code;
+        StlOperandType[] types = [.. spec.Operands.Select(StlOperandTypes.Of)];
         if (!PlacedIn(code, block.Kind))
         {
             Report(line, $"{instruction.Mnemonic} cannot be used in {block.Name} ({block.Source.DefaultName})");
@@ -137,8 +156,7 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
 
         var op = new StlOp
         {
-            Code = code,
-            Mnemonic = instruction.Mnemonic,
+            Operation = operation,
             Line = line,
             Width = code is StlOpCode.CmpLd or StlOpCode.CmpA or StlOpCode.CmpO or StlOpCode.CmpRLd or StlOpCode.CmpRA or StlOpCode.CmpRO
                 ? StlOperandResolver.BytesOf(types[0]) : 0,
@@ -146,11 +164,11 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
         if (op.Width > 0)
         {
             var tail = instruction.Mnemonic[(code is StlOpCode.CmpLd or StlOpCode.CmpRLd ? 3 : 2)..];
-            op.N = StlInstructionSet.RelationOf(tail)!.Value;
+            op.N = CompareInstructions.RelationOf(tail)!.Value;
         }
         else if (code == StlOpCode.Fnd)
         {
-            op.N = StlInstructionSet.RelationOf(instruction.Mnemonic[3..])!.Value;
+            op.N = CompareInstructions.RelationOf(instruction.Mnemonic[3..])!.Value;
         }
         else if (code is StlOpCode.Eu or StlOpCode.Ed)
         {
@@ -171,7 +189,7 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
 
         (op.A, op.B, op.C) = (locs[0], locs[1], locs[2]);
         ok = ok && _rules.Check(op, Report);
-        op.Cost = StlTiming.Base(code) + (op.Parameters.Length * StlTiming.PerParameter)
+        op.Cost = operation.Time.Nanoseconds + (op.Parameters.Length * StlTiming.PerParameter)
             + (StlTiming.IndirectOperand * (locs.Count(l => l?.Kind == StlLocKind.Indirect)
                 + op.Parameters.Count(p => p.Actual.Kind == StlLocKind.Indirect)));
         return ok ? op : null;
@@ -207,6 +225,11 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
 
                 Report(line, $"{op.Mnemonic}: '{text}' is not a {type.ToString().ToLowerInvariant()} number 0-{max}{(type == StlOperandType.Port ? $" on the {cpu.Name}" : string.Empty)}");
                 return false;
+            case StlOperandType.DWordIn when operand is { Kind: AwlOperandKind.Address, Area: MemoryArea.HC } && !options.Strict:
+                // A high-speed counter's current value (MOVD HC0, VD0): no counter runs here, so it reads 0, as HSC does nothing.
+                warnings.Add(new AwlDiagnostic(line, $"{op.Mnemonic}: '{operand.Text}': high-speed counters are not simulated; it reads 0 here (--strict refuses it)"));
+                locs[index] = new StlLoc { Kind = StlLocKind.Constant, Value = 0 };
+                return true;
             default:
                 if (_resolver.TryResolve(operand, type, locals, out var loc, out var error))
                 {
@@ -220,20 +243,31 @@ internal sealed class StlBlockCompiler(CpuProfile cpu, Dictionary<string, StlBlo
     }
 
     /// <summary>
-    /// An attached routine must be able to run: the simulator raises the Freeport events and the timed interrupts only,
-    /// so a program waiting on an input edge, a high-speed counter or a pulse output would silently never see it. Event
-    /// numbers: ML801761 p. 172, Table 6-50 (docs/sources/s7200-facts.md section 5): 8/25 receive character, 9/26
-    /// transmit complete, 23/24 receive message complete (ports 0/1), 10/11 timed interrupts 0/1.
+    /// The simulator raises the input edges of I0.0-I0.3 (events 0-7, from changes of the field inputs), the Freeport
+    /// events (8, 9, 23-26) and the timed interrupts (10, 11). Event numbers: ML801761 p. 172, Table 6-50
+    /// (docs/sources/s7200-facts.md section 5). An ATCH to any other event (high-speed counters, pulse outputs, T32/T96)
+    /// is warned about once per event, since the rest of the program runs as it would; strict mode refuses it.
     /// </summary>
     private bool IsRaised(StlOp op)
     {
-        if (op.N is 8 or 9 or 10 or 11 or (>= 23 and <= 26))
+        if (op.N is (>= 0 and <= 11) or (>= 23 and <= 26))
         {
             return true;
         }
 
-        Report(op.Line, $"ATCH: the simulator never raises event {op.N}: it raises the Freeport events (8, 9, 23-26) and the timed interrupts (10, 11) only");
-        return false;
+        var name = StlInterruptEvents.Name(op.N);
+        if (options.Strict)
+        {
+            Report(op.Line, $"ATCH: event {op.N} ({name}) never fires in the simulator: it raises the input edges (0-7), the Freeport events (8, 9, 23-26) and the timed interrupts (10, 11) only (--strict)");
+            return false;
+        }
+
+        if (_silentEvents.Add(op.N))
+        {
+            warnings.Add(new AwlDiagnostic(op.Line, $"ATCH: event {op.N} ({name}) never fires in the simulator; its routine runs only for the events it can raise (--strict refuses it)"));
+        }
+
+        return true;
     }
 
     private bool TryBlock(StlOp op, AwlOperand operand)

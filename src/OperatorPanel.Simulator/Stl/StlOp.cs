@@ -1,9 +1,15 @@
+using OperatorPanel.Simulator.Stl.Operations;
+
 namespace OperatorPanel.Simulator.Stl;
 
-/// <summary>One executable instruction: code, up to three resolved operands, an integer argument and its cost.</summary>
+/// <summary>One executable instruction: its row of the instruction table, up to three resolved operands, an integer argument and its cost.</summary>
 internal sealed class StlOp
 {
-    public required StlOpCode Code { get; init; }
+    public required StlOperation Operation { get; init; }
+
+    public StlOpCode Code => Operation.Code;
+
+    public string Mnemonic => Operation.Mnemonic;
 
     public StlLoc? A { get; set; }
 
@@ -20,12 +26,10 @@ internal sealed class StlOp
     /// <summary>Compare width in bytes (1, 2, 4).</summary>
     public int Width { get; init; }
 
-    /// <summary>Estimated execution time with power flow, in ns (see <see cref="StlTiming"/>).</summary>
+    /// <summary>Execution time with power flow, in ns: the row's time plus the parameter and indirect-operand adders.</summary>
     public long Cost { get; set; }
 
     public StlParameter[] Parameters { get; set; } = [];
 
     public int Line { get; init; }
-
-    public required string Mnemonic { get; init; }
 }

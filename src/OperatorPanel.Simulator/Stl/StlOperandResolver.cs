@@ -43,7 +43,7 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
             case AwlOperandKind.Local:
                 return TryLocal(operand, bytes, locals, out loc, out error);
             case AwlOperandKind.Symbol:
-                error = $"'{operand.Text}' is not an address; the simulator reads absolute addresses and #locals, not symbols";
+                error = $"'{operand.Text}' is not an address; the simulator reads absolute addresses and #locals (give the program's symbol table with --symbols)";
                 return false;
             default:
                 error = $"'{operand.Text}' cannot be used where a {Describe(type)} is expected";
@@ -119,7 +119,7 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
         loc = null!;
         if (operand.Area is MemoryArea.HC)
         {
-            error = $"'{operand.Text}': high-speed counters are not implemented by the simulator";
+            error = $"'{operand.Text}': high-speed counters are not implemented by the simulator (--strict)";
             return false;
         }
 

@@ -1,61 +1,35 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Simulator.Reference;
+using OperatorPanel.Simulator.Stl.Execution;
 
 namespace OperatorPanel.Simulator.Stl;
 
 /// <summary>
 /// The simulated S7-200 CPU executing a loaded STL program in simulated time: no clocks, no threads. The host
 /// attaches ports, sets the input image and the mode switch, and calls <see cref="RunUntil"/>; each instruction
-/// advances time by its estimated execution time (<see cref="StlTiming"/>), so scan times and port timing interact.
-/// A run-time error puts the CPU in STOP with a <see cref="Fault"/>; no exception reaches the host.
+/// advances time by its execution time (Operations/StlOperations), so scan times and port timing interact. A run-time
+/// error puts the CPU in STOP with a <see cref="Fault"/>; no exception reaches the host. This file is the host's side;
+/// StlPlc.Scan.cs runs the scan cycle. What an instruction sees is the <see cref="StlMachine"/>.
 /// </summary>
 public sealed partial class StlPlc
 {
-    /// <summary>
-    /// Subroutine nesting: 8 levels from the main program, 4 from an interrupt routine, each level with its own 64 bytes
-    /// of L ("Executing the user program" in the newer system manuals; the 1998 C233-01 manual allowed only one level
-    /// from an interrupt routine, a limit the generated handler never reaches: it calls nothing from its routines).
-    /// </summary>
-    private const int MainNesting = 8;
-    private const int InterruptNesting = 4;
-    private const int LBytes = 64;
-    private const int InterruptLBase = (MainNesting + 1) * LBytes;
-
     private readonly StlProgram _program;
-    private readonly byte[][] _areas = new byte[(int)MemoryArea.L + 1][];
-    private readonly byte[] _l = new byte[(MainNesting + InterruptNesting + 2) * LBytes];
-    private readonly uint[] _ac = new uint[4];
-    private readonly bool[] _edges;
-    private readonly StlFrame[] _frames = new StlFrame[MainNesting + InterruptNesting + 2];
+    private readonly StlMachine _m;
     private readonly long[] _blockInstructions;
-    private readonly IStlPort?[] _ports = new IStlPort?[2];
-    private int _depth = -1;
-    private int _lBase;
-    private uint _stack;
-    private StlOp? _op;
 
     public StlPlc(StlProgram program)
     {
         ArgumentNullException.ThrowIfNull(program);
         _program = program;
         Memory = new PlcMemory(program.Cpu);
-        _areas[(int)MemoryArea.I] = Memory.I;
-        _areas[(int)MemoryArea.Q] = Memory.Q;
-        _areas[(int)MemoryArea.M] = Memory.M;
-        _areas[(int)MemoryArea.V] = Memory.V;
-        _areas[(int)MemoryArea.SM] = Memory.SM;
-        foreach (var area in new[] { MemoryArea.S, MemoryArea.AI, MemoryArea.AQ })
-        {
-            _areas[(int)area] = program.Cpu.TryGetArea(area, out var range) ? new byte[range.ByteCount] : [];
-        }
-
-        _edges = new bool[program.EdgeCount];
-        _blockInstructions = new long[program.Blocks.Length];
-        InputImage = new byte[Memory.I.Length];
-        OutputImage = new byte[Memory.Q.Length];
         Memory.SM[6] = program.Cpu.CpuIdCode;
-        InitialiseQueues();
+        _m = new StlMachine(program.Cpu, Memory, program.Blocks, program.EdgeCount)
+        {
+            MainEnded = EndScan,
+            InterruptEnded = FinishInterrupt,
+        };
+        _blockInstructions = new long[program.Blocks.Length];
         EnterRun();
     }
 
@@ -65,10 +39,10 @@ public sealed partial class StlPlc
     public PlcMemory Memory { get; }
 
     /// <summary>The field inputs; copied into I at the start of each scan.</summary>
-    public byte[] InputImage { get; }
+    public byte[] InputImage => _m.InputImage;
 
     /// <summary>The outputs as the field sees them: Q copied at the end of each scan, zero in STOP.</summary>
-    public byte[] OutputImage { get; }
+    public byte[] OutputImage => _m.OutputImage;
 
     public OperatingMode Mode { get; private set; }
 
@@ -76,17 +50,27 @@ public sealed partial class StlPlc
     public ModeSwitch ModeSwitch { get; set; } = ModeSwitch.Run;
 
     /// <summary>Why the CPU stopped on its own; null while it runs or after a host STOP.</summary>
-    public StlFault? Fault { get; private set; }
+    public StlFault? Fault => _m.Fault;
 
     /// <summary>Simulated time since power-up.</summary>
-    public TimeSpan Now => TimeSpan.FromTicks(_now / 100);
+    public TimeSpan Now => StlTime.ToTimeSpan(_m.Time.Now);
 
     public long InstructionsExecuted { get; private set; }
 
-    /// <summary>Sum of the estimated execution times of the instructions executed.</summary>
-    public TimeSpan ExecutionTime => TimeSpan.FromTicks(_busy / 100);
+    /// <summary>Sum of the execution times of the instructions executed (and of interrupt entry and scan housekeeping).</summary>
+    public TimeSpan ExecutionTime => StlTime.ToTimeSpan(_m.Time.Busy);
 
     public long Scans { get; private set; }
+
+    /// <summary>The date and time the real-time clock shows at simulated time zero (TODR, TODW).</summary>
+    public DateTime ClockStart
+    {
+        get => _m.Clock.Start;
+        set => _m.Clock.Start = value;
+    }
+
+    /// <summary>What TODR reads now.</summary>
+    public DateTime Clock => _m.Clock.Now;
 
     /// <summary>Raised after each interrupt routine run, with the instructions it executed.</summary>
     public event EventHandler<StlInterruptRun>? InterruptServed;
@@ -95,17 +79,10 @@ public sealed partial class StlPlc
     public long InstructionsIn(string blockName) =>
         _blockInstructions[_program.Blocks.First(b => string.Equals(b.Name, blockName, StringComparison.OrdinalIgnoreCase)).Index];
 
-    public uint Accumulator(int number) => _ac[number];
+    public uint Accumulator(int number) => _m.Accumulator(number);
 
     /// <summary>Connects a port; a CPU 221/222/224 has port 0 only, a 224XP/226 ports 0 and 1.</summary>
-    public void AttachPort(IStlPort port)
-    {
-        ArgumentNullException.ThrowIfNull(port);
-        ArgumentOutOfRangeException.ThrowIfGreaterThanOrEqual(port.Number, Cpu.CommunicationPorts, nameof(port));
-        ArgumentOutOfRangeException.ThrowIfNegative(port.Number, nameof(port));
-        _ports[port.Number] = port;
-        port.Reset();
-    }
+    public void AttachPort(IStlPort port) => _m.Events.AttachPort(port);
 
     /// <summary>STOP: ports back to PPI, nothing runs, outputs off.</summary>
     public void Stop() => EnterStop(null);
@@ -115,32 +92,50 @@ public sealed partial class StlPlc
     {
         if (Mode != OperatingMode.Run)
         {
-            Fault = null;
+            _m.Fault = null;
             EnterRun();
         }
     }
+
+    /// <summary>The bytes of I, Q, M, V, SM, S, AI or AQ (I is the process image the program reads).</summary>
+    public byte[] AreaBytes(MemoryArea area)
+    {
+        if (area is MemoryArea.T or MemoryArea.C or MemoryArea.AC or MemoryArea.HC or MemoryArea.L || _m.Area(area) is not { } bytes)
+        {
+            throw new ArgumentOutOfRangeException(nameof(area), area, "timers, counters, accumulators, HC and L are not byte areas");
+        }
+
+        return bytes;
+    }
+
+    /// <summary>Current value of Tn (0-32767), as the program would read it now.</summary>
+    public short TimerCurrentValue(int timer) => _m.Timers.Value(timer);
+
+    public bool TimerBitValue(int timer) => _m.Timers.Bit(timer);
+
+    public short CounterCurrentValue(int counter) => _m.Counters.Value(counter);
+
+    public bool CounterBitValue(int counter) => _m.Counters.Bit(counter);
 
     private void EnterRun()
     {
         Mode = OperatingMode.Run;
         _firstScan = true;
-        _overheadUntil = _now;
+        _overheadUntil = _m.Time.Now;
         _userProgramLeft = 0;
-        _depth = -1;
-        _scanStart = _now;
+        _m.Calls.Clear();
+        _scanStart = _m.Time.Now;
     }
 
     private void EnterStop(StlFault? fault)
     {
         Mode = OperatingMode.Stop;
-        Fault = fault;
-        _depth = -1;
-        _interruptBase = -1;
-        ResetInterrupts();
+        _m.Fault = fault;
+        _nextStopCycle = _m.Time.Now;
+        _m.Calls.Clear();
+        _m.Calls.InterruptBase = -1;
+        _m.Interrupts.Reset();
         Array.Clear(OutputImage);
-        foreach (var port in _ports)
-        {
-            port?.Reset();
-        }
+        _m.Events.ResetPorts();
     }
 }

@@ -1,6 +1,8 @@
+using System.Collections.Immutable;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Stl;
 using OperatorPanel.Stl.Checks;
+using OperatorPanel.Stl.Symbols;
 
 namespace OperatorPanel.Simulator.Stl;
 
@@ -13,39 +15,55 @@ namespace OperatorPanel.Simulator.Stl;
 public static class StlProgramLoader
 {
     /// <summary>Parses and loads .awl text; parse and load diagnostics come back together, in line order.</summary>
-    public static StlLoadResult Load(string awlText, CpuProfile cpu)
+    public static StlLoadResult Load(string awlText, CpuProfile cpu, StlLoadOptions? options = null)
     {
         var parsed = AwlParser.Parse(awlText);
-        var loaded = Load(parsed.Program, cpu);
+        var loaded = Load(parsed.Program, cpu, options);
         return parsed.Succeeded
             ? loaded
-            : new StlLoadResult(null, [.. parsed.Diagnostics.Concat(loaded.Diagnostics).OrderBy(d => d.Line)]);
+            : new StlLoadResult(null, [.. parsed.Diagnostics.Concat(loaded.Diagnostics).OrderBy(d => d.Line)]) { Warnings = loaded.Warnings };
     }
 
-    public static StlLoadResult Load(AwlProgram program, CpuProfile cpu)
+    public static StlLoadResult Load(AwlProgram program, CpuProfile cpu, StlLoadOptions? options = null)
     {
         ArgumentNullException.ThrowIfNull(program);
         ArgumentNullException.ThrowIfNull(cpu);
-        var refusals = AwlProgramCheck.Check(program, cpu);
+        options ??= StlLoadOptions.Default;
         var diagnostics = new List<AwlDiagnostic>();
+        var warnings = new List<AwlDiagnostic>();
+        var unknownSymbols = ImmutableArray<AwlDiagnostic>.Empty;
+        if (options.Symbols is { } symbols)
+        {
+            (program, unknownSymbols) = AwlSymbolResolver.Resolve(program, symbols);
+        }
+
+        // What Micro/WIN's import would refuse in the file's structure does not stop a run: the interpreter can still
+        // run a program whose OB1 header lacks its name. A CALL to a missing block and a block defined twice the
+        // compiler refuses itself; a block without body (a protected POU) runs as an empty one, with a warning.
+        var export = AwlExportCheck.Check(program);
+        warnings.AddRange(export.Warnings);
+        warnings.AddRange(export.Refusals.Where(r => r.Id == AwlCheckIds.BlockHeaderWithoutName)
+            .Select(r => r with { Message = $"Micro/WIN would refuse this file: {r.Message}" }));
+        var refusals = AwlProgramCheck.Check(program, cpu);
         var ordered = program.Blocks.Where(b => b.Kind == AwlBlockKind.OrganizationBlock)
             .Concat(program.Blocks.Where(b => b.Kind != AwlBlockKind.OrganizationBlock)).ToArray();
         var blocks = ordered.Select((b, i) => new StlBlock(b, i)).ToArray();
         CheckBlocks(blocks, cpu, diagnostics);
         var names = NameBlocks(blocks, diagnostics);
         var locals = blocks.Select(b => StlLocalLayout.Place(b, cpu.LocalBytesPerPou, diagnostics)).ToArray();
-        var compiler = new StlBlockCompiler(cpu, names, diagnostics);
+        var compiler = new StlBlockCompiler(cpu, names, diagnostics, warnings, options);
         foreach (var block in blocks)
         {
             block.Ops = compiler.Compile(block, locals[block.Index]);
         }
 
-        // What Micro/WIN refuses is said once, by the program check; the compiler's word on the same line goes.
-        diagnostics.RemoveAll(d => refusals.Any(r => r.Line == d.Line));
+        // What Micro/WIN refuses is said once, by the program check, and a symbol missing from the table once, by the
+        // resolver; the compiler's word on the same line goes.
+        diagnostics.RemoveAll(d => refusals.Concat(unknownSymbols).Any(r => r.Line == d.Line));
         diagnostics.AddRange(refusals);
-        return diagnostics.Count == 0
-            ? new StlLoadResult(new StlProgram(cpu, blocks, compiler.EdgeCount), [])
-            : new StlLoadResult(null, [.. diagnostics.OrderBy(d => d.Line)]);
+        diagnostics.AddRange(unknownSymbols);
+        var loaded = diagnostics.Count == 0 ? new StlProgram(cpu, blocks, compiler.EdgeCount) : null;
+        return new StlLoadResult(loaded, [.. diagnostics.OrderBy(d => d.Line)]) { Warnings = [.. warnings.OrderBy(w => w.Line)] };
     }
 
     private static void CheckBlocks(StlBlock[] blocks, CpuProfile cpu, List<AwlDiagnostic> diagnostics)

@@ -1,3 +1,6 @@
+using OperatorPanel.Simulator.Stl.Execution;
+using OperatorPanel.Simulator.Stl.Operations;
+
 namespace OperatorPanel.Simulator.Stl;
 
 /// <summary>
@@ -23,7 +26,7 @@ internal sealed class StlTimerNumbers
     private string? TimerKind(StlOp op)
     {
         var timer = op.A!.Offset;
-        if (StlPlc.IsRetentiveTimer(timer) != (op.Code == StlOpCode.Tonr))
+        if (StlTimers.IsRetentive(timer) != (op.Code == StlOpCode.Tonr))
         {
             return op.Code == StlOpCode.Tonr
                 ? $"T{timer} is a TON/TOF timer; TONR takes T0-T31 or T64-T95"

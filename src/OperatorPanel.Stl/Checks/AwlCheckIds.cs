@@ -35,4 +35,16 @@ public static class AwlCheckIds
 
     /// <summary>An instruction of CPU firmware 2.0 and later (strings, TODRX, CEVNT ...) on an early CPU.</summary>
     public const string NeedsFirmware2 = "AWL011";
+
+    /// <summary>A block header without its name (<c>ORGANIZATION_BLOCK OB1</c>): Micro/WIN writes NAME:OB1 (<see cref="AwlExportCheck"/>).</summary>
+    public const string BlockHeaderWithoutName = "AWL012";
+
+    /// <summary>A CALL or ATCH naming a subroutine or interrupt routine that is not in the file.</summary>
+    public const string BlockNotInFile = "AWL013";
+
+    /// <summary>Two blocks of one kind with the same number, or two blocks with the same name.</summary>
+    public const string BlockDefinedTwice = "AWL014";
+
+    /// <summary>Warning, not a refusal: a block exported without a body (a password-protected POU).</summary>
+    public const string ProtectedBlock = "AWL015";
 }

@@ -89,4 +89,10 @@ public static class StlDiagnostics
 
     /// <summary>READ CHANGES copy bytes outside 0-255 (COPY_BYTES is one byte in IDENTIFY, and the copies are indexed by a byte).</summary>
     public const string CopyBytesOutOfRange = "STL030";
+
+    /// <summary>Merge warning: a user block exported without body (a password-protected POU): nothing of it can be checked (Stl AWL015).</summary>
+    public const string UserBlockWithoutBody = "STL041";
+
+    /// <summary>Merge with a symbol table: a symbolic operand the table does not hold (named with its line); nothing is written.</summary>
+    public const string SymbolNotInTable = "STL042";
 }

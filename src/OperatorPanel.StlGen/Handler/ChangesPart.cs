@@ -44,7 +44,7 @@ internal static class ChangesPart
     /// as the reply, its start, the next item into the copy, that loop's resume, the item's area found).
     /// </summary>
     public const int CompareResume = 100, CompareLoop = 101, CompareChunk = 102, CompareAreaFound = 103, CompareDone = 104,
-        CopyToReply = 105, FullWithCopy = 106, CopyItem = 107, CopyItemsResume = 108, CopyAreaFound = 109;
+        CopyToReply = 105, FullWithCopy = 106, CopyItem = 107, CopyItemsResume = 108, CopyAreaFound = 109, CompareBytes = 115;
 
     /// <summary>Where OP_PANEL goes on in the next scan (added to <see cref="SlicePart"/>'s resumes; none without copies).</summary>
     public static IEnumerable<(int Step, int Label)> Resumes(HandlerContext c) =>
@@ -200,12 +200,18 @@ internal static class ChangesPart
         yield return new NetworkBuilder(
                 "Comparison: at most what the budget holds", $"Run > left (never more than {ChunkBytes}): CLEFT = run - left, the rest of the item; run = left.")
             .Op("LDW>", run, left).Op("-I", left, run).Op("MOVB", l.B(Save + 7), l.B(CLeft)).Op("MOVW", left, run).Build();
+        yield return JumpIf(
+            "Comparison: not 4 bytes",
+            "Any other chunk byte by byte. A jump, not a contact before the double-word compare: a compare contact reads its operands whatever "
+            + "the logic stack holds, and a double word at one of an area's last 3 bytes (or the copy area's, the last V bytes) is out of range.",
+            CompareBytes, Op("LDW<>", run, "4"));
         yield return new NetworkBuilder(
                 "Comparison: 4 bytes unchanged",
                 $"A chunk of 4 bytes equal to the copy (a double word, the commonest item): both pointers and INDEX (the CRC word's high byte) on by 4,",
                 $"{ChunkUnits + 1} units of the budget, the next chunk. Else byte by byte.")
-            .Op("LDW=", run, "4").Op("AD=", "*AC3", "*AC2").Op("+D", "4", "AC3").Op("+D", "4", "AC2").Op("+I", Dec(4 * 256), l.W(PairIndex))
+            .Op("LDD=", "*AC3", "*AC2").Op("+D", "4", "AC3").Op("+D", "4", "AC2").Op("+I", Dec(4 * 256), l.W(PairIndex))
             .Op("-I", Dec(ChunkUnits + 1), budget).Op("JMP", Dec(CompareLoop)).Build();
+        yield return Label(CompareBytes, "READ CHANGES: a chunk byte by byte");
         yield return Always(
             "Comparison: the chunk's bytes", $"Budget - {ChunkUnits} - run; a FOR loop over run bytes.",
             Op("-I", run, budget), Op("-I", Dec(ChunkUnits), budget), Op("FOR", index, "1", run));

@@ -40,8 +40,8 @@ public sealed partial class AlarmJournalViewModel : ObservableObject
         Range = JournalRange.Day;
     }
 
-    /// <summary>The entries found, oldest first, at most <see cref="MaxShown"/> (the newest).</summary>
-    public ObservableCollection<JournalEntry> Entries { get; } = [];
+    /// <summary>The entries found, oldest first, at most <see cref="MaxShown"/> (the newest); local time, as the alarm table.</summary>
+    public ObservableCollection<AlarmHistoryRowViewModel> Entries { get; } = [];
 
     public IReadOnlyList<string> Stations { get; }
 
@@ -74,6 +74,10 @@ public sealed partial class AlarmJournalViewModel : ObservableObject
     [ObservableProperty]
     public partial string? Message { get; private set; }
 
+    /// <summary><see cref="Message"/> is a problem (red); false for what was found or exported, which is never red.</summary>
+    [ObservableProperty]
+    public partial bool IsMessageError { get; private set; }
+
     /// <summary>A new transition: kept, and shown when the current search would find it.</summary>
     internal void Add(AlarmEvent entry, string? user)
     {
@@ -85,7 +89,7 @@ public sealed partial class AlarmJournalViewModel : ObservableObject
 
         if (Matches(_shown, added) && _shown.To is null)
         {
-            Entries.Add(added);
+            Entries.Add(new AlarmHistoryRowViewModel(added, _time.LocalTimeZone));
             ExportCsvCommand.NotifyCanExecuteChanged();
             PrintCommand.NotifyCanExecuteChanged();
         }
@@ -102,7 +106,7 @@ public sealed partial class AlarmJournalViewModel : ObservableObject
         }
         catch (HistoryException failure)
         {
-            Message = failure.Message;
+            (Message, IsMessageError) = (failure.Message, true);
             return;
         }
 
@@ -110,9 +114,10 @@ public sealed partial class AlarmJournalViewModel : ObservableObject
         Entries.Clear();
         foreach (var entry in found)
         {
-            Entries.Add(entry);
+            Entries.Add(new AlarmHistoryRowViewModel(entry, _time.LocalTimeZone));
         }
 
+        IsMessageError = false;
         Message = $"{found.Count} entr{(found.Count == 1 ? "y" : "ies")}: {Describe(filter)}{(found.Count >= filter.Limit ? $" (the newest {filter.Limit})" : string.Empty)}";
         ExportCsvCommand.NotifyCanExecuteChanged();
         PrintCommand.NotifyCanExecuteChanged();
@@ -128,9 +133,9 @@ public sealed partial class AlarmJournalViewModel : ObservableObject
         }
 
         // UTF-8 with a byte-order mark: Excel on Windows reads alarm texts with accents correctly only then.
-        Message = Write(path, JournalCsv.Format(Entries), new UTF8Encoding(encoderShouldEmitUTF8Identifier: true)) is { } error
-            ? $"The alarm journal could not be exported to {path}: {error}"
-            : $"Exported {Entries.Count} journal entries to {path}.";
+        (Message, IsMessageError) = Write(path, JournalCsv.Format(Entries.Select(e => e.Entry)), new UTF8Encoding(encoderShouldEmitUTF8Identifier: true)) is { } error
+            ? ($"The alarm journal could not be exported to {path}: {error}", true)
+            : ($"Exported {Entries.Count} journal entries to {path} (times in UTC).", false);
     }
 
     /// <summary>Writes the entries found as an HTML page and opens it in the browser, whose Print prints it.</summary>
@@ -138,20 +143,13 @@ public sealed partial class AlarmJournalViewModel : ObservableObject
     private void Print()
     {
         var title = $"Alarm journal: {(_project.Name.Length > 0 ? _project.Name : "untitled project")}";
-        var html = JournalHtml.Format(title, Describe(_shown), _time.GetUtcNow(), _time.LocalTimeZone, Entries);
+        var html = JournalHtml.Format(title, Describe(_shown), _time.GetUtcNow(), _time.LocalTimeZone, Entries.Select(e => e.Entry));
         var path = Path.Combine(_printFolder, $"alarm-journal-{_time.GetLocalNow():yyyyMMdd-HHmmss}.html");
-        if (Write(path, html, new UTF8Encoding(false)) is { } error)
-        {
-            Message = $"The print page could not be written to {path}: {error}";
-        }
-        else if (_documents is null || !_documents.TryOpen(path, out var openError))
-        {
-            Message = $"The print page is {path}; open it in a browser to print it.";
-        }
-        else
-        {
-            Message = $"Opened {path} to print ({Entries.Count} entries).";
-        }
+        (Message, IsMessageError) = Write(path, html, new UTF8Encoding(false)) is { } error
+            ? ($"The print page could not be written to {path}: {error}", true)
+            : _documents is null || !_documents.TryOpen(path, out _)
+                ? ($"The print page is {path}; open it in a browser to print it.", false)
+                : ($"Opened {path} to print ({Entries.Count} entries).", false);
     }
 
     private bool HasEntries() => Entries.Count > 0;

@@ -70,7 +70,7 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
             }
             catch (HistoryException failure)
             {
-                Message = failure.Message;
+                (Message, IsMessageError) = (failure.Message, true);
             }
 
             RefreshRows();
@@ -134,6 +134,10 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     /// <summary>The latest problem reading the journal; null when none (the journal's own messages are in <see cref="Journal"/>).</summary>
     [ObservableProperty]
     public partial string? Message { get; private set; }
+
+    /// <summary><see cref="Message"/> is a problem (red); the window's messages are all problems, the journal's are not.</summary>
+    [ObservableProperty]
+    public partial bool IsMessageError { get; private set; }
 
     public void Dispose()
     {

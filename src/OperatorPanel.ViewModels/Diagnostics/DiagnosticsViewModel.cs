@@ -1,21 +1,20 @@
 using System.Collections.ObjectModel;
 using System.Collections.Specialized;
 using System.ComponentModel;
+using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
-using OperatorPanel.ViewModels.Shell;
 
 namespace OperatorPanel.ViewModels.Diagnostics;
 
 /// <summary>The Diagnostics window: per station the identified CPU vs the project's, RUN/STOP, scan times, link statistics.</summary>
-public sealed partial class DiagnosticsViewModel : PaneViewModel
+public sealed partial class DiagnosticsViewModel : ObservableObject
 {
     private readonly PanelSession _session;
     private readonly IDialogService _dialogs;
 
     public DiagnosticsViewModel(PanelSession session, IDialogService dialogs)
-        : base("Diagnostics", "diagnostics")
     {
         ArgumentNullException.ThrowIfNull(session);
         ArgumentNullException.ThrowIfNull(dialogs);

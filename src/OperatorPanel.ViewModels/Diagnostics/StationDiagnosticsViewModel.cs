@@ -35,6 +35,9 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
 
     public string ProjectCpuText => Status.Station.Cpu.DisplayName;
 
+    /// <summary>How the panel reaches it: "COM3 9600 8E1, cable" (port, baud rate, data bits, parity, stop bits, medium).</summary>
+    public string LinkText => $"{Status.PortText}, {(Status.Station.Link.Kind == Core.Transport.LinkKind.RadioModule ? "radio module" : "cable")}";
+
     public string PlcCpuText => Status.Identity?.CpuText ?? Status.IdentifyError ?? "not identified yet";
 
     public bool CpuMismatch => Status.CpuMismatch;
@@ -97,7 +100,7 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
     {
         var question = $"Put {Name} ({Status.Address}) into STOP? Its program stops, so the line stops, and its port returns to PPI: "
             + "the panel cannot reach it until someone sets RUN (mode switch or Micro/WIN).";
-        if (!await _dialogs.ConfirmAsync("Stop PLC", question))
+        if (!await _dialogs.ConfirmAsync("Stop PLC", question, noByDefault: true))
         {
             return;
         }

@@ -7,8 +7,10 @@ using OperatorPanel.Core.Projects;
 namespace OperatorPanel.ViewModels.Docking;
 
 /// <summary>
-/// Reads and writes the per-user layout file (JSON). A missing file is the default layout; an unreadable or corrupt
-/// one is the default layout plus a message, never an exception: a layout is a convenience, not data to lose sleep over.
+/// Reads and writes the per-user layout file (JSON: the main window's place and the panes by content id). A missing
+/// file is the default layout; an unreadable or corrupt one is the default layout plus a message, never an exception: a
+/// layout is a convenience, not data to lose sleep over. Files of the first version (a bare array of panes keyed by
+/// "Id") are still read.
 /// </summary>
 public static class DockLayoutStore
 {
@@ -18,38 +20,43 @@ public static class DockLayoutStore
     private static readonly JsonSerializerOptions Json = new()
     {
         WriteIndented = true,
+        // A window position the system chose is saved as NaN ("let the system place it").
+        NumberHandling = JsonNumberHandling.AllowNamedFloatingPointLiterals,
         Converters = { new JsonStringEnumConverter() },
     };
 
-    public static DockLayout Load(string path, out string? message)
+    public static DockLayout Load(string path, DockLayout defaults, out string? message)
     {
+        ArgumentNullException.ThrowIfNull(defaults);
         message = null;
         if (!File.Exists(path))
         {
-            return DockLayout.Default;
+            return defaults;
         }
 
         if (!AtomicFile.TryReadAll(path, MaxBytes, out var bytes, out var error))
         {
             message = $"Window layout not restored ({path}): {error}. The default layout is used.";
-            return DockLayout.Default;
+            return defaults;
         }
 
         try
         {
-            var panes = JsonSerializer.Deserialize<PaneLayout[]>(bytes, Json);
-            if (panes is null)
+            var layout = Parse(bytes);
+            if (layout is null)
             {
                 message = $"Window layout not restored ({path}): the file is empty. The default layout is used.";
-                return DockLayout.Default;
+                return defaults;
             }
 
-            return new DockLayout([.. panes]).Normalized();
+            return layout.Normalized(defaults);
         }
         catch (JsonException ex)
         {
-            message = $"Window layout not restored ({path}): {ex.Message} The default layout is used.";
-            return DockLayout.Default;
+            // Our words, not the parser's: where the file stops being a layout.
+            var at = ex.LineNumber is { } line ? $" at line {line + 1}, character {(ex.BytePositionInLine ?? 0) + 1}" : string.Empty;
+            message = $"Window layout not restored ({path}): the file is not a layout this panel wrote (unreadable{at}). The default layout is used.";
+            return defaults;
         }
     }
 
@@ -70,7 +77,25 @@ public static class DockLayoutStore
             }
         }
 
-        var text = JsonSerializer.Serialize(layout.Panes.ToArray(), Json);
+        var text = JsonSerializer.Serialize(new SavedLayout(layout.Window, [.. layout.Panes]), Json);
         return AtomicFile.TryWrite(path, Encoding.UTF8.GetBytes(text), out error);
     }
+
+    private static DockLayout? Parse(byte[] bytes)
+    {
+        using var document = JsonDocument.Parse(bytes);
+        if (document.RootElement.ValueKind == JsonValueKind.Array)
+        {
+            var first = document.RootElement.Deserialize<FirstVersionPane[]>(Json);
+            return first is null ? null : new DockLayout([.. first.Where(p => p.Id is not null).Select(p => new PaneLayout(p.Id, p.IsVisible, p.Placement, p.DockedSize, p.Float, p.Order))]);
+        }
+
+        var saved = document.RootElement.Deserialize<SavedLayout>(Json);
+        return saved is null ? null : new DockLayout([.. (saved.Panes ?? []).Where(p => p.ContentId is not null)]) { Window = saved.Window };
+    }
+
+    private sealed record SavedLayout(WindowPlacement? Window, PaneLayout[]? Panes);
+
+    /// <summary>A pane as the first version saved it, keyed by its DockPaneId name (the same names the content ids kept).</summary>
+    private sealed record FirstVersionPane(string Id, bool IsVisible, DockPlacement Placement, double DockedSize, FloatBounds Float, int Order);
 }

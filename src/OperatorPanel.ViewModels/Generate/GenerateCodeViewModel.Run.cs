@@ -48,14 +48,12 @@ public sealed partial class GenerateCodeViewModel
             return;
         }
 
-        string? program = null;
-        if (MergeProgramPath is { } path && !HandlerPackage.TryReadProgram(path, out program, out var readError))
+        if (!HandlerPackage.TryGenerate(options, FileStem, MergeProgramPath, out var package, out var readError))
         {
             Message = readError;
             return;
         }
 
-        var package = HandlerPackage.Generate(options, FileStem, program);
         var result = package.Handler;
         foreach (var diagnostic in result.Diagnostics)
         {

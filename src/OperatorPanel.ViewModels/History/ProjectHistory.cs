@@ -82,7 +82,7 @@ public sealed partial class ProjectHistory : ObservableObject, IAsyncDisposable
             Ready = demo ? Task.CompletedTask : ImportAsync(historian, path!);
         }
 
-        _session.Audit = Current?.Audit ?? NoAuditTrail.Instance;
+        _session.Audit = Current?.Audit ?? AuditTrail.None;
         _recording = Current?.RecordLine(project, _session.Values, _session.StatusOf);
         _recorded = tags;
         Problem = Current?.Problem;
@@ -93,7 +93,7 @@ public sealed partial class ProjectHistory : ObservableObject, IAsyncDisposable
     {
         _recording?.Dispose();
         _recording = null;
-        _session.Audit = NoAuditTrail.Instance;
+        _session.Audit = AuditTrail.None;
         if (Current is { } open)
         {
             Close(open);

@@ -1,16 +1,15 @@
 using System.Collections.ObjectModel;
+using CommunityToolkit.Mvvm.ComponentModel;
 using OperatorPanel.ViewModels.Session;
-using OperatorPanel.ViewModels.Shell;
 
 namespace OperatorPanel.ViewModels.Inputs;
 
 /// <summary>The Inputs window: every input the project symbolises, as lamps grouped by byte (seed 000 §7, "Input" window).</summary>
-public sealed class InputsViewModel : PaneViewModel
+public sealed class InputsViewModel : ObservableObject
 {
     private readonly IoPointMap<LampViewModel> _map;
 
     public InputsViewModel(PanelSession session)
-        : base("Inputs", "inputs")
     {
         ArgumentNullException.ThrowIfNull(session);
         _map = new IoPointMap<LampViewModel>(session, s => s.Inputs, (station, symbol) => new LampViewModel(station, symbol));

@@ -38,7 +38,16 @@ public abstract partial class IoPointViewModel : ObservableObject
 
     /// <summary>Why the value is stale or bad (the link's error); null when good.</summary>
     [ObservableProperty]
+    [NotifyPropertyChangedFor(nameof(Details))]
     public partial string? QualityText { get; private set; } = "not read yet";
+
+    /// <summary>
+    /// The row's tooltip in the compact lamp list, where only address and symbol have room: "I0.0 StartButton", the
+    /// comment, and why the value is not good (the lamp's dashed ring says that it is not).
+    /// </summary>
+    public string Details => string.Join(
+        Environment.NewLine,
+        new[] { $"{Address} {Symbol}", Comment, QualityText }.Where(line => !string.IsNullOrWhiteSpace(line)));
 
     public LampState State => (Quality, Value) switch
     {

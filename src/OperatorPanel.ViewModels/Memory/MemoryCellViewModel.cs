@@ -67,6 +67,9 @@ public sealed partial class MemoryCellViewModel : ObservableObject
     /// <summary>Why the value is stale or bad; null when good.</summary>
     public string? QualityText => Quality == ValueQuality.Good ? null : _value?.Error ?? "not read yet";
 
+    /// <summary>A value was read (good, or stale and kept); false before the first read.</summary>
+    internal bool HasValue => _value is { HasValue: true };
+
     public string ValueText => _value is { HasValue: true } value
         ? ValueFormatter.Format(value.Raw.AsSpan(), Tag.Address.Width, Tag.Format)
         : "-";

@@ -11,7 +11,7 @@ public sealed partial class MemoryViewModel
 {
     /// <summary>
     /// Checks the typed text for the cell's type (ValueParser) and address for the station's CPU (AddressRules), then
-    /// writes it; a bad value is refused with a message and nothing goes on the wire. The engine logs the write.
+    /// writes it; a bad value is refused with a message and nothing goes on the wire. The bus logs the write.
     /// </summary>
     internal async Task CommitAsync(MemoryCellViewModel cell)
     {
@@ -35,7 +35,8 @@ public sealed partial class MemoryViewModel
         }
 
         var newValue = ValueFormatter.Format(bytes.AsSpan(), address.Width, cell.Format);
-        if (_options.ConfirmWrites && !await _dialogs.ConfirmAsync("Write memory", $"Set {address} ({cell.Symbol}) to {newValue}?"))
+        var current = cell.HasValue ? cell.ValueText : null;
+        if (_options.ConfirmWrites && !await _dialogs.ConfirmAsync("Write memory", WriteMessages.Question(address, cell.Symbol, current, cell.Quality, newValue)))
         {
             return;
         }

@@ -5,7 +5,6 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
-using OperatorPanel.ViewModels.Shell;
 using Serilog;
 using Serilog.Core;
 
@@ -15,7 +14,7 @@ namespace OperatorPanel.ViewModels.Memory;
 /// The Memory window (seed 000 §7, "PLC memory"): the project's memory cells as a table with values, in-place editing
 /// confirmed by read-back, and the cell list itself (add, remove, move) edited without leaving the window.
 /// </summary>
-public sealed partial class MemoryViewModel : PaneViewModel
+public sealed partial class MemoryViewModel : ObservableObject
 {
     private readonly PanelSession _session;
     private readonly IDialogService _dialogs;
@@ -25,7 +24,6 @@ public sealed partial class MemoryViewModel : PaneViewModel
     private (Station Station, string Symbol)? _selectAfterRebuild;
 
     public MemoryViewModel(PanelSession session, IDialogService dialogs, PanelOptions options, ILogger? logger = null)
-        : base("Memory", "memory")
     {
         ArgumentNullException.ThrowIfNull(session);
         ArgumentNullException.ThrowIfNull(dialogs);

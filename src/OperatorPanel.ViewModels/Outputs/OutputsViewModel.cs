@@ -1,11 +1,11 @@
 using System.Collections.ObjectModel;
 using System.ComponentModel;
+using CommunityToolkit.Mvvm.ComponentModel;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Writes;
 using OperatorPanel.ViewModels.Inputs;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
-using OperatorPanel.ViewModels.Shell;
 using Serilog;
 using Serilog.Core;
 
@@ -13,9 +13,9 @@ namespace OperatorPanel.ViewModels.Outputs;
 
 /// <summary>
 /// The Outputs window: every output the project symbolises, as lamps with a switch (seed 000 §7, "Output" window).
-/// A switch writes the bit with WRITE BIT through the engine, which logs it with old and new value.
+/// A switch writes the bit with WRITE BIT through its bus, which logs it with old and new value.
 /// </summary>
-public sealed class OutputsViewModel : PaneViewModel
+public sealed class OutputsViewModel : ObservableObject
 {
     private readonly PanelSession _session;
     private readonly IDialogService _dialogs;
@@ -24,7 +24,6 @@ public sealed class OutputsViewModel : PaneViewModel
     private readonly IoPointMap<OutputViewModel> _map;
 
     public OutputsViewModel(PanelSession session, IDialogService dialogs, PanelOptions options, ILogger? logger = null)
-        : base("Outputs", "outputs")
     {
         ArgumentNullException.ThrowIfNull(session);
         ArgumentNullException.ThrowIfNull(dialogs);
@@ -59,7 +58,8 @@ public sealed class OutputsViewModel : PaneViewModel
             return;
         }
 
-        if (_options.ConfirmWrites && !await _dialogs.ConfirmAsync("Switch output", $"Set {output.Address} ({output.Symbol}) to {newValue}?"))
+        var current = output.Value is { } now ? (now ? "1" : "0") : null;
+        if (_options.ConfirmWrites && !await _dialogs.ConfirmAsync("Switch output", WriteMessages.Question(output.PlcAddress, output.Symbol, current, output.Quality, newValue)))
         {
             return;
         }

@@ -1,20 +1,15 @@
-using CommunityToolkit.Mvvm.ComponentModel;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.ViewModels.Session;
 
-/// <summary>Connecting, disconnecting, refreshing, and following project edits while connected.</summary>
+/// <summary>Connecting (and identifying every station), disconnecting, refreshing, and following project edits while connected.</summary>
 public sealed partial class PanelSession : IAsyncDisposable
 {
-    /// <summary>Link counters change every cycle without any value changing: the status bar samples them this often.</summary>
-    private static readonly TimeSpan StatusPeriod = TimeSpan.FromSeconds(1);
-
     private ILineConnector? _connector;
-    private ITimer? _statusTimer;
 
-    [ObservableProperty]
-    public partial bool IsConnected { get; private set; }
+    /// <summary>The line is connected: its ports are open and its buses poll.</summary>
+    public bool IsConnected => _line.IsConnected;
 
     /// <summary>Opens the project's ports through <paramref name="connector"/>, starts polling and identifies every station.</summary>
     public async Task ConnectAsync(ILineConnector connector, CancellationToken cancellationToken = default)
@@ -27,9 +22,9 @@ public sealed partial class PanelSession : IAsyncDisposable
 
         _connector = connector;
         await _line.ConnectAsync(connector, cancellationToken);
-        IsConnected = true;
-        _statusTimer = _time.CreateTimer(_ => _dispatcher.Post(UpdateStations), null, StatusPeriod, StatusPeriod);
-        StatusLine.Show($"Connected to {Project.Stations.Length} station(s) on {string.Join(", ", _line.PortNames)}");
+        OnPropertyChanged(nameof(IsConnected));
+        // "Polling", not "connected": whether each station answers is the station's own state beside this line.
+        StatusLine.Show($"Polling {string.Join(", ", Project.Stations.Select(s => s.Name))} on {string.Join(", ", _line.PortNames)}");
         await IdentifyAsync(cancellationToken);
     }
 
@@ -40,26 +35,37 @@ public sealed partial class PanelSession : IAsyncDisposable
             return;
         }
 
-        _statusTimer?.Dispose();
-        _statusTimer = null;
         await _line.DisconnectAsync();
-        IsConnected = false;
-        UpdateStations();
+        OnPropertyChanged(nameof(IsConnected));
         StatusLine.Show("Disconnected");
+    }
+
+    /// <summary>
+    /// Sends IDENTIFY to every station through its bus's queue (beside the polling, one request on the wire at a time),
+    /// for Diagnostics and the status bar: which CPU and handler each station really runs. The line keeps what each reply
+    /// said; the station views read it at the line's StateChanged.
+    /// </summary>
+    public async Task IdentifyAsync(CancellationToken cancellationToken = default)
+    {
+        foreach (var view in IsConnected ? Stations.ToList() : [])
+        {
+            await _line.IdentifyAsync(view.Address, cancellationToken);
+        }
+
+        foreach (var view in Stations.Where(s => s.CpuMismatch))
+        {
+            StatusLine.ShowError($"{view.Name}: the PLC reports {view.Identity!.CpuText}, the project says {view.Station.Cpu.DisplayName}");
+        }
     }
 
     /// <summary>
     /// One full cycle of every bus: in triggered mode the only way values change; in continuous mode the next regular cycle.
     /// </summary>
-    public async Task RefreshNowAsync(CancellationToken cancellationToken = default)
-    {
-        await _line.RefreshAsync(cancellationToken);
-        UpdateStations();
-    }
+    public Task RefreshNowAsync(CancellationToken cancellationToken = default) => _line.RefreshAsync(cancellationToken);
 
     /// <summary>
     /// Takes an edited version of the same project (memory cells added, removed, moved, reformatted). While connected,
-    /// each bus whose watch list changed gets a new engine on its open link; a changed set of ports or stations reconnects.
+    /// each bus whose watch list changed polls its new plan on its open port; a changed set of ports or stations reconnects.
     /// </summary>
     public async Task EditProjectAsync(PanelProject edited)
     {
@@ -71,8 +77,9 @@ public sealed partial class PanelSession : IAsyncDisposable
             await DisconnectAsync();
         }
 
+        var mode = Mode;
         await _line.EditAsync(edited);
-        Project = edited;
+        OnProjectReplaced(mode);
         if (!sameStations)
         {
             ResetStations();
@@ -86,5 +93,9 @@ public sealed partial class PanelSession : IAsyncDisposable
         ProjectChanged?.Invoke(this, new ProjectChangedEventArgs(edited, ProjectChangeKind.Edited));
     }
 
-    public async ValueTask DisposeAsync() => await DisconnectAsync();
+    public async ValueTask DisposeAsync()
+    {
+        await DisconnectAsync();
+        StatusLine.Dispose();
+    }
 }

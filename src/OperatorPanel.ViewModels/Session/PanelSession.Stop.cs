@@ -1,5 +1,4 @@
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Stop;
 
 namespace OperatorPanel.ViewModels.Session;
@@ -20,9 +19,8 @@ public sealed partial class PanelSession
             null => new StopOutcome.NotSent(station, "not in the project"),
             { AllowStop: false } => new StopOutcome.NotSent(station, $"the project does not allow STOP for {project.Name}"),
             _ when IsReadOnly => new StopOutcome.NotSent(station, "read-only mode, nothing sent"),
-            _ => await StopAuditedAsync(station, cancellationToken),
+            _ => await StopRecordedAsync(station, cancellationToken),
         };
-        UpdateStations();
         if (outcome.IsStopped)
         {
             StatusLine.Show(outcome.Text);
@@ -32,15 +30,6 @@ public sealed partial class PanelSession
             StatusLine.ShowError(outcome.Text);
         }
 
-        return outcome;
-    }
-
-    private async Task<StopOutcome> StopAuditedAsync(Station station, CancellationToken cancellationToken)
-    {
-        var intent = AuditEntries.StopIntent(AuditEntries.NextOperation(), _time.GetUtcNow(), station, User);
-        Audit.Record(intent);
-        var outcome = await _line.StopAsync(station, cancellationToken);
-        Audit.Record(AuditEntries.StopResult(intent, _time.GetUtcNow(), outcome));
         return outcome;
     }
 }

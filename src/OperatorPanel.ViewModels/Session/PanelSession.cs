@@ -1,7 +1,6 @@
 using System.Collections.ObjectModel;
 using CommunityToolkit.Mvvm.ComponentModel;
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
@@ -15,10 +14,12 @@ using Serilog.Core;
 namespace OperatorPanel.ViewModels.Session;
 
 /// <summary>
-/// The open project and its <see cref="ProjectLine"/>. Every window (Inputs, Outputs, Memory, Diagnostics, Alarms) reads
-/// the project and its changes from here, and values from <see cref="Values"/>: the line hands each batch of changes to
-/// <see cref="IUiDispatcher"/>, so every value callback runs on the UI thread. Writes go through <see cref="WriteAsync"/>,
-/// which the engine logs with old and new value (Core/Writes/WriteLog), so nothing here logs them again.
+/// The open project and its <see cref="ProjectLine"/>, which owns the project, the refresh mode and the connection: the
+/// session exposes them and raises their changes, it keeps no copy. Every window (Inputs, Outputs, Memory, Diagnostics,
+/// Alarms) reads the project and its changes from here, and values from <see cref="Values"/>: the line hands each batch
+/// to <see cref="IUiDispatcher"/>, so every value callback runs on the UI thread, and ends it with
+/// <see cref="ProjectLine.StateChanged"/>, the one trigger of the status bar (<see cref="Stations"/>). Writes go through
+/// <see cref="WriteAsync"/>, which the bus logs with old and new value (Core/Writes/WriteLog), so nothing here logs them again.
 /// </summary>
 public sealed partial class PanelSession : ObservableObject
 {
@@ -35,17 +36,12 @@ public sealed partial class PanelSession : ObservableObject
         var options = new ProjectLineOptions
         {
             LinkOptionsFor = serial => LinkOptionsFor(serial),
-            // One post per batch: the rows first, then the status bar, which the same cycle may have changed.
-            Deliver = work => _dispatcher.Post(() =>
-            {
-                work();
-                UpdateStations();
-            }),
+            Deliver = dispatcher.Post,
         };
         _line = new ProjectLine(project, options, _time, (logger ?? Logger.None).ForContext<PanelSession>());
-        Project = project;
-        Mode = project.Refresh.Mode;
+        _line.StateChanged += (_, _) => UpdateStations();
         Stations = [.. project.Stations.Select(s => new StationStatusViewModel(s))];
+        StatusLine = new StatusLine(_time, _dispatcher);
     }
 
     /// <summary>
@@ -63,30 +59,42 @@ public sealed partial class PanelSession : ObservableObject
     /// <summary>The line's values: a row subscribes to its address and hears every change on the UI thread.</summary>
     public ILineValues Values => _line;
 
-    [ObservableProperty]
-    public partial PanelProject Project { get; private set; }
+    /// <summary>The line's project.</summary>
+    public PanelProject Project => _line.Project;
 
     public ObservableCollection<StationStatusViewModel> Stations { get; }
 
-    public StatusLine StatusLine { get; } = new();
+    public StatusLine StatusLine { get; }
 
-    /// <summary>The operator's refresh mode; switches the running engines at once. Not saved in the project.</summary>
-    [ObservableProperty]
-    public partial RefreshMode Mode { get; set; }
+    /// <summary>The operator's refresh mode, the line's: switches the running buses at once. Not saved in the project.</summary>
+    public RefreshMode Mode
+    {
+        get => _line.Mode;
+        set
+        {
+            if (_line.Mode != value)
+            {
+                _line.Mode = value;
+                OnPropertyChanged();
+                OnPropertyChanged(nameof(IsContinuous));
+            }
+        }
+    }
+
+    /// <summary><see cref="Mode"/> as the View menu's check mark: continuous (true) or triggered.</summary>
+    public bool IsContinuous
+    {
+        get => Mode == RefreshMode.Continuous;
+        set => Mode = value ? RefreshMode.Continuous : RefreshMode.OnDemand;
+    }
 
     /// <summary>No write reaches a PLC while set: every writing command is disabled, and the session refuses too.</summary>
     [ObservableProperty]
     public partial bool IsReadOnly { get; set; }
 
-    /// <summary>Where each write and STOP is recorded, intent before it is sent and outcome after (the project's history).</summary>
-    public IAuditTrail Audit { get; set; } = NoAuditTrail.Instance;
-
-    /// <summary>Who works the panel, as the audit and the alarm journal record it: the Windows user.</summary>
-    public string User { get; init; } = Environment.UserName;
-
     /// <summary>
-    /// Writes through the station's engine; the outcome is the PLC's read-back, never the request. The audit gets the
-    /// intent (with the last polled value) before the write is queued, and the outcome after.
+    /// Writes through the station's bus; the outcome is the PLC's read-back, never the request. The audit gets the intent
+    /// (with the last polled value) before the write is queued and the outcome after (<see cref="RecordedAsync"/>).
     /// </summary>
     public async Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default)
     {
@@ -96,23 +104,7 @@ public sealed partial class PanelSession : ObservableObject
             return new WriteOutcome.Failed($"{request.Address}: read-only mode, nothing written", WriteFailureKind.InvalidRequest);
         }
 
-        _line.TryGetValue(request.Station, request.Address, out var old);
-        var intent = AuditEntries.WriteIntent(AuditEntries.NextOperation(), _time.GetUtcNow(), request, old.Raw, User);
-        Audit.Record(intent);
-        WriteOutcome outcome;
-        try
-        {
-            outcome = await _line.WriteAsync(request, cancellationToken);
-        }
-        catch (OperationCanceledException)
-        {
-            Audit.Record(AuditEntries.Withdrawn(intent, _time.GetUtcNow()));
-            throw;
-        }
-
-        Audit.Record(AuditEntries.WriteResult(intent, _time.GetUtcNow(), outcome));
-        UpdateStations();
-        return outcome;
+        return await RecordedAsync(request, cancellationToken);
     }
 
     /// <summary>The station's polling status (no exchange: the engine's own state); null when not connected.</summary>
@@ -121,9 +113,9 @@ public sealed partial class PanelSession : ObservableObject
     /// <summary>Takes another project (new, opened, demo). Disconnect first: the old line belongs to the old project.</summary>
     public void Load(PanelProject project)
     {
+        var mode = Mode;
         _line.Load(project);
-        Project = project;
-        Mode = project.Refresh.Mode;
+        OnProjectReplaced(mode);
         ResetStations();
         ProjectChanged?.Invoke(this, new ProjectChangedEventArgs(project, ProjectChangeKind.Replaced));
     }
@@ -131,16 +123,26 @@ public sealed partial class PanelSession : ObservableObject
     /// <summary>Tells every window the project was saved (the shell clears its dirty mark).</summary>
     public void MarkSaved() => ProjectChanged?.Invoke(this, new ProjectChangedEventArgs(Project, ProjectChangeKind.Saved));
 
-    /// <summary>Reads every station's status and link counters into <see cref="Stations"/>; call on the UI thread.</summary>
-    public void UpdateStations()
+    /// <summary>Reads every station's status, link counters and IDENTIFY from the line into <see cref="Stations"/>: on the UI thread, at each StateChanged.</summary>
+    private void UpdateStations()
     {
         foreach (var station in Stations)
         {
-            station.Update(_line.StatusOf(station.Address), _line.StatisticsFor(station.Address));
+            var address = station.Address;
+            station.Update(_line.StatusOf(address), _line.StatisticsFor(address), _line.IdentityOf(address), _line.LastIdentifyOf(address));
         }
     }
 
-    partial void OnModeChanged(RefreshMode value) => _line.Mode = value;
+    /// <summary>The line took another project and its refresh mode: the views hear of both.</summary>
+    private void OnProjectReplaced(RefreshMode modeBefore)
+    {
+        OnPropertyChanged(nameof(Project));
+        if (Mode != modeBefore)
+        {
+            OnPropertyChanged(nameof(Mode));
+            OnPropertyChanged(nameof(IsContinuous));
+        }
+    }
 
     private void ResetStations()
     {

@@ -3,6 +3,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.ViewModels.Session;
@@ -12,6 +13,7 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
 {
     private bool _hasAnswered;
     private bool _handlerV1;
+    private bool _lineOpen;
 
     public ProjectStation Station { get; } = station;
 
@@ -53,10 +55,10 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
         StationHealth.Offline => "offline: " + (LastError ?? "no reply"),
         StationHealth.Stopped => "no answer: PLC in STOP, mode switch at TERM, or off the bus",
         StationHealth.HandlerMismatch =>
-            $"handler protocol version {Identity?.ProtocolVersion} is not the panel's {Core.Protocol.HandlerIdentity.ProtocolVersion}: generate and download the PLC code again",
+            $"handler protocol version {Identity?.ProtocolVersion} is not the panel's {HandlerIdentity.ProtocolVersion}: generate and download the PLC code again",
         StationHealth.StoppedByPanel => "stopped by the panel: the port speaks PPI until someone sets RUN",
         StationHealth.HandlerV1 => "handler protocol v1: regenerate the PLC code (File > Generate PLC code) and download it",
-        StationHealth.Unknown => "not connected",
+        StationHealth.Unknown => _lineOpen ? "not read yet" : "not connected",
     };
 
     /// <summary>
@@ -69,24 +71,41 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
     [ObservableProperty]
     public partial string? IdentifyError { get; private set; }
 
-    /// <param name="reply">The IDENTIFY reply, or null when none came.</param>
-    /// <param name="error">Why none came.</param>
-    /// <param name="handlerV1">The station answered only the v1 probe (PlcErrorKind.HandlerProtocolV1).</param>
-    internal void RecordIdentify(Core.Protocol.IdentifyResponse? reply, string? error, bool handlerV1 = false)
-    {
-        _handlerV1 = handlerV1;
-        IdentifyError = reply is null ? error ?? "IDENTIFY: unexpected reply" : null;
-        if (reply is not null)
-        {
-            _hasAnswered = true;
-            Identity = StationIdentity.From(reply);
-        }
-    }
-
-    internal void Update(StationStatus? status, LinkStatistics statistics)
+    /// <summary>
+    /// Takes the line's state of the station: its polling status (null when not connected), link counters, the last
+    /// answered IDENTIFY and what the last IDENTIFY brought. The identity of an earlier answer is kept while none comes
+    /// (a later IDENTIFY that failed, a disconnect).
+    /// </summary>
+    internal void Update(StationStatus? status, LinkStatistics statistics, IdentifyResponse? identity = null, LinkReply? lastIdentify = null)
     {
         Statistics = statistics;
         NextTryAt = status?.NextTryAt;
+        // No status: the line is closed. A status still Unknown: the line is open and the station has not answered yet.
+        if (_lineOpen != status is not null)
+        {
+            _lineOpen = status is not null;
+            OnPropertyChanged(nameof(HealthText));
+        }
+
+        if (identity is not null)
+        {
+            _hasAnswered = true;
+            Identity = StationIdentity.From(identity);
+        }
+
+        if (lastIdentify is not null)
+        {
+            var failure = lastIdentify.Failure;
+            _handlerV1 = failure?.Kind == PlcErrorKind.HandlerProtocolV1;
+            IdentifyError = lastIdentify.Response switch
+            {
+                IdentifyResponse => null,
+                ErrorResponse refused => $"IDENTIFY refused: {refused.Error}",
+                null => $"IDENTIFY: {failure!.Kind}: {failure.Message}",
+                _ => "IDENTIFY: unexpected reply",
+            };
+        }
+
         if (status is null)
         {
             Health = StationHealth.Unknown;

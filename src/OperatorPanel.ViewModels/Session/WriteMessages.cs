@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Values;
 using OperatorPanel.Core.Writes;
@@ -23,6 +24,18 @@ internal static class WriteMessages
         WriteOutcome.Failed f => f.Reason,
         _ => throw new ArgumentOutOfRangeException(nameof(outcome), outcome, null),
     };
+
+    /// <summary>
+    /// The confirmation before a write: "Set VW10 (Speed) from 1234 to 1500?", the value the panel last read beside the
+    /// one to be written ("not read yet", or the last value marked stale, when no good read is at hand).
+    /// </summary>
+    public static string Question(PlcAddress address, string symbol, string? current, ValueQuality quality, string newValue)
+    {
+        var now = current is null ? "not read yet"
+            : quality == ValueQuality.Good ? current
+            : $"{current} (last read, not current)";
+        return $"Set {address} ({symbol}) from {now} to {newValue}?";
+    }
 
     public static string StatusText(string symbol, PlcAddress address, DisplayFormat format, string newValue, WriteOutcome outcome) =>
         outcome switch

@@ -1,5 +1,5 @@
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Wizard;
@@ -23,15 +23,17 @@ public sealed class PortInUseGuard : IConnectionTester
         (_inner, _session) = (inner, session);
     }
 
-    public Task<PlcResponse> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
+    public Task<LinkReply> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(link);
         if (_session.IsConnected && _session.Project.Stations.Any(s => string.Equals(s.Link.PortName, link.PortName, StringComparison.OrdinalIgnoreCase)))
         {
-            return Task.FromException<PlcResponse>(new PlcCommunicationException(
-                PlcErrorKind.PortUnavailable,
-                station,
-                $"the panel is connected on {link.PortName}; choose Disconnect in the main window, then test again"));
+            return Task.FromResult<LinkReply>(new LinkReply.Failed(
+                new PlcCommunicationException(
+                    PlcErrorKind.PortUnavailable,
+                    station,
+                    $"the panel is connected on {link.PortName}; choose Disconnect in the main window, then test again"),
+                Sent: false));
         }
 
         return _inner.IdentifyAsync(link, station, cancellationToken);

@@ -15,9 +15,11 @@ namespace OperatorPanel.ViewModels.Shell;
 /// <param name="Wizards">Shows the wizard window for Edit project; null disables the command.</param>
 /// <param name="ConnectionTester">The wizard's "test connection" (the shell guards it with <see cref="PortInUseGuard"/>).</param>
 /// <param name="Ports">The serial ports the wizard's link page offers.</param>
+/// <param name="LayoutPath">The per-user window layout file (<see cref="Docking.DockingViewModel"/>); null keeps the layout for this run only.</param>
+/// <param name="ReadmePath">The README installed beside the program, for Help > About; null: beside this assembly.</param>
+/// <param name="Documents">Opens the README from Help > About and the alarm journal's print page.</param>
 /// <param name="History">Where the projects' history databases are; null: no history (tests that do not look at it).</param>
 /// <param name="Sound">The alarm tones; null: a silent panel.</param>
-/// <param name="Documents">Opens the alarm journal's print page.</param>
 /// <param name="PrintFolder">Where print pages are written; null: the temp folder.</param>
 public sealed record ShellServices(
     IDialogService Dialogs,
@@ -28,7 +30,9 @@ public sealed record ShellServices(
     IWizardPresenter? Wizards = null,
     IConnectionTester? ConnectionTester = null,
     ISerialPortCatalog? Ports = null,
+    string? LayoutPath = null,
+    string? ReadmePath = null,
+    IDocumentLauncher? Documents = null,
     HistoryFolder? History = null,
     IAlarmSound? Sound = null,
-    IDocumentLauncher? Documents = null,
     string? PrintFolder = null);

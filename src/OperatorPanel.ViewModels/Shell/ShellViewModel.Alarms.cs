@@ -16,16 +16,19 @@ public sealed partial class ShellViewModel : IDisposable
     private PanelProject _alarmsProject = NoProject;
     private AlarmJournal? _alarmsJournal;
 
-    public AlarmsPaneViewModel AlarmsPane { get; }
+    private AlarmsViewModel _alarms;
 
-    /// <summary>The current project's alarms: rows, history, acknowledge, CSV export.</summary>
-    public AlarmsViewModel Alarms => AlarmsPane.Alarms;
+    /// <summary>The current project's alarms: rows, history, acknowledge, CSV export; the Alarms pane's content.</summary>
+    public AlarmsViewModel Alarms => _alarms;
 
     public int ActiveAlarmCount => Alarms.ActiveCount;
 
     public int UnacknowledgedAlarmCount => Alarms.UnacknowledgedCount;
 
-    /// <summary>For the status bar: "2 active, 1 unacknowledged", or "no alarms".</summary>
+    /// <summary>An alarm is active or waits for acknowledgement: the banner and the status bar show it in colour.</summary>
+    public bool HasPendingAlarms => ActiveAlarmCount > 0 || UnacknowledgedAlarmCount > 0;
+
+    /// <summary>For the banner and the status bar: "2 active, 1 unacknowledged", or "no alarms".</summary>
     public string AlarmSummary => ActiveAlarmCount == 0 && UnacknowledgedAlarmCount == 0
         ? "no alarms"
         : $"{ActiveAlarmCount} active, {UnacknowledgedAlarmCount} unacknowledged";
@@ -72,7 +75,8 @@ public sealed partial class ShellViewModel : IDisposable
         var old = Alarms;
         old.PropertyChanged -= OnAlarmsChanged;
         old.Dispose();
-        AlarmsPane.Alarms = CreateAlarms(e.Project);
+        _alarms = CreateAlarms(e.Project);
+        Panes.Single(p => p.Content == old).Content = _alarms;
         OnPropertyChanged(nameof(Alarms));
         NotifyAlarmCounts();
     }
@@ -93,6 +97,7 @@ public sealed partial class ShellViewModel : IDisposable
     {
         OnPropertyChanged(nameof(ActiveAlarmCount));
         OnPropertyChanged(nameof(UnacknowledgedAlarmCount));
+        OnPropertyChanged(nameof(HasPendingAlarms));
         OnPropertyChanged(nameof(AlarmSummary));
     }
 }

@@ -12,8 +12,16 @@ public sealed partial class ShellViewModel
     private const int ProblemsShown = 8;
 
     /// <summary>
+    /// The longest the panel waits for its line when it closes: a serial port (a USB adapter's driver above all) may
+    /// hang in its close, and the operator closing the panel must not wait on it.
+    /// </summary>
+    public static readonly TimeSpan CloseWait = TimeSpan.FromSeconds(2);
+
+    /// <summary>
     /// For the window's Closing: asks about unsaved changes (Cancel keeps the window open: return false), then
-    /// disconnects. The App cancels the first Closing, awaits this, and closes again when it returns true.
+    /// disconnects, waiting for the line at most <see cref="CloseWait"/> (a line still closing after that is left to
+    /// finish on its own, and the log says so). The App cancels the first Closing, awaits this, and closes again when it
+    /// returns true.
     /// </summary>
     public async Task<bool> CloseAsync()
     {
@@ -22,7 +30,25 @@ public sealed partial class ShellViewModel
             return false;
         }
 
-        await Session.DisconnectAsync();
+        var disconnect = Session.DisconnectAsync();
+        if (await Task.WhenAny(disconnect, Task.Delay(CloseWait, _time)) != disconnect)
+        {
+            var ports = string.Join(", ", Session.Project.Stations.Select(s => s.Link.PortName).Distinct(StringComparer.OrdinalIgnoreCase));
+            _logger.Warning("The line did not close within {Seconds} s ({Ports:l}); the panel closes without waiting for it", CloseWait.TotalSeconds, ports);
+            await History.DisposeAsync();
+            return true;
+        }
+
+        try
+        {
+            await disconnect;
+        }
+        catch (Exception exception) when (exception is not OutOfMemoryException)
+        {
+            // Closing goes on: the panel is leaving, and the line is as closed as it will get.
+            _logger.Error(exception, "Disconnecting on close failed");
+        }
+
         await History.DisposeAsync();
         return true;
     }

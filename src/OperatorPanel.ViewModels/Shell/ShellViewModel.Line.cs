@@ -1,26 +1,13 @@
 using CommunityToolkit.Mvvm.Input;
-using OperatorPanel.Core.Polling;
 
 namespace OperatorPanel.ViewModels.Shell;
 
-/// <summary>The line: connect, disconnect, refresh mode (F5 refreshes in triggered mode), read-only mode, the demo.</summary>
+/// <summary>
+/// The line: connect, disconnect, refresh mode (F5 refreshes in triggered mode), read-only mode, the demo. The state they
+/// switch is the session's (Session.IsConnected, IsContinuous, IsReadOnly), which the window binds to directly.
+/// </summary>
 public sealed partial class ShellViewModel
 {
-    public bool IsConnected => Session.IsConnected;
-
-    public bool IsContinuous
-    {
-        get => Session.Mode == RefreshMode.Continuous;
-        set => Session.Mode = value ? RefreshMode.Continuous : RefreshMode.OnDemand;
-    }
-
-    /// <summary>No writes: every switch and editor is disabled, and the session refuses writes as well.</summary>
-    public bool IsReadOnly
-    {
-        get => Session.IsReadOnly;
-        set => Session.IsReadOnly = value;
-    }
-
     [RelayCommand(CanExecute = nameof(CanConnect))]
     private async Task ConnectAsync()
     {
@@ -68,12 +55,12 @@ public sealed partial class ShellViewModel
     [RelayCommand]
     private void ToggleRefreshMode()
     {
-        IsContinuous = !IsContinuous;
-        StatusLine.Show(IsContinuous ? "Refresh: continuous" : "Refresh: triggered; F5 refreshes");
+        Session.IsContinuous = !Session.IsContinuous;
+        StatusLine.Show(Session.IsContinuous ? "Refresh: continuous" : "Refresh: triggered; F5 refreshes");
     }
 
     [RelayCommand]
-    private void ToggleReadOnly() => IsReadOnly = !IsReadOnly;
+    private void ToggleReadOnly() => Session.IsReadOnly = !Session.IsReadOnly;
 
     /// <summary>DemoCommand: opens the sample project on the simulated line; enabled when the App offers a demo.</summary>
     [RelayCommand(CanExecute = nameof(HasDemo))]
@@ -88,6 +75,8 @@ public sealed partial class ShellViewModel
     }
 
     private bool CanConnect() => HasProject && !Session.IsConnected;
+
+    private bool IsConnected() => Session.IsConnected;
 
     private bool HasDemo() => _services.Demo is not null;
 }

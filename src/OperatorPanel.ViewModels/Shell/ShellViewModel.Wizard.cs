@@ -1,13 +1,14 @@
 using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.ViewModels.Generate;
+using OperatorPanel.ViewModels.Help;
 using OperatorPanel.ViewModels.Wizard;
 
 namespace OperatorPanel.ViewModels.Shell;
 
 /// <summary>
 /// Edit project (the wizard's five pages over the selected station, seed 000 §7: "the project can be freely edited
-/// later") and Generate PLC code for the project's stations.
+/// later"), Generate PLC code for the project's stations, and Help > About: the shell's dialogs.
 /// </summary>
 public sealed partial class ShellViewModel
 {
@@ -24,6 +25,16 @@ public sealed partial class ShellViewModel
 
     public void CloseGenerateCode() => GenerateCode = null;
 
+    /// <summary>Help > About while open (the App shows it as a dialog and closes it with <see cref="CloseAbout"/>); null otherwise.</summary>
+    [ObservableProperty]
+    public partial AboutViewModel? About { get; private set; }
+
+    public void CloseAbout() => About = null;
+
+    [RelayCommand]
+    private void ShowAbout() =>
+        About = new AboutViewModel(_services.ReadmePath ?? Path.Combine(AppContext.BaseDirectory, "README.txt"), _services.Documents);
+
     /// <summary>EditProjectCommand: the wizard on the station at <see cref="SelectedStationIndex"/>; Finish replaces the project (now unsaved).</summary>
     [RelayCommand(CanExecute = nameof(CanEditProject))]
     private async Task EditProjectAsync()
@@ -35,7 +46,7 @@ public sealed partial class ShellViewModel
         }
 
         var index = Math.Clamp(SelectedStationIndex, 0, Session.Project.Stations.Length - 1);
-        var wizard = new ProjectWizardViewModel(Session.Project, index, new PortInUseGuard(tester, Session), ports);
+        var wizard = new ProjectWizardViewModel(Session.Project, index, new PortInUseGuard(tester, Session), ports, _time);
         if (await presenter.ShowAsync(wizard) is not { } edited)
         {
             return;

@@ -3,8 +3,8 @@ using System.ComponentModel;
 using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Alarms;
 using OperatorPanel.ViewModels.Diagnostics;
+using OperatorPanel.ViewModels.Docking;
 using OperatorPanel.ViewModels.History;
 using OperatorPanel.ViewModels.Inputs;
 using OperatorPanel.ViewModels.Memory;
@@ -20,7 +20,8 @@ namespace OperatorPanel.ViewModels.Shell;
 /// The main window: project file commands with dirty tracking, the line (connect, refresh mode, refresh now, demo,
 /// read-only), the per-station status bar, the panes (with the Alarms pane and the alarm count), the project wizard
 /// (File > New, Edit project) and Generate PLC code. Everything reads <see cref="Session"/>, which carries the project,
-/// the values and every change notification.
+/// the values and every change notification. Five files, one per menu of the window (this one: state and panes; .Files,
+/// .Line, .Alarms, .Wizard), because the commands of one window share its dirty mark and its services.
 /// </summary>
 public sealed partial class ShellViewModel : ObservableObject
 {
@@ -46,9 +47,12 @@ public sealed partial class ShellViewModel : ObservableObject
         Memory = new MemoryViewModel(session, services.Dialogs, options, logger);
         Diagnostics = new DiagnosticsViewModel(session, services.Dialogs);
         History = new ProjectHistory(session, services.History, session.Dispatcher, _time, _logger);
-        AlarmsPane = new AlarmsPaneViewModel(CreateAlarms(session.Project));
+        _alarms = CreateAlarms(session.Project);
         Trends = new TrendsViewModel(session, History, _time);
-        Panes = [Inputs, Outputs, Memory, AlarmsPane, Diagnostics, Trends];
+        Panes = RegisterPanes(this);
+        Docking = new DockingViewModel(services.LayoutPath, Panes);
+        Docking.PropertyChanged += OnDockingChanged;
+        FollowTrendsPane(Docking["Trends"]);
         GenerateCodeCommand = new RelayCommand(OpenGenerateCode, () => HasProject);
         session.ProjectChanged += OnProjectChanged;
         session.PropertyChanged += OnSessionChanged;
@@ -80,10 +84,8 @@ public sealed partial class ShellViewModel : ObservableObject
     /// <summary>The project's history database: recording, the journal, the audit (docs/historian.md).</summary>
     public ProjectHistory History { get; }
 
+    /// <summary>The Trends pane's content.</summary>
     public TrendsViewModel Trends { get; }
-
-    /// <summary>The dockable panes, for the docking manager's items source: Inputs, Outputs, Memory, Alarms, Diagnostics, Trends.</summary>
-    public ObservableCollection<PaneViewModel> Panes { get; }
 
     public ObservableCollection<StationStatusViewModel> Stations => Session.Stations;
 
@@ -128,21 +130,8 @@ public sealed partial class ShellViewModel : ObservableObject
         NotifyCommands();
     }
 
-    private void OnSessionChanged(object? sender, PropertyChangedEventArgs e)
-    {
-        var mirrored = e.PropertyName switch
-        {
-            nameof(PanelSession.Mode) => nameof(IsContinuous),
-            nameof(PanelSession.IsReadOnly) => nameof(IsReadOnly),
-            nameof(PanelSession.IsConnected) => nameof(IsConnected),
-            _ => null,
-        };
-        if (mirrored is not null)
-        {
-            OnPropertyChanged(mirrored);
-            NotifyCommands();
-        }
-    }
+    /// <summary>The session's state (connected, refresh mode, read-only) is bound where it is shown; the commands follow it.</summary>
+    private void OnSessionChanged(object? sender, PropertyChangedEventArgs e) => NotifyCommands();
 
     private void NotifyCommands()
     {

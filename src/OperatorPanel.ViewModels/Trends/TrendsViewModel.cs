@@ -9,7 +9,6 @@ using OperatorPanel.Historian.Recording;
 using OperatorPanel.Historian.Storage;
 using OperatorPanel.ViewModels.History;
 using OperatorPanel.ViewModels.Session;
-using OperatorPanel.ViewModels.Shell;
 
 namespace OperatorPanel.ViewModels.Trends;
 
@@ -19,7 +18,7 @@ namespace OperatorPanel.ViewModels.Trends;
 /// value and quality at a cursor. Everything comes from the project's history database (what the panel recorded, with its
 /// gaps) and goes out as one <see cref="TrendPlot"/> the App draws. A project without history shows nothing but says why.
 /// </summary>
-public sealed partial class TrendsViewModel : PaneViewModel, IDisposable
+public sealed partial class TrendsViewModel : ObservableObject, IDisposable
 {
     public static readonly TimeSpan RefreshPeriod = TimeSpan.FromSeconds(1);
     public static readonly TimeSpan DefaultLiveSpan = TimeSpan.FromMinutes(10);
@@ -32,7 +31,6 @@ public sealed partial class TrendsViewModel : PaneViewModel, IDisposable
     private bool _again;
 
     public TrendsViewModel(PanelSession session, ProjectHistory history, TimeProvider time)
-        : base("Trends", "trends")
     {
         ArgumentNullException.ThrowIfNull(session);
         ArgumentNullException.ThrowIfNull(history);
@@ -47,6 +45,10 @@ public sealed partial class TrendsViewModel : PaneViewModel, IDisposable
     public ObservableCollection<TrendTagViewModel> Tags { get; } = [];
 
     public IReadOnlyList<TrendRange> Ranges { get; } = Enum.GetValues<TrendRange>();
+
+    /// <summary>The pane is shown (the shell follows its DockPaneViewModel.IsVisible): the live trend is redrawn only then.</summary>
+    [ObservableProperty]
+    public partial bool IsShown { get; set; } = true;
 
     /// <summary>What the App draws.</summary>
     [ObservableProperty]
@@ -154,7 +156,7 @@ public sealed partial class TrendsViewModel : PaneViewModel, IDisposable
         }
     }
 
-    private Task RefreshIfLiveAsync() => IsLive && IsVisible ? RefreshAsync() : Task.CompletedTask;
+    private Task RefreshIfLiveAsync() => IsLive && IsShown ? RefreshAsync() : Task.CompletedTask;
 
     private void OnTagChanged(object? sender, PropertyChangedEventArgs e)
     {

@@ -22,6 +22,9 @@ public sealed class CpuStepViewModel : WizardStepViewModel
         _allowStop = allowStop;
     }
 
+    /// <summary>The CPU changed; the argument is the one before (the I/O step follows it while it holds its starter list).</summary>
+    internal event Action<CpuProfile>? CpuChanged;
+
     public override int Number => 1;
 
     public override string Title => "CPU and station";
@@ -31,7 +34,20 @@ public sealed class CpuStepViewModel : WizardStepViewModel
 
     public string ProjectName { get => _projectName; set => Edit(ref _projectName, value ?? string.Empty); }
 
-    public CpuProfile Cpu { get => _cpu; set => Edit(ref _cpu, value ?? throw new ArgumentNullException(nameof(value))); }
+    public CpuProfile Cpu
+    {
+        get => _cpu;
+        set
+        {
+            ArgumentNullException.ThrowIfNull(value);
+            var previous = _cpu;
+            Edit(ref _cpu, value);
+            if (previous != value)
+            {
+                CpuChanged?.Invoke(previous);
+            }
+        }
+    }
 
     public string StationName { get => _stationName; set => Edit(ref _stationName, value ?? string.Empty); }
 

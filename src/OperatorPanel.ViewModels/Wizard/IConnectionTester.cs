@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 
@@ -11,8 +12,8 @@ namespace OperatorPanel.ViewModels.Wizard;
 public interface IConnectionTester
 {
     /// <summary>
-    /// The station's reply (an <see cref="IdentifyResponse"/>, or an <see cref="ErrorResponse"/>). Throws
-    /// <see cref="PlcCommunicationException"/> when the port cannot be opened or no valid reply came.
+    /// The station's reply (an <see cref="IdentifyResponse"/>, or an <see cref="ErrorResponse"/>), or the link failure
+    /// when the port cannot be opened or no valid reply came.
     /// </summary>
-    Task<PlcResponse> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken);
+    Task<LinkReply> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken);
 }

@@ -128,11 +128,31 @@ public sealed partial class IoSymbolsStepViewModel : WizardStepViewModel
         }
     }
 
+    /// <summary>
+    /// Step 1's CPU changed from <paramref name="previous"/>: tables that still hold exactly the starter list of that CPU
+    /// (placeholder symbols of its on-board points, as a new project starts) take the new CPU's, so a CPU 226 starts with
+    /// I0.0-I2.7 and Q0.0-Q1.7, not a CPU 224's I1.5 and Q1.1. Tables the user edited stay as they are.
+    /// </summary>
+    internal void FollowCpu(CpuProfile previous)
+    {
+        var before = Starter(previous);
+        if (Same(Inputs, before.Inputs) && Same(Outputs, before.Outputs))
+        {
+            FillLocalPoints();
+        }
+    }
+
+    private static bool Same(ObservableCollection<IoSymbolRowViewModel> rows, ImmutableArray<IoSymbol> starter) =>
+        rows.Count == starter.Length
+        && rows.Zip(starter).All(p => p.First.Symbol == p.Second.Symbol && p.First.Address == p.Second.Address.ToString() && p.First.Description == p.Second.Description);
+
+    private static ProjectStation Starter(CpuProfile cpu) => StarterProject.Create(string.Empty, cpu, new Core.Addressing.Station(2), "COM1").Stations[0];
+
     /// <summary>FillLocalPointsCommand: replaces both tables with the CPU's on-board points and placeholder symbols (I0.0 Input_0_0 ...).</summary>
     [RelayCommand]
     private void FillLocalPoints()
     {
-        var starter = StarterProject.Create(string.Empty, _cpu(), new Core.Addressing.Station(2), "COM1").Stations[0];
+        var starter = Starter(_cpu());
         Inputs.Clear();
         Outputs.Clear();
         foreach (var input in starter.Inputs)

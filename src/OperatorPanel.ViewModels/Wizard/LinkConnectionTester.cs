@@ -1,13 +1,16 @@
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
 /// <summary>
-/// Tests a link the way the panel will use it: a <see cref="PlcLink"/> with the medium's timeouts and retries
-/// (<see cref="LinkOptions.For"/>), over a transport opened for the test and closed after it. The port must not be in use
+/// Tests a link the way the panel will use it: a <see cref="Bus"/> on a <see cref="PlcLink"/> with the medium's timeouts
+/// and retries (<see cref="LinkOptions.For"/>), over a transport opened for the test and closed after it, IDENTIFY through
+/// its queue. The port must not be in use
 /// by a running session: disconnect before testing the port the panel is connected on.
 /// </summary>
 public sealed class LinkConnectionTester : IConnectionTester
@@ -24,10 +27,27 @@ public sealed class LinkConnectionTester : IConnectionTester
         (_openTransport, _time) = (openTransport, time);
     }
 
-    public async Task<PlcResponse> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
+    /// <summary>Opening a serial port: a USB adapter's driver may take a second or two.</summary>
+    public static readonly TimeSpan PortOpenAllowance = TimeSpan.FromSeconds(2);
+
+    /// <summary>
+    /// The longest a test of <paramref name="link"/> can take when the link works as designed: the port opened, IDENTIFY
+    /// and its retries each waiting out its reply time-out and the gap before it, and the v1 probe the link sends when
+    /// nothing answered (PlcLink.V1Probe). A test still running after that is hanging in the port.
+    /// </summary>
+    public static TimeSpan LongestTest(SerialSettings link, Station station)
     {
         ArgumentNullException.ThrowIfNull(link);
-        await using var plcLink = new PlcLink(_openTransport(link), LinkOptions.For(link), _time);
-        return await plcLink.ExchangeAsync(new IdentifyRequest(station), cancellationToken);
+        var options = LinkOptions.For(link);
+        var identify = new IdentifyRequest(station);
+        var attempt = options.ReplyTimeoutFor(identify) + options.InterFrameGap;
+        return PortOpenAllowance + (attempt * (options.Retries + 2));
+    }
+
+    public async Task<LinkReply> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
+    {
+        ArgumentNullException.ThrowIfNull(link);
+        await using var bus = Bus.OnDemand(new PlcLink(_openTransport(link), LinkOptions.For(link), _time), PollPlan.Empty, _time);
+        return await bus.IdentifyAsync(station, cancellationToken);
     }
 }

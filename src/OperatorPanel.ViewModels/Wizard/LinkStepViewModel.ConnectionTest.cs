@@ -17,9 +17,13 @@ public sealed partial class LinkStepViewModel
     [ObservableProperty]
     public partial bool? TestSucceeded { get; private set; }
 
-    /// <summary>TestConnectionCommand.</summary>
-    [RelayCommand]
-    private async Task TestConnectionAsync()
+    /// <summary>
+    /// TestConnectionCommand (TestConnectionCancelCommand stops it): one IDENTIFY through the tester, given up after the
+    /// longest the link itself would take (<see cref="LinkConnectionTester.LongestTest"/>), so a port that hangs (a USB
+    /// adapter's driver, a device that never answers) ends the test by itself and the wizard goes on.
+    /// </summary>
+    [RelayCommand(IncludeCancelCommand = true)]
+    private async Task TestConnectionAsync(CancellationToken cancellationToken)
     {
         var cpu = _cpuStep.Cpu;
         if (_cpuStep.Station is not { } station || Problems.Length > 0 || string.IsNullOrWhiteSpace(PortName))
@@ -31,32 +35,46 @@ public sealed partial class LinkStepViewModel
 
         var link = Build();
         var where = string.Create(CultureInfo.InvariantCulture, $"Station {station.Address} on {link.PortName} at {link.LineText}");
+        var longest = LinkConnectionTester.LongestTest(link, station);
         TestSucceeded = null;
-        TestResult = where + ": asking...";
+        TestResult = string.Create(CultureInfo.InvariantCulture, $"{where}: asking... (at most {Math.Ceiling(longest.TotalSeconds):0} s)");
+        using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
         try
         {
-            var reply = await _tester.IdentifyAsync(link, station, CancellationToken.None);
-            (TestSucceeded, TestResult) = reply switch
+            var reply = await _tester.IdentifyAsync(link, station, stop.Token).WaitAsync(longest, _time, stop.Token);
+            (TestSucceeded, TestResult) = reply.Response switch
             {
+                null => (false, Describe(where, link.PortName, reply.Failure!)),
                 IdentifyResponse identity => Describe(where, identity, cpu),
                 ErrorResponse refusal => (false, $"{where} refused IDENTIFY ({refusal.Error}): the handler is too old or not ours; regenerate it."),
-                _ => (false, $"{where} answered IDENTIFY with a {reply.Command} reply; is another device on the bus?"),
+                var other => (false, $"{where} answered IDENTIFY with a {other.Command} reply; is another device on the bus?"),
             };
         }
-        catch (PlcCommunicationException ex)
+        catch (TimeoutException)
         {
+            // The tester is told to stop; whatever it still holds (a port stuck in its driver) is left to finish alone.
+            await stop.CancelAsync();
             TestSucceeded = false;
-            TestResult = ex.Kind switch
-            {
-                PlcErrorKind.PortUnavailable => $"{link.PortName} could not be used: {ex.Message}",
-                PlcErrorKind.HandlerProtocolV1 => $"{where}: {ex.Message}.",
-                PlcErrorKind.FrameCorrupt => $"{where}: garbled replies; check that baud rate and parity match the handler. ({ex.Message})",
-                PlcErrorKind.Timeout or PlcErrorKind.NegativeReply or PlcErrorKind.NoAnswer =>
-                    $"{where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
-                    + $"mode switch at RUN (not TERM) and that the handler is loaded. ({ex.Message})",
-            };
+            TestResult = string.Create(CultureInfo.InvariantCulture,
+                $"{where}: nothing came back within {Math.Ceiling(longest.TotalSeconds):0} s, longer than the link itself waits: the port may be held by another program or its driver may hang. Check the port, unplug and replug a USB adapter, then test again.");
+        }
+        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
+        {
+            TestSucceeded = null;
+            TestResult = $"{where}: test cancelled.";
         }
     }
+
+    private static string Describe(string where, string portName, PlcCommunicationException failure) => failure.Kind switch
+    {
+        PlcErrorKind.PortUnavailable => $"{portName} could not be used: {failure.Message}",
+        PlcErrorKind.HandlerProtocolV1 => $"{where}: {failure.Message}.",
+        PlcErrorKind.AnotherMaster => $"{where}: another PPI master is on the bus; the panel does not share it. ({failure.Message})",
+        PlcErrorKind.FrameCorrupt => $"{where}: garbled replies; check that baud rate and parity match the handler. ({failure.Message})",
+        PlcErrorKind.Timeout or PlcErrorKind.NegativeReply or PlcErrorKind.NoAnswer =>
+            $"{where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
+            + $"mode switch at RUN (not TERM) and that the handler is loaded. ({failure.Message})",
+    };
 
     private static (bool, string) Describe(string where, IdentifyResponse identity, Core.Cpu.CpuProfile cpu)
     {

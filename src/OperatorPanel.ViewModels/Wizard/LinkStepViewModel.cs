@@ -14,15 +14,16 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
     private readonly CpuStepViewModel _cpuStep;
     private readonly ISerialPortCatalog _catalog;
     private readonly IConnectionTester _tester;
+    private readonly TimeProvider _time;
     private string _portName;
     private int _baudRate;
     private Parity _parity;
     private int _dataBits;
     private LinkKind _kind;
 
-    internal LinkStepViewModel(SerialSettings link, CpuStepViewModel cpuStep, ISerialPortCatalog catalog, IConnectionTester tester)
+    internal LinkStepViewModel(SerialSettings link, CpuStepViewModel cpuStep, ISerialPortCatalog catalog, IConnectionTester tester, TimeProvider time)
     {
-        (_cpuStep, _catalog, _tester) = (cpuStep, catalog, tester);
+        (_cpuStep, _catalog, _tester, _time) = (cpuStep, catalog, tester, time);
         (_portName, _baudRate, _parity, _dataBits, _kind) = (link.PortName, link.BaudRate, link.Parity, link.DataBits, link.Kind);
         cpuStep.PropertyChanged += (_, e) =>
         {

@@ -20,18 +20,21 @@ public sealed partial class ProjectWizardViewModel : ObservableObject
     private string? _finishMessage;
 
     /// <summary>A new project: one CPU 224 at station 2 with its on-board I/O named, 9600 8N1 over a cable.</summary>
-    public ProjectWizardViewModel(IConnectionTester tester, ISerialPortCatalog ports)
-        : this(NewProject(ports), 0, tester, ports, isEditing: false)
+    /// <param name="tester">Step 5's test connection.</param>
+    /// <param name="ports">The ports step 5 offers.</param>
+    /// <param name="time">The clock that ends a test connection that hangs; the system clock by default.</param>
+    public ProjectWizardViewModel(IConnectionTester tester, ISerialPortCatalog ports, TimeProvider? time = null)
+        : this(NewProject(ports), 0, tester, ports, time, isEditing: false)
     {
     }
 
     /// <summary>Edits station <paramref name="stationIndex"/> of <paramref name="project"/>; the other stations are kept as they are.</summary>
-    public ProjectWizardViewModel(PanelProject project, int stationIndex, IConnectionTester tester, ISerialPortCatalog ports)
-        : this(project, stationIndex, tester, ports, isEditing: true)
+    public ProjectWizardViewModel(PanelProject project, int stationIndex, IConnectionTester tester, ISerialPortCatalog ports, TimeProvider? time = null)
+        : this(project, stationIndex, tester, ports, time, isEditing: true)
     {
     }
 
-    private ProjectWizardViewModel(PanelProject project, int stationIndex, IConnectionTester tester, ISerialPortCatalog ports, bool isEditing)
+    private ProjectWizardViewModel(PanelProject project, int stationIndex, IConnectionTester tester, ISerialPortCatalog ports, TimeProvider? time, bool isEditing)
     {
         ArgumentNullException.ThrowIfNull(project);
         ArgumentNullException.ThrowIfNull(tester);
@@ -42,9 +45,10 @@ public sealed partial class ProjectWizardViewModel : ObservableObject
         var station = project.Stations[stationIndex];
         CpuStep = new CpuStepViewModel(project.Name, station.Cpu, station.Name, station.Address, station.AllowStop);
         IoStep = new IoSymbolsStepViewModel(station.Inputs, station.Outputs, () => CpuStep.Cpu);
+        CpuStep.CpuChanged += IoStep.FollowCpu;
         MemoryStep = new MemoryCellsStepViewModel(station.Tags);
         AlarmStep = new AlarmTextsStepViewModel(station.Alarms);
-        LinkStep = new LinkStepViewModel(station.Link, CpuStep, ports, tester);
+        LinkStep = new LinkStepViewModel(station.Link, CpuStep, ports, tester, time ?? TimeProvider.System);
         Steps = [CpuStep, IoStep, MemoryStep, AlarmStep, LinkStep];
         foreach (var step in Steps)
         {
@@ -82,6 +86,15 @@ public sealed partial class ProjectWizardViewModel : ObservableObject
     }
 
     public WizardStepViewModel CurrentStep => Steps[CurrentIndex];
+
+    /// <summary>The wizard's window closed (Finish or Cancel): a test connection still running is stopped.</summary>
+    public void Close()
+    {
+        if (LinkStep.TestConnectionCommand.IsRunning)
+        {
+            LinkStep.TestConnectionCancelCommand.Execute(null);
+        }
+    }
 
     /// <summary>Why Next or Finish is refused: the current page's first problem, or what Finish found; null when all is well.</summary>
     public string? Message => _finishMessage ?? CurrentStep.Message;

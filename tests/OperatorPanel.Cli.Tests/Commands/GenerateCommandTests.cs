@@ -54,7 +54,7 @@ public sealed class GenerateCommandTests : IDisposable
         run.Out.Should().Contain("V bytes reserved:       VB7764-VB8191 (428 bytes)")
             .And.Contain("READ CHANGES copies:    VB8072-VB8191 (120 bytes; READ CHANGES and STOP work bytes: 13)")
             .And.Contain("STOP command:           not included (07 gets error 05)")
-            .And.Contain("instructions generated: 1175")
+            .And.Contain("instructions generated: 1177")
             .And.Contain("interrupt events used:  23, 10, 9")
             .And.Contain("blocks used:            OP_PANEL (SBR63), OP_RX (INT125), OP_DELAY (INT126), OP_TX (INT127)");
     }
@@ -71,15 +71,15 @@ public sealed class GenerateCommandTests : IDisposable
             .And.Contain("  IDENTIFY                                                12 ->  62          1519    46.408               0.429          9.503      7")
             .And.Contain("  READ LIST 20 items                                      14 -> 172          4633   145.755               0.429          9.072     21")
             .And.Contain("  READ CHANGES 77 bytes whole                             16 -> 174          4611   148.709               0.429          9.503     20")
-            .And.Contain("  READ CHANGES none changed                               16 ->  20          3129    81.595               0.429          9.460     13")
-            .And.Contain("  READ CHANGES 1 changed                                  16 ->  24          3271    85.294               0.429          9.018     14")
-            .And.Contain("  READ CHANGES 40 changed                                 16 -> 174          6714   206.238               0.429          9.503     28")
-            .And.Contain("  READ CHANGES list 1 of 2, none changed                  16 ->  20          3160    80.738               0.429          9.460     13")
-            .And.Contain("  READ CHANGES list 2 of 2, none changed                  16 ->  20          2384    60.753               0.429          9.460     10")
-            .And.Contain("  READ CHANGES OF LISTS 2 lists idle                      14 ->  22          4996   123.133               0.429          9.018     21")
+            .And.Contain("  READ CHANGES none changed                               16 ->  20          3063    80.573               0.429          9.460     13")
+            .And.Contain("  READ CHANGES 1 changed                                  16 ->  24          3205    84.272               0.429          9.018     14")
+            .And.Contain("  READ CHANGES 40 changed                                 16 -> 174          6643   205.014               0.429          9.503     28")
+            .And.Contain("  READ CHANGES list 1 of 2, none changed                  16 ->  20          3048    78.554               0.429          9.460     13")
+            .And.Contain("  READ CHANGES list 2 of 2, none changed                  16 ->  20          2332    59.739               0.429          9.460     10")
+            .And.Contain("  READ CHANGES OF LISTS 2 lists idle                      14 ->  22          4832   119.935               0.429          9.018     21")
             .And.Contain("  READ CHANGES OF LISTS 4 lists, no valid copy            14 ->  26          1383    36.980               0.429          9.018      8")
-            .And.Contain("  READ CHANGES OF LISTS 4 lists, 9 changed in each        14 ->  62          6807   180.798               0.429          9.503     33")
-            .And.Contain("worst interrupt routine: 0.498 ms (cut-off frame, then READ 20 items)")
+            .And.Contain("  READ CHANGES OF LISTS 4 lists, 9 changed in each        14 ->  62          6647   177.678               0.429          9.503     33")
+            .And.Contain("worst interrupt routine: 0.499 ms (cut-off frame, then READ 20 items)")
             .And.Contain("worst added to one scan: 9.503 ms (IDENTIFY)")
             .And.Contain("most scans per reply:    51");
     }

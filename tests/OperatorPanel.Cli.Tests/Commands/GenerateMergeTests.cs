@@ -84,6 +84,47 @@ public sealed class GenerateMergeTests : IDisposable
         run.Error.Should().Contain("cannot read");
     }
 
+    [Fact]
+    public void GenerateMerge_Ob1HeaderWithoutName_RefusedWithLineAndRule()
+    {
+        var user = UserProgram.Replace("ORGANIZATION_BLOCK MAIN:OB1", "ORGANIZATION_BLOCK OB1", StringComparison.Ordinal);
+
+        var run = CliRunner.Run("generate", NewProject(), "-o", Out, "--merge", UserFile(user));
+
+        run.ExitCode.Should().Be(2);
+        run.Error.Should().Contain("user.awl:1: STL029 Micro/WIN refuses the user's program here (AWL012): the header of OB1 has no name")
+            .And.Contain("opanel: nothing written: the merge with user.awl was refused (1 problem(s))");
+        Directory.Exists(Out).Should().BeFalse();
+    }
+
+    [Fact]
+    public void GenerateMerge_SymbolTable_SymbolOnTheHandlersBytesIsACollision()
+    {
+        var user = UserProgram.Replace("=      Q0.0", "MOVW   0, Recipe", StringComparison.Ordinal);
+        var symbols = Path.Combine(_folder, "symbols.txt");
+        File.WriteAllText(symbols, "Symbol\tAddress\tComment\r\nRecipe\tVW8000\trecipe number\r\n");
+
+        var project = NewProject();
+        var without = CliRunner.Run("generate", project, "-o", Out, "--merge", UserFile(user));
+        without.ExitCode.Should().Be(0, without.Error);
+        without.Error.Should().Contain("user.awl:5: warning STL027");
+        Directory.Delete(Out, recursive: true);
+
+        var run = CliRunner.Run("generate", project, "-o", Out, "--merge", UserFile(user), "--symbols", symbols);
+
+        run.ExitCode.Should().Be(2);
+        run.Error.Should().Contain("user.awl:5: STL022 VW8000");
+    }
+
+    [Fact]
+    public void GenerateMerge_SymbolsWithoutMerge_ExitOne()
+    {
+        var run = CliRunner.Run("generate", NewProject(), "-o", Out, "--symbols", Path.Combine(_folder, "symbols.txt"));
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Contain("--symbols goes with --merge");
+    }
+
     public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     private string Out => Path.Combine(_folder, "out");

@@ -1,6 +1,10 @@
 using System.Diagnostics;
 using System.Text.RegularExpressions;
 using OperatorPanel.Cli;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Ppi;
+using OperatorPanel.Core.Ppi.S7;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.TestKit;
 
 namespace OperatorPanel.Cli.Tests.Commands;
@@ -51,6 +55,44 @@ public sealed class SimulateCommandTests
         var summary = Text(output, simulatorOut);
         summary.Should().StartWith($"simulating CPU 226 at stations 3, 4 on {pty.PathA} 19200 8N1, reply delay 5 ms, model {model}, demo process on");
         summary.Should().MatchRegex($@"stopped serving {Regex.Escape(pty.PathA)}: \d+ frames received, \d+ answered");
+    }
+
+    [Fact]
+    public async Task SimulatePpi_OnAPty_ReadsAndWritesTheCpuWithoutAHandler()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        using var simulatorOut = new StringWriter();
+        var output = TextWriter.Synchronized(simulatorOut);
+        string[] args = ["simulate", "--ppi", "--cpu", "226", "--station", "2", "--device", pty.PathA, "--baud", "19200", "--duration", "4", "--no-process", "--log-dir", LogDir];
+        var simulator = Task.Run(() => OpanelApp.Run(args, output, TextWriter.Null));
+        await WaitForAsync(() => Text(output, simulatorOut).Contains("simulating", StringComparison.Ordinal));
+        await using var panel = new SerialPortTransport(new SerialSettings { PortName = pty.PathB, BaudRate = 19200, Parity = Parity.Even });
+        var master = new PpiMaster(panel, PpiMasterOptions.ForBaud(19200) with { ReplyTimeout = TimeSpan.FromMilliseconds(800), AnswerTimeout = TimeSpan.FromSeconds(3) });
+        await panel.OpenAsync(default);
+        PpiAddressing.TryWrite(PlcAddress.Parse("VW200"), 4660, out var write, out _);
+
+        var codes = await master.WriteAsync(new Station(2), [write!], default);
+        var results = await master.ReadAsync(new Station(2), [S7Item.Bytes(S7Area.V, 200, 2), S7Item.Bytes(S7Area.SM, 6, 1)], default);
+
+        codes.Should().Equal(S7ReturnCode.Success);
+        results.Select(r => Convert.ToHexString(r.Data.AsSpan())).Should().Equal("1234", "90");
+        (await simulator).Should().Be(0);
+        var text = Text(output, simulatorOut);
+        text.Should().StartWith($"simulating CPU 226 at station 2 on {pty.PathA} 19200 8E1, no handler, PPI at the station addresses, model stl, demo process off");
+        text.Should().Contain($"stopped serving {pty.PathA}: 4 PPI telegrams answered");
+    }
+
+    [Theory]
+    [InlineData("--baud", "38400")]
+    [InlineData("--parity", "none")]
+    [InlineData("--data-bits", "7")]
+    [InlineData("--model", "reference")]
+    public void SimulatePpi_OptionPpiCannotHave_ExitsOneWithTheReason(string option, string value)
+    {
+        var run = CliRunner.Run("simulate", "--ppi", "--cpu", "224", "--station", "2", "--device", "/dev/null", option, value);
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().MatchRegex("PPI|--ppi");
     }
 
     [Fact]

@@ -50,7 +50,28 @@ public sealed class StlRunCommandTests
 
         exit.Should().Be(1);
         output.Should().BeEmpty();
-        error.Should().Contain("Refused.awl:8: HSC is not implemented").And.Contain("Refused.awl:12: NETW is not implemented");
+        error.Should().Contain("Refused.awl:10: PID is not implemented").And.Contain("Refused.awl:12: NETW is not implemented");
+    }
+
+    [Fact]
+    public void Run_HighSpeedCounter_WarnsByLineAndRunsTheRest()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("HighSpeedCounter.awl"), "--cpu", "224", "--for", "1.5s",
+            "--set", "I0.0=1", "--print", "Q0.1");
+
+        exit.Should().Be(0, error);
+        output.Should().Be($"Q0.1 1{Environment.NewLine}");
+        error.Should().Contain("HighSpeedCounter.awl:11: warning: HSC: high-speed counters")
+            .And.Contain("HighSpeedCounter.awl:9: warning: ATCH: event 12 (HSC0 CV=PV) never fires in the simulator");
+    }
+
+    [Fact]
+    public void Run_HighSpeedCounterStrict_ExitOneNamingEach()
+    {
+        var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("HighSpeedCounter.awl"), "--cpu", "224", "--strict", "--print", "Q0.1");
+
+        exit.Should().Be(1);
+        error.Should().Contain("HighSpeedCounter.awl:8: HDEF is not implemented by the simulator").And.Contain("(--strict)");
     }
 
     [Fact]
@@ -78,6 +99,71 @@ public sealed class StlRunCommandTests
 
         exit.Should().Be(1);
         error.Should().Contain(reason);
+    }
+
+    [Fact]
+    public void Run_SetAfterFor_ExitOneNamingTheSetting()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("Counters.awl"), "--cpu", "224", "--for", "2s",
+            "--set", "I0.0=1@3s", "--print", "C0");
+
+        exit.Should().Be(1);
+        output.Should().BeEmpty();
+        error.Should().Contain("--set 'I0.0=1@3s'").And.Contain("after --for 2s");
+    }
+
+    [Fact]
+    public void Run_ForInMinutes_RunsAndPrintsTheLastCompleteScan()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("ScanEnd.awl"), "--cpu", "224", "--for", "0.01m",
+            "--print", "Q0.6", "--print", "VW2", "--print", "VW0");
+
+        exit.Should().Be(0, error);
+        output.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal("Q0.6 1", "VW2 10", "VW0 11");
+    }
+
+    [Fact]
+    public void Run_Json_SaysWhenTheStateWasTaken()
+    {
+        var (exit, output, _) = CliRunner.Run("stl", "run", Corpus("ScanEnd.awl"), "--cpu", "224", "--for", "50ms", "--print", "Q0.6", "--json");
+
+        exit.Should().Be(0);
+        using var json = JsonDocument.Parse(output);
+        var at = json.RootElement.GetProperty("stateAtMs").GetDouble();
+        at.Should().BeInRange(45, 50, "the end of the last scan before 50 ms (a scan takes about 1.4 ms)");
+        json.RootElement.GetProperty("noScanCompleted").GetBoolean().Should().BeFalse();
+    }
+
+    [Fact]
+    public void Run_Symbols_ResolvedFromTheExportedTable()
+    {
+        var (exit, output, error) = CliRunner.Run("stl", "run", Corpus("Symbols/Conveyor.awl"), "--cpu", "224", "--for", "1s",
+            "--symbols", Corpus("Symbols/Conveyor-symbols.txt"), "--set", "I0.0=1@0.1s", "--set", "I0.0=0@0.2s", "--print", "Q0.0", "--print", "VW102");
+
+        exit.Should().Be(0, error);
+        output.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal("Q0.0 1", "VW102 6");
+    }
+
+    [Fact]
+    public void Run_ChineseExport_NamesInDiagnosticsRead()
+    {
+        var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("Encodings/Gbk.awl"), "--cpu", "224", "--print", "Q9.9");
+
+        exit.Should().Be(1);
+        error.Should().Contain("Q9.9");
+        var (ok, output, _) = CliRunner.Run("stl", "run", Corpus("Encodings/Gbk.awl"), "--cpu", "224", "--for", "1s",
+            "--set", "I0.0=1@0.1s", "--set", "I0.0=0@0.2s", "--print", "VW0");
+        ok.Should().Be(0);
+        output.Should().Be($"VW0 1{Environment.NewLine}");
+    }
+
+    [Fact]
+    public void Run_ProtectedPou_WarnsNamingIt()
+    {
+        var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("ProtectedPou.awl"), "--cpu", "224", "--print", "Q0.1");
+
+        exit.Should().Be(0);
+        error.Should().Contain("ProtectedPou.awl:16: warning: PWM_INIT (SBR_0) has no network: Micro/WIN exports a password-protected POU without its body");
     }
 
     [Fact]

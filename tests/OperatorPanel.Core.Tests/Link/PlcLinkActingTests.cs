@@ -6,7 +6,7 @@ using OperatorPanel.TestKit;
 
 namespace OperatorPanel.Core.Tests.Link;
 
-/// <summary>WRITE and WRITE BIT act on the process: the link sends them once and says whether the PLC may have acted.</summary>
+/// <summary>WRITE and WRITE BIT act on the process: the link sends them once and says whether the frame left the PC (so the PLC may have acted).</summary>
 public sealed class PlcLinkActingTests
 {
     private static readonly Station Station2 = new(2);
@@ -16,7 +16,7 @@ public sealed class PlcLinkActingTests
     private static string Request => Ascii(RequestCodec.Encode(WriteVw10 with { Sequence = 0x01 }));
 
     [Fact]
-    public async Task ExchangeOnce_WriteReplyTimesOut_ReplyLostAndNeverResent()
+    public async Task Exchange_WriteReplyTimesOut_ReplyLostAndNeverResent()
     {
         var clock = new ManualTimeProvider();
         var transport = new ScriptedTransport($"""
@@ -25,10 +25,11 @@ public sealed class PlcLinkActingTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var reply = await link.ExchangeOnceAsync(WriteVw10, default);
+        var reply = await link.ExchangeAsync(WriteVw10, default);
 
-        var lost = reply.Should().BeOfType<OnceReply.ReplyLost>().Subject;
-        lost.Cause.Should().StartWith("station 2 on scripted: no valid reply to Write sent once, never repeated (no reply within");
+        var lost = reply.Should().BeOfType<LinkReply.Failed>().Subject;
+        lost.Sent.Should().BeTrue("the frame went out: the PLC may have written");
+        lost.Failure.Message.Should().StartWith("station 2 on scripted: no valid reply to Write sent once, never repeated (no reply within");
         lost.CorruptedCopy.Should().BeFalse();
         transport.Written.Should().ContainSingle("link retries are for requests that do not act on the process");
         link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 1, Retries = 0, Timeouts = 1 });
@@ -36,7 +37,7 @@ public sealed class PlcLinkActingTests
     }
 
     [Fact]
-    public async Task ExchangeOnce_WriteReplyGarbled_ReplyLost()
+    public async Task Exchange_WriteReplyGarbled_ReplyLost()
     {
         var clock = new ManualTimeProvider();
         var good = Ascii(ResponseCodec.Encode(new WriteBlockResponse(Station2, 0x01, [0x00, 0x08]), WriteVw10 with { Sequence = 0x01 }));
@@ -46,15 +47,15 @@ public sealed class PlcLinkActingTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var reply = await link.ExchangeOnceAsync(WriteVw10, default);
+        var reply = await link.ExchangeAsync(WriteVw10, default);
 
-        reply.Should().BeOfType<OnceReply.ReplyLost>().Which.Cause.Should().Contain("reply unusable");
+        reply.Should().BeOfType<LinkReply.Failed>().Which.Should().Match<LinkReply.Failed>(f => f.Sent && f.Failure.Message.Contains("reply unusable"));
         transport.Written.Should().ContainSingle();
         link.StatisticsFor(Station2).CorruptFrames.Should().Be(1);
     }
 
     [Fact]
-    public async Task Exchange_WriteReplyTimesOut_ThrowsWithoutResending()
+    public async Task Exchange_WriteReplyTimesOut_FailsWithNoAnswerWithoutResending()
     {
         var clock = new ManualTimeProvider();
         var transport = new ScriptedTransport($"""
@@ -63,14 +64,14 @@ public sealed class PlcLinkActingTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var thrown = await link.Invoking(l => l.ExchangeAsync(WriteVw10, default)).Should().ThrowAsync<PlcCommunicationException>();
+        var reply = await link.ExchangeAsync(WriteVw10, default);
 
-        thrown.Which.Kind.Should().Be(PlcErrorKind.NoAnswer);
+        reply.Failure!.Kind.Should().Be(PlcErrorKind.NoAnswer);
         transport.Written.Should().ContainSingle();
     }
 
     [Fact]
-    public async Task ExchangeOnce_WriteAnswered_ReturnsTheReply()
+    public async Task Exchange_WriteAnswered_ReturnsTheReply()
     {
         var clock = new ManualTimeProvider();
         var transport = new ScriptedTransport($"""
@@ -79,14 +80,14 @@ public sealed class PlcLinkActingTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var reply = await link.ExchangeOnceAsync(WriteVw10, default);
+        var reply = await link.ExchangeAsync(WriteVw10, default);
 
-        reply.Should().BeOfType<OnceReply.Answered>().Which.Response.Should().BeOfType<WriteBlockResponse>()
+        reply.Should().BeOfType<LinkReply.Answered>().Which.Response.Should().BeOfType<WriteBlockResponse>()
             .Which.ReadBack.Should().Equal(0x00, 0x08);
     }
 
     [Fact]
-    public async Task ExchangeOnce_DeviceVanishedBeforeTheFrameLeft_NotSent()
+    public async Task Exchange_DeviceVanishedBeforeTheFrameLeft_NotSent()
     {
         var clock = new ManualTimeProvider();
         var transport = new UnpluggableTransport();
@@ -94,9 +95,9 @@ public sealed class PlcLinkActingTests
         await link.ExchangeAsync(ReadMb0, default);
         transport.Unplug();
 
-        var reply = await link.ExchangeOnceAsync(WriteVw10, default);
+        var reply = await link.ExchangeAsync(WriteVw10, default);
 
-        reply.Should().BeOfType<OnceReply.NotSent>().Which.Failure.Kind.Should().Be(PlcErrorKind.PortUnavailable);
+        reply.Should().BeOfType<LinkReply.Failed>().Which.Should().Match<LinkReply.Failed>(f => !f.Sent && f.Failure.Kind == PlcErrorKind.PortUnavailable);
     }
 
     [Theory]

@@ -31,7 +31,7 @@ public sealed class PlcLinkRequestCheckTests
             """, clock);
         var link = NewLink(transport, clock, retries: 0);
 
-        var response = await link.ExchangeAsync(ReadMb0, default);
+        var response = (await link.ExchangeAsync(ReadMb0, default)).Response;
 
         response.Should().BeOfType<ReadResponse>().Which.Data.Should().Equal(0x42);
         link.StatisticsFor(Station2).Should().BeEquivalentTo(new { CorruptedRefusals = 1, NegativeReplies = 0, Retries = 1 });
@@ -50,7 +50,7 @@ public sealed class PlcLinkRequestCheckTests
             """, clock);
         var link = NewLink(transport, clock, retries: 2);
 
-        var response = await link.ExchangeAsync(ReadMb0, default);
+        var response = (await link.ExchangeAsync(ReadMb0, default)).Response;
 
         response.Should().BeOfType<ErrorResponse>().Which.Error.Should().Be(ProtocolError.BadLength);
         transport.Written.Should().HaveCount(2, "a refusal that repeats is real: no third attempt");
@@ -67,7 +67,7 @@ public sealed class PlcLinkRequestCheckTests
             """, clock);
         var link = NewLink(transport, clock, retries: 2);
 
-        var response = await link.ExchangeAsync(ReadMb0, default);
+        var response = (await link.ExchangeAsync(ReadMb0, default)).Response;
 
         response.Should().BeOfType<ErrorResponse>().Which.Error.Should().Be(ProtocolError.BadLength);
         transport.Written.Should().ContainSingle();
@@ -75,7 +75,7 @@ public sealed class PlcLinkRequestCheckTests
     }
 
     [Fact]
-    public async Task ExchangeOnce_WriteRefusedAsACorruptedCopy_RetriedOnceBecauseThePlcDidNothing()
+    public async Task Exchange_WriteRefusedAsACorruptedCopy_RetriedOnceBecauseThePlcDidNothing()
     {
         var clock = new ManualTimeProvider();
         var transport = new ScriptedTransport($"""
@@ -86,14 +86,14 @@ public sealed class PlcLinkRequestCheckTests
             """, clock);
         var link = NewLink(transport, clock, retries: 2);
 
-        var reply = await link.ExchangeOnceAsync(WriteVw10, default);
+        var reply = await link.ExchangeAsync(WriteVw10, default);
 
-        reply.Should().BeOfType<OnceReply.Answered>().Which.Response.Should().BeOfType<WriteBlockResponse>();
+        reply.Should().BeOfType<LinkReply.Answered>().Which.Response.Should().BeOfType<WriteBlockResponse>();
         transport.AssertComplete();
     }
 
     [Fact]
-    public async Task ExchangeOnce_WriteAnsweredForACorruptedCopy_ReplyLostMarkedCorruptedAndNotResent()
+    public async Task Exchange_WriteAnsweredForACorruptedCopy_ReplyLostMarkedCorruptedAndNotResent()
     {
         var clock = new ManualTimeProvider();
         var executedElsewhere = new WriteBlockResponse(Station2, 0x01, [0x00, 0x08]) { RequestCheck = CorruptedCheck };
@@ -103,11 +103,12 @@ public sealed class PlcLinkRequestCheckTests
             """, clock);
         var link = NewLink(transport, clock, retries: 2);
 
-        var reply = await link.ExchangeOnceAsync(WriteVw10, default);
+        var reply = await link.ExchangeAsync(WriteVw10, default);
 
-        var lost = reply.Should().BeOfType<OnceReply.ReplyLost>().Subject;
+        var lost = reply.Should().BeOfType<LinkReply.Failed>().Subject;
+        lost.Sent.Should().BeTrue();
         lost.CorruptedCopy.Should().BeTrue();
-        lost.Cause.Should().Contain($"the reply's REQCHECK 16#{CorruptedCheck:X4} is not the request's").And.Contain("the PLC acted on a corrupted copy");
+        lost.Failure.Message.Should().Contain($"the reply's REQCHECK 16#{CorruptedCheck:X4} is not the request's").And.Contain("the PLC acted on a corrupted copy");
         transport.Written.Should().ContainSingle();
     }
 
@@ -123,7 +124,7 @@ public sealed class PlcLinkRequestCheckTests
             """, clock);
         var link = NewLink(transport, clock, retries: 1);
 
-        var response = await link.ExchangeAsync(ReadMb0, default);
+        var response = (await link.ExchangeAsync(ReadMb0, default)).Response;
 
         response.Should().BeOfType<ReadResponse>().Which.Data.Should().Equal(0x42);
         link.StatisticsFor(Station2).CorruptFrames.Should().Be(1);

@@ -33,10 +33,9 @@ public sealed class PlcLinkTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var response = await link.ExchangeAsync(ReadMb0, default);
+        var reply = await link.ExchangeAsync(ReadMb0, default);
 
-        response.Should().BeOfType<ReadResponse>().Which.Data.Should().Equal(0x81);
-        link.IsOnline(Station2).Should().BeTrue();
+        reply.Should().BeOfType<LinkReply.Answered>().Which.Response.Should().BeOfType<ReadResponse>().Which.Data.Should().Equal(0x81);
         link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 1, Replies = 1, Retries = 0, Timeouts = 0 });
         transport.AssertComplete();
     }
@@ -53,7 +52,7 @@ public sealed class PlcLinkTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var response = await link.ExchangeAsync(ReadMb0, default);
+        var response = (await link.ExchangeAsync(ReadMb0, default)).Response!;
 
         ((ReadResponse)response).Data.Should().Equal(0x05);
         transport.Written.Should().HaveCount(2);
@@ -62,7 +61,7 @@ public sealed class PlcLinkTests
     }
 
     [Fact]
-    public async Task Exchange_NoReplyToAnyAttempt_ThrowsNoAnswerNamingStationAndGoesOffline()
+    public async Task Exchange_NoReplyToAnyAttempt_FailsWithNoAnswerNamingStation()
     {
         var clock = new ManualTimeProvider();
         var transport = new ScriptedTransport($"""
@@ -75,18 +74,18 @@ public sealed class PlcLinkTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var act = () => link.ExchangeAsync(ReadMb0, default);
+        var reply = await link.ExchangeAsync(ReadMb0, default);
 
-        var thrown = await act.Should().ThrowAsync<PlcCommunicationException>();
-        thrown.Which.Kind.Should().Be(PlcErrorKind.NoAnswer);
-        thrown.Which.Station.Should().Be(Station2);
-        thrown.Which.Message.Should().Contain("station 2 on scripted: no valid reply to Read after 3 attempts");
-        link.IsOnline(Station2).Should().BeFalse();
+        var failed = reply.Should().BeOfType<LinkReply.Failed>().Subject;
+        failed.Sent.Should().BeTrue();
+        failed.Failure.Kind.Should().Be(PlcErrorKind.NoAnswer);
+        failed.Failure.Station.Should().Be(Station2);
+        failed.Failure.Message.Should().Contain("station 2 on scripted: no valid reply to Read after 3 attempts");
         link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 3, Replies = 0, Retries = 2, Timeouts = 3 });
     }
 
     [Fact]
-    public async Task Exchange_StationStaysSilent_WarnsWhenItFallsSilentThenLogsFurtherFailuresAtDebug()
+    public async Task Exchange_StationStaysSilent_LogsEachFailureAtDebugForTheStationStatesToReport()
     {
         var clock = new ManualTimeProvider();
         var second = Ascii(RequestCodec.Encode(ReadMb0 with { Sequence = 0x02 }));
@@ -99,12 +98,12 @@ public sealed class PlcLinkTests
 
         for (var i = 0; i < 2; i++)
         {
-            var act = () => link.ExchangeAsync(ReadMb0, default);
-            await act.Should().ThrowAsync<PlcCommunicationException>();
+            (await link.ExchangeAsync(ReadMb0, default)).Should().BeOfType<LinkReply.Failed>();
         }
 
+        // The station falling silent is news once, from the bus's station states (StationTracker), not from the link.
         var failures = sink.Events.Where(e => e.RenderMessage().Contains("no valid reply to Read")).Select(e => e.Level);
-        failures.Should().Equal(LogEventLevel.Warning, LogEventLevel.Debug);
+        failures.Should().Equal(LogEventLevel.Debug, LogEventLevel.Debug);
     }
 
     [Fact]
@@ -126,8 +125,8 @@ public sealed class PlcLinkTests
         var (log, sink) = CollectingSink.CreateLogger();
         var link = new PlcLink(transport, LinkOptions.For(Some.SerialSettings()) with { Retries = 2, InterFrameGap = TimeSpan.Zero }, clock, log);
 
-        (await link.ExchangeOnceAsync(stop, default)).Should().BeOfType<OnceReply.Answered>();
-        await link.Invoking(l => l.ExchangeAsync(new IdentifyRequest(Station2), default)).Should().ThrowAsync<PlcCommunicationException>();
+        (await link.ExchangeAsync(stop, default)).Should().BeOfType<LinkReply.Answered>();
+        (await link.ExchangeAsync(new IdentifyRequest(Station2), default)).Should().BeOfType<LinkReply.Failed>();
 
         sink.Events.Where(e => e.RenderMessage().Contains("no valid reply to Identify")).Select(e => e.Level).Should().Equal(LogEventLevel.Debug);
         transport.AssertComplete();
@@ -147,7 +146,7 @@ public sealed class PlcLinkTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var response = await link.ExchangeAsync(ReadMb0, default);
+        var response = (await link.ExchangeAsync(ReadMb0, default)).Response!;
 
         ((ReadResponse)response).Data.Should().Equal(0x07);
         link.StatisticsFor(Station2).CorruptFrames.Should().Be(1);
@@ -165,7 +164,7 @@ public sealed class PlcLinkTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var response = await link.ExchangeAsync(ReadMb0, default);
+        var response = (await link.ExchangeAsync(ReadMb0, default)).Response!;
 
         ((ReadResponse)response).Data.Should().Equal(0x33);
         link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 1, Replies = 1, CorruptFrames = 0 });
@@ -182,18 +181,17 @@ public sealed class PlcLinkTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var response = await link.ExchangeAsync(ReadMb0, default);
+        var response = (await link.ExchangeAsync(ReadMb0, default)).Response!;
 
         response.Should().BeEquivalentTo(new ErrorResponse(Station2, 0x01, CommandCode.Read, ProtocolError.AddressOutOfRange)
         {
             RequestCheck = RequestCodec.Check(ReadMb0 with { Sequence = 0x01 }),
         });
-        link.IsOnline(Station2).Should().BeTrue();
         link.StatisticsFor(Station2).NegativeReplies.Should().Be(1);
     }
 
     [Fact]
-    public async Task Exchange_PortVanished_ThrowsPortUnavailableWithStationAndGoesOffline()
+    public async Task Exchange_PortVanished_FailsWithPortUnavailableNamingTheStation()
     {
         var clock = new ManualTimeProvider();
         var pair = new InMemoryTransportPair(clock);
@@ -202,35 +200,9 @@ public sealed class PlcLinkTests
         var link = new PlcLink(pair.PanelSide, LinkOptions.For(Some.SerialSettings()), clock);
         pair.BusSide.Close();
 
-        var act = () => link.ExchangeAsync(ReadMb0, default);
+        var reply = await link.ExchangeAsync(ReadMb0, default);
 
-        var thrown = await act.Should().ThrowAsync<PlcCommunicationException>();
-        thrown.Which.Kind.Should().Be(PlcErrorKind.PortUnavailable);
-        thrown.Which.Station.Should().Be(Station2);
-        link.IsOnline(Station2).Should().BeFalse();
-    }
-
-    [Fact]
-    public async Task Exchange_TwoCallersAtOnce_OnlyOneRequestIsOnTheBus()
-    {
-        var clock = new ManualTimeProvider();
-        var pair = new InMemoryTransportPair(clock);
-        await pair.BusSide.OpenAsync(default);
-        var link = new PlcLink(pair.PanelSide, LinkOptions.For(Some.SerialSettings()) with { InterFrameGap = TimeSpan.Zero }, clock);
-        var other = ReadMb0 with { Items = [new ReadItem(ProtocolArea.M, 1, 1)] };
-
-        var first = link.ExchangeAsync(ReadMb0, default);
-        var second = link.ExchangeAsync(other, default);
-        var onBus = await ReadFrameAsync(pair.BusSide);
-        var nothingMore = await pair.BusSide.ReadAsync(new byte[64], TimeSpan.Zero, default);
-
-        onBus.Should().Be(Request);
-        nothingMore.Should().Be(0, "the second request waits for the first reply");
-        await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x01)), default);
-        (await first).Should().BeOfType<ReadResponse>();
-        (await ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(other with { Sequence = 0x02 })));
-        await pair.BusSide.WriteAsync(Hex.Ascii(Ascii(ResponseCodec.Encode(new ReadResponse(Station2, 0x02, [0x02]), other with { Sequence = 0x02 }))), default);
-        ((ReadResponse)await second).Data.Should().Equal(0x02);
+        reply.Failure.Should().Match<PlcCommunicationException>(f => f.Kind == PlcErrorKind.PortUnavailable && f.Station == Station2);
     }
 
     [Fact]
@@ -271,10 +243,9 @@ public sealed class PlcLinkTests
             """, clock);
         var link = NewLink(transport, clock);
 
-        var first = await link.ExchangeAsync(ReadMb0, default);
-        var silent = () => link.ExchangeAsync(identify, default);
-        await silent.Should().ThrowAsync<PlcCommunicationException>();
-        var third = await link.ExchangeAsync(ReadMb0, default);
+        var first = (await link.ExchangeAsync(ReadMb0, default)).Response!;
+        (await link.ExchangeAsync(identify, default)).Should().BeOfType<LinkReply.Failed>();
+        var third = (await link.ExchangeAsync(ReadMb0, default)).Response!;
 
         first.Sequence.Should().Be(0x01);
         ((ReadResponse)third).Data.Should().Equal(0x30);

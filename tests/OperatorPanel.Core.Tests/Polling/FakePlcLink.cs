@@ -92,8 +92,12 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
         }
     }
 
-    /// <summary>Every request to the station throws <paramref name="exception"/> (synchronously, as a buggy transport might); null stops it.</summary>
-    public void Throw(Station station, Exception? exception)
+    /// <summary>
+    /// Every request to the station fails with <paramref name="exception"/>: a <see cref="PlcCommunicationException"/> is
+    /// the link's failure value, as PlcLink returns it; any other exception is thrown (synchronously), as a buggy link
+    /// might. Null stops it.
+    /// </summary>
+    public void Fail(Station station, Exception? exception)
     {
         lock (_lock)
         {
@@ -110,7 +114,7 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
         }
     }
 
-    public Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
+    public Task<LinkReply> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
     {
         lock (_lock) { _log.Add((request, clock.GetUtcNow())); }
         OnExchange?.Invoke(request);
@@ -127,6 +131,12 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
             refusal = _refusals.GetValueOrDefault(request.Station);
         }
 
+        // The fake fails at once, so every failure counts as sent (a write's reply lost): the safe side.
+        if (exception is PlcCommunicationException failure)
+        {
+            return Task.FromResult<LinkReply>(new LinkReply.Failed(failure, Sent: true));
+        }
+
         if (exception is not null)
         {
             throw exception;
@@ -134,35 +144,20 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
 
         if (RepliesWithNull.Contains(request.Station))
         {
-            return Task.FromResult<PlcResponse>(null!);
+            return Task.FromResult<LinkReply>(new LinkReply.Answered(null!));
         }
 
         var response = refusal != ProtocolError.None ? Error(request, refusal) : Serve(request);
         response = Tamper?.Invoke(request, response) ?? response;
         if (LosesReplyTo?.Invoke(request) == true)
         {
-            throw new PlcCommunicationException(PlcErrorKind.NoAnswer, request.Station, "reply lost");
+            return Task.FromResult<LinkReply>(new LinkReply.Failed(new PlcCommunicationException(PlcErrorKind.NoAnswer, request.Station, "reply lost"), Sent: true));
         }
 
-        return Task.FromResult(response);
-    }
-
-    /// <summary>The fake answers or throws at once, so every failure counts as a lost reply: the safe side.</summary>
-    public async Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken)
-    {
-        try
-        {
-            return new OnceReply.Answered(await ExchangeAsync(request, cancellationToken));
-        }
-        catch (PlcCommunicationException failure)
-        {
-            return new OnceReply.ReplyLost(failure.Message, CorruptedCopy: false);
-        }
+        return Task.FromResult<LinkReply>(new LinkReply.Answered(response));
     }
 
     public LinkStatistics StatisticsFor(Station station) => LinkStatistics.Empty;
-
-    public bool IsOnline(Station station) => true;
 
     /// <summary>As the handler: FULL when asked, without a valid copy, or when the pairs would not be shorter; the copy moves on.</summary>
     private PlcResponse ServeChanges(ReadChangesRequest request)

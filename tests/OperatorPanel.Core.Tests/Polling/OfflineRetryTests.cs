@@ -20,17 +20,14 @@ public sealed class OfflineRetryTests
     {
         _link = new FakePlcLink(_clock);
         _link.Set(Two, ProtocolArea.V, 0, 0x21);
-        _engine = new PollingEngine(_link, PollPlanner.Build([Item(One, "VB0"), Item(Two, "VB0")]), _clock, _log.CreateLogger())
-        {
-            UseReadLists = false,
-            Options = new PollingOptions { OfflineRetryInterval = Interval },
-        };
+        _engine = new PollingEngine(
+            _link, PollPlanner.Build([Item(One, "VB0"), Item(Two, "VB0")]), _clock, _log.CreateLogger(), new PollingOptions { UseReadLists = false, OfflineRetryInterval = Interval });
     }
 
     [Fact]
     public async Task Cycle_SilentStationWhileAnotherAnswers_IsTriedOncePerIntervalAndTheOtherEveryCycle()
     {
-        _link.Throw(One, NoAnswer(One));
+        _link.Fail(One, NoAnswer(One));
 
         await _engine.RunCycleAsync(CancellationToken.None);
         for (var i = 0; i < 4; i++)
@@ -59,9 +56,9 @@ public sealed class OfflineRetryTests
     {
         _link.Set(One, ProtocolArea.V, 0, 0x11);
         await _engine.RunCycleAsync(CancellationToken.None);
-        _link.Throw(One, NoAnswer(One));
+        _link.Fail(One, NoAnswer(One));
         await _engine.RunCycleAsync(CancellationToken.None);
-        _link.Throw(One, null);
+        _link.Fail(One, null);
         _link.Set(One, ProtocolArea.V, 0, 0x12);
 
         await _engine.RunCycleAsync(CancellationToken.None);
@@ -81,8 +78,8 @@ public sealed class OfflineRetryTests
     [Fact]
     public async Task Cycle_EveryStationSilent_EachIsTriedEveryCycle()
     {
-        _link.Throw(One, NoAnswer(One));
-        _link.Throw(Two, NoAnswer(Two));
+        _link.Fail(One, NoAnswer(One));
+        _link.Fail(Two, NoAnswer(Two));
 
         for (var i = 0; i < 3; i++)
         {
@@ -98,12 +95,12 @@ public sealed class OfflineRetryTests
     {
         _link.Set(One, ProtocolArea.V, 0, 0x11);
         await _engine.RunCycleAsync(CancellationToken.None);
-        _link.Throw(One, new PlcCommunicationException(PlcErrorKind.PortUnavailable, One, "COM3 is gone"));
-        _link.Throw(Two, new PlcCommunicationException(PlcErrorKind.PortUnavailable, Two, "COM3 is gone"));
+        _link.Fail(One, new PlcCommunicationException(PlcErrorKind.PortUnavailable, One, "COM3 is gone"));
+        _link.Fail(Two, new PlcCommunicationException(PlcErrorKind.PortUnavailable, Two, "COM3 is gone"));
         _clock.Advance(TimeSpan.FromSeconds(1));
         await _engine.RunCycleAsync(CancellationToken.None);
-        _link.Throw(One, null);
-        _link.Throw(Two, null);
+        _link.Fail(One, null);
+        _link.Fail(Two, null);
         _link.Set(One, ProtocolArea.V, 0, 0x12);
         _clock.Advance(TimeSpan.FromSeconds(1));
 
@@ -122,10 +119,10 @@ public sealed class OfflineRetryTests
         var gone = new PlcCommunicationException(PlcErrorKind.PortUnavailable, null, "/dev/ttyUSB0 vanished");
         _link.Set(One, ProtocolArea.V, 0, 0x11);
         await _engine.RunCycleAsync(CancellationToken.None);
-        _link.Throw(Two, gone);
+        _link.Fail(Two, gone);
         await _engine.RunCycleAsync(CancellationToken.None);
         _engine.GetStationStatus(Two).NextTryAt.Should().NotBeNull("station 1 answered in the cycle the port vanished in");
-        _link.Throw(One, gone);
+        _link.Fail(One, gone);
         _clock.Advance(TimeSpan.FromSeconds(1));
 
         await _engine.RunCycleAsync(CancellationToken.None);
@@ -139,7 +136,7 @@ public sealed class OfflineRetryTests
     [Fact]
     public async Task Cycle_TriggeredRefresh_TriesTheSilentStationEveryTime()
     {
-        _link.Throw(One, NoAnswer(One));
+        _link.Fail(One, NoAnswer(One));
         await _engine.RunCycleAsync(CancellationToken.None);
         _engine.Mode = RefreshMode.OnDemand;
 
@@ -153,7 +150,7 @@ public sealed class OfflineRetryTests
     public async Task Cycle_StationStoppedByPanel_RestsLikeASilentStation()
     {
         await _engine.RunCycleAsync(CancellationToken.None);
-        _link.Throw(One, NoAnswer(One));
+        _link.Fail(One, NoAnswer(One));
         _engine.NoteStoppedByPanel(One);
         await _engine.RunCycleAsync(CancellationToken.None);
 
@@ -167,7 +164,7 @@ public sealed class OfflineRetryTests
     public async Task Cycle_SilentStation_OneWarningWhenItFallsSilentAndOneNoteWhenItRests()
     {
         await _engine.RunCycleAsync(CancellationToken.None);
-        _link.Throw(One, NoAnswer(One));
+        _link.Fail(One, NoAnswer(One));
 
         for (var i = 0; i < 12; i++)
         {

@@ -163,5 +163,5 @@ public sealed class PollingEngineChangesTests
     }
 
     private PollingEngine Engine(IEnumerable<WatchedItem> items, PollingOptions? options = null) =>
-        new(_link, PollPlanner.Build(items), _clock) { Options = options ?? new PollingOptions() };
+        new(_link, PollPlanner.Build(items), _clock, options: options);
 }

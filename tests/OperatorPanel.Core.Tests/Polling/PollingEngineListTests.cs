@@ -94,7 +94,7 @@ public sealed class PollingEngineListTests
     [Fact]
     public async Task RunCycle_ReadListsSwitchedOff_UsesPlainReadOnly()
     {
-        var engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock) { UseReadLists = false };
+        var engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock, options: new PollingOptions { UseReadLists = false });
 
         await engine.RunCycleAsync(CancellationToken.None);
 

@@ -20,7 +20,7 @@ public sealed class PollingEngineLoopTests : IAsyncDisposable
     public PollingEngineLoopTests()
     {
         _link = new FakePlcLink(_clock) { ExchangeDuration = 30 * Ms };
-        _engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock) { MinimumPeriod = 100 * Ms, UseReadLists = false };
+        _engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock, options: new PollingOptions { UseReadLists = false }) { MinimumPeriod = 100 * Ms };
     }
 
     [Fact]
@@ -119,7 +119,7 @@ public sealed class PollingEngineLoopTests : IAsyncDisposable
     [Fact]
     public async Task Run_LinkThrowsEveryTime_LoopKeepsPollingAtTheMinimumPeriod()
     {
-        _link.Throw(One, new IOException("cable pulled"));
+        _link.Fail(One, new IOException("cable pulled"));
         Start();
         await _clock.WhenTimerScheduledAsync().Guarded();
         _clock.Advance(70 * Ms);

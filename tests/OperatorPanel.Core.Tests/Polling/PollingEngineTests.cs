@@ -60,7 +60,7 @@ public sealed class PollingEngineTests
         var engine = Engine(Items(One, "VB0"));
         await engine.RunCycleAsync(CancellationToken.None);
         _clock.Advance(TimeSpan.FromSeconds(1));
-        _link.Throw(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer after 3 tries"));
+        _link.Fail(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer after 3 tries"));
 
         await engine.RunCycleAsync(CancellationToken.None);
         await engine.RunCycleAsync(CancellationToken.None);
@@ -71,7 +71,7 @@ public sealed class PollingEngineTests
         engine.GetStationStatus(One).Should().Match<StationStatus>(s => s.State == StationState.Offline && s.ConsecutiveFailures == 2);
         _batches.Select(b => b.Single().Current.Quality).Should().Equal(ValueQuality.Good, ValueQuality.Stale);
 
-        _link.Throw(One, null);
+        _link.Fail(One, null);
         _link.Set(One, ProtocolArea.V, 0, 0x2B);
         await engine.RunCycleAsync(CancellationToken.None);
 
@@ -83,7 +83,7 @@ public sealed class PollingEngineTests
     [Fact]
     public async Task RunCycle_NeverReadAndNoAnswer_ValueStaysBadWithTheError()
     {
-        _link.Throw(One, new PlcCommunicationException(PlcErrorKind.Timeout, One, "timeout after 120 ms"));
+        _link.Fail(One, new PlcCommunicationException(PlcErrorKind.Timeout, One, "timeout after 120 ms"));
         var engine = Engine(Items(One, "IB0"));
 
         await engine.RunCycleAsync(CancellationToken.None);
@@ -116,7 +116,7 @@ public sealed class PollingEngineTests
     {
         _link.Set(Two, ProtocolArea.V, 0, 0x05);
         var engine = Engine([Item(One, "VB0"), Item(Two, "VB0")]);
-        _link.Throw(One, new InvalidOperationException("driver bug"));
+        _link.Fail(One, new InvalidOperationException("driver bug"));
 
         var broken = await engine.RunCycleAsync(CancellationToken.None);
 
@@ -127,7 +127,7 @@ public sealed class PollingEngineTests
             s.State == StationState.Offline && s.LastError == "link error (InvalidOperationException): driver bug");
         _log.Events.Should().Contain(e => e.Level == LogEventLevel.Error && e.Exception is InvalidOperationException);
 
-        _link.Throw(One, null);
+        _link.Fail(One, null);
         _clock.Advance(new PollingOptions().OfflineRetryInterval);
         await engine.RunCycleAsync(CancellationToken.None);
 
@@ -141,7 +141,7 @@ public sealed class PollingEngineTests
     {
         // Several frames for station 1 (41 items, at most 20 per frame; 29-byte gaps are not bridged), 1 for station 2.
         var engine = Engine([.. Enumerable.Range(0, 41).Select(i => Item(One, $"VB{i * 30}")), Item(Two, "VB0")]);
-        _link.Throw(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer"));
+        _link.Fail(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer"));
 
         var result = await engine.RunCycleAsync(CancellationToken.None);
 
@@ -159,7 +159,7 @@ public sealed class PollingEngineTests
     {
         var engine = Engine(Items(One, "VB0"));
         await engine.RunCycleAsync(CancellationToken.None);
-        _link.Throw(One, new PlcCommunicationException(PlcErrorKind.FrameCorrupt, One, "bad block check"));
+        _link.Fail(One, new PlcCommunicationException(PlcErrorKind.FrameCorrupt, One, "bad block check"));
 
         await engine.RunCycleAsync(CancellationToken.None);
 
@@ -179,37 +179,40 @@ public sealed class PollingEngineTests
     }
 
     [Fact]
-    public async Task RunCycle_SubscriberThrows_OtherSubscribersServedAndErrorLogged()
+    public async Task RunCycle_ListenerThrows_ErrorLoggedAndPollingGoesOn()
     {
-        var engine = Engine(Items(One, "VB0"));
-        engine.Subscribe(_ => throw new InvalidOperationException("view model bug"));
-        var later = new List<ValueChange>();
-        engine.Subscribe(later.AddRange);
+        var engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock, _log.CreateLogger(), onChanges: _ => throw new InvalidOperationException("view model bug"));
 
-        await engine.RunCycleAsync(CancellationToken.None);
+        var first = await engine.RunCycleAsync(CancellationToken.None);
+        var second = await engine.RunCycleAsync(CancellationToken.None);
 
-        later.Should().ContainSingle();
+        (first.FramesFailed, second.FramesFailed).Should().Be((0, 0));
+        engine.TryGetValue(One, PlcAddress.Parse("VB0"), out var value).Should().BeTrue();
+        value.Quality.Should().Be(ValueQuality.Good);
         _log.Events.Should().Contain(e => e.Level == LogEventLevel.Error && e.Exception!.Message == "view model bug");
     }
 
     [Fact]
-    public async Task Subscribe_Disposed_StopsDelivery()
+    public async Task RunCycle_NothingChanged_ListenerHearsAnEmptyBatch()
     {
-        var engine = Engine(Items(One, "VB0"));
-        var received = new List<ValueChange>();
-        engine.Subscribe(received.AddRange).Dispose();
+        var heard = new List<IReadOnlyList<ValueChange>>();
+        var engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0")), _clock, onChanges: heard.Add);
 
         await engine.RunCycleAsync(CancellationToken.None);
+        await engine.RunCycleAsync(CancellationToken.None);
 
-        received.Should().BeEmpty();
+        heard.Select(b => b.Count).Should().Equal([1, 0], "every cycle ends with its batch, so the status bar hears of it");
     }
 
-    private PollingEngine Engine(IEnumerable<WatchedItem> items)
-    {
-        var engine = new PollingEngine(_link, PollPlanner.Build(items), _clock, _log.CreateLogger());
-        engine.Subscribe(_batches.Add);
-        return engine;
-    }
+    /// <summary>An engine whose batches with changes land in <see cref="_batches"/> (each cycle also ends with an empty one when nothing changed).</summary>
+    private PollingEngine Engine(IEnumerable<WatchedItem> items) =>
+        new(_link, PollPlanner.Build(items), _clock, _log.CreateLogger(), onChanges: b =>
+        {
+            if (b.Count > 0)
+            {
+                _batches.Add(b);
+            }
+        });
 
     private static string Hex(PolledValue value) => Convert.ToHexString(value.Raw.AsSpan());
 }

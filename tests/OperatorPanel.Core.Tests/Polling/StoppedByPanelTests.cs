@@ -17,14 +17,14 @@ public sealed class StoppedByPanelTests
     public StoppedByPanelTests()
     {
         _link = new FakePlcLink(_clock);
-        _engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0", "QB0")), _clock, _log.CreateLogger()) { UseReadLists = false };
+        _engine = new PollingEngine(_link, PollPlanner.Build(Items(One, "VB0", "QB0")), _clock, _log.CreateLogger(), new PollingOptions { UseReadLists = false });
     }
 
     [Fact]
     public async Task Cycle_StoppedStationSilent_StaysStoppedByPanelAndLogsNoWarning()
     {
         await _engine.RunCycleAsync(CancellationToken.None);
-        _link.Throw(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer"));
+        _link.Fail(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer"));
         _engine.NoteStoppedByPanel(One);
         var warningsBefore = Warnings();
 
@@ -52,7 +52,7 @@ public sealed class StoppedByPanelTests
     public async Task Cycle_StoppedStationLosesItsPort_IsOfflineWithAWarning()
     {
         _engine.NoteStoppedByPanel(One);
-        _link.Throw(One, new PlcCommunicationException(PlcErrorKind.PortUnavailable, One, "COM9 is gone"));
+        _link.Fail(One, new PlcCommunicationException(PlcErrorKind.PortUnavailable, One, "COM9 is gone"));
 
         await _engine.RunCycleAsync(CancellationToken.None);
 

@@ -57,4 +57,29 @@ public sealed class AtomicFileTests
         File.Exists(otherProject).Should().BeTrue();
         File.ReadAllBytes(path).Should().Equal(1);
     }
+
+    [Fact]
+    public void TryWrite_FolderMissing_SaysSoInOneSentenceWithoutTheTemporaryName()
+    {
+        using var folder = new TempFolder();
+        var missing = Path.Combine(folder.Path, "plant", "line3");
+
+        AtomicFile.TryWrite(Path.Combine(missing, "line.opproj"), [1], out var error).Should().BeFalse();
+
+        error.Should().Be($"cannot save the file: the folder {missing} does not exist");
+        Directory.Exists(missing).Should().BeFalse("a save does not make folders behind the user's back");
+    }
+
+    [Fact]
+    public void TryWrite_TargetIsAFolder_MessageNamesTheTargetNotTheTemporaryFile()
+    {
+        using var folder = new TempFolder();
+        var path = folder.File("line.opproj");
+        Directory.CreateDirectory(path);
+
+        AtomicFile.TryWrite(path, [1], out var error).Should().BeFalse();
+
+        error.Should().StartWith("cannot save the file: ").And.NotContain(".tmp");
+        Directory.GetFiles(folder.Path).Should().BeEmpty("the temporary file is gone");
+    }
 }

@@ -14,7 +14,7 @@ internal sealed class StoppablePlcLink(Station station, byte features = HandlerI
 {
     public StopFate Fate { get; set; } = StopFate.Executed;
 
-    /// <summary>Thrown for every request after STOP was sent, when set: the check itself fails (port gone, garbled).</summary>
+    /// <summary>The failure of every request after STOP was sent, when set: the check itself fails (port gone, garbled).</summary>
     public PlcCommunicationException? FailureAfterStop { get; set; }
 
     /// <summary>The CPU is in STOP: silent on Freeport. Set it to start with a stopped CPU.</summary>
@@ -22,47 +22,53 @@ internal sealed class StoppablePlcLink(Station station, byte features = HandlerI
 
     public List<PlcRequest> Sent { get; } = [];
 
-    public Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
+    public Task<LinkReply> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
     {
+        if (request is StopRequest)
+        {
+            return Task.FromResult(Stop(request));
+        }
+
         Sent.Add(request);
         if (Sent.OfType<StopRequest>().Any() && FailureAfterStop is { } failure)
         {
-            throw failure;
+            return Task.FromResult<LinkReply>(new LinkReply.Failed(failure, Sent: true));
         }
 
         if (InStop)
         {
-            throw new PlcCommunicationException(PlcErrorKind.NoAnswer, station, $"{station} on fake: no valid reply to {request.Command} after 2 attempts");
+            return Task.FromResult<LinkReply>(new LinkReply.Failed(
+                new PlcCommunicationException(PlcErrorKind.NoAnswer, station, $"{station} on fake: no valid reply to {request.Command} after 2 attempts"), Sent: true));
         }
 
-        return Task.FromResult<PlcResponse>(request switch
+        return Task.FromResult<LinkReply>(new LinkReply.Answered(request switch
         {
             IdentifyRequest => Identity(request.Sequence),
             _ => new ErrorResponse(station, request.Sequence, request.Command, ProtocolError.UnknownCommand),
-        });
-    }
-
-    public Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken)
-    {
-        if (Fate == StopFate.NeverSent)
-        {
-            return Task.FromResult<OnceReply>(new OnceReply.NotSent(new PlcCommunicationException(PlcErrorKind.PortUnavailable, station, "COM9 is gone")));
-        }
-
-        Sent.Add(request);
-        InStop = Fate is StopFate.Executed or StopFate.ExecutedReplyLost;
-        return Task.FromResult<OnceReply>(Fate switch
-        {
-            StopFate.Executed or StopFate.AcknowledgedButRunning => new OnceReply.Answered(new StopResponse(station, request.Sequence)),
-            StopFate.ExecutedReplyLost or StopFate.RequestLost => new OnceReply.ReplyLost("no reply within 120 ms", CorruptedCopy: false),
-            StopFate.Refused => new OnceReply.Answered(new ErrorResponse(station, request.Sequence, CommandCode.Stop, ProtocolError.UnknownCommand)),
-            StopFate.NeverSent => throw new InvalidOperationException("handled above"),
-        });
+        }));
     }
 
     public LinkStatistics StatisticsFor(Station s) => LinkStatistics.Empty;
 
-    public bool IsOnline(Station s) => !InStop;
+    /// <summary>STOP meets its <see cref="Fate"/>, sent once as the link sends a request that acts on the process.</summary>
+    private LinkReply Stop(PlcRequest request)
+    {
+        if (Fate == StopFate.NeverSent)
+        {
+            return new LinkReply.Failed(new PlcCommunicationException(PlcErrorKind.PortUnavailable, station, "COM9 is gone"), Sent: false);
+        }
+
+        Sent.Add(request);
+        InStop = Fate is StopFate.Executed or StopFate.ExecutedReplyLost;
+        return Fate switch
+        {
+            StopFate.Executed or StopFate.AcknowledgedButRunning => new LinkReply.Answered(new StopResponse(station, request.Sequence)),
+            StopFate.ExecutedReplyLost or StopFate.RequestLost =>
+                new LinkReply.Failed(new PlcCommunicationException(PlcErrorKind.NoAnswer, station, "no reply within 120 ms"), Sent: true),
+            StopFate.Refused => new LinkReply.Answered(new ErrorResponse(station, request.Sequence, CommandCode.Stop, ProtocolError.UnknownCommand)),
+            StopFate.NeverSent => throw new InvalidOperationException("handled above"),
+        };
+    }
 
     /// <summary>A CPU 224 handler (docs/protocol.md worked example) with this link's FEATURES.</summary>
     private IdentifyResponse Identity(byte sequence) =>

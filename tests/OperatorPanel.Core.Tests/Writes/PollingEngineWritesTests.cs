@@ -23,9 +23,8 @@ public sealed class PollingEngineWritesTests
     [Fact]
     public async Task Write_ReadBackMatches_ConfirmedAndStoreUpdatedAtOnce()
     {
-        var engine = Engine(Items(One, "VW100", "VB101"));
         var changes = new List<ValueChange>();
-        engine.Subscribe(changes.AddRange);
+        var engine = Engine(Items(One, "VW100", "VB101"), changes.AddRange);
 
         var outcome = await WriteThroughCycle(engine, WriteRequest.Bytes(One, PlcAddress.Parse("VW100"), [0x12, 0x34]));
 
@@ -98,7 +97,7 @@ public sealed class PollingEngineWritesTests
     public async Task Write_LinkFailsAndReadBackFailsToo_UnknownAndSentOnlyOnce()
     {
         var engine = Engine(Items(One, "VB0"));
-        _link.Throw(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer after 3 tries"));
+        _link.Fail(One, new PlcCommunicationException(PlcErrorKind.NoAnswer, One, "no answer after 3 tries"));
 
         var outcome = await WriteThroughCycle(engine, WriteRequest.Bytes(One, PlcAddress.Parse("VB5"), [0x05]));
 
@@ -192,8 +191,8 @@ public sealed class PollingEngineWritesTests
         _link.Requests.Should().NotContain(r => r is WriteBlockRequest || r is WriteBitRequest);
     }
 
-    private PollingEngine Engine(IEnumerable<WatchedItem> items) =>
-        new(_link, PollPlanner.Build(items), _clock, _log.CreateLogger());
+    private PollingEngine Engine(IEnumerable<WatchedItem> items, Action<IReadOnlyList<ValueChange>>? onChanges = null) =>
+        new(_link, PollPlanner.Build(items), _clock, _log.CreateLogger(), onChanges: onChanges);
 
     private static async Task<WriteOutcome> WriteThroughCycle(PollingEngine engine, WriteRequest request)
     {

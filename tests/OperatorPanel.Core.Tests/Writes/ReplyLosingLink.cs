@@ -15,7 +15,7 @@ internal sealed class ReplyLosingLink(FakePlcLink plc) : IPlcLink
     /// <summary>What happens to the next WRITE or WRITE BIT: null passes it through.</summary>
     public WriteFate? NextWrite { get; set; }
 
-    /// <summary>Thrown for every request after a lost write reply; null lets the read-back through.</summary>
+    /// <summary>The failure of every request after a lost write reply; null lets the read-back through.</summary>
     public PlcCommunicationException? ReadBackFailure { get; set; }
 
     /// <summary>Called after the lost write, before the read-back: the PLC program acting meanwhile.</summary>
@@ -23,18 +23,25 @@ internal sealed class ReplyLosingLink(FakePlcLink plc) : IPlcLink
 
     public List<PlcRequest> Sent { get; } = [];
 
-    public async Task<PlcResponse> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
+    public async Task<LinkReply> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken)
     {
+        if (PlcLink.ActsOnProcess(request.Command))
+        {
+            return await WriteAsync(request, cancellationToken);
+        }
+
         Sent.Add(request);
         if (ReadBackFailure is { } failure)
         {
-            throw failure;
+            return new LinkReply.Failed(failure, Sent: true);
         }
 
         return await plc.ExchangeAsync(request, cancellationToken);
     }
 
-    public async Task<OnceReply> ExchangeOnceAsync(PlcRequest request, CancellationToken cancellationToken)
+    public LinkStatistics StatisticsFor(Station station) => LinkStatistics.Empty;
+
+    private async Task<LinkReply> WriteAsync(PlcRequest request, CancellationToken cancellationToken)
     {
         var fate = NextWrite;
         NextWrite = null;
@@ -42,24 +49,22 @@ internal sealed class ReplyLosingLink(FakePlcLink plc) : IPlcLink
         {
             case null:
                 Sent.Add(request);
-                return new OnceReply.Answered(await plc.ExchangeAsync(request, cancellationToken));
+                return await plc.ExchangeAsync(request, cancellationToken);
             case WriteFate.NeverSent:
-                return new OnceReply.NotSent(new PlcCommunicationException(PlcErrorKind.PortUnavailable, request.Station, "COM9 is gone"));
+                return new LinkReply.Failed(new PlcCommunicationException(PlcErrorKind.PortUnavailable, request.Station, "COM9 is gone"), Sent: false);
             case WriteFate.AppliedReplyLost or WriteFate.AppliedToCorruptedCopy:
                 Sent.Add(request);
                 await plc.ExchangeAsync(request, cancellationToken);
                 BetweenWriteAndReadBack?.Invoke();
-                return new OnceReply.ReplyLost("no reply within 120 ms", fate == WriteFate.AppliedToCorruptedCopy);
+                return new LinkReply.Failed(Lost(request), Sent: true, fate == WriteFate.AppliedToCorruptedCopy);
             case WriteFate.RequestLost:
                 Sent.Add(request);
                 BetweenWriteAndReadBack?.Invoke();
-                return new OnceReply.ReplyLost("no reply within 120 ms", CorruptedCopy: false);
+                return new LinkReply.Failed(Lost(request), Sent: true);
             default:
                 throw new ArgumentOutOfRangeException(nameof(request), fate, null);
         }
     }
 
-    public LinkStatistics StatisticsFor(Station station) => LinkStatistics.Empty;
-
-    public bool IsOnline(Station station) => true;
+    private static PlcCommunicationException Lost(PlcRequest request) => new(PlcErrorKind.NoAnswer, request.Station, "no reply within 120 ms");
 }

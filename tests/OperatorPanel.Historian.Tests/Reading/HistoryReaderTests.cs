@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Historian.Reading;
 using static OperatorPanel.Historian.Tests.HistoryFixture;
@@ -41,6 +42,24 @@ public sealed class HistoryReaderTests
         var spans = history.Historian.Reader.Sessions(start.AddHours(-1), start.AddHours(1));
 
         spans.Should().ContainSingle().Which.Should().Be(new RecordingSpan(start, start.AddMinutes(5), "test"));
+    }
+
+    [Fact]
+    public async Task Audit_WriteAndStop_ReadBackAsRecorded()
+    {
+        await using var history = new HistoryFixture();
+        var at = history.Time.GetUtcNow();
+        var write = new AuditEntry(Guid.NewGuid(), AuditStep.Intent, AuditAction.Write, at, "PLANT\\maria", "COM3", Station, "VW10", "Speed", "16#0000", "16#002A");
+        var stop = new AuditEntry(Guid.NewGuid(), AuditStep.Intent, AuditAction.Stop, at.AddSeconds(2), "PLANT\\maria", "COM3", Station, null, null, "RUN", "STOP");
+        AuditEntry[] entries = [write, write.Then(AuditStep.Outcome, at.AddSeconds(1), "read back differently", "read back 16#0029"), stop, stop.Then(AuditStep.Outcome, at.AddSeconds(3), "stopped", null)];
+        foreach (var entry in entries)
+        {
+            (await history.Historian.Audit.RecordAsync(entry, CancellationToken.None)).Should().BeNull();
+        }
+
+        await history.Historian.FlushAsync();
+
+        history.Historian.Reader.Audit(at.AddMinutes(-1), at.AddMinutes(1)).Should().Equal(entries);
     }
 
     [Fact]

@@ -24,7 +24,7 @@ public sealed class PollingEngineSerialBusTests
 
         result.FramesSent.Should().Be(3);
         result.FramesFailed.Should().Be(0);
-        var requests = plcs.Sum(p => rig.Link.StatisticsFor(p.Config.Station).Requests);
+        var requests = plcs.Sum(p => rig.Bus.StatisticsFor(p.Config.Station).Requests);
         rig.Tap.Replies.Should().Be((int)requests, "one reply per request: no station answered another's request");
         foreach (var plc in plcs)
         {
@@ -89,7 +89,7 @@ public sealed class PollingEngineSerialBusTests
             Holds(rig, plc, cycle * 111).Should().BeTrue($"cycle {cycle} reads the new value through the noise");
         }
 
-        rig.Link.StatisticsFor(plc.Config.Station).CorruptFrames.Should().BeGreaterThan(0, "the noise did reach the panel");
+        rig.Bus.StatisticsFor(plc.Config.Station).CorruptFrames.Should().BeGreaterThan(0, "the noise did reach the panel");
         rig.State(plc).Should().Be(StationState.Online);
     }
 

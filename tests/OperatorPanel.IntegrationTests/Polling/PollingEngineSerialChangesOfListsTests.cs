@@ -35,8 +35,8 @@ public sealed partial class PollingEngineSerialChangesOfListsTests
     {
         var plc = SerialLineRig.Plc(2);
         await using var rig = await StartIdentifiedAsync(plc);
-        var first = rig.Engine.Plan.Frames.Single(f => f.List == 1);
-        var second = rig.Engine.Plan.Frames.Single(f => f.List == 2);
+        var first = rig.Bus.Plan.Frames.Single(f => f.List == 1);
+        var second = rig.Bus.Plan.Frames.Single(f => f.List == 2);
         plc.Memory.V[first.Items[0].Offset] = 0x11;
         plc.Memory.V[second.Items[^1].Offset] = 0x5A;
         var (received, sent) = (rig.Tap.Received.Length, rig.Tap.Sent.Length);
@@ -59,11 +59,11 @@ public sealed partial class PollingEngineSerialChangesOfListsTests
         var rig = await SerialLineRig.StartAsync([plc], Watched);
         try
         {
-            rig.Engine.Plan.ListCount.Should().Be(2);
-            var reply = await rig.Link.ExchangeAsync(new IdentifyRequest(plc.Config.Station), CancellationToken.None).WaitAsync(SerialLineRig.Limit);
-            var identity = reply.Should().BeOfType<IdentifyResponse>().Subject;
+            rig.Bus.Plan.ListCount.Should().Be(2);
+            // The bus hears its own IDENTIFY: FEATURES bit 2 chooses the 09 reader for the station.
+            var reply = await rig.Bus.IdentifyAsync(plc.Config.Station, CancellationToken.None).WaitAsync(SerialLineRig.Limit);
+            var identity = reply.Response.Should().BeOfType<IdentifyResponse>().Subject;
             identity.HasChangesOfLists.Should().BeTrue("the reference model answers 09");
-            rig.Engine.NoteIdentity(identity);
             await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
             return rig;
         }

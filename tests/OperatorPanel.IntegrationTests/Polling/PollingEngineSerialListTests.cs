@@ -21,8 +21,8 @@ public sealed partial class PollingEngineSerialListTests
         }
 
         var commands = Commands(rig.Tap.Received);
-        commands.Count(c => c == CommandCode.DefineList).Should().Be(rig.Engine.Plan.FrameCount);
-        commands.Skip(rig.Engine.Plan.FrameCount * 2).Should().NotBeEmpty().And.OnlyContain(c => c == CommandCode.ReadChanges);
+        commands.Count(c => c == CommandCode.DefineList).Should().Be(rig.Bus.Plan.FrameCount);
+        commands.Skip(rig.Bus.Plan.FrameCount * 2).Should().NotBeEmpty().And.OnlyContain(c => c == CommandCode.ReadChanges);
         rig.Value(plc, "VD100").Raw.Should().Equal(0x00, 0x01, 0xE2, 0x40);
     }
 
@@ -36,14 +36,14 @@ public sealed partial class PollingEngineSerialListTests
 
         // 18 + 2 x 118 = 254 characters: the request reaches every list in the tail. Typed writes are at most 4 bytes, so
         // the block goes over the same link (another client of the bus, e.g. a recipe download).
-        var write = await rig.Link.ExchangeAsync(new WriteBlockRequest(plc.Config.Station, 0x77, ProtocolArea.V, 4000, block), CancellationToken.None)
+        var write = await rig.Bus.ExchangeAsync(new WriteBlockRequest(plc.Config.Station, 0x77, ProtocolArea.V, 4000, block), CancellationToken.None)
             .WaitAsync(SerialLineRig.Limit);
         plc.Memory.WriteDoubleWord(ProtocolArea.V, 100, 7_654_321);
         plc.Memory.WriteWord(ProtocolArea.V, 2000, 0x1234);
         var before = Commands(rig.Tap.Received).Count;
         var result = await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
 
-        write.Should().BeOfType<WriteBlockResponse>();
+        write.Response.Should().BeOfType<WriteBlockResponse>();
         plc.Lists.Floor.Should().BeLessThan(256, "the lists were defined again");
         result.FramesFailed.Should().Be(0);
         Commands(rig.Tap.Received).Skip(before).Take(4).Should().Equal(

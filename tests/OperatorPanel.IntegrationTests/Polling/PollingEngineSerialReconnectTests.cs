@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
@@ -29,64 +30,59 @@ public sealed class PollingEngineSerialReconnectTests(ITestOutputHelper output)
         var plc = SerialLineRig.Plc(2);
         var station = plc.Config.Station;
         plc.Memory.M[0] = 0x11;
-        var bus = new BusSimulator();
-        bus.Attach(plc);
+        var simulator = new BusSimulator();
+        simulator.Attach(plc);
         using var stop = new CancellationTokenSource();
         var first = await SocatPtyPair.StartAsync();
         var (panelPath, plcPath) = (first.PathA, first.PathB);
         var plcPort = new SerialPortTransport(new SerialSettings { PortName = plcPath, BaudRate = 19200 });
-        var host = new SimulatedPlcHost(plcPort, new ReferenceLine(bus, []), TimeProvider.System);
+        var host = new SimulatedPlcHost(plcPort, new ReferenceLine(simulator, []), TimeProvider.System);
         var panelSerial = new SerialSettings { PortName = panelPath, BaudRate = 19200 };
         var (log, sink) = CollectingSink.CreateLogger();
-        await using var link = new PlcLink(
+        var link = new PlcLink(
             new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial) with { ScanAllowance = TimeSpan.FromMilliseconds(400) }, log: log);
         var plan = PollPlanner.Build([new WatchedItem(station, Mb0)], new Dictionary<Station, Core.Cpu.CpuProfile> { [station] = plc.Config.Cpu });
-        var engine = new PollingEngine(link, plan, logger: log)
-        {
-            Mode = RefreshMode.Continuous,
-            MinimumPeriod = TimeSpan.FromMilliseconds(100),
-        };
         var hostRun = Task.Run(() => host.RunAsync(stop.Token));
-        var engineRun = Task.Run(() => engine.RunAsync(stop.Token));
+        await using var bus = Bus.Start(link, plan, new BusSettings { Mode = RefreshMode.Continuous, MinimumPeriod = TimeSpan.FromMilliseconds(100) }, logger: log);
         SocatPtyPair? second = null;
         try
         {
-            (await WaitForAsync(() => Value(engine, station) is { Quality: ValueQuality.Good } v && v.Raw[0] == 0x11, Limit))
+            (await WaitForAsync(() => Value(bus, station) is { Quality: ValueQuality.Good } v && v.Raw[0] == 0x11, Limit))
                 .Should().BeTrue("the line works before the adapter is pulled");
 
             first.Kill();
-            var lost = await WaitForAsync(() => Value(engine, station).Quality == ValueQuality.Stale, Limit);
+            var lost = await WaitForAsync(() => Value(bus, station).Quality == ValueQuality.Stale, Limit);
             await hostRun.Invoking(r => r.WaitAsync(Limit)).Should().ThrowAsync<PlcCommunicationException>("the PLC's end vanished too");
 
             lost.Should().BeTrue("values go stale when the port vanishes");
-            var status = engine.GetStationStatus(station);
+            var status = bus.StatusOf(station);
             status.State.Should().Be(StationState.Offline);
             status.LastError.Should().StartWith($"PortUnavailable: station 2: serial port {panelPath}: ")
                 .And.EndWith("the device vanished (unplugged?) - reconnecting");
-            Value(engine, station).Raw.Should().Equal(0x11);
+            Value(bus, station).Raw.Should().Equal(0x11);
 
             // Away for a while: reopen attempts fail, the value stays stale, the status keeps naming the vanished device.
             plc.Memory.M[0] = 0x22;
             var away = Stopwatch.StartNew();
             while (away.Elapsed < TimeSpan.FromSeconds(1))
             {
-                Value(engine, station).Quality.Should().Be(ValueQuality.Stale);
+                Value(bus, station).Quality.Should().Be(ValueQuality.Stale);
                 await Task.Delay(PollStep);
             }
 
-            engine.GetStationStatus(station).LastError.Should().EndWith("the device vanished (unplugged?) - reconnecting");
+            bus.StatusOf(station).LastError.Should().EndWith("the device vanished (unplugged?) - reconnecting");
             second = await SocatPtyPair.StartAsync(panelPath, plcPath);
             var back = Stopwatch.StartNew();
             output.WriteLine($"{DateTimeOffset.Now:HH:mm:ss.fff} the pty pair is back");
             await plcPort.OpenAsync(default).WaitAsync(Limit);
             output.WriteLine($"{DateTimeOffset.Now:HH:mm:ss.fff} the PLC's end is open again");
             hostRun = Task.Run(() => host.RunAsync(stop.Token));
-            var recovered = await WaitForAsync(() => Value(engine, station) is { Quality: ValueQuality.Good } v && v.Raw[0] == 0x22, Limit);
+            var recovered = await WaitForAsync(() => Value(bus, station) is { Quality: ValueQuality.Good } v && v.Raw[0] == 0x22, Limit);
             output.WriteLine($"good again {back.ElapsedMilliseconds} ms after the pty pair was back");
 
             recovered.Should().BeTrue("the link reopens the port once the device is back");
             back.Elapsed.Should().BeLessThan(RecoveryLimit);
-            engine.GetStationStatus(station).State.Should().Be(StationState.Online);
+            bus.StatusOf(station).State.Should().Be(StationState.Online);
             link.Outage.Should().BeNull();
         }
         finally
@@ -96,8 +92,8 @@ public sealed class PollingEngineSerialReconnectTests(ITestOutputHelper output)
                 output.WriteLine($"{logged.Timestamp:HH:mm:ss.fff} {logged.Level} {logged.RenderMessage(System.Globalization.CultureInfo.InvariantCulture)}");
             }
 
+            await bus.StopPollingAsync().WaitAsync(Limit);
             await stop.CancelAsync();
-            await engineRun.WaitAsync(Limit);
             try
             {
                 await hostRun.WaitAsync(Limit);
@@ -113,8 +109,8 @@ public sealed class PollingEngineSerialReconnectTests(ITestOutputHelper output)
         }
     }
 
-    private static PolledValue Value(PollingEngine engine, Station station) =>
-        engine.TryGetValue(station, Mb0, out var value) ? value : throw new InvalidOperationException("MB0 is not watched");
+    private static PolledValue Value(Bus bus, Station station) =>
+        bus.TryGetValue(station, Mb0, out var value) ? value : throw new InvalidOperationException("MB0 is not watched");
 
     private static async Task<bool> WaitForAsync(Func<bool> condition, TimeSpan limit)
     {

@@ -48,9 +48,9 @@ public sealed class PollingEngineSerialTests
         var station = plc.Config.Station;
         await using var rig = await SerialLineRig.StartAsync([plc], ["VW200", "VD300", "QB1"]);
 
-        var word = await rig.Engine.WriteAsync(WriteRequest.Bytes(station, PlcAddress.Parse("VW200"), [0x01, 0x2C])).WaitAsync(SerialLineRig.Limit);
-        var dword = await rig.Engine.WriteAsync(WriteRequest.Bytes(station, PlcAddress.Parse("VD300"), [0x00, 0x01, 0x86, 0xA0])).WaitAsync(SerialLineRig.Limit);
-        var output = await rig.Engine.WriteAsync(WriteRequest.Bytes(station, PlcAddress.Parse("QB1"), [0x5A])).WaitAsync(SerialLineRig.Limit);
+        var word = await rig.Bus.WriteAsync(WriteRequest.Bytes(station, PlcAddress.Parse("VW200"), [0x01, 0x2C])).WaitAsync(SerialLineRig.Limit);
+        var dword = await rig.Bus.WriteAsync(WriteRequest.Bytes(station, PlcAddress.Parse("VD300"), [0x00, 0x01, 0x86, 0xA0])).WaitAsync(SerialLineRig.Limit);
+        var output = await rig.Bus.WriteAsync(WriteRequest.Bytes(station, PlcAddress.Parse("QB1"), [0x5A])).WaitAsync(SerialLineRig.Limit);
 
         word.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0x01, 0x2C);
         dword.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0x00, 0x01, 0x86, 0xA0);
@@ -69,11 +69,11 @@ public sealed class PollingEngineSerialTests
         plc.Memory.I[0] = 0x5A;
         await using var rig = await SerialLineRig.StartAsync([plc], ["IB0"]);
 
-        var viaEngine = await rig.Engine.WriteAsync(WriteRequest.Bytes(station, PlcAddress.Parse("IB0"), [0xFF])).WaitAsync(SerialLineRig.Limit);
-        var viaWire = await rig.Link.ExchangeAsync(new WriteBlockRequest(station, 0x40, ProtocolArea.I, 0, [0xFF]), default).WaitAsync(SerialLineRig.Limit);
+        var viaEngine = await rig.Bus.WriteAsync(WriteRequest.Bytes(station, PlcAddress.Parse("IB0"), [0xFF])).WaitAsync(SerialLineRig.Limit);
+        var viaWire = await rig.Bus.ExchangeAsync(new WriteBlockRequest(station, 0x40, ProtocolArea.I, 0, [0xFF]), default).WaitAsync(SerialLineRig.Limit);
 
         viaEngine.Should().BeOfType<WriteOutcome.Failed>().Which.Kind.Should().Be(WriteFailureKind.InvalidRequest);
-        viaWire.Should().BeOfType<ErrorResponse>().Which.Error.Should().Be(ProtocolError.NotWritable);
+        viaWire.Response.Should().BeOfType<ErrorResponse>().Which.Error.Should().Be(ProtocolError.NotWritable);
         plc.Memory.I[0].Should().Be(0x5A);
     }
 
@@ -97,10 +97,10 @@ public sealed class PollingEngineSerialTests
         await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
         var polled = rig.Value(plc, "MB5").Raw[0];
 
-        var set = await rig.Engine.WriteAsync(WriteRequest.Bit(station, m5, true)).WaitAsync(SerialLineRig.Limit);
+        var set = await rig.Bus.WriteAsync(WriteRequest.Bit(station, m5, true)).WaitAsync(SerialLineRig.Limit);
         var afterSet = plc.Memory.M[5];
         var readBackAfterSet = rig.Value(plc, "MB5").Raw[0];
-        var reset = await rig.Engine.WriteAsync(WriteRequest.Bit(station, m5, false)).WaitAsync(SerialLineRig.Limit);
+        var reset = await rig.Bus.WriteAsync(WriteRequest.Bit(station, m5, false)).WaitAsync(SerialLineRig.Limit);
         var afterReset = plc.Memory.M[5];
 
         set.Should().BeOfType<WriteOutcome.Confirmed>();

@@ -42,8 +42,8 @@ public sealed class PollingEngineStlSerialTests
         var (line, station) = Line(2);
         await using var rig = await SerialLineRig.StartAsync(line, [(new Station(2), Cpu)], ["VW200", "QB1"], Baud);
 
-        var word = await rig.Engine.WriteAsync(WriteRequest.Bytes(new Station(2), PlcAddress.Parse("VW200"), [0x01, 0x2C])).WaitAsync(SerialLineRig.Limit);
-        var output = await rig.Engine.WriteAsync(WriteRequest.Bytes(new Station(2), PlcAddress.Parse("QB1"), [0x5A])).WaitAsync(SerialLineRig.Limit);
+        var word = await rig.Bus.WriteAsync(WriteRequest.Bytes(new Station(2), PlcAddress.Parse("VW200"), [0x01, 0x2C])).WaitAsync(SerialLineRig.Limit);
+        var output = await rig.Bus.WriteAsync(WriteRequest.Bytes(new Station(2), PlcAddress.Parse("QB1"), [0x5A])).WaitAsync(SerialLineRig.Limit);
 
         word.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0x01, 0x2C);
         output.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0x5A);
@@ -71,8 +71,8 @@ public sealed class PollingEngineStlSerialTests
         var (line, station) = Line(2);
         string[] watched = [.. Enumerable.Range(0, 26).Select(i => $"VB{i * 10}")];
         await using var rig = await SerialLineRig.StartAsync(line, [(new Station(2), Cpu)], watched, Baud);
-        var identity = await rig.Link.ExchangeAsync(new IdentifyRequest(new Station(2)), CancellationToken.None).WaitAsync(SerialLineRig.Limit);
-        rig.Engine.NoteIdentity(identity.Should().BeOfType<IdentifyResponse>().Subject);
+        var identity = await rig.Bus.IdentifyAsync(new Station(2), CancellationToken.None).WaitAsync(SerialLineRig.Limit);
+        identity.Response.Should().BeOfType<IdentifyResponse>();
         await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
         (station.Memory.V[0], station.Memory.V[250]) = (0x11, 0x5A);
         var before = rig.Tap.Received.Length;
@@ -80,7 +80,7 @@ public sealed class PollingEngineStlSerialTests
         var result = await rig.RefreshAsync();
 
         result.FramesFailed.Should().Be(0);
-        rig.Engine.Plan.ListCount.Should().Be(2);
+        rig.Bus.Plan.ListCount.Should().Be(2);
         System.Text.RegularExpressions.Regex.Matches(rig.Tap.Received[before..], "<[^<>]*>").Select(m => m.Value[5..7])
             .Should().Equal(["09"], "the handler's IDENTIFY has FEATURES bit 2, so both lists in step go in one 09");
         rig.Value(new Station(2), "VB0").Should().Match<PolledValue>(v => v.Quality == ValueQuality.Good && v.Raw[0] == 0x11);

@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Transport;
@@ -12,7 +13,7 @@ namespace OperatorPanel.IntegrationTests.Polling;
 
 /// <summary>
 /// A whole serial line in one process: socat pty pair; on one end SerialPortTransport + SimulatedPlcHost serving
-/// reference PLCs (or any <see cref="ISimulatedLine"/>) on one bus; on the other SerialPortTransport + PlcLink + PollingEngine, triggered mode, so each test
+/// reference PLCs (or any <see cref="ISimulatedLine"/>) on one bus; on the other SerialPortTransport + PlcLink + Bus, triggered mode, so each test
 /// decides when a cycle runs. Real time throughout; every wait is bounded by <see cref="Limit"/>.
 /// </summary>
 internal sealed class SerialLineRig : IAsyncDisposable
@@ -22,18 +23,15 @@ internal sealed class SerialLineRig : IAsyncDisposable
     private readonly SocatPtyPair _pty;
     private readonly CancellationTokenSource _stop = new();
     private Task _hostRun = Task.CompletedTask;
-    private Task _engineRun = Task.CompletedTask;
 
-    private SerialLineRig(SocatPtyPair pty, PlcPortTap tap, PlcLink link, PollingEngine engine, SimulatedPlcHost host)
+    private SerialLineRig(SocatPtyPair pty, PlcPortTap tap, Bus bus, SimulatedPlcHost host)
     {
-        (_pty, Tap, Link, Engine, Host) = (pty, tap, link, engine, host);
+        (_pty, Tap, Bus, Host) = (pty, tap, bus, host);
     }
 
     public PlcPortTap Tap { get; }
 
-    public PlcLink Link { get; }
-
-    public PollingEngine Engine { get; }
+    public Bus Bus { get; }
 
     public SimulatedPlcHost Host { get; }
 
@@ -63,11 +61,10 @@ internal sealed class SerialLineRig : IAsyncDisposable
         // retrying there, so the tests see one exchange per request (retries have their own tests with a manual clock).
         // The reference model answers within one scan, so no time is allowed for the generated handler's slices.
         var options = LinkOptions.For(panelSerial) with { ScanAllowance = TimeSpan.FromMilliseconds(400), HandlerScanAllowance = TimeSpan.Zero };
-        var link = new PlcLink(new SerialPortTransport(panelSerial), options);
-        var engine = new PollingEngine(link, PollPlanner.Build(items, cpus)) { Mode = RefreshMode.OnDemand };
-        var rig = new SerialLineRig(pty, tap, link, engine, new SimulatedPlcHost(tap, line, TimeProvider.System));
+        var host = new SimulatedPlcHost(tap, line, TimeProvider.System);
+        var bus = Bus.Start(new PlcLink(new SerialPortTransport(panelSerial), options), PollPlanner.Build(items, cpus), new BusSettings { Mode = RefreshMode.OnDemand });
+        var rig = new SerialLineRig(pty, tap, bus, host);
         rig._hostRun = Task.Run(() => rig.Host.RunAsync(rig._stop.Token));
-        rig._engineRun = Task.Run(() => rig.Engine.RunAsync(rig._stop.Token));
         return rig;
     }
 
@@ -75,7 +72,7 @@ internal sealed class SerialLineRig : IAsyncDisposable
         new(new HandlerConfig(new Station(station), CpuProfiles.For(CpuModel.Cpu226)));
 
     /// <summary>One full cycle, bounded.</summary>
-    public Task<PollResult> RefreshAsync() => Engine.RequestRefreshAsync().WaitAsync(Limit);
+    public Task<PollResult> RefreshAsync() => Bus.RefreshAsync().WaitAsync(Limit);
 
     /// <summary>
     /// Full cycles until <paramref name="done"/> holds after one, within <see cref="Limit"/>; the last result either way.
@@ -97,18 +94,18 @@ internal sealed class SerialLineRig : IAsyncDisposable
     public PolledValue Value(ReferencePlc plc, string address) => Value(plc.Config.Station, address);
 
     public PolledValue Value(Station station, string address) =>
-        Engine.TryGetValue(station, PlcAddress.Parse(address), out var value)
+        Bus.TryGetValue(station, PlcAddress.Parse(address), out var value)
             ? value
             : throw new InvalidOperationException($"{address} is not watched");
 
     public StationState State(ReferencePlc plc) => State(plc.Config.Station);
 
-    public StationState State(Station station) => Engine.GetStationStatus(station).State;
+    public StationState State(Station station) => Bus.StatusOf(station).State;
 
     public async ValueTask DisposeAsync()
     {
+        await Bus.StopPollingAsync().WaitAsync(Limit);
         await _stop.CancelAsync();
-        await _engineRun.WaitAsync(Limit);
         try
         {
             await _hostRun.WaitAsync(Limit);
@@ -118,7 +115,7 @@ internal sealed class SerialLineRig : IAsyncDisposable
             // The host ends its run with the cancellation: the expected way to stop it.
         }
 
-        await Link.DisposeAsync();
+        await Bus.DisposeAsync();
         await Tap.DisposeAsync();
         _pty.Dispose();
         _stop.Dispose();

@@ -11,10 +11,10 @@ public sealed class StlProgramLoaderTests
     [Fact]
     public void Load_UnknownInstruction_ReportsNameAndLineAndGivesNoProgram()
     {
-        var result = Load("LD     SM0.0\nHSC    0");
+        var result = Load("LD     SM0.0\nPID    VB100, 0");
 
         result.Succeeded.Should().BeFalse();
-        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: HSC is not implemented by the simulator");
+        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: PID is not implemented by the simulator: PID loop control is not modelled");
     }
 
     [Theory]
@@ -80,21 +80,42 @@ public sealed class StlProgramLoaderTests
     }
 
     [Theory]
-    [InlineData(0)]
-    [InlineData(7)]
-    [InlineData(12)]
-    [InlineData(19)]
-    [InlineData(21)]
-    [InlineData(33)]
-    public void Load_AttachToAnEventTheSimulatorNeverRaises_IsRefusedNamingTheEvent(int eventNumber)
+    [InlineData(12, "HSC0 CV=PV")]
+    [InlineData(19, "PLS0 PTO complete")]
+    [InlineData(21, "timer T32 CT=PT")]
+    [InlineData(33, "HSC5 CV=PV")]
+    public void Load_AttachToAnEventTheSimulatorNeverRaises_WarnsOnceNamingTheEvent(int eventNumber, string name)
     {
         const string routine = "INTERRUPT_BLOCK EDGE:INT0\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\nINCW   VW0\r\nEND_INTERRUPT_BLOCK\r\n";
 
-        var result = Load($"LD     SM0.1\nATCH   EDGE, {eventNumber}\nENI", routine, CpuModel.Cpu226);
+        var result = Load($"LD     SM0.1\nATCH   EDGE, {eventNumber}\nATCH   EDGE, {eventNumber}\nENI", routine, CpuModel.Cpu226);
+
+        result.Succeeded.Should().BeTrue("the rest of the program runs");
+        result.Warnings.Should().ContainSingle().Which.ToString().Should().Be(
+            $"line 5: ATCH: event {eventNumber} ({name}) never fires in the simulator; its routine runs only for the events it can raise (--strict refuses it)");
+    }
+
+    [Fact]
+    public void Load_AttachToAnEventTheSimulatorNeverRaisesStrict_IsRefused()
+    {
+        const string routine = "INTERRUPT_BLOCK EDGE:INT0\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\nINCW   VW0\r\nEND_INTERRUPT_BLOCK\r\n";
+
+        var result = StlProgramLoader.Load(StlTestPrograms.Text("LD     SM0.1\nATCH   EDGE, 12", routine), CpuProfiles.For(CpuModel.Cpu224), new StlLoadOptions { Strict = true });
 
         result.Succeeded.Should().BeFalse();
-        result.Diagnostics.Should().ContainSingle().Which.ToString().Should().Be(
-            $"line 5: ATCH: the simulator never raises event {eventNumber}: it raises the Freeport events (8, 9, 23-26) and the timed interrupts (10, 11) only");
+        result.Diagnostics.Should().ContainSingle().Which.Message.Should().StartWith("ATCH: event 12 (HSC0 CV=PV) never fires in the simulator");
+    }
+
+    [Theory]
+    [InlineData(0)]
+    [InlineData(7)]
+    public void Load_AttachToAnInputEdge_LoadsWithoutWarning(int eventNumber)
+    {
+        const string routine = "INTERRUPT_BLOCK EDGE:INT0\r\nBEGIN\r\nNetwork 1\r\nLD     SM0.0\r\nINCW   VW0\r\nEND_INTERRUPT_BLOCK\r\n";
+
+        var result = Load($"LD     SM0.1\nATCH   EDGE, {eventNumber}\nENI", routine);
+
+        (result.Succeeded, result.Warnings.Length).Should().Be((true, 0));
     }
 
     [Theory]
@@ -123,6 +144,7 @@ public sealed class StlProgramLoaderTests
     {
         var result = Load("LD     SM0.0\nNETR   VB0, 0");
 
-        result.Diagnostics.Select(d => d.ToString()).Should().Equal("line 5: NETR is not implemented by the simulator");
+        result.Diagnostics.Select(d => d.ToString()).Should().Equal(
+            "line 5: NETR is not implemented by the simulator: the simulator models the Freeport ports only, not a PPI network");
     }
 }

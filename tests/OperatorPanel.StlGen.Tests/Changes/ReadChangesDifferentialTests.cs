@@ -148,6 +148,31 @@ public sealed class ReadChangesDifferentialTests
         harness.Reference.Memory.V.AsSpan(300, 12).ToArray().Should().Equal(panel.Known(2));
     }
 
+    /// <summary>
+    /// Issue 23: a list ending in one of the last three bytes of its area. The comparison's double-word compare of a
+    /// 4-byte chunk read 4 bytes at the list's byte whatever the chunk's length, past the area's end: the interpreter
+    /// stopped the handler there and the station answered nothing ever after. The copy at the end of the copy area
+    /// (the last V bytes) is the same case for the second pointer.
+    /// </summary>
+    [Theory]
+    [InlineData(ProtocolArea.M, 29, 3)]
+    [InlineData(ProtocolArea.M, 31, 1)]
+    [InlineData(ProtocolArea.Q, 13, 3)]
+    [InlineData(ProtocolArea.V, 8189, 2)]
+    [InlineData(ProtocolArea.I, 15, 1)]
+    public void ReadChanges_ListAtTheEndOfItsArea_AnswersNoPairsAndKeepsAnswering(ProtocolArea area, int offset, int length)
+    {
+        var (_, panel) = Station(copyBytes: length);
+        panel.Define(1, new ReadItem(area, offset, length));
+        panel.ReadChanges(1).Full.Should().BeTrue();
+
+        var idle = panel.ReadChanges(1);
+        var again = panel.ReadChanges(1);
+
+        (idle.Full, idle.Changes.Length).Should().Be((false, 0), "nothing changed: K = 00, as the reference answers");
+        again.Changes.Should().BeEmpty("the station still answers");
+    }
+
     [Theory]
     [InlineData(1, 0x02, "F806")]
     [InlineData(1, 0x81, "F806")]

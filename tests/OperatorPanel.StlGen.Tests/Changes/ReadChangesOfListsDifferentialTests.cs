@@ -151,6 +151,35 @@ public sealed class ReadChangesOfListsDifferentialTests
         Entries(entries).Should().Equal(new[] { (1, false, 9), (2, reread, reread ? 0 : changed), (3, false, 0), (4, false, 0) }.Take(mask == 0b1111 ? 4 : 3));
     }
 
+    /// <summary>
+    /// Issue 23: docs/protocol.md section 2's example of copies (COPY_BYTES 120, lists of D = 100, 30 and 20): the third
+    /// list's copy ends at the last copy byte, the last byte of V, where the comparison's double-word compare of a short
+    /// chunk read past V and the station went silent for good. It answers K = 00 on every CPU.
+    /// </summary>
+    [Theory]
+    [InlineData(CpuModel.Cpu221)]
+    [InlineData(CpuModel.Cpu222)]
+    [InlineData(CpuModel.Cpu224)]
+    [InlineData(CpuModel.Cpu224XP)]
+    [InlineData(CpuModel.Cpu226)]
+    public void ReadChangesOfLists_CopyEndingAtTheLastVByte_AnswersKZeroAndKeepsAnswering(CpuModel cpu)
+    {
+        var options = new HandlerOptions { Cpu = CpuProfiles.For(cpu), Station = 2 };
+        var harness = new DifferentialHarness(options, new Random(17));
+        var panel = new ChangesExchange(harness, 2);
+        panel.Define(1, new ReadItem(ProtocolArea.V, 100, 100));
+        panel.Define(2, new ReadItem(ProtocolArea.V, 300, 30));
+        panel.Define(3, new ReadItem(ProtocolArea.V, 400, 20));
+        panel.ReadChanges(1).Full.Should().BeTrue();
+        panel.ReadChanges(3).Full.Should().BeTrue();
+
+        var idle = panel.ReadChangesOfLists(0b0101);
+        var again = panel.ReadChangesOfLists(0b0101);
+
+        Entries(idle).Should().Equal((1, false, 0), (3, false, 0));
+        Entries(again).Should().Equal(Entries(idle), "the station still answers");
+    }
+
     [Theory]
     [InlineData(new byte[] { }, "04")]
     [InlineData(new byte[] { 0b0011, 0 }, "04")]

@@ -32,10 +32,10 @@ public sealed class HandlerMergerTests
     }
 
     [Fact]
-    public void Merge_ExportedFillerProgram_KeepsEveryUserLineInOrder()
+    public void Merge_ExportedFillerProgram_KeepsEveryUserLineInOrderButTheNetworkNumbers()
     {
-        var merged = HandlerMerger.Merge(Filler, UserProgram.Cpu224).MergedText.Split("\r\n");
-        var user = Filler.Split("\r\n");
+        var merged = HandlerMerger.Merge(Filler, UserProgram.Cpu224).MergedText.Split("\r\n").Select(WithoutNetworkNumber).ToArray();
+        var user = Filler.Split("\r\n").Select(WithoutNetworkNumber);
 
         var position = 0;
         foreach (var line in user.Where(l => l.Length > 0))
@@ -109,4 +109,23 @@ public sealed class HandlerMergerTests
         result.MergedText.Should().BeEmpty();
         result.Diagnostics.Should().ContainSingle().Which.Message.Should().Contain("a carriage return (16#0D) inside the line");
     }
+
+    [Fact]
+    public void Merge_EveryBlock_CountsItsNetworksFromOne()
+    {
+        var user = UserProgram.WithBlocks(
+            ["LD     SM0.0", "=      Q0.0", "Network 7 // second", "LD     SM0.1", "=      Q0.1", "Network 7 // third, numbered twice by hand", "LD     I0.0", "=      Q0.2"],
+            ["SUBROUTINE_BLOCK SBR_0:SBR0", "BEGIN", "Network 4 // first of SBR_0", "Network 9 //   second of SBR_0, its comment kept", "END_SUBROUTINE_BLOCK"]);
+
+        var merged = HandlerMerger.Merge(user, UserProgram.Cpu224).MergedText;
+
+        var program = AwlParser.Parse(merged).Program;
+        program.Blocks.Should().AllSatisfy(b => b.Networks.Select(n => n.Number).Should().Equal(Enumerable.Range(1, b.Networks.Length), b.Name));
+        merged.Should().Contain("\r\nNetwork 2 // test\r\n").And.Contain("\r\nNetwork 3 // second\r\n")
+            .And.Contain("\r\nNetwork 4 // third, numbered twice by hand\r\n").And.Contain("\r\nNetwork 2 //   second of SBR_0, its comment kept\r\n");
+    }
+
+    /// <summary>"Network 7 // title" as "Network # // title": the merge renumbers networks and keeps the rest of the line.</summary>
+    private static string WithoutNetworkNumber(string line) =>
+        System.Text.RegularExpressions.Regex.Replace(line, "^(Network )\\d+", "$1#");
 }

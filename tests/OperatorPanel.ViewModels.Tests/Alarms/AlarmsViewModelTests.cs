@@ -46,7 +46,26 @@ public sealed class AlarmsViewModelTests : IDisposable
             + $"2024-01-15T08:00:00.000Z,Filler,2,M0.0,raised,active unacknowledged,fault,{JamText},\r\n"
             + $"2024-01-15T08:00:05.000Z,Filler,2,M0.0,acknowledged,active acknowledged,fault,{JamText},maria\r\n"
             + $"2024-01-15T08:00:15.000Z,Filler,2,M0.0,cleared,cleared,fault,{JamText},\r\n");
-        alarms.Journal.Message.Should().Be($"Exported 3 journal entries to {_files.Answer}.");
+        alarms.Journal.Message.Should().Be($"Exported 3 journal entries to {_files.Answer} (times in UTC).");
+        alarms.Journal.IsMessageError.Should().BeFalse("a success is never red");
+    }
+
+    [Fact]
+    public async Task Journal_ShopFloorZone_ShownInLocalTimeLikeTheAlarmTableAndExportedInUtc()
+    {
+        var clock = new ManualTimeProvider { LocalZone = TimeZoneInfo.CreateCustomTimeZone("Plant", TimeSpan.FromHours(2), "Plant", "Plant") };
+        using var alarms = new AlarmsViewModel(AlarmProject.Create(), null, _values, clock, new AlarmServices(_files, SilentAlarmSound.Instance, _documents, _folder.Path, "maria"));
+        await alarms.StartAsync();
+
+        _values.Publish(Bit(Jam, on: true));
+
+        var raised = new DateTimeOffset(2024, 1, 15, 10, 0, 0, TimeSpan.FromHours(2));
+        alarms.Journal.Entries.Should().ContainSingle().Which.At.Should().Be(raised);
+        alarms.Journal.Entries[0].At.Offset.Should().Be(TimeSpan.FromHours(2));
+        Row(alarms, Jam).RaisedAt!.Value.Offset.Should().Be(TimeSpan.FromHours(2), "the table and the journal show one zone");
+        _files.Answer = _folder.File("export.csv");
+        alarms.Journal.ExportCsvCommand.Execute(null);
+        File.ReadAllText(_files.Answer).Should().Contain("2024-01-15T08:00:00.000Z,Filler", "exports are in UTC");
     }
 
     [Fact]

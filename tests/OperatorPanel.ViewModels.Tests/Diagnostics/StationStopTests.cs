@@ -79,6 +79,7 @@ public sealed class StationStopTests : IAsyncDisposable
         await Row.StopCommand.ExecuteAsync(null).Guarded();
 
         _panel.Dialogs.Questions.Should().Equal(Question);
+        _panel.Dialogs.NoByDefault.Should().Equal([true], "No is the default button of Stop PLC: Enter does not stop the line");
         _panel.Transport.FramesSent.Should().Be(framesBefore);
         _panel.Plc.Mode.Should().Be(OperatingMode.Run);
         Status.Health.Should().NotBe(StationHealth.StoppedByPanel);

@@ -43,7 +43,8 @@ internal sealed class PanelFixture : IAsyncDisposable
 
     public FakeFileDialogService Files { get; } = new();
 
-    public PanelOptions Options { get; } = new();
+    /// <summary>Writes unconfirmed, so a test answers only the questions it is about (the panel's default asks: PanelOptionsTests).</summary>
+    public PanelOptions Options { get; } = new() { ConfirmWrites = false };
 
     public ILogger Logger { get; }
 

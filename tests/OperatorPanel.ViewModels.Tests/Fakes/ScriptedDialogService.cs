@@ -13,9 +13,13 @@ internal sealed class ScriptedDialogService : IDialogService
 
     public List<(string Title, string Message)> Errors { get; } = [];
 
-    public Task<bool> ConfirmAsync(string title, string message)
+    /// <summary>For every question asked, whether Enter would have answered No.</summary>
+    public List<bool> NoByDefault { get; } = [];
+
+    public Task<bool> ConfirmAsync(string title, string message, bool noByDefault = false)
     {
         Questions.Add(message);
+        NoByDefault.Add(noByDefault);
         return Task.FromResult(ConfirmAnswers.Dequeue());
     }
 

@@ -57,10 +57,10 @@ public sealed class ShellHistoryTests : IAsyncDisposable
 
         outcome.Should().BeOfType<WriteOutcome.Confirmed>();
         var audit = _shell.History.Current.Reader.Audit(DateTimeOffset.UnixEpoch, _panel.Clock.GetUtcNow().AddMinutes(1));
-        audit.Select(a => (a.Phase, a.Address, a.OldValue, a.NewValue, a.Outcome, a.User)).Should().Equal(
-            (AuditPhase.Intent, Speed, "16#0000", "16#002A", null, _panel.Session.User),
-            (AuditPhase.Outcome, Speed, "16#0000", "16#002A", "confirmed", _panel.Session.User));
-        audit[0].Operation.Should().Be(audit[1].Operation);
+        audit.Select(a => (a.Step, a.Action, a.Target, a.OldValue, a.NewValue, a.Outcome, a.User, a.Port)).Should().Equal(
+            (AuditStep.Intent, AuditAction.Write, "VW10", "16#0000", "16#002A", null, _panel.Session.User, "COM7"),
+            (AuditStep.Outcome, AuditAction.Write, "VW10", "16#0000", "16#002A", "confirmed", _panel.Session.User, "COM7"));
+        audit[0].Id.Should().Be(audit[1].Id, "an intent and its outcome share the action's id");
     }
 
     [Fact]

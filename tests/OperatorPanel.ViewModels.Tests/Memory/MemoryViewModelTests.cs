@@ -56,6 +56,37 @@ public sealed class MemoryViewModelTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task Commit_ConfirmWritesOn_AsksWithTheOldAndTheNewValue()
+    {
+        _panel.Options.ConfirmWrites = true;
+        await _panel.ConnectAsync();
+        _panel.Plc.Memory.WriteWord(ProtocolArea.V, 10, 1234);
+        await _panel.RefreshAsync();
+        Speed.BeginEditCommand.Execute(null);
+        Speed.EditText = "1500";
+        _panel.Dialogs.ConfirmAnswers.Enqueue(true);
+
+        await Speed.CommitEditCommand.ExecuteAsync(null).Guarded();
+
+        _panel.Dialogs.Questions.Should().Equal("Set VW10 (Speed) from 1234 to 1500?");
+        _panel.Plc.Memory.ReadWord(ProtocolArea.V, 10).Should().Be(1500);
+    }
+
+    [Fact]
+    public async Task Commit_ConfirmWritesOnNothingReadYet_TheQuestionSaysSo()
+    {
+        _panel.Options.ConfirmWrites = true;
+        await _panel.ConnectAsync();
+        Speed.BeginEditCommand.Execute(null);
+        Speed.EditText = "7";
+        _panel.Dialogs.ConfirmAnswers.Enqueue(false);
+
+        await Speed.CommitEditCommand.ExecuteAsync(null).Guarded();
+
+        _panel.Dialogs.Questions.Should().Equal("Set VW10 (Speed) from not read yet to 7?");
+    }
+
+    [Fact]
     public async Task CancelEdit_Escape_NothingWrittenEditorClosed()
     {
         await ConnectAndRefreshAsync();

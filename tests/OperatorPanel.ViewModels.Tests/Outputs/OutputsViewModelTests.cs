@@ -93,8 +93,15 @@ public sealed class OutputsViewModelTests : IAsyncDisposable
 
         await Conveyor.SwitchCommand.ExecuteAsync(null).Guarded();
 
-        _panel.Dialogs.Questions.Should().Equal("Set Q0.0 (Conveyor) to 1?");
+        _panel.Dialogs.Questions.Should().Equal("Set Q0.0 (Conveyor) from 0 to 1?");
+        _panel.Dialogs.NoByDefault.Should().Equal(false);
         _panel.Transport.FramesSent.Should().Be(frames);
+    }
+
+    [Fact]
+    public void Options_NewOperator_ConfirmsWritesByDefault()
+    {
+        new OperatorPanel.ViewModels.Session.PanelOptions().ConfirmWrites.Should().BeTrue("one click must not switch an output of a running line");
     }
 
     [Fact]

@@ -3,6 +3,7 @@ using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Writes;
 using OperatorPanel.Simulator.Reference;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Tests.Fakes;
@@ -20,7 +21,6 @@ public sealed class PanelSessionTests : IAsyncDisposable
         var afterConnect = _panel.Transport.FramesSent;
 
         _panel.Clock.Advance(TimeSpan.FromMinutes(5));
-        _panel.Session.UpdateStations();
 
         _panel.Transport.FramesSent.Should().Be(afterConnect, "triggered mode polls nothing on its own");
 
@@ -30,6 +30,36 @@ public sealed class PanelSessionTests : IAsyncDisposable
         var afterRefresh = _panel.Transport.FramesSent;
         _panel.Clock.Advance(TimeSpan.FromMinutes(5));
         _panel.Transport.FramesSent.Should().Be(afterRefresh, "one refresh is one cycle");
+    }
+
+    [Fact]
+    public async Task StatusBar_RefreshAndWrite_ShowTheLinksCountersAtOnceWithoutATimer()
+    {
+        await _panel.ConnectAsync();
+        var station = _panel.Session.Stations.Single();
+        var afterConnect = station.Statistics.Requests;
+
+        await _panel.RefreshAsync();
+        var afterRefresh = station.Statistics.Requests;
+        await _panel.Session.WriteAsync(WriteRequest.Bytes(PanelFixture.Filler, PlcAddress.Parse("VW10"), [0x00, 0x2A]));
+
+        afterConnect.Should().Be(1, "the IDENTIFY on connecting");
+        afterRefresh.Should().BeGreaterThan(afterConnect, "the cycle's READs show when the cycle ends");
+        station.Statistics.Requests.Should().Be(afterRefresh + 1, "the write shows when it ends");
+        _panel.Session.StatusLine.Text.Should().StartWith("Polling", "the connect message, which expires on its own timer");
+        _panel.Clock.ActiveTimers.Should().Be(1, "nothing samples the line on a timer: the one timer is the status message's expiry");
+    }
+
+    [Fact]
+    public async Task Connect_StatusLine_SaysWhichStationsArePolledOnWhichPortsAndIsNoError()
+    {
+        await _panel.ConnectAsync();
+
+        _panel.Session.StatusLine.Text.Should().Be("Polling Filler on COM7");
+        _panel.Session.StatusLine.IsError.Should().BeFalse();
+        _panel.Session.Stations[0].HealthText.Should().Be("not read yet", "triggered refresh: nothing is read before F5");
+        await _panel.RefreshAsync();
+        _panel.Session.Stations[0].HealthText.Should().Be("online");
     }
 
     [Fact]

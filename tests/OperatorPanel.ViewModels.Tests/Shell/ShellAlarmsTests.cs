@@ -18,7 +18,7 @@ public sealed class ShellAlarmsTests : IAsyncDisposable
     [Fact]
     public async Task Alarm_RaisedOnTheSimulatedPlcWhilePaneHidden_ShowsInAlarmsAndSummary()
     {
-        _shell.AlarmsPane.IsVisible = false;
+        _shell.Panes.Single(p => p.ContentId == "Alarms").IsVisible = false;
         var changed = new List<string?>();
         _shell.PropertyChanged += (_, e) => changed.Add(e.PropertyName);
         await _panel.ConnectAsync();
@@ -49,8 +49,7 @@ public sealed class ShellAlarmsTests : IAsyncDisposable
         await _panel.RefreshAsync();
 
         _shell.AlarmSummary.Should().Be("no alarms");
-        _shell.Panes.Should().Contain(_shell.AlarmsPane);
-        _shell.AlarmsPane.Alarms.Should().BeSameAs(_shell.Alarms);
+        _shell.Panes.Single(p => p.ContentId == "Alarms").Content.Should().BeSameAs(_shell.Alarms);
     }
 
     [Fact]
@@ -67,6 +66,7 @@ public sealed class ShellAlarmsTests : IAsyncDisposable
         await _panel.RefreshAsync();
 
         _shell.Alarms.Should().NotBeSameAs(old);
+        _shell.Panes.Single(p => p.ContentId == "Alarms").Content.Should().BeSameAs(_shell.Alarms, "the pane shows the new project's alarms");
         _shell.Alarms.Rows.Should().BeEmpty();
         old.Journal.Entries.Should().BeEmpty("the old project's window was disposed and hears nothing");
         _shell.AlarmSummary.Should().Be("no alarms");

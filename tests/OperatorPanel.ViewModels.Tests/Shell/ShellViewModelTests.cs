@@ -57,6 +57,25 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task Close_PortHangsInItsClose_ClosesAfterTwoSecondsAndLogsIt()
+    {
+        var hanging = new HangingCloseConnector(_panel.Connector);
+        var shell = new ShellViewModel(_panel.Session, _panel.Options, PanelFixture.Services(_panel) with { Connector = hanging }, _panel.Clock, _panel.Logger);
+        await shell.ConnectCommand.ExecuteAsync(null).Guarded();
+
+        var closing = shell.CloseAsync();
+        _panel.Clock.Advance(ShellViewModel.CloseWait - TimeSpan.FromMilliseconds(1));
+        closing.IsCompleted.Should().BeFalse("the panel gives the port its two seconds");
+        _panel.Clock.Advance(TimeSpan.FromMilliseconds(1));
+        var closed = await closing.Guarded();
+
+        closed.Should().BeTrue();
+        ShellViewModel.CloseWait.Should().Be(TimeSpan.FromSeconds(2));
+        _panel.Log.Messages.Should().Contain("The line did not close within 2 s (COM7); the panel closes without waiting for it");
+        hanging.Release.SetResult();
+    }
+
+    [Fact]
     public async Task Close_UnsavedAnswerSave_SavesThenCloses()
     {
         await MakeDirtyAsync();
@@ -180,7 +199,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
 
         _shell.IsDemo.Should().BeTrue();
         _shell.Title.Should().Be("Bottling line 1 (demo) - Operator Panel");
-        _shell.IsConnected.Should().BeTrue();
+        _shell.Session.IsConnected.Should().BeTrue();
         _shell.Stations.Should().OnlyContain(s => s.Health == ViewModels.Session.StationHealth.Online);
         _shell.Inputs.Groups.SelectMany(g => g.Points).Should().OnlyContain(p => p.Quality == Core.Polling.ValueQuality.Good);
         _shell.ProjectPath.Should().BeNull("Save must not overwrite the shipped sample");
@@ -189,11 +208,11 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     [Fact]
     public void ToggleRefreshMode_TriggeredProject_ContinuousThenTriggered()
     {
-        _shell.IsContinuous.Should().BeFalse();
+        _shell.Session.IsContinuous.Should().BeFalse();
 
         _shell.ToggleRefreshModeCommand.Execute(null);
 
-        _shell.IsContinuous.Should().BeTrue();
+        _shell.Session.IsContinuous.Should().BeTrue();
         _panel.Session.Mode.Should().Be(Core.Polling.RefreshMode.Continuous);
         _shell.ToggleRefreshModeCommand.Execute(null);
         _shell.StatusLine.Text.Should().Be("Refresh: triggered; F5 refreshes");
@@ -211,7 +230,7 @@ public sealed class ShellViewModelTests : IAsyncDisposable
 
         _shell.ToggleReadOnlyCommand.Execute(null);
 
-        _shell.IsReadOnly.Should().BeTrue();
+        _shell.Session.IsReadOnly.Should().BeTrue();
         conveyor.SwitchCommand.CanExecute(null).Should().BeFalse();
         speed.BeginEditCommand.CanExecute(null).Should().BeFalse();
     }
@@ -227,7 +246,26 @@ public sealed class ShellViewModelTests : IAsyncDisposable
         _shell.ConnectCommand.CanExecute(null).Should().BeFalse();
         _shell.DisconnectCommand.CanExecute(null).Should().BeTrue();
         _shell.RefreshNowCommand.CanExecute(null).Should().BeTrue();
-        _shell.Panes.Select(p => p.ContentId).Should().Equal("inputs", "outputs", "memory", "alarms", "diagnostics", "trends");
+    }
+
+    [Fact]
+    public void Panes_EachCarriesItsViewModel_OneMechanismForTheDockAndTheViewMenu()
+    {
+        _shell.Panes.Select(p => (p.ContentId, p.Title)).Should().Equal(
+            ("Inputs", "Inputs"), ("Outputs", "Outputs"), ("Memory", "Memory"), ("Alarms", "Alarms"), ("Diagnostics", "Diagnostics"), ("Trends", "Trends"));
+        _shell.Panes.Select(p => p.Content).Should().Equal(_shell.Inputs, _shell.Outputs, _shell.Memory, _shell.Alarms, _shell.Diagnostics, _shell.Trends);
+        _shell.Panes.Where(p => p.IsVisible).Select(p => p.ContentId).Should().Equal("Inputs", "Outputs", "Memory", "Alarms", "Trends");
+    }
+
+    [Fact]
+    public void Docking_SavedLayoutCannotBeShown_OneLineInTheStatusBarAndTheLog()
+    {
+        _shell.Docking.ResetAfterFailure("Cannot set Owner property to a Window that has not been shown previously.");
+
+        _shell.StatusLine.Text.Should().Be("The saved window layout could not be shown (Cannot set Owner property to a Window that has not been shown previously.); the default layout is used.");
+        _shell.StatusLine.IsError.Should().BeFalse("the panel goes on with the default layout");
+        _panel.Log.Messages.Should().Contain(_shell.StatusLine.Text);
+        _shell.Docking.Capture().Panes.Should().Equal(_shell.Docking.DefaultLayout.Panes);
     }
 
     public async ValueTask DisposeAsync()

@@ -137,6 +137,45 @@ public sealed class LinkStepViewModelTests
         transport.AssertComplete();
     }
 
+    [Fact]
+    public async Task TestConnection_PortHangs_EndsByItselfAfterTheLinksLongestTest()
+    {
+        var clock = new ManualTimeProvider();
+        var link = new ProjectWizardViewModel(_tester, new FakePortCatalog(), clock).LinkStep;
+        _tester.Hangs = true;
+        var longest = LinkConnectionTester.LongestTest(new SerialSettings { PortName = "COM3" }, new Station(2));
+
+        var test = link.TestConnectionCommand.ExecuteAsync(null);
+        link.TestResult.Should().Be($"{Where}: asking... (at most {Math.Ceiling(longest.TotalSeconds):0} s)");
+        clock.Advance(longest - TimeSpan.FromMilliseconds(1));
+        test.IsCompleted.Should().BeFalse();
+        clock.Advance(TimeSpan.FromMilliseconds(1));
+        await test.Guarded();
+
+        link.TestSucceeded.Should().BeFalse();
+        link.TestResult.Should().StartWith($"{Where}: nothing came back within {Math.Ceiling(longest.TotalSeconds):0} s, longer than the link itself waits");
+        _tester.ToldToStop.Should().BeTrue();
+        longest.Should().BeLessThan(TimeSpan.FromSeconds(5), "9600 baud over a cable: two seconds to open the port and four IDENTIFY attempts");
+    }
+
+    [Fact]
+    public async Task TestConnection_Cancelled_EndsAtOnceAndSaysSo()
+    {
+        var wizard = Wizard();
+        var link = wizard.LinkStep;
+        _tester.Hangs = true;
+
+        var test = link.TestConnectionCommand.ExecuteAsync(null);
+        link.TestConnectionCancelCommand.CanExecute(null).Should().BeTrue("Stop test is offered while the test runs");
+        wizard.Close();
+        await test.Guarded();
+
+        link.TestResult.Should().Be($"{Where}: test cancelled.");
+        link.TestSucceeded.Should().BeNull();
+        _tester.ToldToStop.Should().BeTrue();
+        link.TestConnectionCommand.IsRunning.Should().BeFalse();
+    }
+
     private ProjectWizardViewModel Wizard(IConnectionTester? tester = null) => new(tester ?? _tester, new FakePortCatalog());
 
     private static IdentifyResponse Identify(CpuModel model, byte smb6) =>

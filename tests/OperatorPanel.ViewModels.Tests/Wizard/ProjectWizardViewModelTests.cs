@@ -167,6 +167,33 @@ public sealed class ProjectWizardViewModelTests
         wizard.MemoryStep.Cells[0].Error.Should().Be("symbol 'output_0_0' is already used");
     }
 
+    [Fact]
+    public void NewWizard_Cpu226Chosen_TheStarterIoListFollowsTheCpu()
+    {
+        var wizard = NewWizard();
+        wizard.IoStep.Inputs[^1].Address.Should().Be("I1.5", "a new project starts with a CPU 224's points");
+
+        wizard.CpuStep.Cpu = CpuProfiles.For(CpuModel.Cpu226);
+
+        wizard.IoStep.Inputs.Should().HaveCount(24);
+        wizard.IoStep.Inputs[^1].Address.Should().Be("I2.7");
+        wizard.IoStep.Outputs.Should().HaveCount(16);
+        wizard.IoStep.Outputs[^1].Address.Should().Be("Q1.7");
+        wizard.IoStep.Outputs[^1].Symbol.Should().Be("Output_1_7");
+    }
+
+    [Fact]
+    public void NewWizard_ListEditedThenCpuChanged_KeepsTheUsersList()
+    {
+        var wizard = NewWizard();
+        wizard.IoStep.Inputs[0].Symbol = "StartButton";
+
+        wizard.CpuStep.Cpu = CpuProfiles.For(CpuModel.Cpu226);
+
+        wizard.IoStep.Inputs.Should().HaveCount(14, "the user's table is theirs; Fill the CPU's own points replaces it on request");
+        wizard.IoStep.Inputs[0].Symbol.Should().Be("StartButton");
+    }
+
     internal static ProjectWizardViewModel NewWizard() => new(new FakeConnectionTester(), new FakePortCatalog());
 
     private static void Next(ProjectWizardViewModel wizard)

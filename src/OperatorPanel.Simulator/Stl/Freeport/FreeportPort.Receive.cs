@@ -48,11 +48,18 @@ public sealed partial class FreeportPort
         }
     }
 
-    private ReceivedCharacter? PeekCharacter() => _input.Next(Line, _readyAt);
+    /// <summary>The receiver decodes at the Freeport settings, or at the PPI line while the port speaks PPI.</summary>
+    private ReceivedCharacter? PeekCharacter() => _input.Next(!IsFreeport && _ppi is not null ? _ppi.Settings.Line : Line, _readyAt);
 
     private void TakeCharacter(ReceivedCharacter character, ICollection<StlEvent> raised)
     {
         _readyAt = character.ReadyAt;
+        if (!IsFreeport && _ppi is not null)
+        {
+            TakePpiCharacter(character);
+            return;
+        }
+
         if (!IsFreeport)
         {
             LostCharacters += character.IsBreak ? 0 : 1;

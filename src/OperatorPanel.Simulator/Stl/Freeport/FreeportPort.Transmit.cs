@@ -58,7 +58,7 @@ public sealed partial class FreeportPort
         var transmission = _transmission!;
         var at = transmission.NextAt;
         var burst = transmission.Burst;
-        _transmitted.Add(burst.IsBreak ? new WireCharacter(0, at, IsBreak: true) : new WireCharacter(burst[transmission.Sent], at));
+        _transmitted.Add(burst.IsBreak ? new WireCharacter(0, at, IsBreak: true) : new WireCharacter(burst[transmission.Sent], at, IsPpi: transmission.IsPpi));
         if (!transmission.IsLast)
         {
             transmission.Sent++;
@@ -66,8 +66,11 @@ public sealed partial class FreeportPort
         }
 
         _transmission = null;
-        SetTransmitterIdle(true);
-        raised.Add(new StlEvent(_registers.TransmitCompleteEvent, at));
+        if (!transmission.IsPpi)
+        {
+            SetTransmitterIdle(true);
+            raised.Add(new StlEvent(_registers.TransmitCompleteEvent, at));
+        }
     }
 
     /// <summary>SM4.5 (port 0) / SM4.6 (port 1): transmitter idle (seed 002, Table C-5).</summary>

@@ -172,6 +172,11 @@ public sealed partial class FreeportPort : IStlPort
             return false;
         }
 
+        if (!IsFreeport)
+        {
+            _ppiReader.Reset();
+        }
+
         IsFreeport = true;
         Line = line;
         return true;
@@ -181,8 +186,12 @@ public sealed partial class FreeportPort : IStlPort
     {
         IsFreeport = false;
         _receive = null;
-        _transmission?.Burst.DropFrom(_now);
-        _transmission = null;
+        if (_transmission is { IsPpi: false } transmission)
+        {
+            transmission.Burst.DropFrom(_now);
+            _transmission = null;
+        }
+
         SetTransmitterIdle(true);
     }
 }

@@ -8,7 +8,7 @@ namespace OperatorPanel.Simulator.Stl.Run;
 
 /// <summary>
 /// A value put into the PLC during a run: <c>ADDR=VALUE</c> at the start, <c>ADDR=VALUE@TIME</c> at a simulated time
-/// (250ms, 2s, 1.5s). I goes to the field inputs (the program sees it at its next scan); Q, M, V, SM, S and AIW are
+/// (250ms, 2s, 1.5s, 10m, 1h). I goes to the field inputs (the program sees it at its next scan); Q, M, V, SM, S and AIW are
 /// written into memory as a programming device would. A value of a double word may be a real (VD0=1.5).
 /// </summary>
 public sealed record StlSetting(PlcAddress Address, uint Value, TimeSpan At)
@@ -46,7 +46,7 @@ public sealed record StlSetting(PlcAddress Address, uint Value, TimeSpan At)
 
         if (valueAndTime.Length == 2 && !TryParseTime(valueAndTime[1], out at))
         {
-            error = $"'{text}': '{valueAndTime[1]}' is not a time (write 250ms, 2s or 1.5s)";
+            error = $"'{text}': '{valueAndTime[1]}' is not a time (write 250ms, 2s, 1.5s, 10m or 1h)";
             return false;
         }
 
@@ -61,12 +61,14 @@ public sealed record StlSetting(PlcAddress Address, uint Value, TimeSpan At)
         return true;
     }
 
-    /// <summary>250ms, 2s, 1.5s, 0.</summary>
+    /// <summary>250ms, 2s, 1.5s, 10m, 2h, 0: a number and its unit (ms, s, m, h), at most a day.</summary>
     public static bool TryParseTime(string text, out TimeSpan time)
     {
-        var t = text.Trim().ToLowerInvariant();
+        var t = (text ?? string.Empty).Trim().ToLowerInvariant();
         var (digits, scale) = t.EndsWith("ms", StringComparison.Ordinal) ? (t[..^2], 1.0)
             : t.EndsWith('s') ? (t[..^1], 1000.0)
+            : t.EndsWith('m') ? (t[..^1], 60_000.0)
+            : t.EndsWith('h') ? (t[..^1], 3_600_000.0)
             : (t, t == "0" ? 1.0 : double.NaN);
         var ok = double.TryParse(digits, NumberStyles.AllowDecimalPoint, CultureInfo.InvariantCulture, out var number) && !double.IsNaN(scale)
             && number * scale <= TimeSpan.FromDays(1).TotalMilliseconds;

@@ -1,3 +1,6 @@
+using OperatorPanel.Simulator.Stl;
+using OperatorPanel.Simulator.Stl.Run;
+
 namespace OperatorPanel.Simulator.Tests.Stl.Corpus;
 
 /// <summary>
@@ -129,4 +132,21 @@ public sealed class TimerCorpusTests
         run.Value("VW2").Should().Be(6, "100 ms: one scan at each preset of 300 ms");
         run.Value("VW6").Should().Be(6, "10 ms reset by Q0.3: one scan each 300 ms");
     }
+
+    [Fact]
+    public void TwentyTimers_ScanTakesThePublishedTimerTime()
+    {
+        var run = new StlRun(CorpusProgram.Load("TimerScanTime.awl"));
+        var scans = new List<StlScan>();
+        run.Plc.ScanCompleted += (_, scan) => scans.Add(scan);
+        run.Run(TimeSpan.FromSeconds(2.5), [Setting("I0.0=1")]);
+
+        // C233-01 Tables A-2..A-4: timer/counter 50-64 us, the high end taken; LD and = 0.37 us; 250 us housekeeping.
+        scans.Should().AllSatisfy(s => s.Busy.Should().Be(TimeSpan.FromTicks(((20 * (370 + 64_000)) + (2 * 370) + 250_000) / 100)));
+        run.Value("SMW22").Should().Be(1, "1.54 ms: the scan time in ms (the 400 us these timers took before made 8 ms)");
+        run.Value("Q0.0").Should().Be(1, "T56 reached its 2 s");
+    }
+
+    private static StlSetting Setting(string text) =>
+        StlSetting.TryParse(text, CorpusProgram.Cpu224, out var setting, out var error) ? setting : throw new ArgumentException(error);
 }

@@ -17,11 +17,21 @@ internal static class UserProgram
     /// <summary>A file beside this source file (the folder of UserProgram.cs, whoever calls).</summary>
     public static string Read(string name) => File.ReadAllText(Path.Combine(Folder(), name));
 
-    /// <summary>OB1 with one network of the given instruction lines, then the given extra blocks; CRLF line ends.</summary>
-    public static string Ob1(params string[] instructions) => WithBlocks(instructions, []);
+    /// <summary>
+    /// OB1 with one network of the given instruction lines, then an interrupt routine for each name an ATCH of them
+    /// attaches (INT0, INT1 ... in order: Micro/WIN refuses an ATCH to a routine the file does not hold); CRLF line ends.
+    /// </summary>
+    public static string Ob1(params string[] instructions) => WithBlocks(instructions, AttachedRoutines(instructions));
 
     public static string WithBlocks(string[] instructions, string[] blocks) =>
         string.Concat(Header.Concat(instructions).Append("END_ORGANIZATION_BLOCK").Concat(blocks).Select(l => l + "\r\n"));
+
+    private static string[] AttachedRoutines(string[] instructions) =>
+    [
+        .. instructions.Where(i => i.StartsWith("ATCH", StringComparison.Ordinal))
+            .Select(i => i[4..].Split(',')[0].Trim()).Distinct()
+            .SelectMany((name, n) => (string[])[$"INTERRUPT_BLOCK {(name.StartsWith("INT", StringComparison.Ordinal) && name.Length <= 6 ? "INT_" + name[3..] : name)}:INT{(name.StartsWith("INT", StringComparison.Ordinal) && name.Length <= 6 ? name[3..] : n)}", "BEGIN", "Network 1", "END_INTERRUPT_BLOCK"]),
+    ];
 
     private static string Folder([CallerFilePath] string self = "") => Path.GetDirectoryName(self)!;
 

@@ -1,0 +1,205 @@
+using System.Collections.Concurrent;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Stop;
+using OperatorPanel.Core.Writes;
+using Serilog;
+
+namespace OperatorPanel.Core.Line;
+
+/// <summary>
+/// One bus: one serial port and the stations on it, while connected. The one owner of everything on that wire: the
+/// transport (through its <see cref="PlcLink"/>), the station states, what each station reported in IDENTIFY, and the
+/// polling loop (Polling/PollingEngine) running on the link. Polling, writes, IDENTIFY and STOP all pass through its one
+/// queue (Polling/BusQueue, S7NetPlus's TaskQueue idea), which the loop drains between two of its exchanges: one request
+/// is on the wire at a time by that one mechanism. Front ends reach a bus through the line (<see cref="ProjectLine"/>) or,
+/// for one verb of <c>opanel</c>, directly. Disposing stops the loop (after its exchange on the wire) and closes the port.
+/// </summary>
+public sealed class Bus : IAsyncDisposable
+{
+    private readonly PlcLink _link;
+    private readonly BusSettings _settings;
+    private readonly TimeProvider _time;
+    private readonly ILogger _logger;
+    private readonly StationTracker _stations;
+    private readonly BusQueue _queue;
+    private readonly ConcurrentDictionary<Station, IdentifyResponse> _identities = new();
+    private readonly ConcurrentDictionary<Station, LinkReply> _lastIdentify = new();
+    private readonly Action<IReadOnlyList<ValueChange>> _onChanges;
+    private PollingEngine _engine;
+    private CancellationTokenSource _stop = new();
+    private Task _loop = Task.CompletedTask;
+    private bool _polling;
+
+    private Bus(PlcLink link, PollPlan plan, BusSettings settings, TimeProvider time, ILogger logger, Action<IReadOnlyList<ValueChange>>? onChanges)
+    {
+        (_link, _settings, _time, _logger) = (link, settings, time, logger);
+        _stations = new StationTracker(time, logger.ForContext<PollingEngine>());
+        _queue = new BusQueue(logger.ForContext<Bus>());
+        _onChanges = onChanges ?? (_ => { });
+        _engine = NewEngine(plan, settings.Mode);
+        StartLoop();
+    }
+
+    /// <summary>
+    /// Starts polling <paramref name="plan"/> on <paramref name="link"/>, which the bus owns from now on.
+    /// <paramref name="onChanges"/> hears, on the loop's thread, the changed values after every cycle and every job, an
+    /// empty batch included (Line/ProjectLine routes them to the subscribers of each address and raises StateChanged).
+    /// </summary>
+    public static Bus Start(PlcLink link, PollPlan plan, BusSettings settings, TimeProvider? time = null, ILogger? logger = null, Action<IReadOnlyList<ValueChange>>? onChanges = null)
+    {
+        ArgumentNullException.ThrowIfNull(link);
+        ArgumentNullException.ThrowIfNull(plan);
+        ArgumentNullException.ThrowIfNull(settings);
+        return new Bus(link, plan, settings, time ?? TimeProvider.System, logger ?? Serilog.Core.Logger.None, onChanges);
+    }
+
+    /// <summary>
+    /// A bus refreshing on demand with plain READs: what one verb of <c>opanel</c> (read, write, identify, stop) or the
+    /// wizard's connection test needs (it refreshes once or twice, so registering read lists would only cost time).
+    /// </summary>
+    public static Bus OnDemand(PlcLink link, PollPlan plan, TimeProvider? time = null, ILogger? logger = null) =>
+        Start(link, plan, BusSettings.OnDemand, time, logger);
+
+    public string PortName => _link.PortName;
+
+    public PollPlan Plan => Volatile.Read(ref _engine).Plan;
+
+    /// <summary>Continuous or on demand; switches the loop at once, and a new plan keeps it.</summary>
+    public RefreshMode Mode
+    {
+        get => Volatile.Read(ref _engine).Mode;
+        set => Volatile.Read(ref _engine).Mode = value;
+    }
+
+    /// <summary>One full cycle: on demand the only way values change; in continuous mode the next regular cycle.</summary>
+    public Task<PollResult> RefreshAsync(CancellationToken cancellationToken = default) =>
+        Volatile.Read(ref _engine).RequestRefreshAsync(cancellationToken);
+
+    /// <summary>A write through the queue, ahead of the next exchange; the outcome is the PLC's read-back, never the request.</summary>
+    public Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default) =>
+        Volatile.Read(ref _engine).WriteAsync(request, cancellationToken);
+
+    /// <summary>
+    /// IDENTIFY through the queue. What the reply says (READ CHANGES copies, FEATURES bit 2) chooses the station's
+    /// readers from the next exchange on, and stays known to a new plan. A link failure is the reply's value.
+    /// </summary>
+    public Task<LinkReply> IdentifyAsync(Station station, CancellationToken cancellationToken = default) =>
+        ExchangeAsync(new IdentifyRequest(station), cancellationToken);
+
+    /// <summary>
+    /// STOP through the queue, as one job (<see cref="RemoteStop"/>: IDENTIFY, 07 once, IDENTIFY), so no poll comes
+    /// between. A STOP that left the station silent shows it as stopped by the panel instead of offline.
+    /// </summary>
+    public Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default) =>
+        _queue.Enqueue($"STOP of {station}", ct => StopNowAsync(station, ct), () => new StopOutcome.NotSent(station, "disconnected before STOP was sent"), cancellationToken);
+
+    /// <summary>What the station said in its last answered IDENTIFY on this bus; null before one answered.</summary>
+    public IdentifyResponse? IdentityOf(Station station) => _identities.GetValueOrDefault(station);
+
+    /// <summary>What the station's last IDENTIFY brought: its reply (a refusal included) or the failure; null before any.</summary>
+    public LinkReply? LastIdentifyOf(Station station) => _lastIdentify.GetValueOrDefault(station);
+
+    /// <summary>The station's state on this bus; for a silent station resting between tries, when it is tried next.</summary>
+    public StationStatus StatusOf(Station station) => Volatile.Read(ref _engine).GetStationStatus(station);
+
+    public LinkStatistics StatisticsFor(Station station) => _link.StatisticsFor(station);
+
+    /// <summary>The latest value of a watched address; false when the plan does not watch it.</summary>
+    public bool TryGetValue(Station station, PlcAddress address, out PolledValue value) =>
+        Volatile.Read(ref _engine).TryGetValue(station, address, out value);
+
+    /// <summary>
+    /// Polls another plan (an edited watch list) on the same port: the loop stops after its exchange on the wire and
+    /// starts again on the new plan; the link, its counters, the station states and what IDENTIFY said carry over.
+    /// </summary>
+    public async Task WatchAsync(PollPlan plan)
+    {
+        ArgumentNullException.ThrowIfNull(plan);
+        var mode = Mode;
+        await StopPollingAsync().ConfigureAwait(false);
+        Volatile.Write(ref _engine, NewEngine(plan, mode));
+        _stop = new CancellationTokenSource();
+        StartLoop();
+    }
+
+    /// <summary>
+    /// Stops the loop after its exchange on the wire; queued jobs that never started get their abandoned outcome. The
+    /// port stays open until <see cref="DisposeAsync"/> (the line stops what runs beside its ports in between).
+    /// </summary>
+    public async Task StopPollingAsync()
+    {
+        if (!_polling)
+        {
+            return;
+        }
+
+        _polling = false;
+        await _stop.CancelAsync().ConfigureAwait(false);
+        await _loop.ConfigureAwait(false);
+        _stop.Dispose();
+    }
+
+    public async ValueTask DisposeAsync()
+    {
+        await StopPollingAsync().ConfigureAwait(false);
+        await _link.DisposeAsync().ConfigureAwait(false);
+    }
+
+    /// <summary>One request through the queue, for IDENTIFY and for tests that play another client of the bus.</summary>
+    internal Task<LinkReply> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken = default) =>
+        _queue.Enqueue($"{request.Command} to {request.Station}", ct => ExchangeNowAsync(request, ct), abandoned: null, cancellationToken);
+
+    private async Task<LinkReply> ExchangeNowAsync(PlcRequest request, CancellationToken cancellationToken)
+    {
+        var reply = await _link.ExchangeAsync(request, cancellationToken).ConfigureAwait(false);
+        if (request is IdentifyRequest)
+        {
+            _lastIdentify[request.Station] = reply;
+        }
+
+        if (reply.Response is IdentifyResponse identity)
+        {
+            _identities[identity.Station] = identity;
+            Volatile.Read(ref _engine).NoteIdentity(identity);
+        }
+
+        return reply;
+    }
+
+    private async Task<StopOutcome> StopNowAsync(Station station, CancellationToken cancellationToken)
+    {
+        var outcome = await new RemoteStop(_link, _logger).StopAsync(station, cancellationToken).ConfigureAwait(false);
+        if (outcome.IsStopped)
+        {
+            Volatile.Read(ref _engine).NoteStoppedByPanel(station);
+        }
+
+        return outcome;
+    }
+
+    private PollingEngine NewEngine(PollPlan plan, RefreshMode mode)
+    {
+        var engine = new PollingEngine(_link, plan, _stations, _queue, _time, _logger, _settings.Polling, _onChanges)
+        {
+            Mode = mode,
+            MinimumPeriod = _settings.MinimumPeriod,
+        };
+        foreach (var identity in _identities.Values)
+        {
+            engine.NoteIdentity(identity);
+        }
+
+        return engine;
+    }
+
+    private void StartLoop()
+    {
+        var engine = Volatile.Read(ref _engine);
+        var stop = _stop.Token;
+        _polling = true;
+        _loop = Task.Run(() => engine.RunAsync(stop), CancellationToken.None);
+    }
+}

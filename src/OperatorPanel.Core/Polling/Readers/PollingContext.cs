@@ -1,0 +1,7 @@
+using OperatorPanel.Core.Link;
+using Serilog;
+
+namespace OperatorPanel.Core.Polling.Readers;
+
+/// <summary>What the readers and the writer of one bus share: its plan, its link, its station states and its clock.</summary>
+internal sealed record PollingContext(PollPlan Plan, IPlcLink Link, FrameJudge Judge, PollingOptions Options, TimeProvider Time, ILogger Logger);
