@@ -61,6 +61,7 @@ public sealed class ShellHistoryTests : IAsyncDisposable
             (AuditStep.Intent, AuditAction.Write, "VW10", "16#0000", "16#002A", null, _panel.Session.User, "COM7"),
             (AuditStep.Outcome, AuditAction.Write, "VW10", "16#0000", "16#002A", "confirmed", _panel.Session.User, "COM7"));
         audit[0].Id.Should().Be(audit[1].Id, "an intent and its outcome share the action's id");
+        audit[0].Symbol.Should().Be("Speed", "the project's name for VW10");
     }
 
     [Fact]
