@@ -349,7 +349,8 @@ app_pid=""
 
 begin "start the panel again showing its Trends pane"
 # The layout the panel saved, changed as a user leaves it: Inputs docked again at the left, the Trends tab in front of
-# Memory in the centre (the first tab by order is the one shown).
+# Memory in the centre (the first tab by order is the one shown), the Alarms pane below it made lower so the trend's
+# lanes have room.
 python3 - "$layout" <<'PY' || fail "layout.json could not be set to show the Trends pane: $(cat "$layout")"
 import json, sys
 path = sys.argv[1]
@@ -359,6 +360,7 @@ panes["Inputs"].update(IsVisible=True, Placement="Left")
 panes["Memory"]["Order"] = 1
 panes["Diagnostics"].update(IsVisible=False, Order=2)
 panes["Trends"].update(IsVisible=True, Placement="Center", Order=0)
+panes["Alarms"]["DockedSize"] = 200
 json.dump(layout, open(path, "w"))
 PY
 trends_before=$(log_count "Trend drawn:")
