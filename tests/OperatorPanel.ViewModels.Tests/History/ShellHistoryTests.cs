@@ -65,6 +65,26 @@ public sealed class ShellHistoryTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task Save_ProjectUnchangedInWhatIsRecorded_KeepsTheRecordingGoing()
+    {
+        var path = await SavedProjectAsync();
+        await _shell.OpenFileAsync(path);
+        await _panel.ConnectAsync();
+        _panel.Plc.Memory.WriteWord(ProtocolArea.V, 10, 1234);
+        await _panel.RefreshAsync();
+        var historian = _shell.History.Current!;
+        await historian.FlushAsync();
+        _panel.Clock.Advance(TimeSpan.FromSeconds(1));
+
+        await _shell.SaveCommand.ExecuteAsync(null).Guarded();
+        await historian.FlushAsync();
+
+        _shell.History.Current.Should().BeSameAs(historian);
+        var speed = historian.Reader.Read([(PanelFixture.Filler, Speed)], DateTimeOffset.UnixEpoch, _panel.Clock.GetUtcNow().AddMinutes(1)).Single();
+        speed.Samples.Select(s => s.Stored).Should().Equal([null, 1234L], "a restarted recording would store the unchanged value again at the save");
+    }
+
+    [Fact]
     public async Task Open_OldAlarmHistoryFileBesideTheProject_IsImportedIntoTheJournalOnce()
     {
         var path = _folder.File("filler.opproj");
