@@ -5,7 +5,8 @@
 # checks the installed files, registry, shortcut and file association, starts the installed panel with --demo and
 # waits until its log says it showed a live value change, screenshots it, opens the project wizard and Generate PLC
 # code and screenshots them, floats a pane, closes the panel with the pane floating, starts it again and sees the
-# window and the floating pane, closes the floating pane with its own close button, opens a project the way a
+# window and the floating pane, closes the floating pane with its own close button, starts it again with its Trends
+# pane in front and screenshots a live demo trend drawn from the demo's history, opens a project the way a
 # double-click does (ShellExecute through the .opproj association) over a corrupt layout file, upgrades to a build
 # with a higher version, checks that the older MSI is then refused, uninstalls, and checks that nothing of the panel is
 # left while the user's project and logs are. At every step the panel's log must hold no WPF binding error (the panel
@@ -342,6 +343,49 @@ screenshot "$art/pane-closed.png"
 panel_clean
 
 begin "close the panel"
+close_panel
+wait_for 30 bash -c "! kill -0 $app_pid 2>/dev/null" || fail "the panel process $app_pid is still running after its log said closed"
+app_pid=""
+
+begin "start the panel again showing its Trends pane"
+# The layout the panel saved, changed as a user leaves it: Inputs docked again at the left, the Trends tab in front of
+# Memory in the centre (the first tab by order is the one shown), the Alarms pane below it made lower so the trend's
+# lanes have room.
+python3 - "$layout" <<'PY' || fail "layout.json could not be set to show the Trends pane: $(cat "$layout")"
+import json, sys
+path = sys.argv[1]
+layout = json.load(open(path))
+panes = {p["ContentId"]: p for p in layout["Panes"]}
+panes["Inputs"].update(IsVisible=True, Placement="Left")
+panes["Memory"]["Order"] = 1
+panes["Diagnostics"].update(IsVisible=False, Order=2)
+panes["Trends"].update(IsVisible=True, Placement="Center", Order=0)
+panes["Alarms"]["DockedSize"] = 200
+json.dump(layout, open(path, "w"))
+PY
+trends_before=$(log_count "Trend drawn:")
+wine 'C:\Program Files\Operator Panel\OperatorPanel.exe' --demo >"$work/panel-trends.out" 2>&1 &
+app_pid=$!
+wait_for 240 log_count_above "Trend drawn:" "$trends_before" || fail "the Trends pane drew no live trend within 240 s (app alive: $(app_alive && echo yes || echo no); $(tail -5 "$work/panel-trends.out"))"
+grep -h -F "Trend drawn:" "$logs"/*.log | tail -n 1
+
+begin "screenshot the live trend"
+# Redrawn every second from the demo's history: pictures until three in a row differ (the trend moves), at most 90 s.
+shot="$art/trends-demo.png"
+screenshot "$work/a.png"
+changes=0
+for _ in $(seq 1 30); do
+  sleep 3
+  screenshot "$work/b.png"
+  if cmp -s "$work/a.png" "$work/b.png"; then changes=0; else changes=$((changes + 1)); fi
+  mv "$work/b.png" "$work/a.png"
+  [ "$changes" -lt 2 ] || break
+done
+cp "$work/a.png" "$shot"
+[ "$changes" -ge 2 ] || fail "the Trends pane did not change for 90 s after the log said it drew (see $shot)"
+[ "$(colours "$shot")" -gt 100 ] || fail "the Trends screenshot is nearly blank ($(colours "$shot") colours)"
+ls "$profile_unix/AppData/Local/OperatorPanel/history/"*-demo.history.db >/dev/null 2>&1 || fail "no demo history database in the user's history folder"
+panel_clean
 close_panel
 wait_for 30 bash -c "! kill -0 $app_pid 2>/dev/null" || fail "the panel process $app_pid is still running after its log said closed"
 app_pid=""

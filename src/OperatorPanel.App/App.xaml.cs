@@ -6,6 +6,7 @@ using OperatorPanel.App.Services;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Historian;
 using OperatorPanel.ViewModels.Services;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Shell;
@@ -42,6 +43,7 @@ public partial class App : Application
             shell = _services.GetRequiredService<ShellViewModel>();
             shell.Docking.Load();
             _services.GetRequiredService<LiveValueWitness>();
+            _services.GetRequiredService<TrendWitness>();
             var window = new MainWindow(shell);
             MainWindow = window;
             window.Closed += OnMainWindowClosed;
@@ -117,6 +119,7 @@ public partial class App : Application
         services.AddSingleton(sp => new PanelSession(
             ShellViewModel.NoProject, sp.GetRequiredService<IUiDispatcher>(), TimeProvider.System, sp.GetRequiredService<ILogger>(),
             WriteJournal.In(Path.Combine(UserFolder, "logs"))));
+        services.AddSingleton(sp => new WpfAlarmSound(sp.GetRequiredService<ILogger>()));
         services.AddSingleton(sp =>
         {
             var presenter = new WizardPresenter();
@@ -134,7 +137,10 @@ public partial class App : Application
                 ports,
                 Path.Combine(UserFolder, "layout.json"),
                 Path.Combine(AppContext.BaseDirectory, "README.txt"),
-                new ShellDocumentLauncher());
+                new ShellDocumentLauncher(),
+                HistoryFolder.Default,
+                sp.GetRequiredService<WpfAlarmSound>(),
+                Path.Combine(UserFolder, "print"));
         });
         services.AddSingleton(sp => new ShellViewModel(
             sp.GetRequiredService<PanelSession>(),
@@ -143,6 +149,7 @@ public partial class App : Application
             TimeProvider.System,
             sp.GetRequiredService<ILogger>()));
         services.AddSingleton(sp => new LiveValueWitness(sp.GetRequiredService<ShellViewModel>().Memory, Dispatcher, sp.GetRequiredService<ILogger>()));
+        services.AddSingleton(sp => new TrendWitness(sp.GetRequiredService<ShellViewModel>().Trends, Dispatcher, sp.GetRequiredService<ILogger>()));
         return services.BuildServiceProvider();
     }
 

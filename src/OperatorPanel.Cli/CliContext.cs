@@ -3,6 +3,7 @@ using System.Text.Json;
 using System.Text.Json.Serialization;
 using OperatorPanel.Cli.Logging;
 using OperatorPanel.Core.Audit;
+using OperatorPanel.Historian;
 using Serilog;
 
 namespace OperatorPanel.Cli;
@@ -26,6 +27,9 @@ internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, I
         PropertyNamingPolicy = JsonNamingPolicy.CamelCase,
         Converters = { new JsonStringEnumConverter() },
     };
+
+    /// <summary>Where the projects' history databases are (--history-dir, default the user's local application data folder).</summary>
+    public HistoryFolder History { get; init; } = HistoryFolder.Default;
 
     /// <summary>True when stdout is the console itself, not a pipe, a file or a test's writer: live views redraw in place.</summary>
     public bool IsTerminal { get; init; }

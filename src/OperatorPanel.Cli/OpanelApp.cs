@@ -2,6 +2,7 @@ using System.CommandLine;
 using OperatorPanel.Cli.Commands;
 using OperatorPanel.Cli.Logging;
 using OperatorPanel.Core.Audit;
+using OperatorPanel.Historian;
 using Serilog.Events;
 
 namespace OperatorPanel.Cli;
@@ -38,6 +39,8 @@ internal static class OpanelApp
         yield return IdentifyCommand.Create(context);
         yield return SimulateCommand.Create(context);
         yield return WatchCommand.Create(context);
+        yield return HistoryCommand.Create(context);
+        yield return TrendCommand.Create(context);
         yield return BenchCommand.Create(context);
         yield return GenerateCommand.Create(context);
         yield return StlCommand.Create(context);
@@ -45,7 +48,7 @@ internal static class OpanelApp
     }
 }
 
-/// <summary>Options every verb takes: --json, and the log levels and folder.</summary>
+/// <summary>Options every verb takes: --json, the log levels and folder, and the history folder.</summary>
 internal sealed class GlobalOptions
 {
     private readonly Option<bool> _json = new("--json") { Description = "Print machine-readable JSON on stdout", Recursive = true };
@@ -72,8 +75,15 @@ internal sealed class GlobalOptions
         Recursive = true,
     };
 
+    private readonly Option<string?> _historyDir = new("--history-dir")
+    {
+        Description = "Folder of the projects' history databases (default: OperatorPanel/history in the user's local application data folder)",
+        Recursive = true,
+    };
+
     public void AddTo(RootCommand root)
     {
+        root.Options.Add(_historyDir);
         root.Options.Add(_json);
         root.Options.Add(_logLevel);
         root.Options.Add(_consoleLevel);
@@ -87,6 +97,7 @@ internal sealed class GlobalOptions
         {
             IsTerminal = ReferenceEquals(output, Console.Out) && !Console.IsOutputRedirected,
             Journal = WriteJournal.In(parse.GetValue(_logDir) ?? CliLogging.DefaultLogFolder),
+            History = parse.GetValue(_historyDir) is { } folder ? new HistoryFolder(folder) : HistoryFolder.Default,
         };
     }
 }

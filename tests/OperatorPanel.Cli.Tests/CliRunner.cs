@@ -8,7 +8,9 @@ internal static class CliRunner
         using var output = new StringWriter();
         using var error = new StringWriter();
         var logDir = Path.Combine(Path.GetTempPath(), "opanel-tests-logs");
-        var exit = OpanelApp.Run([.. args, "--log-dir", logDir], output, error);
+        // Never the user's own history folder: a test that cares names its own.
+        string[] history = args.Contains("--history-dir") ? [] : ["--history-dir", Path.Combine(Path.GetTempPath(), "opanel-tests-history")];
+        var exit = OpanelApp.Run([.. args, "--log-dir", logDir, .. history], output, error);
         return (exit, output.ToString(), error.ToString());
     }
 }

@@ -7,7 +7,7 @@ namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
 /// <c>opanel bench link [--radio] [--scan-ms M] [--air-baud B] [--cycles N]</c>, <c>opanel bench link --ppi [--baud 9600|19200|187500]</c>
-/// (and <c>bench stl</c>, <c>bench plan</c>):
+/// (and <c>bench stl</c>, <c>bench plan</c>, <c>bench history</c>):
 /// the characters of a full refresh of the reference line against one item per request and the hex bound, the
 /// MODELLED time of a steady and an idle refresh on the PC/PPI cable or (--radio) the radio modules, the targets
 /// judged met or NOT MET, then the round trip MEASURED over a socat pty; the text ends with one summary line.
@@ -30,6 +30,7 @@ internal static class BenchCommand
         command.Subcommands.Add(CreateLink(context));
         command.Subcommands.Add(StlBenchCommand.Create(context));
         command.Subcommands.Add(PlanBenchCommand.Create(context));
+        command.Subcommands.Add(HistoryBenchCommand.Create(context));
         return command;
     }
 

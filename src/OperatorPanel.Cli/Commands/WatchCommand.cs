@@ -11,7 +11,8 @@ namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
 /// <c>opanel watch PROJECT [--demo]</c>: the project's stations live in the terminal, over the project's serial ports or
-/// an in-process demo line that simulates every station with its own CPU and the demo process.
+/// an in-process demo line that simulates every station with its own CPU and the demo process; every recorded value goes into the
+/// project's history database from the first cycle (the demo line's into a database of its own).
 /// </summary>
 internal static class WatchCommand
 {
@@ -31,6 +32,7 @@ internal static class WatchCommand
             "Show a project's stations live: link state and counters, inputs and outputs as lamps, tags, active alarms. "
             + "Drawn in place on a terminal, fitted to its size (long lines cut; lamps and tags give way on a low terminal, the title, "
             + "each station's state and its alarms stay); appends a snapshot per refresh (--once, --cycles) or per second elsewhere; --json prints JSON lines. "
+            + "Records the values into the project's history (the demo line's into its own) from the first cycle: opanel history prints it. "
             + "Exit codes: 0 done, 1 project problems or bad option, 2 every station offline at the end")
         {
             file, demo, model, once, cycles, duration,
@@ -52,25 +54,47 @@ internal static class WatchCommand
                 return cli.Fail(ExitCodes.BadInput, "--cycles and --duration must be positive");
             }
 
-            var (opened, openError) = await WatchSession.TryOpenAsync(load.Project, parse.GetValue(demo), parse.GetValue(model), cli.Log, cli.Journal);
+            await using var historian = Historian.Historian.Open(cli.History.DatabaseFor(path, parse.GetValue(demo)), load.Project, TimeProvider.System, cli.Log, "opanel watch");
+            var (opened, openError) = await WatchSession.TryOpenAsync(load.Project, parse.GetValue(demo), parse.GetValue(model), cli.Log, cli.Journal, historian);
             if (opened is null)
             {
                 return cli.Fail(ExitCodes.BadInput, openError ?? "the demo line did not start");
             }
 
-            await using var session = opened;
-            foreach (var cutShort in session.Line.ResolvedAtConnect)
+            WatchSnapshot last;
+            await using (var session = opened)
             {
-                cli.Error.WriteLine("opanel: " + cutShort.Describe());
+                foreach (var cutShort in session.Line.ResolvedAtConnect)
+                {
+                    cli.Error.WriteLine("opanel: " + cutShort.Describe());
+                }
+
+                using var stop = new StopSignals(seconds is { } s ? TimeSpan.FromSeconds(s) : null);
+                last = cli.IsTerminal && !cli.Json
+                    ? await OnTerminalAsync(cli, session, limit, stop.Token)
+                    : await RunAsync(cli, session, limit, screen: null, size: null, stop.Token);
             }
 
-            using var stop = new StopSignals(seconds is { } s ? TimeSpan.FromSeconds(s) : null);
-            var last = cli.IsTerminal && !cli.Json
-                ? await OnTerminalAsync(cli, session, limit, stop.Token)
-                : await RunAsync(cli, session, limit, screen: null, size: null, stop.Token);
+            await historian.FlushAsync();
+            ReportHistory(cli, historian);
             return last.AllOffline ? ExitCodes.LinkFailure : ExitCodes.Ok;
         });
         return command;
+    }
+
+    /// <summary>Where the values went: one line after the text view (the JSON stream stays one object per line), and the log.</summary>
+    private static void ReportHistory(CliContext cli, Historian.Historian historian)
+    {
+        if (historian.Problem is { } problem)
+        {
+            cli.Error.WriteLine($"opanel: history not recorded: {problem}");
+        }
+        else if (!cli.Json)
+        {
+            cli.Out.WriteLine($"history: {historian.Written} rows recorded into {historian.DatabasePath} (opanel history --project ... prints them)");
+        }
+
+        cli.Log.Information("Watch recorded {Rows} history rows into {Path}", historian.Written, historian.DatabasePath);
     }
 
     /// <summary>

@@ -25,6 +25,7 @@ internal sealed class WatchSession : IAsyncDisposable
     private readonly CancellationTokenSource _closing = new();
     private readonly ConcurrentDictionary<Station, string> _handlerChecks = new();
     private Task _identifying = Task.CompletedTask;
+    private IDisposable? _recording;
 
     private WatchSession(ProjectLine line) => Line = line;
 
@@ -40,9 +41,11 @@ internal sealed class WatchSession : IAsyncDisposable
 
     /// <summary>
     /// Opens every bus; false with the reason (and nothing left running) when a demo line cannot start. Writes go on
-    /// record in <paramref name="journal"/>, and on connecting the writes earlier programs left cut short on the ports are settled.
+    /// record in <paramref name="journal"/>, and on connecting the writes earlier programs left cut short on the ports are
+    /// settled. With a <paramref name="historian"/> the line's values are recorded from before the first cycle.
     /// </summary>
-    public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(PanelProject project, bool demo, SimulationModel model, ILogger log, WriteJournal journal)
+    public static async Task<(WatchSession? Session, string? Error)> TryOpenAsync(
+        PanelProject project, bool demo, SimulationModel model, ILogger log, WriteJournal journal, Historian.Historian? historian = null)
     {
         ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector(log);
         var options = new ProjectLineOptions
@@ -52,16 +55,18 @@ internal sealed class WatchSession : IAsyncDisposable
             Journal = journal,
         };
         var line = new ProjectLine(project, options, TimeProvider.System, log);
+        var recording = historian?.RecordLine(project, line, line.StatusOf);
         try
         {
             await line.ConnectAsync(connector);
         }
         catch (InvalidOperationException ex) when (demo)
         {
+            recording?.Dispose();
             return (null, ex.Message);
         }
 
-        var session = new WatchSession(line);
+        var session = new WatchSession(line) { _recording = recording };
         session._identifying = session.IdentifyEveryStationAsync(log, session._closing.Token);
         return (session, null);
     }
@@ -84,6 +89,7 @@ internal sealed class WatchSession : IAsyncDisposable
         }
 
         _closing.Dispose();
+        _recording?.Dispose();
         await Line.DisposeAsync();
     }
 

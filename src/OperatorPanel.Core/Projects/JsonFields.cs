@@ -118,7 +118,7 @@ internal sealed class JsonFields
         return null;
     }
 
-    /// <summary>True when the entry has the property at all (optional properties that change a tag's meaning).</summary>
+    /// <summary>True when the entry has the property at all (optional properties that change a tag's meaning, an optional object read only when present).</summary>
     public bool Has(string name) => _values.ContainsKey(name);
 
     /// <summary>A number, whole or not (a scale, a range end); required. Null when missing or wrong (reported).</summary>
@@ -158,6 +158,32 @@ internal sealed class JsonFields
 
         Wrong(name, "true or false", value);
         return null;
+    }
+
+    /// <summary>A number, whole or not (a deadband of 0.5); optional, <paramref name="fallback"/> when missing.</summary>
+    public double? Number(string name, double fallback) =>
+        TryNullableNumber(name, out var value) ? value ?? fallback : null;
+
+    /// <summary>
+    /// An optional number that may also be written null (both mean "not set": <paramref name="value"/> null); false when
+    /// the property holds anything else, with the problem reported.
+    /// </summary>
+    public bool TryNullableNumber(string name, out double? value)
+    {
+        value = null;
+        if (!TryValue(name, required: false, out var element) || element.ValueKind == JsonValueKind.Null)
+        {
+            return true;
+        }
+
+        if (element.ValueKind != JsonValueKind.Number || !element.TryGetDouble(out var number) || !double.IsFinite(number))
+        {
+            Wrong(name, "a number", element);
+            return false;
+        }
+
+        value = number;
+        return true;
     }
 
     /// <summary>A required nested object.</summary>

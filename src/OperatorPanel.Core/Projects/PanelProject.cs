@@ -9,4 +9,15 @@ namespace OperatorPanel.Core.Projects;
 /// <param name="Name">Shown in the panel's title bar; may be empty.</param>
 /// <param name="Refresh">Continuous or triggered refresh, for every station of the line.</param>
 /// <param name="Stations">One or more PLCs; each checks its own addresses against its own CPU.</param>
-public sealed record PanelProject(string Name, RefreshSettings Refresh, ImmutableArray<ProjectStation> Stations);
+/// <remarks>
+/// <see cref="History"/> and <see cref="AlarmSound"/> ("history" and "alarmSound" in the file, both optional) are init
+/// properties so the projects built in code keep their shape.
+/// </remarks>
+public sealed record PanelProject(string Name, RefreshSettings Refresh, ImmutableArray<ProjectStation> Stations)
+{
+    /// <summary>What the historian records of this project and for how long (docs/historian.md).</summary>
+    public HistorySettings History { get; init; } = HistorySettings.Default;
+
+    /// <summary>The alarm sound of each class repeats until the alarm is acknowledged or silenced; false keeps the panel quiet.</summary>
+    public bool AlarmSound { get; init; } = true;
+}

@@ -25,12 +25,14 @@ internal static class ProjectReader
             return null;
         }
 
-        fields.ReportUnknown("schemaVersion", "name", "refresh", "stations");
+        fields.ReportUnknown("schemaVersion", "name", "refresh", "history", "alarmSound", "stations");
         var name = fields.String("name", fallback: string.Empty);
         var refresh = ReadRefresh(fields.Object("refresh"));
+        var history = HistorySettingsReader.Read(fields);
+        var alarmSound = fields.Bool("alarmSound", fallback: true);
         var stations = StationReader.ReadAll(fields, problems);
-        return problems.Count == 0 && name is not null && refresh is not null && stations is { } list
-            ? new PanelProject(name, refresh, list)
+        return problems.Count == 0 && name is not null && refresh is not null && history is not null && alarmSound is { } sound && stations is { } list
+            ? new PanelProject(name, refresh, list) { History = history, AlarmSound = sound }
             : null;
     }
 

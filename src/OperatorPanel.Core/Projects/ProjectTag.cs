@@ -11,7 +11,8 @@ namespace OperatorPanel.Core.Projects;
 /// <param name="Description">Free comment for the operator; may be empty.</param>
 /// <remarks>
 /// <see cref="Unit"/>, <see cref="Scale"/> and <see cref="Range"/> are optional ("unit", "scale", "min"/"max" in the file)
-/// and init properties, so tags built in code and projects written before them keep their shape. Scale and range are
+/// and init properties, so tags built in code and projects written before them keep their shape; so are
+/// <see cref="Recorded"/> and <see cref="Deadband"/> ("record", "deadband", for the historian). Scale and range are
 /// for numbers (unsigned, signed, float); the value shown, typed and range-checked is the scaled one (<see cref="TagValues"/>).
 /// </remarks>
 public sealed record ProjectTag(string Symbol, PlcAddress Address, DisplayFormat Format, bool Writable, string Description)
@@ -24,4 +25,14 @@ public sealed record ProjectTag(string Symbol, PlcAddress Address, DisplayFormat
 
     /// <summary>What the operator may write, in engineering units; null when the address's width is the only limit.</summary>
     public TagRange? Range { get; init; }
+
+    /// <summary>The historian records the tag (the default); false leaves it out of the history.</summary>
+    public bool Recorded { get; init; } = true;
+
+    /// <summary>
+    /// The historian's deadband for this tag in the value's own units (as <see cref="Format"/> shows it): a change is
+    /// recorded when the value moves by more than this from the value last recorded. Null: the project's
+    /// <see cref="HistorySettings.DeadbandPercent"/>. Bits and codes (hex, binary, ASCII) record every change.
+    /// </summary>
+    public double? Deadband { get; init; }
 }

@@ -32,6 +32,8 @@ internal static class ProjectWriter
             json.WriteString("mode", RefreshModeWords.Of(project.Refresh.Mode));
             json.WriteNumber("minimumPeriodMs", (int)project.Refresh.MinimumPeriod.TotalMilliseconds);
             json.WriteEndObject();
+            WriteHistory(json, project.History);
+            json.WriteBoolean("alarmSound", project.AlarmSound);
             json.WriteStartArray("stations");
             foreach (var station in project.Stations)
             {
@@ -77,6 +79,13 @@ internal static class ProjectWriter
             json.WriteString("format", JsonWords.Of(tag.Format));
             json.WriteBoolean("writable", tag.Writable);
             json.WriteString("description", tag.Description);
+            json.WriteBoolean("record", tag.Recorded);
+            // Written only when set: absent means the project's deadband, and a file full of nulls reads as unfinished.
+            if (tag.Deadband is { } deadband)
+            {
+                json.WriteNumber("deadband", deadband);
+            }
+
             WriteEngineering(json, tag);
             json.WriteEndObject();
         }
@@ -127,6 +136,17 @@ internal static class ProjectWriter
         {
             json.WriteNumber("max", max);
         }
+    }
+
+    private static void WriteHistory(Utf8JsonWriter json, HistorySettings history)
+    {
+        json.WriteStartObject("history");
+        json.WriteBoolean("enabled", history.Enabled);
+        json.WriteNumber("deadbandPercent", history.DeadbandPercent);
+        json.WriteNumber("samplePeriodS", (int)history.SamplePeriod.TotalSeconds);
+        json.WriteNumber("retentionDays", history.RetentionDays);
+        json.WriteNumber("maxSizeMb", history.MaxSizeMb);
+        json.WriteEndObject();
     }
 
     private static void WriteSymbols(Utf8JsonWriter json, string name, IEnumerable<IoSymbol> symbols)

@@ -18,7 +18,7 @@ internal static class TagReader
 
     private static ProjectTag? Read(JsonFields entry, CpuProfile? cpu, EntryRegistry registry)
     {
-        entry.ReportUnknown("symbol", "address", "format", "writable", "description", "unit", "scale", "min", "max");
+        entry.ReportUnknown("symbol", "address", "format", "writable", "description", "unit", "scale", "min", "max", "record", "deadband");
         var symbol = registry.ClaimSymbol(entry);
         var writable = entry.Bool("writable", fallback: false);
         var use = writable == true ? AddressUse.Write : AddressUse.Read;
@@ -31,9 +31,17 @@ internal static class TagReader
         }
 
         var description = entry.String("description", string.Empty);
-        var tag = symbol is null || address is null || format is null || writable is null || description is null
+        var recorded = entry.Bool("record", fallback: true);
+        var deadbandOk = entry.TryNullableNumber("deadband", out var deadband);
+        if (deadband is < 0)
+        {
+            entry.Problem("deadband", "a deadband cannot be negative; 0 records every change");
+            deadbandOk = false;
+        }
+
+        var tag = symbol is null || address is null || format is null || writable is null || description is null || recorded is null || !deadbandOk
             ? null
-            : new ProjectTag(symbol, address.Value, format.Value, writable.Value, description);
+            : new ProjectTag(symbol, address.Value, format.Value, writable.Value, description) { Recorded = recorded.Value, Deadband = deadband };
         return ReadEngineering(entry, tag);
     }
 

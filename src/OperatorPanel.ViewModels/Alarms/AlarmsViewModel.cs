@@ -1,21 +1,22 @@
 using System.Collections.ObjectModel;
-using System.Text;
 using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Line;
-using OperatorPanel.Core.Messages;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.ViewModels.Services;
+using OperatorPanel.Historian.Journal;
+using OperatorPanel.Historian.Storage;
 using OperatorPanel.ViewModels.Session;
 
 namespace OperatorPanel.ViewModels.Alarms;
 
 /// <summary>
 /// The alarm window ("PLC messages", seed 000 §7): every alarm of the project with its state and times, acknowledge one or
-/// all, the history of every transition (kept in <see cref="AlarmHistoryFile"/> when the project has a path) and its CSV
-/// export. <see cref="ActiveCount"/> and <see cref="UnacknowledgedCount"/> feed the shell's status bar, window shown or not.
-/// Each alarm's flag is subscribed on the line like any other value, so a flag change arrives on the UI thread.
+/// all, the alarm journal (<see cref="Journal"/>: every transition, kept in the project's history database when it has
+/// one, searched, exported and printed there) and the alarm sound (<see cref="Annunciator"/>). <see cref="ActiveCount"/>
+/// and <see cref="UnacknowledgedCount"/> feed the shell's status bar, window shown or not. Each alarm's flag is subscribed
+/// on the line like any other value, so a flag change arrives on the UI thread; <see cref="StartAsync"/> first takes up
+/// where the journal left off (an alarm unacknowledged at the last shutdown waits again), then subscribes.
 /// The list is kept in <see cref="AlarmOrder"/>, pending alarms first; the view reports which rows it shows
 /// (<see cref="ShowVisibleRows"/>) and <see cref="HiddenPendingText"/> counts the pending ones out of view.
 /// A station whose flags have no good reading makes its alarms unknown (<see cref="UnknownText"/>), never "no alarms".
@@ -23,51 +24,74 @@ namespace OperatorPanel.ViewModels.Alarms;
 public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
 {
     private readonly AlarmTracker _tracker;
-    private readonly AlarmHistoryFile? _historyFile;
-    private readonly IFileDialogService _files;
-    private readonly string _projectName;
-    private readonly TimeZoneInfo _zone;
+    private readonly AlarmJournal? _journal;
+    private readonly ILineValues _values;
+    private readonly string _user;
     private readonly List<IDisposable> _subscriptions = [];
     private readonly AlarmRowViewModel[] _projectRows;
     private (int First, int Count)? _visibleRows;
+    private bool _disposed;
 
     /// <param name="project">The project whose alarms are tracked.</param>
-    /// <param name="projectPath">The project file, or null for a project not saved yet (history kept in memory only).</param>
+    /// <param name="journal">The project's alarm journal (its history database), or null for a project never saved (kept in memory only).</param>
     /// <param name="values">The line's values (PanelSession.Values); callbacks come on the UI thread.</param>
     /// <param name="time">Times raised, cleared and acknowledged; its local zone for display.</param>
-    /// <param name="files">The save dialog of the CSV export.</param>
+    /// <param name="services">Dialogs, the sound, the print page's folder, and who acknowledges.</param>
     /// <param name="stations">The session's stations (PanelSession.Stations), for why a station's alarms are unknown ("offline").</param>
     public AlarmsViewModel(
-        PanelProject project, string? projectPath, ILineValues values, TimeProvider time, IFileDialogService files, IEnumerable<StationStatusViewModel>? stations = null)
+        PanelProject project, AlarmJournal? journal, ILineValues values, TimeProvider time, AlarmServices services, IEnumerable<StationStatusViewModel>? stations = null)
     {
         ArgumentNullException.ThrowIfNull(project);
         ArgumentNullException.ThrowIfNull(values);
         ArgumentNullException.ThrowIfNull(time);
-        ArgumentNullException.ThrowIfNull(files);
-        (_files, _projectName, _zone) = (files, project.Name, time.LocalTimeZone);
+        ArgumentNullException.ThrowIfNull(services);
+        (_journal, _values, _user) = (journal, values, services.User);
         _tracker = new AlarmTracker(project, time);
-        if (projectPath is not null)
-        {
-            _historyFile = new AlarmHistoryFile(AlarmHistoryFile.PathFor(projectPath), time);
-            var load = _historyFile.Load();
-            _tracker.Restore(load.Events);
-            History = new ObservableCollection<AlarmHistoryRowViewModel>(load.Events.Select(e => new AlarmHistoryRowViewModel(e, _zone)));
-            (Message, IsMessageError) = (load.Message, load.Message is not null);
-        }
-        else
-        {
-            History = [];
-        }
-
+        Journal = new AlarmJournalViewModel(project, journal, time, services.Files, services.Documents, services.PrintFolder);
+        Annunciator = new AlarmAnnunciator(services.Sound, time, project.AlarmSound);
         _projectRows = [.. _tracker.Alarms.Select(a => new AlarmRowViewModel(a, time.LocalTimeZone))];
         Rows = new ObservableCollection<AlarmRowViewModel>(Ordered());
         _stations = stations;
         WatchStations();
         UpdateCounts();
+    }
+
+    /// <summary>The journal: search, CSV export, print.</summary>
+    public AlarmJournalViewModel Journal { get; }
+
+    /// <summary>The alarm sound and its Silence command.</summary>
+    public AlarmAnnunciator Annunciator { get; }
+
+    /// <summary>
+    /// Takes up the journal's state (each alarm's entries since its last raise), shows the last day of the journal, then
+    /// listens to the flags. A journal that cannot be read is reported in <see cref="Message"/> and the alarms start clear.
+    /// </summary>
+    public async Task StartAsync()
+    {
+        if (_journal is not null)
+        {
+            try
+            {
+                _tracker.Restore(await _journal.SinceLastRaiseAsync());
+            }
+            catch (HistoryException failure)
+            {
+                (Message, IsMessageError) = (failure.Message, true);
+            }
+
+            RefreshRows();
+        }
+
+        await Journal.SearchCommand.ExecuteAsync(null);
+        if (_disposed)
+        {
+            return;
+        }
+
         foreach (var alarm in _tracker.Alarms.ToList())
         {
             var (station, flag) = (alarm.Station, alarm.Definition.Flag);
-            _subscriptions.Add(values.Subscribe(station, flag, value => Record(_tracker.Apply(station, flag, value) is { } entry ? [entry] : [])));
+            _subscriptions.Add(_values.Subscribe(station, flag, value => Record(_tracker.Apply(station, flag, value) is { } entry ? [entry] : [])));
         }
     }
 
@@ -99,9 +123,6 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     [ObservableProperty]
     public partial AlarmRowViewModel? FirstHiddenPending { get; private set; }
 
-    /// <summary>Every transition, oldest first, including those loaded from the history file; local time, as <see cref="Rows"/>.</summary>
-    public ObservableCollection<AlarmHistoryRowViewModel> History { get; }
-
     [ObservableProperty]
     [NotifyPropertyChangedFor(nameof(Summary), nameof(ShortSummary), nameof(BannerText))]
     public partial int ActiveCount { get; private set; }
@@ -129,18 +150,20 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         ? Counts(string.Empty, string.Empty) is { } counts ? $"{unknown}; when last read {counts}" : unknown
         : ShortSummary;
 
-    /// <summary>The latest problem with the history file or the export, or the export's confirmation; null when none.</summary>
+    /// <summary>The latest problem reading the journal; null when none (the journal's own messages are in <see cref="Journal"/>).</summary>
     [ObservableProperty]
     public partial string? Message { get; private set; }
 
-    /// <summary><see cref="Message"/> is a problem (red); false for the export's confirmation, which is never red.</summary>
+    /// <summary><see cref="Message"/> is a problem (red); the window's messages are all problems, the journal's are not.</summary>
     [ObservableProperty]
     public partial bool IsMessageError { get; private set; }
 
     public void Dispose()
     {
+        _disposed = true;
         _subscriptions.ForEach(s => s.Dispose());
         UnwatchStations();
+        Annunciator.Dispose();
     }
 
     /// <summary>
@@ -224,23 +247,24 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
     /// <summary>Shows the tracker's state: after transitions (recorded in the history), or a flag turning known or unknown.</summary>
     private void Record(IReadOnlyList<AlarmEvent> events)
     {
+        RefreshRows();
+        foreach (var entry in events)
+        {
+            // Who acknowledged: the panel's user; a raise or a clear is the PLC's doing.
+            var user = entry.Transition == AlarmTransition.Acknowledged ? _user : null;
+            _journal?.Append(entry, user);
+            Journal.Add(entry, user);
+        }
+    }
+
+    private void RefreshRows()
+    {
         for (var i = 0; i < _projectRows.Length; i++)
         {
             _projectRows[i].Update(_tracker.Alarms[i]);
         }
 
         Reorder();
-
-        foreach (var entry in events)
-        {
-            History.Add(new AlarmHistoryRowViewModel(entry, _zone));
-        }
-
-        if (events.Count > 0 && _historyFile is not null && !_historyFile.TryAppend(events, out var error))
-        {
-            (Message, IsMessageError) = (error, true);
-        }
-
         UpdateCounts();
     }
 
@@ -254,29 +278,6 @@ public sealed partial class AlarmsViewModel : ObservableObject, IDisposable
         UpdateUnknown();
         UpdateHiddenPending();
         AcknowledgeCommand.NotifyCanExecuteChanged();
-        ExportCsvCommand.NotifyCanExecuteChanged();
+        Annunciator.Update(_tracker.Alarms);
     }
-
-    [RelayCommand(CanExecute = nameof(HasHistory))]
-    private void ExportCsv()
-    {
-        var suggested = (string.IsNullOrWhiteSpace(_projectName) ? "alarms" : _projectName + " alarms") + ".csv";
-        if (_files.PickFileToSave("Export alarm history", "CSV files (*.csv)|*.csv", suggested) is not { } path)
-        {
-            return;
-        }
-
-        try
-        {
-            // UTF-8 with a byte-order mark: Excel on Windows reads alarm texts with accents correctly only then.
-            File.WriteAllText(path, AlarmCsv.Format(History.Select(h => h.Event)), new UTF8Encoding(encoderShouldEmitUTF8Identifier: true));
-            (Message, IsMessageError) = ($"Exported {History.Count} history entries to {path} (times in UTC).", false);
-        }
-        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or NotSupportedException)
-        {
-            (Message, IsMessageError) = ($"The alarm history could not be exported to {path}: {FileProblemText.Describe(ex, path, FileAction.Write)}.", true);
-        }
-    }
-
-    private bool HasHistory() => History.Count > 0;
 }

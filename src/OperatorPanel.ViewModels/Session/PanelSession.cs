@@ -1,5 +1,6 @@
 using System.Collections.ObjectModel;
 using CommunityToolkit.Mvvm.ComponentModel;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
@@ -23,6 +24,8 @@ namespace OperatorPanel.ViewModels.Session;
 /// </summary>
 public sealed partial class PanelSession : ObservableObject
 {
+    private readonly IUiDispatcher _dispatcher;
+    private readonly TimeProvider _time;
     private readonly ProjectLine _line;
 
     /// <param name="project">The project to open.</param>
@@ -37,13 +40,16 @@ public sealed partial class PanelSession : ObservableObject
     {
         ArgumentNullException.ThrowIfNull(project);
         ArgumentNullException.ThrowIfNull(dispatcher);
+        _dispatcher = dispatcher;
+        _time = time ?? TimeProvider.System;
         var options = new ProjectLineOptions
         {
             LinkOptionsFor = serial => LinkOptionsFor(serial),
             Deliver = dispatcher.Post,
             Journal = journal,
+            Audit = AuditTrail.Combine(journal ?? AuditTrail.None, [new HistoryTrail(this)], logger),
         };
-        _line = new ProjectLine(project, options, time ?? TimeProvider.System, (logger ?? Logger.None).ForContext<PanelSession>());
+        _line = new ProjectLine(project, options, _time, (logger ?? Logger.None).ForContext<PanelSession>());
         _line.StateChanged += (_, _) => UpdateStations();
         Stations = [.. project.Stations.Select(s => new StationStatusViewModel(s))];
         StatusLine = new StatusLine(time ?? TimeProvider.System, dispatcher);
@@ -57,6 +63,9 @@ public sealed partial class PanelSession : ObservableObject
 
     /// <summary>The project is replaced, edited or saved. Raised on the UI thread.</summary>
     public event EventHandler<ProjectChangedEventArgs>? ProjectChanged;
+
+    /// <summary>Where the session hands work to the UI thread; the shell's history reports problems through it too.</summary>
+    public IUiDispatcher Dispatcher => _dispatcher;
 
     /// <summary>The line's values: a row subscribes to its address and hears every change on the UI thread.</summary>
     public ILineValues Values => _line;
@@ -94,7 +103,10 @@ public sealed partial class PanelSession : ObservableObject
     [ObservableProperty]
     public partial bool IsReadOnly { get; set; }
 
-    /// <summary>Writes through the station's bus; the outcome is the PLC's read-back, never the request.</summary>
+    /// <summary>
+    /// Writes through the station's bus; the outcome is the PLC's read-back, never the request. The bus puts the intent on
+    /// record (the journal, then <see cref="Audit"/>) before it sends the write, and the outcome after.
+    /// </summary>
     public async Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default)
     {
         ArgumentNullException.ThrowIfNull(request);
@@ -105,6 +117,9 @@ public sealed partial class PanelSession : ObservableObject
 
         return await _line.WriteAsync(request, cancellationToken);
     }
+
+    /// <summary>The station's polling status (no exchange: the engine's own state); null when not connected.</summary>
+    public StationStatus? StatusOf(Station station) => _line.StatusOf(station);
 
     /// <summary>Takes another project (new, opened, demo). Disconnect first: the old line belongs to the old project.</summary>
     public void Load(PanelProject project)

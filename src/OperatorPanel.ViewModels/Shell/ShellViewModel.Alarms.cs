@@ -1,5 +1,6 @@
 using System.ComponentModel;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Historian.Journal;
 using OperatorPanel.ViewModels.Alarms;
 using OperatorPanel.ViewModels.Session;
 
@@ -8,12 +9,12 @@ namespace OperatorPanel.ViewModels.Shell;
 /// <summary>
 /// The Alarms window of the current project and the status bar's alarm count, which stays current while the window is
 /// hidden. A new <see cref="AlarmsViewModel"/> is made when the project is replaced, its alarm texts are edited, or it
-/// gets a file (its history file lives beside the project, AlarmHistoryFile.PathFor); the old one is disposed.
+/// gets a file (its journal lives in the project's history database); the old one is disposed.
 /// </summary>
 public sealed partial class ShellViewModel : IDisposable
 {
     private PanelProject _alarmsProject = NoProject;
-    private string? _alarmsPath;
+    private AlarmJournal? _alarmsJournal;
 
     private AlarmsViewModel _alarms;
 
@@ -33,26 +34,40 @@ public sealed partial class ShellViewModel : IDisposable
     /// <summary>For the banner: <see cref="AlarmSummary"/> naming the stations whose alarms are unknown ("alarms unknown: Filler offline").</summary>
     public string AlarmBannerText => Alarms.BannerText;
 
+    /// <summary>The alarm window's start (journal restored, flags subscribed); tests await it.</summary>
+    public Task AlarmsStarted { get; private set; } = Task.CompletedTask;
+
     public void Dispose()
     {
         Session.ProjectChanged -= OnProjectChanged;
         Session.PropertyChanged -= OnSessionChanged;
         Alarms.PropertyChanged -= OnAlarmsChanged;
         Alarms.Dispose();
+        Trends.Dispose();
+        History.Stop();
     }
 
-    private AlarmsViewModel CreateAlarms(PanelProject project, string? path)
+    private AlarmsViewModel CreateAlarms(PanelProject project)
     {
-        (_alarmsProject, _alarmsPath) = (project, path);
-        var alarms = new AlarmsViewModel(project, path, Session.Values, _time, _services.Files, Session.Stations);
+        (_alarmsProject, _alarmsJournal) = (project, History.Current?.Journal);
+        var services = new AlarmServices(_services.Files, _services.Sound ?? SilentAlarmSound.Instance, _services.Documents, _services.PrintFolder ?? Path.GetTempPath(), Session.User);
+        var alarms = new AlarmsViewModel(project, _alarmsJournal, Session.Values, _time, services, Session.Stations);
         alarms.PropertyChanged += OnAlarmsChanged;
+        AlarmsStarted = StartAlarmsAsync(alarms);
         return alarms;
+    }
+
+    /// <summary>After the journal has taken in the project's old alarm history file (once), the window takes up its state.</summary>
+    private async Task StartAlarmsAsync(AlarmsViewModel alarms)
+    {
+        await History.Ready;
+        await alarms.StartAsync();
     }
 
     private void RenewAlarms(ProjectChangedEventArgs e)
     {
         var replaced = e.Kind == ProjectChangeKind.Replaced;
-        if (!replaced && ProjectPath == _alarmsPath && SameAlarms(_alarmsProject, e.Project))
+        if (!replaced && History.Current?.Journal == _alarmsJournal && SameAlarms(_alarmsProject, e.Project))
         {
             _alarmsProject = e.Project;
             return;
@@ -61,7 +76,7 @@ public sealed partial class ShellViewModel : IDisposable
         var old = Alarms;
         old.PropertyChanged -= OnAlarmsChanged;
         old.Dispose();
-        _alarms = CreateAlarms(e.Project, ProjectPath);
+        _alarms = CreateAlarms(e.Project);
         Panes.Single(p => p.Content == old).Content = _alarms;
         OnPropertyChanged(nameof(Alarms));
         NotifyAlarmCounts();

@@ -35,6 +35,7 @@ public sealed partial class ShellViewModel
         {
             var ports = string.Join(", ", Session.Project.Stations.Select(s => s.Link.PortName).Distinct(StringComparer.OrdinalIgnoreCase));
             _logger.Warning("The line did not close within {Seconds} s ({Ports:l}); the panel closes without waiting for it", CloseWait.TotalSeconds, ports);
+            await History.DisposeAsync();
             return true;
         }
 
@@ -48,6 +49,7 @@ public sealed partial class ShellViewModel
             _logger.Error(exception, "Disconnecting on close failed");
         }
 
+        await History.DisposeAsync();
         return true;
     }
 

@@ -5,10 +5,12 @@ using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.ViewModels.Diagnostics;
 using OperatorPanel.ViewModels.Docking;
+using OperatorPanel.ViewModels.History;
 using OperatorPanel.ViewModels.Inputs;
 using OperatorPanel.ViewModels.Memory;
 using OperatorPanel.ViewModels.Outputs;
 using OperatorPanel.ViewModels.Session;
+using OperatorPanel.ViewModels.Trends;
 using Serilog;
 using Serilog.Core;
 
@@ -44,13 +46,24 @@ public sealed partial class ShellViewModel : ObservableObject
         Outputs = new OutputsViewModel(session, services.Dialogs, options, logger);
         Memory = new MemoryViewModel(session, services.Dialogs, options, logger);
         Diagnostics = new DiagnosticsViewModel(session, services.Dialogs);
-        _alarms = CreateAlarms(session.Project, path: null);
+        History = new ProjectHistory(session, services.History, session.Dispatcher, _time, _logger);
+        _alarms = CreateAlarms(session.Project);
+        Trends = new TrendsViewModel(session, History, _time);
         Panes = RegisterPanes(this);
         Docking = new DockingViewModel(services.LayoutPath, Panes);
         Docking.PropertyChanged += OnDockingChanged;
+        FollowTrendsPane(Docking["Trends"]);
         GenerateCodeCommand = new RelayCommand(OpenGenerateCode, () => HasProject);
         session.ProjectChanged += OnProjectChanged;
         session.PropertyChanged += OnSessionChanged;
+        History.PropertyChanged += (_, e) =>
+        {
+            // Said once when it starts (the historian reports a problem once); the line goes on regardless.
+            if (e.PropertyName == nameof(ProjectHistory.Problem) && History.Problem is { } problem)
+            {
+                StatusLine.ShowError("History not recorded: " + problem);
+            }
+        };
     }
 
     /// <summary>A placeholder before any project is opened: no stations, nothing to poll.</summary>
@@ -67,6 +80,12 @@ public sealed partial class ShellViewModel : ObservableObject
     public MemoryViewModel Memory { get; }
 
     public DiagnosticsViewModel Diagnostics { get; }
+
+    /// <summary>The project's history database: recording, the journal, the audit (docs/historian.md).</summary>
+    public ProjectHistory History { get; }
+
+    /// <summary>The Trends pane's content.</summary>
+    public TrendsViewModel Trends { get; }
 
     public ObservableCollection<StationStatusViewModel> Stations => Session.Stations;
 
@@ -101,7 +120,9 @@ public sealed partial class ShellViewModel : ObservableObject
     private void OnProjectChanged(object? sender, ProjectChangedEventArgs e)
     {
         IsDirty = e.Kind == ProjectChangeKind.Edited;
+        History.Follow(e.Project, IsDemo ? _services.Demo?.SampleProjectPath : ProjectPath, IsDemo);
         RenewAlarms(e);
+        Trends.Follow(e.Project);
         SelectedStationIndex = Math.Clamp(SelectedStationIndex, 0, Math.Max(0, e.Project.Stations.Length - 1));
         OnPropertyChanged(nameof(HasProject));
         OnPropertyChanged(nameof(ProjectName));

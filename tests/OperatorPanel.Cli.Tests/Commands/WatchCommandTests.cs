@@ -62,7 +62,7 @@ public sealed class WatchCommandTests : IDisposable
         using var error = new StringWriter();
         var logs = Path.Combine(_folder, "logs");
 
-        var exit = OpanelApp.Run(["watch", Sample, "--demo", "--cycles", "4", "--log-level", "Verbose", "--log-dir", logs], output, error);
+        var exit = OpanelApp.Run(["watch", Sample, "--demo", "--cycles", "4", "--log-level", "Verbose", "--log-dir", logs, "--history-dir", Path.Combine(_folder, "history")], output, error);
 
         exit.Should().Be(0, error.ToString());
         var trace = Directory.GetFiles(logs).SelectMany(File.ReadAllLines).Where(l => l.Contains("OperatorPanel.Core.Link.PlcLink", StringComparison.Ordinal)).ToList();

@@ -19,7 +19,8 @@ public sealed class AlarmsUnknownTests
     public void Alarms_StationNotRead_ShowUnknownInTheTableBannerAndSummaryNotAllClear()
     {
         var filler = new StationStatusViewModel(AlarmProject.Create().Stations[0]);
-        using var alarms = new AlarmsViewModel(AlarmProject.Create(), null, _values, _clock, _files, [filler]);
+        using var alarms = new AlarmsViewModel(AlarmProject.Create(), null, _values, _clock, new AlarmServices(_files, SilentAlarmSound.Instance, null, Path.GetTempPath(), "maria"), [filler]);
+        alarms.StartAsync().IsCompletedSuccessfully.Should().BeTrue("without a journal the window starts at once");
         filler.Update(new StationStatus(AlarmProject.Station, StationState.Offline, "PortUnavailable: serial port COM3: open failed", 1, null), LinkStatistics.Empty);
 
         alarms.UnknownText.Should().Be("alarms unknown: Filler offline");

@@ -18,11 +18,12 @@ public sealed class AlarmsViewModelTests : IDisposable
     private readonly FakeLineValues _values = new();
     private readonly ScriptedFileDialogs _files = new();
     private readonly TempFolder _folder = new();
+    private readonly RecordingDocuments _documents = new();
 
     public void Dispose() => _folder.Dispose();
 
     [Fact]
-    public void Alarm_RaisedAcknowledgedCleared_LandsInHistoryAndCsv()
+    public void Alarm_RaisedAcknowledgedCleared_LandsInTheJournalAndItsCsvWithWhoAcknowledged()
     {
         using var alarms = Create();
         var jam = Row(alarms, Jam);
@@ -40,33 +41,34 @@ public sealed class AlarmsViewModelTests : IDisposable
         jam.IsPending.Should().BeFalse();
         jam.AcknowledgedAt.Should().Be(new DateTimeOffset(2024, 1, 15, 8, 0, 5, TimeSpan.Zero));
         jam.ClearedAt.Should().Be(new DateTimeOffset(2024, 1, 15, 8, 0, 15, TimeSpan.Zero));
-        alarms.History.Select(e => e.Transition).Should().Equal(AlarmTransition.Raised, AlarmTransition.Acknowledged, AlarmTransition.Cleared);
+        alarms.Journal.Entries.Select(e => e.Event.Transition).Should().Equal(AlarmTransition.Raised, AlarmTransition.Acknowledged, AlarmTransition.Cleared);
 
         _files.Answer = _folder.File("export.csv");
-        alarms.ExportCsvCommand.Execute(null);
+        alarms.Journal.ExportCsvCommand.Execute(null);
         File.ReadAllText(_files.Answer).Should().Be(
-            "Time,Station,Address,Flag,Event,State,Class,Text\r\n"
-            + $"2024-01-15T08:00:00.000Z,Filler,2,M0.0,raised,active unacknowledged,fault,{JamText}\r\n"
-            + $"2024-01-15T08:00:05.000Z,Filler,2,M0.0,acknowledged,active acknowledged,fault,{JamText}\r\n"
-            + $"2024-01-15T08:00:15.000Z,Filler,2,M0.0,cleared,cleared,fault,{JamText}\r\n");
-        alarms.Message.Should().Be($"Exported 3 history entries to {_files.Answer} (times in UTC).");
-        alarms.IsMessageError.Should().BeFalse("a success is never red");
+            "Time,Station,Address,Flag,Event,State,Class,Text,User\r\n"
+            + $"2024-01-15T08:00:00.000Z,Filler,2,M0.0,raised,active unacknowledged,fault,{JamText},\r\n"
+            + $"2024-01-15T08:00:05.000Z,Filler,2,M0.0,acknowledged,active acknowledged,fault,{JamText},maria\r\n"
+            + $"2024-01-15T08:00:15.000Z,Filler,2,M0.0,cleared,cleared,fault,{JamText},\r\n");
+        alarms.Journal.Message.Should().Be($"Exported 3 journal entries to {_files.Answer} (times in UTC).");
+        alarms.Journal.IsMessageError.Should().BeFalse("a success is never red");
     }
 
     [Fact]
-    public void History_ShopFloorZone_ShownInLocalTimeLikeTheAlarmTableAndExportedInUtc()
+    public async Task Journal_ShopFloorZone_ShownInLocalTimeLikeTheAlarmTableAndExportedInUtc()
     {
         var clock = new ManualTimeProvider { LocalZone = TimeZoneInfo.CreateCustomTimeZone("Plant", TimeSpan.FromHours(2), "Plant", "Plant") };
-        using var alarms = new AlarmsViewModel(AlarmProject.Create(), null, _values, clock, _files);
+        using var alarms = new AlarmsViewModel(AlarmProject.Create(), null, _values, clock, new AlarmServices(_files, SilentAlarmSound.Instance, _documents, _folder.Path, "maria"));
+        await alarms.StartAsync();
 
         _values.Publish(Bit(Jam, on: true));
 
         var raised = new DateTimeOffset(2024, 1, 15, 10, 0, 0, TimeSpan.FromHours(2));
-        alarms.History.Should().ContainSingle().Which.At.Should().Be(raised);
-        alarms.History[0].At.Offset.Should().Be(TimeSpan.FromHours(2));
-        Row(alarms, Jam).RaisedAt!.Value.Offset.Should().Be(TimeSpan.FromHours(2), "the table and the history show one zone");
+        alarms.Journal.Entries.Should().ContainSingle().Which.At.Should().Be(raised);
+        alarms.Journal.Entries[0].At.Offset.Should().Be(TimeSpan.FromHours(2));
+        Row(alarms, Jam).RaisedAt!.Value.Offset.Should().Be(TimeSpan.FromHours(2), "the table and the journal show one zone");
         _files.Answer = _folder.File("export.csv");
-        alarms.ExportCsvCommand.Execute(null);
+        alarms.Journal.ExportCsvCommand.Execute(null);
         File.ReadAllText(_files.Answer).Should().Contain("2024-01-15T08:00:00.000Z,Filler", "exports are in UTC");
     }
 
@@ -102,7 +104,7 @@ public sealed class AlarmsViewModelTests : IDisposable
         Row(alarms, DoorOpen).State.Should().Be(AlarmState.Cleared);
         alarms.UnacknowledgedCount.Should().Be(0);
         alarms.AcknowledgeAllCommand.CanExecute(null).Should().BeFalse();
-        alarms.History.Count(e => e.Transition == AlarmTransition.Acknowledged).Should().Be(2);
+        alarms.Journal.Entries.Count(e => e.Event.Transition == AlarmTransition.Acknowledged).Should().Be(2);
     }
 
     [Fact]
@@ -129,7 +131,7 @@ public sealed class AlarmsViewModelTests : IDisposable
 
         Row(alarms, DoorOpen).State.Should().Be(AlarmState.Cleared);
         Row(alarms, Jam).State.Should().Be(AlarmState.ActiveUnacknowledged);
-        alarms.History.Should().ContainSingle();
+        alarms.Journal.Entries.Should().ContainSingle();
     }
 
     [Fact]
@@ -162,39 +164,51 @@ public sealed class AlarmsViewModelTests : IDisposable
     }
 
     [Fact]
-    public void History_SavedProject_IsPersistedAndReloadedWithPendingState()
+    public async Task Journal_SavedProject_IsKeptAndTakenUpWithPendingState()
     {
-        var project = _folder.File("line.opproj");
-        using (var first = Create(project))
+        await using var historian = Historian.Historian.Open(_folder.File("line.history.db"), AlarmProject.Create(), _clock);
+        using (var first = await StartedAsync(historian.Journal))
         {
             _values.Publish(Bit(Jam, on: true));
         }
 
-        using var second = Create(project, readAll: false); // the line still holds Jam on
+        using var second = await StartedAsync(historian.Journal, readAll: false); // the line still holds Jam on
 
-        second.History.Should().ContainSingle().Which.Event.Should().Be(new AlarmEvent(
+        second.Journal.Entries.Should().ContainSingle().Which.Event.Should().Be(new AlarmEvent(
             _clock.GetUtcNow(), "Filler", Station, Jam, AlarmTransition.Raised, AlarmState.ActiveUnacknowledged, AlarmClass.Fault, "Conveyor jam, \"infeed\", stop"));
         Row(second, Jam).State.Should().Be(AlarmState.ActiveUnacknowledged);
         second.UnacknowledgedCount.Should().Be(1);
         second.Message.Should().BeNull();
-        File.Exists(_folder.File("line.alarms.jsonl")).Should().BeTrue();
     }
 
     [Fact]
-    public void History_CorruptFile_IsSetAsideWithAMessageAndANewHistoryStarts()
+    public async Task Journal_SearchByTextAndClass_FindsOnlyThose()
     {
-        var history = _folder.File("line.alarms.jsonl");
-        File.WriteAllText(history, "{\"time\":\"yesterday\"}\nnot json at all\n");
+        await using var historian = Historian.Historian.Open(_folder.File("line.history.db"), AlarmProject.Create(), _clock);
+        using var alarms = await StartedAsync(historian.Journal);
+        _values.Publish([.. Bit(Jam, on: true), .. Bit(LowLevel, on: true), .. Bit(DoorOpen, on: true)]);
 
-        using var alarms = Create(_folder.File("line.opproj"));
+        alarms.Journal.Text = "door";
+        await alarms.Journal.SearchCommand.ExecuteAsync(null);
+        alarms.Journal.Entries.Select(e => e.Event.Flag).Should().Equal(DoorOpen);
 
-        alarms.History.Should().BeEmpty();
-        alarms.Message.Should().Be($"The alarm history {history} is corrupt (line 1: time is missing or not an ISO 8601 UTC time); "
-            + $"it was kept as {history}.corrupt-20240115T080000Z and a new history was started.");
-        alarms.IsMessageError.Should().BeTrue();
-        File.ReadAllText(history + ".corrupt-20240115T080000Z").Should().StartWith("{\"time\":\"yesterday\"}");
+        (alarms.Journal.Text, alarms.Journal.SelectedClass) = (string.Empty, "Warning");
+        await alarms.Journal.SearchCommand.ExecuteAsync(null);
+        alarms.Journal.Entries.Select(e => e.Event.Flag).Should().BeEquivalentTo([LowLevel, DoorOpen]);
+        alarms.Journal.Message.Should().Be("2 entries: the last 24 hours, all stations, warning alarms");
+    }
+
+    [Fact]
+    public async Task Journal_Print_WritesAnHtmlPageAndOpensIt()
+    {
+        using var alarms = await StartedAsync(null);
         _values.Publish(Bit(Jam, on: true));
-        File.ReadAllLines(history).Should().ContainSingle();
+
+        alarms.Journal.PrintCommand.Execute(null);
+
+        var page = _documents.Opened.Should().ContainSingle().Subject;
+        Path.GetDirectoryName(page).Should().Be(_folder.Path);
+        File.ReadAllText(page).Should().Contain("<h1>Alarm journal: Bottling</h1>").And.Contain("Conveyor jam, &quot;infeed&quot;, stop").And.Contain("window.print()");
     }
 
     [Fact]
@@ -203,10 +217,10 @@ public sealed class AlarmsViewModelTests : IDisposable
         using var alarms = Create();
         _values.Publish(Bit(Jam, on: true));
 
-        alarms.ExportCsvCommand.Execute(null);
+        alarms.Journal.ExportCsvCommand.Execute(null);
 
-        _files.Asked.Should().Equal("Export alarm history");
-        alarms.Message.Should().BeNull();
+        _files.Asked.Should().Equal("Export alarm journal");
+        alarms.Journal.Message.Should().Be("0 entries: the last 24 hours, all stations, all classes", "the start's search, unchanged: nothing was exported");
         Directory.EnumerateFiles(_folder.Path).Should().BeEmpty();
     }
 
@@ -323,15 +337,31 @@ public sealed class AlarmsViewModelTests : IDisposable
 
     private static List<string> Flags(AlarmsViewModel alarms) => [.. alarms.Rows.Select(r => r.Flag)];
 
-    /// <summary>The view model; with <paramref name="readAll"/> every flag then read once as off, as after the first poll of a station that answers.</summary>
-    private AlarmsViewModel Create(string? projectPath = null, bool readAll = true)
+    /// <summary>The view model started; with <paramref name="readAll"/> every flag then read once as off, as after the first poll of a station that answers.</summary>
+    private AlarmsViewModel Create(bool readAll = true)
     {
-        var alarms = new AlarmsViewModel(AlarmProject.Create(), projectPath, _values, _clock, _files);
+        var alarms = New(null);
+        alarms.StartAsync().IsCompletedSuccessfully.Should().BeTrue("without a journal the window starts at once");
+        ReadAll(readAll);
+        return alarms;
+    }
+
+    private async Task<AlarmsViewModel> StartedAsync(Historian.Journal.AlarmJournal? journal, bool readAll = true)
+    {
+        var alarms = New(journal);
+        await alarms.StartAsync();
+        ReadAll(readAll);
+        return alarms;
+    }
+
+    private void ReadAll(bool readAll)
+    {
         if (readAll)
         {
             _values.Publish([.. Bit(Jam, on: false), .. Bit(LowLevel, on: false), .. Bit(DoorOpen, on: false)]);
         }
-
-        return alarms;
     }
+
+    private AlarmsViewModel New(Historian.Journal.AlarmJournal? journal) =>
+        new(AlarmProject.Create(), journal, _values, _clock, new AlarmServices(_files, SilentAlarmSound.Instance, _documents, _folder.Path, "maria"));
 }

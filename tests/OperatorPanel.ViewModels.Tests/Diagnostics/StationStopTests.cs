@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Simulator.Reference;
@@ -103,6 +104,25 @@ public sealed class StationStopTests : IAsyncDisposable
         Row.StopCommand.CanExecute(null).Should().BeFalse("it is stopped already");
         _panel.Session.StatusLine.Text.Should().Be("station 2 stopped: the port speaks PPI until someone sets RUN");
         _panel.Log.Events.Select(e => e.RenderMessage()).Should().Contain("Station 2 RUN -> STOP by operator: sending STOP");
+    }
+
+    [Fact]
+    public async Task Stop_Confirmed_IntentOnRecordBeforeItIsSentAndOutcomeAfter()
+    {
+        Open(projectAllows: true, handlerHasStop: true);
+        OperatingMode? modeAtIntent = null;
+        var trail = new RecordingAuditTrail(e => modeAtIntent ??= e.Step == AuditStep.Intent ? _panel.Plc.Mode : null);
+        _panel.Session.Audit = trail;
+        await _panel.ConnectAsync();
+        _panel.Dialogs.ConfirmAnswers.Enqueue(true);
+
+        await Row.StopCommand.ExecuteAsync(null).Guarded();
+
+        trail.Entries.Select(e => (e.Step, e.Action, e.Port, e.Target, e.OldValue, e.NewValue, e.Outcome, e.User)).Should().Equal(
+            (AuditStep.Intent, AuditAction.Stop, PanelFixture.Port, (string?)null, "RUN", "STOP", (string?)null, _panel.Session.User),
+            (AuditStep.Outcome, AuditAction.Stop, PanelFixture.Port, null, "RUN", "STOP", "station 2 stopped: the port speaks PPI until someone sets RUN", _panel.Session.User));
+        trail.Entries[0].Id.Should().Be(trail.Entries[1].Id);
+        modeAtIntent.Should().Be(OperatingMode.Run, "the intent is on record before STOP is sent");
     }
 
     [Fact]

@@ -28,7 +28,7 @@ public sealed class DockingViewModelTests : IAsyncDisposable
 
         docking.Message.Should().BeNull();
         docking.Capture().Should().BeEquivalentTo(docking.DefaultLayout);
-        docking.Panes.Select(p => p.AutomationId).Should().Equal("InputsPane", "OutputsPane", "MemoryPane", "AlarmsPane", "DiagnosticsPane");
+        docking.Panes.Select(p => p.AutomationId).Should().Equal("InputsPane", "OutputsPane", "MemoryPane", "AlarmsPane", "DiagnosticsPane", "TrendsPane");
     }
 
     [Fact]
@@ -243,7 +243,7 @@ public sealed class DockingViewModelTests : IAsyncDisposable
         docking.Load();
 
         docking.Message.Should().BeNull();
-        docking.Panes.Select(p => p.ContentId).Should().Equal("Inputs", "Outputs", "Memory", "Alarms", "Diagnostics");
+        docking.Panes.Select(p => p.ContentId).Should().Equal("Inputs", "Outputs", "Memory", "Alarms", "Diagnostics", "Trends");
         docking["Memory"].IsVisible.Should().BeFalse();
         docking["Memory"].Float.Should().Be(new FloatBounds(5, 6, 400, 300));
         docking["Memory"].Docked.Should().Be(DockPlacement.Center, "an older file does not say where it was docked: its default place");

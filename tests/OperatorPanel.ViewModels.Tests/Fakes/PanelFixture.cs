@@ -4,6 +4,7 @@ using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Historian;
 using OperatorPanel.Simulator.Reference;
 using OperatorPanel.TestKit;
 using OperatorPanel.ViewModels.Session;
@@ -69,8 +70,13 @@ internal sealed class PanelFixture : IAsyncDisposable
                 []),
         ]);
 
+    /// <summary>This fixture's own history folder (a temp folder, deleted on dispose).</summary>
+    public HistoryFolder HistoryFolder { get; } = new(System.IO.Path.Combine(System.IO.Path.GetTempPath(), "opanel-vm-history-" + Guid.NewGuid().ToString("N")));
+
+    public FakeAlarmSound Sound { get; } = new();
+
     public static ShellServices Services(PanelFixture fixture, IDemoSource? demo = null) =>
-        new(fixture.Dialogs, fixture.Files, fixture.Connector, demo, new StarterProjectSource());
+        new(fixture.Dialogs, fixture.Files, fixture.Connector, demo, new StarterProjectSource(), History: fixture.HistoryFolder, Sound: fixture.Sound);
 
     public ShellViewModel Shell(IDemoSource? demo = null) => new(Session, Options, Services(this, demo), Clock, Logger);
 
@@ -78,7 +84,14 @@ internal sealed class PanelFixture : IAsyncDisposable
 
     public Task RefreshAsync() => Session.RefreshNowAsync().Guarded();
 
-    public async ValueTask DisposeAsync() => await Session.DisposeAsync();
+    public async ValueTask DisposeAsync()
+    {
+        await Session.DisposeAsync();
+        if (Directory.Exists(HistoryFolder.Path))
+        {
+            Directory.Delete(HistoryFolder.Path, recursive: true);
+        }
+    }
 
     private static IoSymbol Io(string symbol, string address) => new(symbol, PlcAddress.Parse(address), symbol + " comment");
 

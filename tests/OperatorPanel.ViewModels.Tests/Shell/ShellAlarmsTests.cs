@@ -38,7 +38,7 @@ public sealed class ShellAlarmsTests : IAsyncDisposable
         await _panel.RefreshAsync();
 
         _shell.AlarmSummary.Should().Be("1 active, 1 unacknowledged");
-        _shell.Alarms.History.Select(e => e.Transition).Should().Equal(
+        _shell.Alarms.Journal.Entries.Select(e => e.Event.Transition).Should().Equal(
             AlarmTransition.Raised, AlarmTransition.Raised, AlarmTransition.Acknowledged, AlarmTransition.Cleared);
     }
 
@@ -68,23 +68,25 @@ public sealed class ShellAlarmsTests : IAsyncDisposable
         _shell.Alarms.Should().NotBeSameAs(old);
         _shell.Panes.Single(p => p.ContentId == "Alarms").Content.Should().BeSameAs(_shell.Alarms, "the pane shows the new project's alarms");
         _shell.Alarms.Rows.Should().BeEmpty();
-        old.History.Should().BeEmpty("the old project's window was disposed and hears nothing");
+        old.Journal.Entries.Should().BeEmpty("the old project's window was disposed and hears nothing");
         _shell.AlarmSummary.Should().Be("no alarms");
     }
 
     [Fact]
-    public async Task Alarms_ProjectSavedAs_HistoryKeptBesideTheFile()
+    public async Task Alarms_ProjectSavedAs_JournalKeptInItsHistoryDatabase()
     {
         var path = _folder.File("filler.opproj");
         _panel.Files.FileToSave = path;
         await _shell.SaveAsCommand.ExecuteAsync(null).Guarded();
+        await _shell.AlarmsStarted;
         await _panel.ConnectAsync();
 
         _panel.Plc.Memory.SetBit(ProtocolArea.M, 1, 0, true);
         await _panel.RefreshAsync();
 
-        File.Exists(AlarmHistoryFile.PathFor(path)).Should().BeTrue();
-        File.ReadAllText(AlarmHistoryFile.PathFor(path)).Should().Contain("Filler jam");
+        _shell.History.Current!.DatabasePath.Should().Be(_panel.HistoryFolder.DatabaseFor(path, demo: false));
+        var found = await _shell.History.Current.Journal.SearchAsync(Historian.Journal.JournalFilter.All);
+        found.Should().ContainSingle().Which.Event.Text.Should().Be("Filler jam");
     }
 
     public async ValueTask DisposeAsync()

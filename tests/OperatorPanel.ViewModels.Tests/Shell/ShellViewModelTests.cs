@@ -252,9 +252,9 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     public void Panes_EachCarriesItsViewModel_OneMechanismForTheDockAndTheViewMenu()
     {
         _shell.Panes.Select(p => (p.ContentId, p.Title)).Should().Equal(
-            ("Inputs", "Inputs"), ("Outputs", "Outputs"), ("Memory", "Memory"), ("Alarms", "Alarms"), ("Diagnostics", "Diagnostics"));
-        _shell.Panes.Select(p => p.Content).Should().Equal(_shell.Inputs, _shell.Outputs, _shell.Memory, _shell.Alarms, _shell.Diagnostics);
-        _shell.Panes.Where(p => p.IsVisible).Select(p => p.ContentId).Should().Equal("Inputs", "Outputs", "Memory", "Alarms");
+            ("Inputs", "Inputs"), ("Outputs", "Outputs"), ("Memory", "Memory"), ("Alarms", "Alarms"), ("Diagnostics", "Diagnostics"), ("Trends", "Trends"));
+        _shell.Panes.Select(p => p.Content).Should().Equal(_shell.Inputs, _shell.Outputs, _shell.Memory, _shell.Alarms, _shell.Diagnostics, _shell.Trends);
+        _shell.Panes.Where(p => p.IsVisible).Select(p => p.ContentId).Should().Equal("Inputs", "Outputs", "Memory", "Alarms", "Trends");
     }
 
     [Fact]

@@ -3,13 +3,13 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 
-namespace OperatorPanel.ViewModels.Tests.Fakes;
+namespace OperatorPanel.TestKit;
 
 /// <summary>
 /// A line's values without a line: subscribers by address, as ProjectLine keeps them; <see cref="Publish"/> hands each
 /// change to the subscribers of its address, in batch order, on the calling thread.
 /// </summary>
-internal sealed class FakeLineValues : ILineValues
+public sealed class FakeLineValues : ILineValues
 {
     private readonly Dictionary<WatchedItem, ImmutableArray<Action<PolledValue>>> _subscribers = [];
     private readonly Dictionary<WatchedItem, PolledValue> _values = [];

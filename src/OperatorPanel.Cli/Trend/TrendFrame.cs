@@ -1,0 +1,29 @@
+using OperatorPanel.Cli.History;
+using OperatorPanel.Core.Line;
+using OperatorPanel.Historian;
+using OperatorPanel.Historian.Reading;
+
+namespace OperatorPanel.Cli.Trend;
+
+/// <summary>What <c>opanel trend</c> shows at one moment: per tag its value now and its trend over the window, drawn as text.</summary>
+internal sealed record TrendFrame(DateTimeOffset From, DateTimeOffset To, IReadOnlyList<TrendPanel> Panels)
+{
+    public static TrendFrame Build(HistoryReader reader, IReadOnlyList<NamedTag> tags, ILineValues line, DateTimeOffset now, TimeSpan span, int width, int height)
+    {
+        var from = now - span;
+        var spans = reader.Sessions(from, now);
+        var histories = reader.Read(tags.Select(t => (t.Tag.Station, t.Tag.Address)), from, now);
+        var panels = tags.Zip(histories, (tag, history) =>
+        {
+            var series = TrendSeries.Of(history, spans, from, now, liveUntil: now);
+            var rows = TrendText.Draw(TrendColumns.Of(series, width), height, out var min, out var max);
+            line.TryGetValue(tag.Tag.Station, tag.Tag.Address, out var value);
+            var text = value.HasValue ? TagValue.ToText(TagValue.ToStored(value.Raw), tag.Tag.Address, tag.Tag.Format) : "-";
+            return new TrendPanel(tag.Name, text, value.Quality.ToString().ToLowerInvariant(), min, max, rows, series.Gaps.Count);
+        });
+        return new TrendFrame(from, now, [.. panels]);
+    }
+}
+
+/// <summary>One tag in a frame: its value now, the window's range and the chart's rows (top first).</summary>
+internal sealed record TrendPanel(string Name, string Value, string Quality, double Min, double Max, IReadOnlyList<string> Rows, int Gaps);
