@@ -4,6 +4,7 @@ using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Stop;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.Core.Writes;
 using Serilog;
 using Serilog.Core;
@@ -69,14 +70,17 @@ public sealed partial class ProjectLine : IAsyncDisposable
         var connection = await connector.ConnectAsync(Project, cancellationToken).ConfigureAwait(false);
         foreach (var bus in ProjectBus.Of(Project))
         {
-            var link = new PlcLink(connection.TransportFor(bus.Serial.PortName), _options.LinkOptionsFor(bus.Serial), _time, _logger);
+            var transport = connection.TransportFor(bus.Serial.PortName);
             var settings = new BusSettings
             {
                 Mode = Mode,
                 MinimumPeriod = Project.Refresh.MinimumPeriod,
                 Polling = new PollingOptions { UseReadLists = _options.UseReadLists },
             };
-            _buses.Add(new LineBus(bus, Bus.Start(link, bus.Plan(), settings, _time, _logger, OnBusChanges)));
+            var running = bus.Serial.Protocol == LinkProtocol.Ppi
+                ? Bus.StartPpi(new PpiLink(transport, bus.Serial.BaudRate, _time, _logger), bus.Plan(), settings, _time, _logger, OnBusChanges)
+                : Bus.Start(new PlcLink(transport, _options.LinkOptionsFor(bus.Serial), _time, _logger), bus.Plan(), settings, _time, _logger, OnBusChanges);
+            _buses.Add(new LineBus(bus, running));
         }
 
         _connection = connection;

@@ -30,8 +30,10 @@ public sealed record ProjectBus(SerialSettings Serial, ImmutableArray<ProjectSta
                 .Concat(s.Alarms.Select(a => a.Flag))
                 .Select(address => new WatchedItem(s.Address, address)));
 
-    public PollPlan Plan(PollCostModel? costModel = null) =>
-        PollPlanner.Build(WatchedItems(), Stations.ToDictionary(s => s.Address, s => s.Cpu), costModel);
+    /// <summary>What the bus reads per cycle: Freeport frames, or on a PPI bus one frame per S7 item (<see cref="PpiPollPlanner"/>).</summary>
+    public PollPlan Plan(PollCostModel? costModel = null) => Serial.Protocol == LinkProtocol.Ppi
+        ? PpiPollPlanner.Build(WatchedItems(), Stations.ToDictionary(s => s.Address, s => s.Cpu))
+        : PollPlanner.Build(WatchedItems(), Stations.ToDictionary(s => s.Address, s => s.Cpu), costModel);
 
     public ProjectStation? StationAt(Station address) => Stations.FirstOrDefault(s => s.Address == address);
 }
