@@ -14,7 +14,8 @@ internal static class IdentifyCommand
         var command = new Command(
             "identify",
             "Ask a PLC's handler for protocol version, handler revision, the CPU it was generated for, SMB6, mode switch, scan times, "
-            + "write mask and reply delay; with --cpu, compare and print a mismatch line. "
+            + "write mask and reply delay; with --cpu, compare and print a mismatch line. With --ppi (no handler) it reads SMB6, SM0.7 and "
+            + "SMW22-SMW26 instead and shows RUN/STOP as unknown. "
             + "Exit codes: 0 identified (and matching --cpu), 1 bad input or a CPU mismatch, 2 link failure");
         link.AddTo(command);
         command.SetAction(async (parse, cancellationToken) =>
@@ -31,6 +32,11 @@ internal static class IdentifyCommand
             }
 
             await using var session = opened;
+            if (session.Bus.IsPpi)
+            {
+                return await IdentifyPpiAsync(cli, target, session, cancellationToken);
+            }
+
             var reply = await session.Bus.IdentifyAsync(target.Station, cancellationToken);
             if (reply.Failure is { } failure)
             {
@@ -55,5 +61,30 @@ internal static class IdentifyCommand
             return view.CpuMismatch is null ? ExitCodes.Ok : ExitCodes.BadInput;
         });
         return command;
+    }
+
+    /// <summary>Over PPI there is no handler to ask: SMB6, SM0.7 and the scan times instead, RUN/STOP shown as unknown.</summary>
+    private static async Task<int> IdentifyPpiAsync(CliContext cli, LinkTarget target, LinkSession session, CancellationToken cancellationToken)
+    {
+        var outcome = await session.Bus.IdentifyPpiAsync(target.Station, cancellationToken);
+        if (outcome.Identity is not { } identity)
+        {
+            var status = session.Bus.StatusOf(target.Station);
+            return status.State == StationState.Online
+                ? cli.Fail(ExitCodes.BadInput, $"{target.Describe()}: {outcome.Error}")
+                : LinkFailure.From(target, status.LastError, status.LastErrorKind).Report(cli);
+        }
+
+        var view = PpiIdentifyView.From(target, identity);
+        if (cli.Json)
+        {
+            cli.WriteJson(view);
+        }
+        else
+        {
+            view.WriteText(cli.Out);
+        }
+
+        return view.CpuMismatch is null ? ExitCodes.Ok : ExitCodes.BadInput;
     }
 }

@@ -133,7 +133,7 @@ public sealed class Bus : IAsyncDisposable
     /// <summary>The station's state on this bus; for a silent station resting between tries, when it is tried next.</summary>
     public StationStatus StatusOf(Station station) => Volatile.Read(ref _engine).GetStationStatus(station);
 
-    public LinkStatistics StatisticsFor(Station station) => _link.StatisticsFor(station);
+    public LinkStatistics StatisticsFor(Station station) => _ppi?.StatisticsFor(station) ?? _link.StatisticsFor(station);
 
     /// <summary>The latest value of a watched address; false when the plan does not watch it.</summary>
     public bool TryGetValue(Station station, PlcAddress address, out PolledValue value) =>

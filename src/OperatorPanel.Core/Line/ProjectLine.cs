@@ -1,6 +1,7 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Stop;
@@ -78,7 +79,7 @@ public sealed partial class ProjectLine : IAsyncDisposable
                 Polling = new PollingOptions { UseReadLists = _options.UseReadLists },
             };
             var running = bus.Serial.Protocol == LinkProtocol.Ppi
-                ? Bus.StartPpi(new PpiLink(transport, bus.Serial.BaudRate, _time, _logger), bus.Plan(), settings, _time, _logger, OnBusChanges)
+                ? Bus.StartPpi(new PpiLink(transport, _options.PpiOptionsFor(bus.Serial), _time, _logger), bus.Plan(), settings, _time, _logger, OnBusChanges)
                 : Bus.Start(new PlcLink(transport, _options.LinkOptionsFor(bus.Serial), _time, _logger), bus.Plan(), settings, _time, _logger, OnBusChanges);
             _buses.Add(new LineBus(bus, running));
         }
@@ -192,6 +193,12 @@ public sealed partial class ProjectLine : IAsyncDisposable
         BusOf(station) is { } bus
             ? bus.StopAsync(station, cancellationToken)
             : Task.FromResult<StopOutcome>(new StopOutcome.NotSent(station, "not connected"));
+
+    /// <summary>What PPI tells about a station of a PPI bus (SMB6, SM0.7, scan times), through its bus's queue.</summary>
+    public Task<PpiIdentifyOutcome> IdentifyPpiAsync(Station station, CancellationToken cancellationToken = default) =>
+        BusOf(station) is { } bus
+            ? bus.IdentifyPpiAsync(station, cancellationToken)
+            : throw new InvalidOperationException($"{station} is not on a connected bus");
 
     /// <summary>What the station said in its last answered IDENTIFY while connected; null before one answered or when not connected.</summary>
     public IdentifyResponse? IdentityOf(Station station) => BusOf(station)?.IdentityOf(station);

@@ -1,3 +1,4 @@
+using System.Collections.Concurrent;
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Ppi;
@@ -21,6 +22,7 @@ public sealed class PpiLink : IAsyncDisposable
     private readonly TimeProvider _time;
     private readonly PpiMaster _reads;
     private readonly PpiMaster _writes;
+    private readonly ConcurrentDictionary<Station, StationStatistics> _statistics = new();
     private DateTimeOffset? _anotherMasterAt;
     private string? _problem;
 
@@ -50,6 +52,10 @@ public sealed class PpiLink : IAsyncDisposable
 
     /// <summary>Jobs answered, polls answered "no data yet", frames sent again: both masters together.</summary>
     public PpiCounters Counters => new(_reads.Exchanges + _writes.Exchanges, _reads.EmptyPolls + _writes.EmptyPolls, _reads.Repeats + _writes.Repeats);
+
+    /// <summary>Per station, as on a Freeport link: a job is a request; its repeats are retries; a silent job a time-out.</summary>
+    public LinkStatistics StatisticsFor(Station station) =>
+        _statistics.TryGetValue(station, out var statistics) ? statistics.Snapshot() : LinkStatistics.Empty;
 
     /// <summary>
     /// Opens the port when it is closed and refuses while the link keeps off the bus: a failure here means nothing was
@@ -81,17 +87,44 @@ public sealed class PpiLink : IAsyncDisposable
     private async Task<T> RunAsync<T>(Station station, Func<PpiMaster, Task<T>> job, PpiMaster master, CancellationToken cancellationToken)
     {
         await EnsureReadyAsync(station, cancellationToken).ConfigureAwait(false);
+        var statistics = _statistics.GetOrAdd(station, _ => new StationStatistics());
+        var (started, repeats) = (_time.GetTimestamp(), master.Repeats);
         try
         {
             var result = await job(master).ConfigureAwait(false);
             (_anotherMasterAt, _problem) = (null, null);
+            statistics.Reply(_time.GetElapsedTime(started));
             return result;
         }
-        catch (PlcCommunicationException failure) when (failure.Kind == PlcErrorKind.AnotherMaster)
+        catch (PlcCommunicationException failure)
         {
-            _anotherMasterAt = _time.GetUtcNow();
-            Volatile.Write(ref _problem, $"another master on the bus since {_anotherMasterAt.Value.ToLocalTime():HH:mm:ss}: the panel reads only while it is the bus's one master");
+            Action count = failure.Kind switch
+            {
+                PlcErrorKind.FrameCorrupt => statistics.Corrupt,
+                PlcErrorKind.NegativeReply => statistics.NegativeReply,
+                _ => statistics.Timeout,
+            };
+            count();
+            if (failure.Kind == PlcErrorKind.AnotherMaster)
+            {
+                NoteAnotherMaster();
+            }
+
             throw;
         }
+        finally
+        {
+            statistics.Request();
+            for (var i = repeats; i < master.Repeats; i++)
+            {
+                statistics.Retry();
+            }
+        }
+    }
+
+    private void NoteAnotherMaster()
+    {
+        _anotherMasterAt = _time.GetUtcNow();
+        Volatile.Write(ref _problem, $"another master on the bus since {_anotherMasterAt.Value.ToLocalTime():HH:mm:ss}: the panel reads only while it is the bus's one master");
     }
 }
