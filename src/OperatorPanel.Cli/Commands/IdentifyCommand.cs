@@ -49,16 +49,7 @@ internal static class IdentifyCommand
             }
 
             var view = IdentifyView.From(target, identity);
-            if (cli.Json)
-            {
-                cli.WriteJson(view);
-            }
-            else
-            {
-                view.WriteText(cli.Out);
-            }
-
-            return view.CpuMismatch is null ? ExitCodes.Ok : ExitCodes.BadInput;
+            return Print(cli, view, view.WriteText, view.CpuMismatch);
         });
         return command;
     }
@@ -76,15 +67,21 @@ internal static class IdentifyCommand
         }
 
         var view = PpiIdentifyView.From(target, identity);
+        return Print(cli, view, view.WriteText, view.CpuMismatch);
+    }
+
+    /// <summary>The view as JSON or text; exit 1 when the CPU does not match the one asked for.</summary>
+    private static int Print<T>(CliContext cli, T view, Action<TextWriter> writeText, string? cpuMismatch)
+    {
         if (cli.Json)
         {
             cli.WriteJson(view);
         }
         else
         {
-            view.WriteText(cli.Out);
+            writeText(cli.Out);
         }
 
-        return view.CpuMismatch is null ? ExitCodes.Ok : ExitCodes.BadInput;
+        return cpuMismatch is null ? ExitCodes.Ok : ExitCodes.BadInput;
     }
 }
