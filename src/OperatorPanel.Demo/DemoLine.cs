@@ -41,7 +41,9 @@ public sealed class DemoLine : IAsyncDisposable
         [NotNullWhen(true)] out DemoLine? demo, [NotNullWhen(false)] out string? error)
     {
         demo = null;
-        if (!SimulatedLine.TryCreate(stations, model, serial, runProcess: true, out var line, out error))
+        // A PPI bus's CPUs run no handler: their ports speak PPI all the time (docs/ppi.md section 11).
+        var ppi = serial.Protocol == LinkProtocol.Ppi ? PpiMode.WithoutHandler : PpiMode.BesideHandler;
+        if (!SimulatedLine.TryCreate(stations, model, serial, runProcess: true, ppi, out var line, out error))
         {
             return false;
         }

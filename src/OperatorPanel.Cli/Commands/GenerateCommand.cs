@@ -2,6 +2,7 @@ using System.Collections.Immutable;
 using System.CommandLine;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Freeport;
 using OperatorPanel.Stl;
@@ -54,6 +55,13 @@ internal static class GenerateCommand
                 || !GenerateSettings.TryParseWritable(parse.GetValue(writable)!, out var mask, out error))
             {
                 return cli.Fail(ExitCodes.BadInput, error);
+            }
+
+            if (chosen.Link.Protocol == LinkProtocol.Ppi)
+            {
+                return cli.Fail(ExitCodes.BadInput, $"{chosen.Name} (station {chosen.Address.Address}) is on a PPI bus (\"protocol\": \"ppi\" on {chosen.Link.PortName}): "
+                    + "the CPU answers PPI itself, so it needs no handler; nothing generated. Set \"protocol\": \"freeport\" to use the handler "
+                    + "(change-only refresh, radio modules; docs/ppi.md)");
             }
 
             int? start = null;

@@ -14,7 +14,8 @@ internal static class IdentifyCommand
         var command = new Command(
             "identify",
             "Ask a PLC's handler for protocol version, handler revision, the CPU it was generated for, SMB6, mode switch, scan times, "
-            + "write mask and reply delay; with --cpu, compare and print a mismatch line. "
+            + "write mask and reply delay; with --cpu, compare and print a mismatch line. With --ppi (no handler) it reads SMB6, SM0.7 and "
+            + "SMW22-SMW26 instead and shows RUN/STOP as unknown. "
             + "Exit codes: 0 identified (and matching --cpu), 1 bad input or a CPU mismatch, 2 link failure");
         link.AddTo(command);
         command.SetAction(async (parse, cancellationToken) =>
@@ -32,6 +33,11 @@ internal static class IdentifyCommand
 
             await using var session = opened;
             await session.ResolveCutShortAsync(cli, cancellationToken);
+            if (session.Bus.IsPpi)
+            {
+                return await IdentifyPpiAsync(cli, target, session, cancellationToken);
+            }
+
             var reply = await session.Bus.IdentifyAsync(target.Station, cancellationToken);
             if (reply.Failure is { } failure)
             {
@@ -44,17 +50,39 @@ internal static class IdentifyCommand
             }
 
             var view = IdentifyView.From(target, identity);
-            if (cli.Json)
-            {
-                cli.WriteJson(view);
-            }
-            else
-            {
-                view.WriteText(cli.Out);
-            }
-
-            return view.CpuMismatch is null ? ExitCodes.Ok : ExitCodes.BadInput;
+            return Print(cli, view, view.WriteText, view.CpuMismatch);
         });
         return command;
+    }
+
+    /// <summary>Over PPI there is no handler to ask: SMB6, SM0.7 and the scan times instead, RUN/STOP shown as unknown.</summary>
+    private static async Task<int> IdentifyPpiAsync(CliContext cli, LinkTarget target, LinkSession session, CancellationToken cancellationToken)
+    {
+        var outcome = await session.Bus.IdentifyPpiAsync(target.Station, cancellationToken);
+        if (outcome.Identity is not { } identity)
+        {
+            var status = session.Bus.StatusOf(target.Station);
+            return status.State == StationState.Online
+                ? cli.Fail(ExitCodes.BadInput, $"{target.Describe()}: {outcome.Error}")
+                : LinkFailure.From(target, status.LastError, status.LastErrorKind).Report(cli);
+        }
+
+        var view = PpiIdentifyView.From(target, identity);
+        return Print(cli, view, view.WriteText, view.CpuMismatch);
+    }
+
+    /// <summary>The view as JSON or text; exit 1 when the CPU does not match the one asked for.</summary>
+    private static int Print<T>(CliContext cli, T view, Action<TextWriter> writeText, string? cpuMismatch)
+    {
+        if (cli.Json)
+        {
+            cli.WriteJson(view);
+        }
+        else
+        {
+            writeText(cli.Out);
+        }
+
+        return cpuMismatch is null ? ExitCodes.Ok : ExitCodes.BadInput;
     }
 }

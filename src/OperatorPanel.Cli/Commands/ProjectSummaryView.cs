@@ -42,5 +42,5 @@ internal sealed record StationSummaryView(string Name, int Address, string Cpu, 
 
     /// <summary>"9600 8N1 cable", as technicians write line settings.</summary>
     private static string Describe(SerialSettings link) =>
-        $"{link.LineText} {(link.Kind == LinkKind.Cable ? "cable" : "radio module")}";
+        $"{link.LineText} {(link.Kind == LinkKind.Cable ? "cable" : "radio module")}{(link.Protocol == LinkProtocol.Ppi ? ", PPI (no handler)" : "")}";
 }

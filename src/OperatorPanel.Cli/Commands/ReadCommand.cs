@@ -89,7 +89,7 @@ internal static class ReadCommand
         return views.All(v => v.Quality == "good") ? ExitCodes.Ok : ExitCodes.BadInput;
     }
 
-    internal static PollPlan PlanFor(LinkTarget target, IEnumerable<PlcAddress> addresses) => PollPlanner.Build(
-        addresses.Select(a => new WatchedItem(target.Station, a)),
-        target.Cpu is null ? null : new Dictionary<Core.Addressing.Station, Core.Cpu.CpuProfile> { [target.Station] = target.Cpu });
+    internal static PollPlan PlanFor(LinkTarget target, IEnumerable<PlcAddress> addresses) =>
+        new ProjectBus(target.Serial, []).Plan(addresses.Select(a => new WatchedItem(target.Station, a)),
+            target.Cpu is null ? null : new Dictionary<Core.Addressing.Station, Core.Cpu.CpuProfile> { [target.Station] = target.Cpu });
 }

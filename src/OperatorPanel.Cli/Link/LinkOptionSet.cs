@@ -46,6 +46,12 @@ internal sealed class LinkOptionSet
             + "needed when it has several; --device, --demo or --cpu override)",
     };
 
+    public Option<bool> Ppi { get; } = new("--ppi")
+    {
+        Description = "Speak PPI, the S7-200's own protocol, instead of Freeport: no handler needed in the PLC; --baud 9600 (default), 19200 or 187500, "
+            + "always 8 data bits, even parity (with --project: the station's bus says \"protocol\": \"ppi\")",
+    };
+
     public Option<int> ScanMs { get; } = new("--scan-ms")
     {
         Description = "Longest PLC scan time in ms the reply timeout allows for (default 100); raise it for long programs",
@@ -62,6 +68,7 @@ internal sealed class LinkOptionSet
         command.Options.Add(Model);
         command.Options.Add(ScanMs);
         command.Options.Add(Project);
+        command.Options.Add(Ppi);
     }
 
     /// <summary>
@@ -124,7 +131,10 @@ internal sealed class LinkOptionSet
         }
 
         SerialSettings? serial = demo || device is not null ? null : projectStation?.Link;
-        if (serial is null && !_serial.TryBind(parse, demo ? DemoPort : null, out serial, out error))
+        var ppi = parse.GetValue(Ppi) || projectStation?.Link.Protocol == LinkProtocol.Ppi;
+        if (serial is null && !(ppi
+            ? _serial.TryBindPpi(parse, demo ? DemoPort : null, out serial, out error)
+            : _serial.TryBind(parse, demo ? DemoPort : null, out serial, out error)))
         {
             return false;
         }

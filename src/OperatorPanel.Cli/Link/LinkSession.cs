@@ -2,6 +2,7 @@ using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Demo;
 using OperatorPanel.Simulator.Reference;
@@ -45,8 +46,12 @@ internal sealed class LinkSession : IAsyncDisposable
         }
 
         ITransport transport = demo is null ? new SerialPortTransport(target.Serial, log) : demo.PanelSide;
-        var link = new PlcLink(transport, OptionsFor(target.Serial, target.ScanAllowance, demo is not null), TimeProvider.System, log);
-        session = new LinkSession(Bus.OnDemand(link, plan, TimeProvider.System, log, cli.Journal), demo);
+        var bus = target.Serial.Protocol == LinkProtocol.Ppi
+            ? Bus.StartPpi(
+                new PpiLink(transport, PpiOptionsFor(target.Serial, target.ScanAllowance, demo is not null), TimeProvider.System, log),
+                plan, BusSettings.OnDemand with { Audit = cli.Journal }, TimeProvider.System, log)
+            : Bus.OnDemand(new PlcLink(transport, OptionsFor(target.Serial, target.ScanAllowance, demo is not null), TimeProvider.System, log), plan, TimeProvider.System, log, cli.Journal);
+        session = new LinkSession(bus, demo);
         error = null;
         return true;
     }
@@ -57,6 +62,23 @@ internal sealed class LinkSession : IAsyncDisposable
         var options = LinkOptions.For(serial);
         options = scanAllowance is { } scan ? options with { ScanAllowance = scan } : options;
         return demo ? options with { ScanAllowance = options.ScanAllowance + DemoLine.HostAllowance } : options;
+    }
+
+    /// <summary>
+    /// A PPI bus's master options: the polls wait out the scan time allowed for (--scan-ms, default 100 ms) on top of the
+    /// master's second; each answer may start 300 ms late rather than 100 (a USB adapter's latency, a loaded PC: a
+    /// real CPU answers within characters); on a demo line the host allowance is added to both.
+    /// </summary>
+    public static PpiMasterOptions PpiOptionsFor(SerialSettings serial, TimeSpan? scanAllowance, bool demo)
+    {
+        ArgumentNullException.ThrowIfNull(serial);
+        var options = PpiMasterOptions.ForBaud(serial.BaudRate);
+        var host = demo ? DemoLine.HostAllowance : TimeSpan.Zero;
+        return options with
+        {
+            ReplyTimeout = TimeSpan.FromMilliseconds(300) + host,
+            AnswerTimeout = options.AnswerTimeout + (scanAllowance ?? TimeSpan.FromMilliseconds(100)) + host,
+        };
     }
 
     /// <summary>The --demo PLC: the target's station and CPU, its handler with STOP so <c>opanel stop --demo</c> can be tried.</summary>

@@ -50,7 +50,11 @@ internal sealed class SerialOptionSet
     /// A PPI line: --baud 9600, 19200 or 187500 (the S7-200's PPI rates, seed 002 Tables ), always 8 data bits,
     /// even parity and one stop bit (ML801761 p. 228): --parity and --data-bits may only say so.
     /// </summary>
-    public bool TryBindPpi(ParseResult parse, [NotNullWhen(true)] out SerialSettings? serial, [NotNullWhen(false)] out string? error)
+    public bool TryBindPpi(ParseResult parse, [NotNullWhen(true)] out SerialSettings? serial, [NotNullWhen(false)] out string? error) =>
+        TryBindPpi(parse, null, out serial, out error);
+
+    /// <summary>As above; <paramref name="fallbackPort"/> names the port when --device is absent (the demo line).</summary>
+    public bool TryBindPpi(ParseResult parse, string? fallbackPort, [NotNullWhen(true)] out SerialSettings? serial, [NotNullWhen(false)] out string? error)
     {
         serial = null;
         var baud = parse.GetValue(Baud);
@@ -67,12 +71,18 @@ internal sealed class SerialOptionSet
             return false;
         }
 
-        if (!TryBind(parse, null, baud: 9600, out var line, out error))
+        if (!TryBind(parse, fallbackPort, baud: 9600, out var line, out error))
         {
             return false;
         }
 
-        serial = line with { BaudRate = baud, Parity = Core.Transport.Parity.Even, DataBits = 8 };
+        if (line.Kind == LinkKind.RadioModule)
+        {
+            error = "the radio modules carry the handler's Freeport frames; PPI needs the cable: leave out --radio";
+            return false;
+        }
+
+        serial = line with { BaudRate = baud, Parity = Core.Transport.Parity.Even, DataBits = 8, Protocol = LinkProtocol.Ppi };
         return true;
     }
 

@@ -4,6 +4,7 @@ using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.Cli.Watch;
@@ -33,7 +34,7 @@ internal static class SnapshotBuilder
             station.Name,
             station.Address.Address,
             station.Cpu.DisplayName,
-            $"{line.PortOf(station.Address)} {station.Link.LineText}",
+            $"{line.PortOf(station.Address)} {station.Link.LineText}{(station.Link.Protocol == LinkProtocol.Ppi ? " PPI" : "")}",
             status.State.ToString().ToLowerInvariant(),
             LinkFailure.WithoutKind(status.LastError, status.LastErrorKind),
             status.NextTryAt is { } next ? Math.Max(0, (int)Math.Ceiling((next - now).TotalSeconds)) : null,

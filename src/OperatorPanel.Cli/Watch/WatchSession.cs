@@ -1,4 +1,6 @@
 using System.Collections.Concurrent;
+using OperatorPanel.Cli.Commands;
+using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Line;
@@ -50,6 +52,8 @@ internal sealed class WatchSession : IAsyncDisposable
         ILineConnector connector = demo ? new DemoLineConnector(model, log) : new SerialLineConnector(log);
         var options = new ProjectLineOptions
         {
+            LinkOptionsFor = serial => LinkSession.OptionsFor(serial, scanAllowance: null, demo),
+            PpiOptionsFor = serial => LinkSession.PpiOptionsFor(serial, scanAllowance: null, demo),
             // A triggered watch refreshes once a second at most: registering read lists would only add exchanges.
             UseReadLists = project.Refresh.Mode == RefreshMode.Continuous,
             Journal = journal,
@@ -104,6 +108,14 @@ internal sealed class WatchSession : IAsyncDisposable
     {
         foreach (var station in Line.Project.Stations)
         {
+            if (station.Link.Protocol == LinkProtocol.Ppi)
+            {
+                // No handler to identify: what PPI tells about the CPU instead (one job; a silent CPU shows offline anyway).
+                var outcome = await Line.IdentifyPpiAsync(station.Address, cancellationToken);
+                _handlerChecks[station.Address] = PpiIdentifyView.Check(station.Cpu, outcome);
+                continue;
+            }
+
             for (var attempt = 1; attempt <= IdentifyAttempts; attempt++)
             {
                 LinkReply reply;

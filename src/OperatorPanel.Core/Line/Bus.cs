@@ -3,6 +3,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Stop;
 using OperatorPanel.Core.Writes;
@@ -18,10 +19,14 @@ namespace OperatorPanel.Core.Line;
 /// is on the wire at a time by that one mechanism. With an audit trail (<see cref="BusSettings.Audit"/>) every write and
 /// STOP is on record before its frame leaves and its outcome before the caller hears it. Front ends reach a bus through the line (<see cref="ProjectLine"/>) or,
 /// for one verb of <c>opanel</c>, directly. Disposing stops the loop (after its exchange on the wire) and closes the port.
+/// A bus that speaks PPI (<see cref="StartPpi"/>) owns a <see cref="PpiLink"/> instead of a Freeport link; its loop reads
+/// and writes with the PPI reader and writer, and the same queue keeps one job on its wire (docs/ppi.md, "The panel over PPI").
 /// </summary>
 public sealed class Bus : IAsyncDisposable
 {
-    private readonly PlcLink _link;
+    private readonly IPlcLink _link;
+    private readonly PpiLink? _ppi;
+    private readonly IAsyncDisposable _wire;
     private readonly BusSettings _settings;
     private readonly TimeProvider _time;
     private readonly ILogger _logger;
@@ -36,13 +41,13 @@ public sealed class Bus : IAsyncDisposable
     private Task _loop = Task.CompletedTask;
     private bool _polling;
 
-    private Bus(PlcLink link, PollPlan plan, BusSettings settings, TimeProvider time, ILogger logger, Action<IReadOnlyList<ValueChange>>? onChanges)
+    private Bus(IPlcLink link, PpiLink? ppi, string portName, IAsyncDisposable wire, PollPlan plan, BusSettings settings, TimeProvider time, ILogger logger, Action<IReadOnlyList<ValueChange>>? onChanges)
     {
-        (_link, _settings, _time, _logger) = (link, settings, time, logger);
+        (_link, _ppi, PortName, _wire, _settings, _time, _logger) = (link, ppi, portName, wire, settings, time, logger);
         _stations = new StationTracker(time, logger.ForContext<PollingEngine>());
         _queue = new BusQueue(logger.ForContext<Bus>());
         _onChanges = onChanges ?? (_ => { });
-        _audit = settings.Audit is { } trail ? new AuditContext(trail, link.PortName, AuditUser.Current) : null;
+        _audit = settings.Audit is { } trail ? new AuditContext(trail, portName, AuditUser.Current) : null;
         _engine = NewEngine(plan, settings.Mode);
         StartLoop();
     }
@@ -57,7 +62,20 @@ public sealed class Bus : IAsyncDisposable
         ArgumentNullException.ThrowIfNull(link);
         ArgumentNullException.ThrowIfNull(plan);
         ArgumentNullException.ThrowIfNull(settings);
-        return new Bus(link, plan, settings, time ?? TimeProvider.System, logger ?? Serilog.Core.Logger.None, onChanges);
+        return new Bus(link, null, link.PortName, link, plan, settings, time ?? TimeProvider.System, logger ?? Serilog.Core.Logger.None, onChanges);
+    }
+
+    /// <summary>
+    /// Starts polling <paramref name="plan"/> (Polling/PpiPollPlanner) over PPI on <paramref name="link"/>, which the
+    /// bus owns from now on: no handler in the PLC, so no IDENTIFY and no STOP; <see cref="IdentifyPpiAsync"/> reads
+    /// what PPI can tell instead.
+    /// </summary>
+    public static Bus StartPpi(PpiLink link, PollPlan plan, BusSettings settings, TimeProvider? time = null, ILogger? logger = null, Action<IReadOnlyList<ValueChange>>? onChanges = null)
+    {
+        ArgumentNullException.ThrowIfNull(link);
+        ArgumentNullException.ThrowIfNull(plan);
+        ArgumentNullException.ThrowIfNull(settings);
+        return new Bus(new FreeportRefusedLink(link.PortName), link, link.PortName, link, plan, settings, time ?? TimeProvider.System, logger ?? Serilog.Core.Logger.None, onChanges);
     }
 
     /// <summary>
@@ -67,7 +85,16 @@ public sealed class Bus : IAsyncDisposable
     public static Bus OnDemand(PlcLink link, PollPlan plan, TimeProvider? time = null, ILogger? logger = null, IAuditTrail? audit = null) =>
         Start(link, plan, BusSettings.OnDemand with { Audit = audit }, time, logger);
 
-    public string PortName => _link.PortName;
+    public string PortName { get; }
+
+    /// <summary>Whether the bus speaks PPI (no handler) rather than Freeport.</summary>
+    public bool IsPpi => _ppi is not null;
+
+    /// <summary>A PPI bus's jobs, empty polls and repeats; null on a Freeport bus.</summary>
+    public PpiCounters? PpiCounters => _ppi?.Counters;
+
+    /// <summary>What keeps the whole bus from polling ("another master on the bus ..."); null when nothing does.</summary>
+    public string? Problem => _ppi?.Problem;
 
     public PollPlan Plan => Volatile.Read(ref _engine).Plan;
 
@@ -97,8 +124,9 @@ public sealed class Bus : IAsyncDisposable
     /// STOP through the queue, as one job (<see cref="RemoteStop"/>: IDENTIFY, 07 once, IDENTIFY), so no poll comes
     /// between. A STOP that left the station silent shows it as stopped by the panel instead of offline.
     /// </summary>
-    public Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default) =>
-        _queue.Enqueue($"STOP of {station}", ct => StopNowAsync(station, ct), () => new StopOutcome.NotSent(station, "disconnected before STOP was sent"), cancellationToken);
+    public Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default) => _ppi is not null
+        ? Task.FromResult<StopOutcome>(new StopOutcome.NotSent(station, $"{PortName} is a PPI bus: the panel stops a CPU only through its own handler"))
+        : _queue.Enqueue($"STOP of {station}", ct => StopNowAsync(station, ct), () => new StopOutcome.NotSent(station, "disconnected before STOP was sent"), cancellationToken);
 
     /// <summary>
     /// Settles, through the queue, the writes and STOPs that earlier programs on this port left cut short in
@@ -124,7 +152,7 @@ public sealed class Bus : IAsyncDisposable
     /// <summary>The station's state on this bus; for a silent station resting between tries, when it is tried next.</summary>
     public StationStatus StatusOf(Station station) => Volatile.Read(ref _engine).GetStationStatus(station);
 
-    public LinkStatistics StatisticsFor(Station station) => _link.StatisticsFor(station);
+    public LinkStatistics StatisticsFor(Station station) => _ppi?.StatisticsFor(station) ?? _link.StatisticsFor(station);
 
     /// <summary>The latest value of a watched address; false when the plan does not watch it.</summary>
     public bool TryGetValue(Station station, PlcAddress address, out PolledValue value) =>
@@ -164,8 +192,29 @@ public sealed class Bus : IAsyncDisposable
     public async ValueTask DisposeAsync()
     {
         await StopPollingAsync().ConfigureAwait(false);
-        await _link.DisposeAsync().ConfigureAwait(false);
+        await _wire.DisposeAsync().ConfigureAwait(false);
     }
+
+    /// <summary>
+    /// What PPI tells about the station (SMB6, SM0.7, SMW22-SMW26: <see cref="PpiIdentity"/>), read through the queue;
+    /// the station's state follows. On a Freeport bus the answer says to use IDENTIFY.
+    /// </summary>
+    public Task<PpiIdentifyOutcome> IdentifyPpiAsync(Station station, CancellationToken cancellationToken = default) => _ppi is not { } ppi
+        ? Task.FromResult(new PpiIdentifyOutcome(null, $"{PortName} is a Freeport bus: use IDENTIFY"))
+        : _queue.Enqueue($"PPI identify of {station}", async ct =>
+        {
+            try
+            {
+                var results = await ppi.ReadAsync(station, PpiIdentity.Items, ct).ConfigureAwait(false);
+                var identity = PpiIdentity.From(station, results, out var error);
+                _stations.RecordReply(station, error);
+                return new PpiIdentifyOutcome(identity, error);
+            }
+            catch (Transport.PlcCommunicationException failure)
+            {
+                return new PpiIdentifyOutcome(null, _stations.RecordFailure(station, failure).Message);
+            }
+        }, () => new PpiIdentifyOutcome(null, "disconnected before the identify was sent"), cancellationToken);
 
     /// <summary>One request through the queue, for IDENTIFY and for tests that play another client of the bus.</summary>
     internal Task<LinkReply> ExchangeAsync(PlcRequest request, CancellationToken cancellationToken = default) =>
@@ -201,7 +250,7 @@ public sealed class Bus : IAsyncDisposable
 
     private PollingEngine NewEngine(PollPlan plan, RefreshMode mode)
     {
-        var engine = new PollingEngine(_link, plan, _stations, _queue, _time, _logger, _settings.Polling, _onChanges)
+        var engine = new PollingEngine(_link, plan, _stations, _queue, _time, _logger, _settings.Polling, _onChanges, _ppi)
         {
             Mode = mode,
             MinimumPeriod = _settings.MinimumPeriod,

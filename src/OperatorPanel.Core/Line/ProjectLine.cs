@@ -2,9 +2,11 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Stop;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.Core.Writes;
 using Serilog;
 using Serilog.Core;
@@ -76,9 +78,9 @@ public sealed partial class ProjectLine : IAsyncDisposable
         var connection = await connector.ConnectAsync(Project, cancellationToken).ConfigureAwait(false);
         foreach (var bus in ProjectBus.Of(Project))
         {
+            var transport = connection.TransportFor(bus.Serial.PortName);
             var options = _options.LinkOptionsFor(bus.Serial);
             options = options with { ScanAllowance = options.ScanAllowance + connection.ScanAllowance };
-            var link = new PlcLink(connection.TransportFor(bus.Serial.PortName), options, _time, _logger);
             var settings = new BusSettings
             {
                 Mode = Mode,
@@ -86,7 +88,10 @@ public sealed partial class ProjectLine : IAsyncDisposable
                 Polling = new PollingOptions { UseReadLists = _options.UseReadLists },
                 Audit = _options.Audit ?? _options.Journal,
             };
-            _buses.Add(new LineBus(bus, Bus.Start(link, bus.Plan(), settings, _time, _logger, OnBusChanges)));
+            var running = bus.Serial.Protocol == LinkProtocol.Ppi
+                ? Bus.StartPpi(new PpiLink(transport, _options.PpiOptionsFor(bus.Serial), _time, _logger), bus.Plan(), settings, _time, _logger, OnBusChanges)
+                : Bus.Start(new PlcLink(transport, options, _time, _logger), bus.Plan(), settings, _time, _logger, OnBusChanges);
+            _buses.Add(new LineBus(bus, running));
         }
 
         _connection = connection;
@@ -210,6 +215,12 @@ public sealed partial class ProjectLine : IAsyncDisposable
         BusOf(station) is { } bus
             ? bus.StopAsync(station, cancellationToken)
             : Task.FromResult<StopOutcome>(new StopOutcome.NotSent(station, "not connected"));
+
+    /// <summary>What PPI tells about a station of a PPI bus (SMB6, SM0.7, scan times), through its bus's queue.</summary>
+    public Task<PpiIdentifyOutcome> IdentifyPpiAsync(Station station, CancellationToken cancellationToken = default) =>
+        BusOf(station) is { } bus
+            ? bus.IdentifyPpiAsync(station, cancellationToken)
+            : throw new InvalidOperationException($"{station} is not on a connected bus");
 
     /// <summary>What the station said in its last answered IDENTIFY while connected; null before one answered or when not connected.</summary>
     public IdentifyResponse? IdentityOf(Station station) => BusOf(station)?.IdentityOf(station);

@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Line;
@@ -9,6 +10,9 @@ public sealed record ProjectLineOptions
 {
     /// <summary>Timing and retry rules of each bus's link; the medium's defaults unless a caller allows longer PLC scans.</summary>
     public Func<SerialSettings, LinkOptions> LinkOptionsFor { get; init; } = serial => LinkOptions.For(serial);
+
+    /// <summary>Timing and repeats of a PPI bus's masters; the master's defaults at the bus's baud unless a caller allows more.</summary>
+    public Func<SerialSettings, PpiMasterOptions> PpiOptionsFor { get; init; } = serial => PpiMasterOptions.ForBaud(serial.BaudRate);
 
     /// <summary>
     /// Runs one batch of subscriber calls. The polling loops run on their own threads: the panel passes its UI

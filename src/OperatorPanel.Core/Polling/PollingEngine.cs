@@ -49,15 +49,18 @@ internal sealed partial class PollingEngine
     {
     }
 
-    /// <summary>An engine for a bus that keeps its station states and its queue across plans (Line/Bus).</summary>
+    /// <summary>
+    /// An engine for a bus that keeps its station states and its queue across plans (Line/Bus); with
+    /// <paramref name="ppi"/> the bus speaks PPI and its stations are read and written over it.
+    /// </summary>
     public PollingEngine(
-        IPlcLink link, PollPlan plan, StationTracker? stations, BusQueue? queue, TimeProvider time, ILogger logger, PollingOptions options, Action<IReadOnlyList<ValueChange>>? onChanges)
+        IPlcLink link, PollPlan plan, StationTracker? stations, BusQueue? queue, TimeProvider time, ILogger logger, PollingOptions options, Action<IReadOnlyList<ValueChange>>? onChanges, PpiLink? ppi = null)
     {
         ArgumentNullException.ThrowIfNull(link);
         ArgumentNullException.ThrowIfNull(plan);
         var log = logger.ForContext<PollingEngine>();
         stations ??= new StationTracker(time, log);
-        _context = new PollingContext(plan, link, new FrameJudge(stations), options, time, log);
+        _context = new PollingContext(plan, link, new FrameJudge(stations), options, time, log) { Ppi = ppi };
         _values = new ValueStore(plan.Values.Select(v => v.Item), time.GetUtcNow());
         _readers = new ReaderChoice(_context);
         _rest = new OfflineRest(stations, log);

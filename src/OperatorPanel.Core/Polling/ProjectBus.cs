@@ -30,8 +30,12 @@ public sealed record ProjectBus(SerialSettings Serial, ImmutableArray<ProjectSta
                 .Concat(s.Alarms.Select(a => a.Flag))
                 .Select(address => new WatchedItem(s.Address, address)));
 
-    public PollPlan Plan(PollCostModel? costModel = null) =>
-        PollPlanner.Build(WatchedItems(), Stations.ToDictionary(s => s.Address, s => s.Cpu), costModel);
+    /// <summary>What the bus reads per cycle: Freeport frames, or on a PPI bus one frame per S7 item (<see cref="PpiPollPlanner"/>).</summary>
+    public PollPlan Plan(PollCostModel? costModel = null) => Plan(WatchedItems(), Stations.ToDictionary(s => s.Address, s => s.Cpu), costModel);
+
+    /// <summary>The plan for <paramref name="items"/> on a bus of these line settings (a one-off read of <c>opanel</c>).</summary>
+    public PollPlan Plan(IEnumerable<WatchedItem> items, IReadOnlyDictionary<Station, Cpu.CpuProfile>? cpus, PollCostModel? costModel = null) =>
+        Serial.Protocol == LinkProtocol.Ppi ? PpiPollPlanner.Build(items, cpus) : PollPlanner.Build(items, cpus, costModel);
 
     public ProjectStation? StationAt(Station address) => Stations.FirstOrDefault(s => s.Address == address);
 }

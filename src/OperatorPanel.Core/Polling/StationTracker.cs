@@ -58,7 +58,7 @@ internal sealed class StationTracker(TimeProvider time, ILogger logger)
     {
         var (message, offline) = exception switch
         {
-            PlcCommunicationException { Kind: PlcErrorKind.NoAnswer or PlcErrorKind.Timeout or PlcErrorKind.PortUnavailable } e =>
+            PlcCommunicationException { Kind: PlcErrorKind.NoAnswer or PlcErrorKind.Timeout or PlcErrorKind.PortUnavailable or PlcErrorKind.AnotherMaster } e =>
                 ($"{e.Kind}: {e.Message}", true),
             PlcCommunicationException e => ($"{e.Kind}: {e.Message}", false),
             _ => ($"link error ({exception.GetType().Name}): {exception.Message}", true),

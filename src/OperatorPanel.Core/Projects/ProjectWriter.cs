@@ -2,6 +2,7 @@ using System.Text;
 using System.Text.Encodings.Web;
 using System.Text.Json;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Projects;
 
@@ -66,6 +67,11 @@ internal static class ProjectWriter
         json.WriteNumber("dataBits", station.Link.DataBits);
         json.WriteNumber("stopBits", station.Link.StopBits);
         json.WriteString("kind", JsonWords.Of(station.Link.Kind));
+        if (station.Link.Protocol != LinkProtocol.Freeport)
+        {
+            // Written only when not the default, so a Freeport project's file stays as it always was.
+            json.WriteString("protocol", JsonWords.Of(station.Link.Protocol));
+        }
         json.WriteEndObject();
         json.WriteBoolean("allowStop", station.AllowStop);
         WriteSymbols(json, "inputs", station.Inputs);

@@ -135,7 +135,7 @@ internal static class StationReader
     }
 
     private static bool SameLine(SerialSettings a, SerialSettings b) =>
-        a.BaudRate == b.BaudRate && a.Parity == b.Parity && a.DataBits == b.DataBits && a.StopBits == b.StopBits && a.Kind == b.Kind;
+        a.BaudRate == b.BaudRate && a.Parity == b.Parity && a.DataBits == b.DataBits && a.StopBits == b.StopBits && a.Kind == b.Kind && a.Protocol == b.Protocol;
 
     private sealed record StationKeys(JsonFields Fields, string? Name, Station? Address, SerialSettings? Link);
 

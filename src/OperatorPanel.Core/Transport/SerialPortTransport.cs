@@ -249,13 +249,20 @@ public sealed class SerialPortTransport : ITransport
     {
         try
         {
-            return OpenOnce();
+            return OpenOnce(_settings.Parity);
+        }
+        catch (ArgumentException) when (_settings.Parity != Parity.None && IsPseudoTerminal(Name))
+        {
+            // A Linux pty drops the parity bit from its settings, and System.IO.Ports, reading them back, refuses the
+            // port once a previous open left its speed as wanted (seen with socat pairs). A pty carries bytes, not bits:
+            // no parity is what it does anyway, so the port is opened so.
+            return OpenOnce(Parity.None);
         }
         catch (Exception first) when (SerialPortErrors.IsOpenFailure(first) && !OperatingSystem.IsWindows())
         {
             try
             {
-                return OpenOnce();
+                return OpenOnce(_settings.Parity);
             }
             catch (Exception second) when (SerialPortErrors.IsOpenFailure(second))
             {
@@ -268,14 +275,33 @@ public sealed class SerialPortTransport : ITransport
         }
     }
 
-    private SerialPort OpenOnce()
+    /// <summary>True for a Linux pseudo-terminal (a /dev/pts/N device, or a link to one as socat makes).</summary>
+    private static bool IsPseudoTerminal(string name)
+    {
+        if (OperatingSystem.IsWindows())
+        {
+            return false;
+        }
+
+        try
+        {
+            var target = File.ResolveLinkTarget(name, returnFinalTarget: true)?.FullName ?? name;
+            return target.StartsWith("/dev/pts/", StringComparison.Ordinal);
+        }
+        catch (IOException)
+        {
+            return false;
+        }
+    }
+
+    private SerialPort OpenOnce(Parity parity)
     {
         var port = new SerialPort();
         try
         {
             port.PortName = Name;
             port.BaudRate = _settings.BaudRate;
-            port.Parity = ToPortParity(_settings.Parity);
+            port.Parity = ToPortParity(parity);
             port.DataBits = _settings.DataBits;
             port.StopBits = _settings.StopBits == 2 ? StopBits.Two : StopBits.One;
             port.Handshake = Handshake.None;

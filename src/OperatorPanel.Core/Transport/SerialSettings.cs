@@ -19,6 +19,9 @@ public sealed record SerialSettings
 
     public LinkKind Kind { get; init; } = LinkKind.Cable;
 
+    /// <summary>Freeport (the handler) or PPI (no program of ours in the PLC); the same for every station on the port.</summary>
+    public LinkProtocol Protocol { get; init; } = LinkProtocol.Freeport;
+
     /// <summary>The line settings as technicians write them: "9600 8N1".</summary>
     public string LineText => string.Create(
         System.Globalization.CultureInfo.InvariantCulture, $"{BaudRate} {DataBits}{Parity.ToString()[0]}{StopBits}");

@@ -35,10 +35,16 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
 
     public string ProjectCpuText => Status.Station.Cpu.DisplayName;
 
-    /// <summary>How the panel reaches it: "COM3 9600 8E1, cable" (port, baud rate, data bits, parity, stop bits, medium).</summary>
-    public string LinkText => $"{Status.PortText}, {(Status.Station.Link.Kind == Core.Transport.LinkKind.RadioModule ? "radio module" : "cable")}";
+    public string PlcCpuText => Status.PpiIdentity is { } ppi
+        ? $"SMB6 16#{ppi.Smb6:X2} (read over PPI)"
+        : Status.Identity?.CpuText ?? Status.IdentifyError ?? "not identified yet";
 
-    public string PlcCpuText => Status.Identity?.CpuText ?? Status.IdentifyError ?? "not identified yet";
+    /// <summary>
+    /// How the panel reaches the station: "PPI, no handler: COM3 9600 8E1, cable" or "Freeport handler: COM3 9600 8N1,
+    /// radio module" (port, baud rate, data bits, parity, stop bits, medium).
+    /// </summary>
+    public string LinkText => $"{(Status.IsPpi ? "PPI, no handler" : "Freeport handler")}: {Status.PortText}, "
+        + (Status.Station.Link.Kind == Core.Transport.LinkKind.RadioModule ? "radio module" : "cable");
 
     public bool CpuMismatch => Status.CpuMismatch;
 
@@ -52,14 +58,16 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
         : string.Empty;
 
     /// <summary>SMB6 as the manual writes it, e.g. 16#20.</summary>
-    public string Smb6Text => Status.Identity is { } id ? "16#" + id.Smb6.ToString("X2", CultureInfo.InvariantCulture) : "-";
+    public string Smb6Text => (Status.Identity?.Smb6 ?? Status.PpiIdentity?.Smb6) is { } smb6 ? "16#" + smb6.ToString("X2", CultureInfo.InvariantCulture) : "-";
 
-    public string HandlerText => Status.Identity is { } id
+    public string HandlerText => Status.IsPpi
+        ? "none needed: the bus speaks PPI"
+        : Status.Identity is { } id
         ? $"protocol {id.ProtocolVersion}, handler revision {id.HandlerRevision}{(id.ProtocolMatches ? string.Empty : " (the panel speaks protocol " + Core.Protocol.HandlerIdentity.ProtocolVersion + ")")}"
         : "-";
 
     /// <summary>RUN when it answers (Freeport works only in RUN); STOP or TERM when it went silent after answering.</summary>
-    public string RunStopText => Status.Health switch
+    public string RunStopText => Status.IsPpi ? PpiRunStopText : Status.Health switch
     {
         StationHealth.Online or StationHealth.HandlerMismatch => Status.Identity is { ModeSwitchRun: false } ? "RUN, mode switch at TERM" : "RUN",
         StationHealth.Stopped => "STOP or TERM (no Freeport reply)",
@@ -69,9 +77,13 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
         StationHealth.Unknown => "-",
     };
 
+    /// <summary>Over PPI RUN or STOP cannot be read (docs/ppi.md section 9); the mode switch can (SM0.7).</summary>
+    private string PpiRunStopText =>
+        $"unknown over PPI{(Status.PpiIdentity is { } ppi ? $" (mode switch at {(ppi.SwitchAtRun ? "RUN" : "TERM")})" : string.Empty)}";
+
     public string ScanTimesText => Status.Identity is { } id
         ? $"last {id.LastScanMs} ms, min {id.MinScanMs} ms, max {id.MaxScanMs} ms"
-        : "-";
+        : Status.PpiIdentity is { } ppi ? $"last {ppi.LastScanMs} ms, min {ppi.MinScanMs} ms, max {ppi.MaxScanMs} ms" : "-";
 
     public string StatisticsText
     {

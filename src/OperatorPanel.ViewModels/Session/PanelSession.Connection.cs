@@ -55,6 +55,13 @@ public sealed partial class PanelSession : IAsyncDisposable
     {
         foreach (var view in IsConnected ? Stations.ToList() : [])
         {
+            if (view.IsPpi)
+            {
+                // No handler on a PPI bus: what PPI tells about the CPU instead (docs/ppi.md section 9).
+                view.NotePpiIdentify(await _line.IdentifyPpiAsync(view.Address, cancellationToken));
+                continue;
+            }
+
             await _line.IdentifyAsync(view.Address, cancellationToken);
         }
 

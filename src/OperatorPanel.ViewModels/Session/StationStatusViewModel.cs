@@ -2,6 +2,7 @@ using CommunityToolkit.Mvvm.ComponentModel;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
@@ -21,7 +22,14 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
 
     public Station Address => Station.Address;
 
-    public string PortText => $"{Station.Link.PortName} {Station.Link.LineText}";
+    public string PortText => $"{Station.Link.PortName} {Station.Link.LineText}{(IsPpi ? " PPI" : string.Empty)}";
+
+    /// <summary>The station's bus speaks PPI: no handler, no IDENTIFY; what PPI tells is <see cref="PpiIdentity"/>.</summary>
+    public bool IsPpi => Station.Link.Protocol == LinkProtocol.Ppi;
+
+    /// <summary>What the last PPI identify read (SMB6, SM0.7, scan times) on a PPI bus; null before one answered.</summary>
+    [ObservableProperty]
+    public partial PpiIdentity? PpiIdentity { get; private set; }
 
     [ObservableProperty]
     [NotifyPropertyChangedFor(nameof(HealthText))]
@@ -76,6 +84,14 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
     /// answered IDENTIFY and what the last IDENTIFY brought. The identity of an earlier answer is kept while none comes
     /// (a later IDENTIFY that failed, a disconnect).
     /// </summary>
+    /// <summary>Takes what a PPI identify brought: the identity is kept while a later one fails.</summary>
+    internal void NotePpiIdentify(PpiIdentifyOutcome outcome)
+    {
+        ArgumentNullException.ThrowIfNull(outcome);
+        PpiIdentity = outcome.Identity ?? PpiIdentity;
+        IdentifyError = outcome.Identity is null ? $"PPI identify: {outcome.Error}" : null;
+    }
+
     internal void Update(StationStatus? status, LinkStatistics statistics, IdentifyResponse? identity = null, LinkReply? lastIdentify = null)
     {
         Statistics = statistics;
@@ -135,7 +151,8 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
         {
             StationState.Online => StationHealth.Online,
             StationState.StoppedByPanel => StationHealth.StoppedByPanel,
-            StationState.Offline when !portGone && _hasAnswered => StationHealth.Stopped,
+            // Over PPI a CPU answers in STOP too: its silence is not a STOP.
+            StationState.Offline when !portGone && _hasAnswered && !IsPpi => StationHealth.Stopped,
             StationState.Offline => StationHealth.Offline,
             StationState.Unknown => StationHealth.Unknown,
         };

@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.ViewModels.Session;
 using OperatorPanel.ViewModels.Wizard;
@@ -23,19 +24,22 @@ public sealed class PortInUseGuard : IConnectionTester
         (_inner, _session) = (inner, session);
     }
 
-    public Task<LinkReply> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
+    public Task<LinkReply> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken) =>
+        InUse(link) is { } inUse
+            ? Task.FromResult<LinkReply>(new LinkReply.Failed(new PlcCommunicationException(PlcErrorKind.PortUnavailable, station, inUse), Sent: false))
+            : _inner.IdentifyAsync(link, station, cancellationToken);
+
+    public Task<PpiIdentifyOutcome> IdentifyPpiAsync(SerialSettings link, Station station, CancellationToken cancellationToken) =>
+        InUse(link) is { } inUse
+            ? Task.FromResult(new PpiIdentifyOutcome(null, inUse))
+            : _inner.IdentifyPpiAsync(link, station, cancellationToken);
+
+    /// <summary>Why the port may not be tested now; null when it may.</summary>
+    private string? InUse(SerialSettings link)
     {
         ArgumentNullException.ThrowIfNull(link);
-        if (_session.IsConnected && _session.Project.Stations.Any(s => string.Equals(s.Link.PortName, link.PortName, StringComparison.OrdinalIgnoreCase)))
-        {
-            return Task.FromResult<LinkReply>(new LinkReply.Failed(
-                new PlcCommunicationException(
-                    PlcErrorKind.PortUnavailable,
-                    station,
-                    $"the panel is connected on {link.PortName}; choose Disconnect in the main window, then test again"),
-                Sent: false));
-        }
-
-        return _inner.IdentifyAsync(link, station, cancellationToken);
+        return _session.IsConnected && _session.Project.Stations.Any(s => string.Equals(s.Link.PortName, link.PortName, StringComparison.OrdinalIgnoreCase))
+            ? $"the panel is connected on {link.PortName}; choose Disconnect in the main window, then test again"
+            : null;
     }
 }

@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 
@@ -16,4 +17,11 @@ public interface IConnectionTester
     /// when the port cannot be opened or no valid reply came.
     /// </summary>
     Task<LinkReply> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken);
+
+    /// <summary>
+    /// For a PPI link: what PPI tells about the CPU (SMB6, SM0.7, scan times; docs/ppi.md section 9), or why nothing
+    /// came. A tester that cannot speak PPI says so.
+    /// </summary>
+    Task<PpiIdentifyOutcome> IdentifyPpiAsync(SerialSettings link, Station station, CancellationToken cancellationToken) =>
+        Task.FromResult(new PpiIdentifyOutcome(null, "this connection test cannot speak PPI"));
 }

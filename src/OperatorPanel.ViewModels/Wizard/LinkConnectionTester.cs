@@ -2,6 +2,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 
@@ -49,5 +50,13 @@ public sealed class LinkConnectionTester : IConnectionTester
         ArgumentNullException.ThrowIfNull(link);
         await using var bus = Bus.OnDemand(new PlcLink(_openTransport(link), LinkOptions.For(link), _time), PollPlan.Empty, _time);
         return await bus.IdentifyAsync(station, cancellationToken);
+    }
+
+    /// <summary>A PPI bus over the transport with the master's default time-outs at the link's baud, one identify job through its queue.</summary>
+    public async Task<PpiIdentifyOutcome> IdentifyPpiAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
+    {
+        ArgumentNullException.ThrowIfNull(link);
+        await using var bus = Bus.StartPpi(new PpiLink(_openTransport(link), link.BaudRate, _time), PollPlan.Empty, BusSettings.OnDemand, _time);
+        return await bus.IdentifyPpiAsync(station, cancellationToken);
     }
 }

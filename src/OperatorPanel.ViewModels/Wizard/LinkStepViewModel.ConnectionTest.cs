@@ -1,6 +1,7 @@
 using System.Globalization;
 using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 
@@ -41,6 +42,12 @@ public sealed partial class LinkStepViewModel
         using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
         try
         {
+            if (link.Protocol == LinkProtocol.Ppi)
+            {
+                (TestSucceeded, TestResult) = Describe(where, await _tester.IdentifyPpiAsync(link, station, stop.Token).WaitAsync(longest, _time, stop.Token), cpu);
+                return;
+            }
+
             var reply = await _tester.IdentifyAsync(link, station, stop.Token).WaitAsync(longest, _time, stop.Token);
             (TestSucceeded, TestResult) = reply.Response switch
             {
@@ -75,6 +82,23 @@ public sealed partial class LinkStepViewModel
             $"{where}: no answer. Check the cable or radio module, the station address, that the PLC is in RUN with its "
             + $"mode switch at RUN (not TERM) and that the handler is loaded. ({failure.Message})",
     };
+
+    /// <summary>Over PPI: SMB6 against the chosen CPU (by code: 224 and 224XP share it); RUN or STOP cannot be known.</summary>
+    private static (bool, string) Describe(string where, PpiIdentifyOutcome outcome, Core.Cpu.CpuProfile cpu)
+    {
+        if (outcome.Identity is not { } identity)
+        {
+            return (false, $"{where} over PPI: {outcome.Error}. Check the cable, the station's PPI address and baud rate (its system block), "
+                + "and that no other master (Micro/WIN, a TD 200) is on the bus.");
+        }
+
+        var answer = string.Create(CultureInfo.InvariantCulture,
+            $"{where} answered over PPI (no handler needed): SMB6 16#{identity.Smb6:X2}, mode switch {(identity.SwitchAtRun ? "RUN" : "TERM")}, "
+            + $"last scan {identity.LastScanMs} ms; RUN or STOP is not known over PPI.");
+        return (identity.Smb6 & 0xF0) == cpu.CpuIdCode
+            ? (true, $"{answer} Matches {cpu.DisplayName}.")
+            : (false, string.Create(CultureInfo.InvariantCulture, $"{answer} CPU mismatch: {cpu.DisplayName} has SMB6 16#{cpu.CpuIdCode:X2}."));
+    }
 
     private static (bool, string) Describe(string where, IdentifyResponse identity, Core.Cpu.CpuProfile cpu)
     {

@@ -7,7 +7,8 @@ namespace OperatorPanel.ViewModels.Wizard;
 
 /// <summary>
 /// Step 5: the link (seed 000 §5-6): a serial port from those present (or typed, for a PC where it is not plugged in),
-/// the Freeport line settings the CPU can run (seed 002, Table C-11), cable or radio module, and "test connection".
+/// Freeport (our handler) or PPI (no program of ours, docs/ppi.md section 14), the line settings the CPU can run for it
+/// (Freeport: seed 002 Table C-11; PPI: 9600, 19200 or 187500 baud, 8E1), cable or radio module, and "test connection".
 /// </summary>
 public sealed partial class LinkStepViewModel : WizardStepViewModel
 {
@@ -20,11 +21,12 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
     private Parity _parity;
     private int _dataBits;
     private LinkKind _kind;
+    private LinkProtocol _protocol;
 
     internal LinkStepViewModel(SerialSettings link, CpuStepViewModel cpuStep, ISerialPortCatalog catalog, IConnectionTester tester, TimeProvider time)
     {
         (_cpuStep, _catalog, _tester, _time) = (cpuStep, catalog, tester, time);
-        (_portName, _baudRate, _parity, _dataBits, _kind) = (link.PortName, link.BaudRate, link.Parity, link.DataBits, link.Kind);
+        (_portName, _baudRate, _parity, _dataBits, _kind, _protocol) = (link.PortName, link.BaudRate, link.Parity, link.DataBits, link.Kind, link.Protocol);
         cpuStep.PropertyChanged += (_, e) =>
         {
             if (e.PropertyName == nameof(CpuStepViewModel.Cpu))
@@ -41,8 +43,41 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
 
     public ObservableCollection<PortChoice> Ports { get; } = [];
 
-    /// <summary>The Freeport rates of the chosen CPU, slowest first.</summary>
-    public IReadOnlyList<int> BaudRates => [.. _cpuStep.Cpu.FreeportBaudRates.Select(r => r.Baud).Order()];
+    /// <summary>The Freeport rates of the chosen CPU, slowest first; over PPI the PPI rates.</summary>
+    public IReadOnlyList<int> BaudRates => Protocol == LinkProtocol.Ppi ? PpiRates : [.. _cpuStep.Cpu.FreeportBaudRates.Select(r => r.Baud).Order()];
+
+    /// <summary>The S7-200's PPI rates (seed 002, Tables ).</summary>
+    public static IReadOnlyList<int> PpiRates { get; } = [9600, 19200, 187500];
+
+    public IReadOnlyList<LinkProtocol> Protocols { get; } = Enum.GetValues<LinkProtocol>();
+
+    /// <summary>The trade-off between the two, in one sentence for the step's page.</summary>
+    public static string ProtocolHint =>
+        "Freeport needs our handler in the PLC and gives change-only refresh and the radio modules; PPI needs no program "
+        + "in the PLC and works in STOP, but reads every value each refresh, runs at 9.6 or 19.2 kbaud on the PC/PPI cable "
+        + "(187.5 on a USB-RS485 adapter) and needs the panel to be the only master on the bus.";
+
+    /// <summary>Freeport or PPI; choosing PPI sets its fixed character (8 data bits, even parity), a PPI rate and the cable.</summary>
+    public LinkProtocol Protocol
+    {
+        get => _protocol;
+        set
+        {
+            if (_protocol == value)
+            {
+                return;
+            }
+
+            Edit(ref _protocol, value);
+            if (value == LinkProtocol.Ppi)
+            {
+                (Parity, DataBits, Kind) = (Parity.Even, 8, LinkKind.Cable);
+                BaudRate = PpiRates.Contains(BaudRate) ? BaudRate : PpiRates[0];
+            }
+
+            OnPropertyChanged(nameof(BaudRates));
+        }
+    }
 
     public IReadOnlyList<Parity> Parities { get; } = Enum.GetValues<Parity>();
 
@@ -80,6 +115,7 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
         DataBits = DataBits,
         StopBits = 1,
         Kind = Kind,
+        Protocol = Protocol,
     };
 
     internal override IEnumerable<string> Check(WizardContext context)
@@ -87,6 +123,16 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
         if (string.IsNullOrWhiteSpace(PortName))
         {
             yield return "Choose a serial port, or type one such as COM3 or /dev/ttyUSB0.";
+        }
+
+        if (Protocol == LinkProtocol.Ppi)
+        {
+            foreach (var problem in CheckPpi())
+            {
+                yield return problem;
+            }
+
+            yield break;
         }
 
         if (context.Cpu.FreeportBaudCode(BaudRate) is null)
@@ -98,6 +144,24 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
         if (DataBits is not (7 or 8))
         {
             yield return string.Create(CultureInfo.InvariantCulture, $"{DataBits} data bits: a Freeport character has 7 or 8 (SMB30 bit 5).");
+        }
+    }
+
+    private IEnumerable<string> CheckPpi()
+    {
+        if (!PpiRates.Contains(BaudRate))
+        {
+            yield return string.Create(CultureInfo.InvariantCulture, $"PPI runs at 9600, 19200 or 187500 baud, not {BaudRate}.");
+        }
+
+        if (Parity != Parity.Even || DataBits != 8)
+        {
+            yield return "A PPI character is always 8 data bits with even parity.";
+        }
+
+        if (Kind != LinkKind.Cable)
+        {
+            yield return "The radio modules carry the handler's Freeport frames; PPI needs the cable.";
         }
     }
 

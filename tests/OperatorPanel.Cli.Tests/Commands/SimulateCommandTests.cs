@@ -82,6 +82,49 @@ public sealed class SimulateCommandTests
         text.Should().Contain($"stopped serving {pty.PathA}: 4 PPI telegrams answered");
     }
 
+    [Fact]
+    public async Task ReadWriteIdentifyPpi_SimulatedCpuWithoutHandler_WorkInRunAndInStop()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        using var simulatorOut = new StringWriter();
+        var output = TextWriter.Synchronized(simulatorOut);
+        string[] args = ["simulate", "--ppi", "--cpu", "224", "--station", "2", "--device", pty.PathA, "--baud", "19200", "--duration", "8", "--no-process", "--log-dir", LogDir];
+        var simulator = Task.Run(() => OpanelApp.Run(args, output, TextWriter.Null));
+        await WaitForAsync(() => Text(output, simulatorOut).Contains("simulating", StringComparison.Ordinal));
+        string[] line = ["--device", pty.PathB, "--ppi", "--baud", "19200", "--cpu", "224", "--scan-ms", "1000"];
+
+        var write = CliRunner.Run(["write", "VB100=66", "MW4=4660", "Q0.1=on", .. line]);
+        var read = CliRunner.Run(["read", "VB100", "I0.0", "MW4", .. line]);
+        var identify = CliRunner.Run(["identify", .. line]);
+        await StopOverPpiAsync(pty.PathB);
+        var readInStop = CliRunner.Run(["read", "VB100", "MW4", .. line]);
+        var writeInStop = CliRunner.Run(["write", "MW4=7", .. line]);
+
+        write.ExitCode.Should().Be(0, write.Error);
+        write.Out.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            "VB100    0 -> 66  confirmed", "MW4      0 -> 4660  confirmed", "Q0.1     0 -> 1  confirmed");
+        read.ExitCode.Should().Be(0, read.Error);
+        read.Out.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            "VB100    66          16#42        good", "I0.0     0                        good", "MW4      4660        16#1234      good");
+        identify.ExitCode.Should().Be(0, identify.Error);
+        identify.Out.Should().Contain("link          PPI 19200 8E1, no handler").And.Contain("SMB6          16#20: CPU 224 or CPU 224XP")
+            .And.Contain("mode          unknown over PPI").And.Contain("cpu check     ok: matches CPU 224");
+        readInStop.ExitCode.Should().Be(0, readInStop.Error);
+        readInStop.Out.Should().Contain("MW4      4660        16#1234      good");
+        writeInStop.ExitCode.Should().Be(0, writeInStop.Error);
+        writeInStop.Out.Should().StartWith("MW4      4660 -> 7  confirmed");
+        (await simulator).Should().Be(0);
+    }
+
+    /// <summary>The S7 STOP job (docs/ppi.md section 5) from a master of the test's own: the panel offers no STOP over PPI.</summary>
+    private static async Task StopOverPpiAsync(string device)
+    {
+        await using var port = new SerialPortTransport(new SerialSettings { PortName = device, BaudRate = 19200, Parity = Parity.Even });
+        await port.OpenAsync(default);
+        var master = new PpiMaster(port, PpiMasterOptions.ForBaud(19200) with { ReplyTimeout = TimeSpan.FromMilliseconds(800), AnswerTimeout = TimeSpan.FromSeconds(3) });
+        await master.ExchangeAsync(new Station(2), S7JobCodec.Stop(1), default);
+    }
+
     [Theory]
     [InlineData("--baud", "38400")]
     [InlineData("--parity", "none")]

@@ -37,6 +37,23 @@ public sealed class WatchCommandTests : IDisposable
     }
 
     [Fact]
+    public void Watch_DemoPpiBus_ReadsTheCpusWithoutHandlerAndShowsPpi()
+    {
+        var file = Path.Combine(_folder, "ppi.opproj");
+        File.WriteAllText(file, File.ReadAllText(Sample)
+            .Replace("\"parity\": \"none\"", "\"parity\": \"even\"", StringComparison.Ordinal)
+            .Replace("\"kind\": \"cable\"", "\"kind\": \"cable\", \"protocol\": \"ppi\"", StringComparison.Ordinal));
+
+        var run = CliRunner.Run("watch", file, "--demo", "--once");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Should().Contain("Filler  station 2  CPU 224  COM3 (demo) 9600 8E1 PPI  online");
+        run.Out.Should().MatchRegex(@"link     requests \d+  replies [1-9]\d*  retries \d+  timeouts \d+");
+        run.Out.Should().MatchRegex(@"    BottleCount      VD100 +\d+  good");
+        run.Out.Should().MatchRegex(@"    StatusWord       MW10 +2#\d{4}_\d{4}_\d{4}_\d{4}  good");
+    }
+
+    [Fact]
     public void Watch_DemoCyclesJson_PrintsOneObjectPerCycle()
     {
         var run = CliRunner.Run("watch", Sample, "--demo", "--cycles", "2", "--json");

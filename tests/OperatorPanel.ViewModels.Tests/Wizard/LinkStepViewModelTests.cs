@@ -4,7 +4,10 @@ using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
+using OperatorPanel.Simulator.Stl.Freeport;
+using OperatorPanel.Simulator.Stl.Ppi;
 using OperatorPanel.TestKit;
 using OperatorPanel.ViewModels.Tests.Fakes;
 using OperatorPanel.ViewModels.Wizard;
@@ -174,6 +177,43 @@ public sealed class LinkStepViewModelTests
         link.TestSucceeded.Should().BeNull();
         _tester.ToldToStop.Should().BeTrue();
         link.TestConnectionCommand.IsRunning.Should().BeFalse();
+    }
+
+    [Fact]
+    public void Protocol_Ppi_SetsPpisCharacterAndRatesAndRefusesTheRadio()
+    {
+        var wizard = Wizard();
+        wizard.CurrentIndex = 4;
+        var link = wizard.LinkStep;
+
+        link.Protocol = LinkProtocol.Ppi;
+
+        (link.Parity, link.DataBits, link.Kind, link.BaudRate).Should().Be((Parity.Even, 8, LinkKind.Cable, 9600));
+        link.BaudRates.Should().Equal(9600, 19200, 187500);
+        link.Build().Protocol.Should().Be(LinkProtocol.Ppi);
+        wizard.FinishCommand.CanExecute(null).Should().BeTrue();
+        link.Kind = LinkKind.RadioModule;
+        wizard.Message.Should().Be("The radio modules carry the handler's Freeport frames; PPI needs the cable.");
+        LinkStepViewModel.ProtocolHint.Should().StartWith("Freeport needs our handler in the PLC");
+    }
+
+    [Fact]
+    public async Task TestConnection_Ppi_ReadsTheSimulatedCpuWithoutHandler()
+    {
+        var line = new StlLine(new LineSettings(9600, Parity.Even, 8));
+        StlStation.TryCreate(EmptyProgram.Awl, CpuProfiles.For(CpuModel.Cpu224), 0, new LineSettings(9600, Parity.Even, 8), out var station, out var error).Should().BeTrue(error);
+        station!.AttachPpi(new PpiSettings(2, 9600));
+        line.Attach(station, runProcess: false);
+        line.RunUntil(TimeSpan.FromMilliseconds(50));
+        var transport = new SimulatedLineTransport(line);
+        var link = Wizard(new LinkConnectionTester(_ => transport, transport.Clock)).LinkStep;
+        link.Protocol = LinkProtocol.Ppi;
+
+        await link.TestConnectionCommand.ExecuteAsync(null);
+
+        link.TestResult.Should().StartWith("Station 2 on COM3 at 9600 8E1 answered over PPI (no handler needed): SMB6 16#20, mode switch RUN")
+            .And.Contain("RUN or STOP is not known over PPI").And.EndWith("Matches CPU 224.");
+        link.TestSucceeded.Should().BeTrue();
     }
 
     private ProjectWizardViewModel Wizard(IConnectionTester? tester = null) => new(tester ?? _tester, new FakePortCatalog());

@@ -28,20 +28,30 @@ internal sealed class FrameJudge(StationTracker stations)
 
     public FrameRead Refused(PollFrame frame, ErrorResponse refused)
     {
-        ArgumentNullException.ThrowIfNull(frame);
         ArgumentNullException.ThrowIfNull(refused);
-        var refusal = $"{frame.Station} refused READ {Describe(frame)}: {refused.Error}";
-        stations.RecordReply(frame.Station, refusal);
-        return FrameRead.Refusal(refusal);
+        return Refusal(frame, $"{frame.Station} refused READ {Describe(frame)}: {refused.Error}");
     }
 
+    /// <summary>A PPI item answered with a return code other than success: <paramref name="reason"/> in our words.</summary>
+    public FrameRead Refused(PollFrame frame, string reason) => Refusal(frame, $"{frame.Station} refused reading {Describe(frame)}: {reason}");
+
     /// <summary>A reply came that does not fit the frame: the station answers, so it keeps its state.</summary>
-    public FrameRead Unexpected(PollFrame frame, PlcResponse? response)
+    public FrameRead Unexpected(PollFrame frame, PlcResponse? response) => Unexpected(frame, Describe(response));
+
+    /// <summary>A reply came that does not fit the frame (<paramref name="what"/> it brought): the station keeps its state.</summary>
+    public FrameRead Unexpected(PollFrame frame, string what)
     {
         ArgumentNullException.ThrowIfNull(frame);
-        var message = $"unexpected reply to READ {Describe(frame)}: {Describe(response)}";
+        var message = $"unexpected reply to READ {Describe(frame)}: {what}";
         stations.RecordBadReply(frame.Station, message);
         return FrameRead.Failure(message, stationOffline: false);
+    }
+
+    private FrameRead Refusal(PollFrame frame, string refusal)
+    {
+        ArgumentNullException.ThrowIfNull(frame);
+        stations.RecordReply(frame.Station, refusal);
+        return FrameRead.Refusal(refusal);
     }
 
     public static string Describe(PollFrame frame)

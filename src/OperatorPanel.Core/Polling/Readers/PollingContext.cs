@@ -4,4 +4,8 @@ using Serilog;
 namespace OperatorPanel.Core.Polling.Readers;
 
 /// <summary>What the readers and the writer of one bus share: its plan, its link, its station states and its clock.</summary>
-internal sealed record PollingContext(PollPlan Plan, IPlcLink Link, FrameJudge Judge, PollingOptions Options, TimeProvider Time, ILogger Logger);
+internal sealed record PollingContext(PollPlan Plan, IPlcLink Link, FrameJudge Judge, PollingOptions Options, TimeProvider Time, ILogger Logger)
+{
+    /// <summary>The PPI link of a bus that speaks PPI (its stations are read and written over it); null on a Freeport bus.</summary>
+    public PpiLink? Ppi { get; init; }
+}

@@ -10,8 +10,9 @@ namespace OperatorPanel.Core.Polling.Readers;
 /// each station of the plan, in the order the loop asks them, chosen from what the station reported in IDENTIFY (docs/protocol.md, "01 IDENTIFY", FEATURES): until it has, <see cref="ListReader"/> with READ CHANGES;
 /// without READ CHANGES copies (FEATURES bit 1 clear or COPY_BYTES 0) every READ CHANGES would answer FULL, 4 characters
 /// longer than READ LIST, so its lists are read with READ LIST; with FEATURES bit 2 the lists in step go first in one
-/// <see cref="ChangesOfListsReader"/> exchange. <see cref="PlainReader"/> is last for every station. The place where a
-/// new way of reading is chosen (docs/architecture.md, "Readers").
+/// <see cref="ChangesOfListsReader"/> exchange. <see cref="PlainReader"/> is last for every station. A PPI bus
+/// (<see cref="PollingContext.Ppi"/>) reads every station with <see cref="PpiReader"/> and writes with
+/// <see cref="PpiWriter"/>. The place where a new way of reading is chosen (docs/architecture.md, "Readers").
 /// </summary>
 internal sealed class ReaderChoice
 {
@@ -24,7 +25,7 @@ internal sealed class ReaderChoice
     {
         ArgumentNullException.ThrowIfNull(context);
         _context = context;
-        Writer = new FreeportWriter(context);
+        Writer = context.Ppi is { } ppi ? new PpiWriter(context, ppi) : new FreeportWriter(context);
         foreach (var station in context.Plan.Stations)
         {
             _lists[station] = new StoredLists(context.Plan, station);
@@ -32,7 +33,7 @@ internal sealed class ReaderChoice
         }
     }
 
-    /// <summary>How writes reach the bus's stations: the handler's WRITE and WRITE BIT (a PPI bus would bring its own).</summary>
+    /// <summary>How writes reach the bus's stations: the handler's WRITE and WRITE BIT, or S7 write-var on a PPI bus.</summary>
     public IStationWriter Writer { get; }
 
     public ImmutableArray<IStationReader> ReadersOf(Station station)
@@ -58,6 +59,12 @@ internal sealed class ReaderChoice
 
     private ImmutableArray<IStationReader> Choose(StoredLists lists, IdentifyResponse? identity)
     {
+        if (_context.Ppi is { } ppi)
+        {
+            // A PPI bus: no handler, so no IDENTIFY to choose from; every station is read with S7 jobs.
+            return [new PpiReader(_context, ppi)];
+        }
+
         var plain = new PlainReader(_context);
         if (!_context.Options.UseReadLists || lists.Lists.IsEmpty)
         {

@@ -1,0 +1,184 @@
+using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Line;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Ppi;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.Core.Writes;
+using OperatorPanel.Simulator.Hosting;
+using OperatorPanel.Simulator.Stl.Freeport;
+using OperatorPanel.Simulator.Stl.Ppi;
+
+namespace OperatorPanel.IntegrationTests.Ppi;
+
+/// <summary>
+/// A PPI bus behind the one bus owner (Line/Bus.StartPpi): the PPI reader and writer chosen for every station, the
+/// plan of Polling/PpiPollPlanner, over a simulated S7-200 with no handler, in the line's own time
+/// (<see cref="SimulatedLineTransport"/>: no real time passes on the wire).
+/// </summary>
+public sealed class PpiBusTests
+{
+    private static readonly LineSettings PpiLine = new(9600, Parity.Even, 8);
+    private static readonly Station Cpu2 = new(2);
+
+    [Fact]
+    public async Task Refresh_NoHandlerLoaded_ReadsEveryValueGood()
+    {
+        var (line, station) = Create();
+        station.Memory.V[100] = 0x42;
+        station.Plc.InputImage[0] = 0x01;
+        (station.Memory.M[4], station.Memory.M[5]) = (0x12, 0x34);
+        await using var bus = Start(line, "VB100", "I0.0", "MW4");
+
+        await bus.RefreshAsync();
+
+        Value(bus, "VB100").Should().Be("42 Good");
+        Value(bus, "I0.0").Should().Be("01 Good");
+        Value(bus, "MW4").Should().Be("1234 Good");
+        bus.StatusOf(Cpu2).State.Should().Be(StationState.Online);
+        bus.PpiCounters!.Jobs.Should().Be(1, "three addresses fit one read job");
+    }
+
+    [Fact]
+    public async Task Refresh_ItemRefusedByTheCpu_OnlyItsValueIsBadWithTheCodesText()
+    {
+        var (line, station) = Create();
+        station.Memory.V[100] = 0x42;
+        await using var bus = Start(line, "VB100", "VB30000");
+
+        await bus.RefreshAsync();
+
+        Value(bus, "VB100").Should().Be("42 Good");
+        bus.TryGetValue(Cpu2, PlcAddress.Parse("VB30000"), out var refused).Should().BeTrue();
+        refused.Quality.Should().Be(ValueQuality.Bad);
+        refused.Error.Should().Contain("beyond the CPU's memory (16#05)");
+        bus.StatusOf(Cpu2).State.Should().Be(StationState.Online, "a refused item is an answer");
+    }
+
+    [Fact]
+    public async Task Refresh_CpuInStop_StillReads()
+    {
+        var (line, station) = Create();
+        station.Memory.V[100] = 0x07;
+        station.Plc.Stop();
+        await using var bus = Start(line, "VB100");
+
+        await bus.RefreshAsync();
+
+        Value(bus, "VB100").Should().Be("07 Good");
+    }
+
+    [Fact]
+    public async Task Refresh_NoCpuAtTheAddress_StationOfflineValueBad()
+    {
+        var (line, _) = Create();
+        await using var bus = Start(line, new Station(5), "VB100");
+
+        await bus.RefreshAsync();
+
+        var status = bus.StatusOf(new Station(5));
+        status.State.Should().Be(StationState.Offline);
+        status.LastErrorKind.Should().Be(PlcErrorKind.NoAnswer);
+        bus.TryGetValue(new Station(5), PlcAddress.Parse("VB100"), out var value).Should().BeTrue();
+        value.Quality.Should().Be(ValueQuality.Bad);
+    }
+
+    [Fact]
+    public async Task Write_WordAndBit_ConfirmedByReadBackAndInTheValues()
+    {
+        var (line, station) = Create();
+        station.Memory.Q[0] = 0x01;
+        await using var bus = Start(line, "MW4", "Q0.3");
+        await bus.RefreshAsync();
+
+        var word = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("MW4"), [0xBE, 0xEF]));
+        var bit = await bus.WriteAsync(WriteRequest.Bit(Cpu2, PlcAddress.Parse("Q0.3"), true));
+
+        word.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0xBE, 0xEF);
+        bit.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0x01);
+        (station.Memory.M[4], station.Memory.M[5], station.Memory.Q[0]).Should().Be(((byte)0xBE, (byte)0xEF, (byte)0x09), "a bit item leaves Q0.0 alone");
+        Value(bus, "MW4").Should().Be("BEEF Good");
+        Value(bus, "Q0.3").Should().Be("01 Good");
+    }
+
+    [Fact]
+    public async Task Write_AddressTheCpuRefuses_FailedWithTheCodesText()
+    {
+        var (line, _) = Create();
+        await using var bus = Start(line, "VB100");
+
+        var outcome = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("VB30000"), [0x01]));
+
+        var failed = outcome.Should().BeOfType<WriteOutcome.Failed>().Which;
+        failed.Kind.Should().Be(WriteFailureKind.RefusedByPlc);
+        failed.Reason.Should().Contain("16#05");
+    }
+
+    [Fact]
+    public async Task Write_InputArea_RefusedBeforeSending()
+    {
+        var (line, _) = Create();
+        await using var bus = Start(line, "VB100");
+
+        var outcome = await bus.WriteAsync(WriteRequest.Bit(Cpu2, PlcAddress.Parse("I0.0"), true));
+
+        outcome.Should().BeOfType<WriteOutcome.Failed>().Which.Kind.Should().Be(WriteFailureKind.InvalidRequest);
+        bus.PpiCounters!.Jobs.Should().Be(0);
+    }
+
+    [Fact]
+    public async Task IdentifyPpi_Cpu224_ReadsSmb6SwitchAndScanTimes()
+    {
+        var (line, station) = Create();
+        await using var bus = Start(line, "VB100");
+
+        var outcome = await bus.IdentifyPpiAsync(Cpu2);
+
+        outcome.Error.Should().BeNull();
+        var identity = outcome.Identity!;
+        identity.Smb6.Should().Be(CpuProfiles.For(CpuModel.Cpu224).CpuIdCode);
+        identity.SwitchAtRun.Should().BeTrue();
+        identity.LastScanMs.Should().Be((station.Memory.SM[22] << 8) | station.Memory.SM[23]);
+    }
+
+    [Fact]
+    public async Task FreeportRequests_OnAPpiBus_FailBeforeAnythingIsSent()
+    {
+        var (line, _) = Create();
+        await using var bus = Start(line, "VB100");
+
+        var reply = await bus.IdentifyAsync(Cpu2);
+        var stop = await bus.StopAsync(Cpu2);
+
+        reply.Failure!.Message.Should().Contain("is a PPI bus");
+        stop.Verdict.Should().Be(Core.Stop.StopVerdict.NotSent);
+        bus.PpiCounters!.Jobs.Should().Be(0);
+    }
+
+    private static (StlLine Line, StlStation Station) Create()
+    {
+        var line = new StlLine(PpiLine);
+        StlStation.TryCreate(EmptyProgram.Awl, CpuProfiles.For(CpuModel.Cpu224), 0, PpiLine, out var station, out var error).Should().BeTrue(error);
+        station!.AttachPpi(new PpiSettings(2, 9600));
+        line.Attach(station, runProcess: false);
+        line.RunUntil(TimeSpan.FromMilliseconds(50));
+        return (line, station);
+    }
+
+    private static Bus Start(StlLine line, params string[] addresses) => Start(line, Cpu2, addresses);
+
+    private static Bus Start(StlLine line, Station station, params string[] addresses)
+    {
+        var transport = new SimulatedLineTransport(line);
+        var plan = PpiPollPlanner.Build(addresses.Select(a => new WatchedItem(station, PlcAddress.Parse(a))));
+        return Bus.StartPpi(new PpiLink(transport, 9600, transport.Clock), plan, BusSettings.OnDemand, transport.Clock);
+    }
+
+    private static string Value(Bus bus, string address)
+    {
+        bus.TryGetValue(Cpu2, PlcAddress.Parse(address), out var value).Should().BeTrue();
+        return $"{Convert.ToHexString(value.Raw.AsSpan())} {value.Quality}";
+    }
+}
