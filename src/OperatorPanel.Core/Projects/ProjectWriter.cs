@@ -85,6 +85,7 @@ internal static class ProjectWriter
             json.WriteString("format", JsonWords.Of(tag.Format));
             json.WriteBoolean("writable", tag.Writable);
             json.WriteString("description", tag.Description);
+            WriteEngineering(json, tag);
             json.WriteBoolean("record", tag.Recorded);
             // Written only when set: absent means the project's deadband, and a file full of nulls reads as unfinished.
             if (tag.Deadband is { } deadband)
@@ -92,7 +93,6 @@ internal static class ProjectWriter
                 json.WriteNumber("deadband", deadband);
             }
 
-            WriteEngineering(json, tag);
             json.WriteEndObject();
         }
 
