@@ -40,11 +40,12 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
         : Status.Identity?.CpuText ?? Status.IdentifyError ?? "not identified yet";
 
     /// <summary>
-    /// How the panel reaches the station: "PPI, no handler: COM3 9600 8E1, cable" or "Freeport handler: COM3 9600 8N1,
-    /// radio module" (port, baud rate, data bits, parity, stop bits, medium).
+    /// How the panel reaches the station: "COM3 9600 8N1, cable, Freeport handler" or "COM3 19200 8E1, cable, PPI, no
+    /// handler" (port, baud rate, data bits, parity, stop bits, medium, protocol).
     /// </summary>
-    public string LinkText => $"{(Status.IsPpi ? "PPI, no handler" : "Freeport handler")}: {Status.PortText}, "
-        + (Status.Station.Link.Kind == Core.Transport.LinkKind.RadioModule ? "radio module" : "cable");
+    public string LinkText => $"{Status.Station.Link.PortName} {Status.Station.Link.LineText}, "
+        + (Status.Station.Link.Kind == Core.Transport.LinkKind.RadioModule ? "radio module" : "cable")
+        + (Status.IsPpi ? ", PPI, no handler" : ", Freeport handler");
 
     public bool CpuMismatch => Status.CpuMismatch;
 

@@ -49,7 +49,7 @@ public sealed class WatchCommandTests : IDisposable
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Should().Contain("Filler  station 2  CPU 224  COM3 (demo) 9600 8E1 PPI  online");
         run.Out.Should().MatchRegex(@"link     requests \d+  replies [1-9]\d*  retries \d+  timeouts \d+");
-        run.Out.Should().MatchRegex(@"    BottleCount      VD100 +\d+  good");
+        run.Out.Should().MatchRegex(@"    BottleCount      VD100 +\d+ bottles  good");
         run.Out.Should().MatchRegex(@"    StatusWord       MW10 +2#\d{4}_\d{4}_\d{4}_\d{4}  good");
     }
 

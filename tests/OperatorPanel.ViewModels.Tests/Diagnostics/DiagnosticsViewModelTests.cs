@@ -25,7 +25,7 @@ public sealed class DiagnosticsViewModelTests : IAsyncDisposable
 
         var station = _diagnostics.Stations.Should().ContainSingle().Subject;
         station.ProjectCpuText.Should().Be("CPU 224");
-        station.LinkText.Should().Be("COM7 9600 8N1, cable");
+        station.LinkText.Should().Be("COM7 9600 8N1, cable, Freeport handler");
         station.PlcCpuText.Should().Be("CPU 224");
         station.CpuMismatch.Should().BeFalse();
         station.Smb6Text.Should().Be("16#" + _panel.Plc.Memory.SM[6].ToString("X2", System.Globalization.CultureInfo.InvariantCulture));

@@ -24,7 +24,7 @@ public sealed class PpiStationDiagnosticsTests : IAsyncDisposable
         status.NotePpiIdentify(new PpiIdentifyOutcome(new PpiIdentity(new Station(2), 0x20, SwitchAtRun: false, 7, 5, 11), null));
         status.Update(StationStatus.Initial(new Station(2)) with { State = StationState.Offline, LastError = "NoAnswer: silent" }, Core.Link.LinkStatistics.Empty);
 
-        row.LinkText.Should().Be("PPI, no handler: COM3 19200 8E1");
+        row.LinkText.Should().Be("COM3 19200 8E1, cable, PPI, no handler");
         row.HandlerText.Should().Be("none needed: the bus speaks PPI");
         row.Smb6Text.Should().Be("16#20");
         row.PlcCpuText.Should().Be("SMB6 16#20 (read over PPI)");
