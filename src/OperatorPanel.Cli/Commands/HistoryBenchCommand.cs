@@ -60,8 +60,8 @@ internal static class HistoryBenchCommand
 
     private static void Print(CliContext cli, HistoryBenchResult demo, HistoryBenchResult many, double rate)
     {
-        var core = many.CorePercent < CoreGoalPercent ? "PASS" : "FAIL";
-        var day = many.MbPerDay < DayGoalMb ? "PASS" : "FAIL";
+        var core = many.CorePercent < CoreGoalPercent ? "met" : "NOT MET";
+        var day = many.MbPerDay < DayGoalMb ? "met" : "NOT MET";
         if (cli.Json)
         {
             cli.WriteJson(new

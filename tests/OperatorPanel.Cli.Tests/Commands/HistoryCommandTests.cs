@@ -101,7 +101,7 @@ public sealed class HistoryCommandTests : IDisposable
 
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Should().Contain("demo line").And.Contain("20 tags at 1 s").And.MatchRegex(@"insert rate .*: \d+ rows/s");
-        run.Out.Should().MatchRegex(@"goals for 20 tags at 1 s: cpu \d+\.\d\d % < 5 % of a core (PASS|FAIL); growth \d+\.\d MB/day < 100 MB (PASS|FAIL)");
+        run.Out.Should().MatchRegex(@"goals for 20 tags at 1 s: cpu \d+\.\d\d % < 5 % of a core (met|NOT MET); growth \d+\.\d MB/day < 100 MB (met|NOT MET)");
     }
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);
