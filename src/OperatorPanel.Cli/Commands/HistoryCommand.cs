@@ -53,7 +53,7 @@ internal static class HistoryCommand
             try
             {
                 var reader = new HistoryReader(database);
-                var histories = reader.Read(named.Select(n => (n.Tag.Station, n.Tag.Address)), start, end);
+                var histories = reader.Read([.. named.Select(n => n.Tag)], start, end);
                 var view = new HistoryView(load.Project.Name, database, reader.Exists, start, end, named, histories);
                 view.Print(cli, parse.GetValue(csv));
                 return ExitCodes.Ok;

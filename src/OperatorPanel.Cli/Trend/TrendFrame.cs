@@ -1,6 +1,5 @@
 using OperatorPanel.Cli.History;
 using OperatorPanel.Core.Line;
-using OperatorPanel.Historian;
 using OperatorPanel.Historian.Reading;
 
 namespace OperatorPanel.Cli.Trend;
@@ -12,13 +11,13 @@ internal sealed record TrendFrame(DateTimeOffset From, DateTimeOffset To, IReadO
     {
         var from = now - span;
         var spans = reader.Sessions(from, now);
-        var histories = reader.Read(tags.Select(t => (t.Tag.Station, t.Tag.Address)), from, now);
+        var histories = reader.Read([.. tags.Select(t => t.Tag)], from, now);
         var panels = tags.Zip(histories, (tag, history) =>
         {
             var series = TrendSeries.Of(history, spans, from, now, liveUntil: now);
             var rows = TrendText.Draw(TrendColumns.Of(series, width), height, out var min, out var max);
             line.TryGetValue(tag.Tag.Station, tag.Tag.Address, out var value);
-            var text = value.HasValue ? TagValue.ToText(TagValue.ToStored(value.Raw), tag.Tag.Address, tag.Tag.Format) : "-";
+            var text = value.HasValue ? tag.Tag.Text(value.Raw.AsSpan()) : "-";
             return new TrendPanel(tag.Name, text, value.Quality.ToString().ToLowerInvariant(), min, max, rows, series.Gaps.Count);
         });
         return new TrendFrame(from, now, [.. panels]);

@@ -2,6 +2,7 @@ using System.Buffers.Binary;
 using System.Collections.Immutable;
 using System.Diagnostics.CodeAnalysis;
 using System.Globalization;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.Core.Values;
@@ -20,10 +21,16 @@ public static class TagValues
     public static string Format(ProjectTag tag, ReadOnlySpan<byte> raw)
     {
         ArgumentNullException.ThrowIfNull(tag);
-        var text = tag.Scale is { } scale && IsNumeric(tag.Format)
-            ? scale.ToValue(RawNumber(tag.Format, raw)).ToString("F" + scale.Decimals.ToString(CultureInfo.InvariantCulture), CultureInfo.InvariantCulture)
-            : ValueFormatter.Format(raw, tag.Address.Width, tag.Format);
-        return tag.Unit is { } unit ? $"{text} {unit}" : text;
+        return Format(tag.Address, tag.Format, tag.Scale, tag.Unit, raw);
+    }
+
+    /// <summary>The same for a value known by its address, format, scale and unit (a recorded value of the historian).</summary>
+    public static string Format(PlcAddress address, DisplayFormat format, TagScale? scale, string? unit, ReadOnlySpan<byte> raw)
+    {
+        var text = scale is not null && IsNumeric(format)
+            ? scale.ToValue(RawNumber(format, raw)).ToString("F" + scale.Decimals.ToString(CultureInfo.InvariantCulture), CultureInfo.InvariantCulture)
+            : ValueFormatter.Format(raw, address.Width, format);
+        return unit is not null ? $"{text} {unit}" : text;
     }
 
     /// <summary>

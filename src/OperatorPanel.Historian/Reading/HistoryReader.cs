@@ -3,6 +3,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Historian.Recording;
 using OperatorPanel.Historian.Storage;
 
 namespace OperatorPanel.Historian.Reading;
@@ -16,6 +17,13 @@ public sealed class HistoryReader(string path)
     public string Path { get; } = path;
 
     public bool Exists => File.Exists(Path);
+
+    /// <summary>The history of each of <paramref name="tags"/>, its numbers and texts in the tag's engineering units (scale and unit as the project has them now).</summary>
+    public IReadOnlyList<TagHistory> Read(IReadOnlyList<RecordedTag> tags, DateTimeOffset from, DateTimeOffset to)
+    {
+        ArgumentNullException.ThrowIfNull(tags);
+        return [.. Read(tags.Select(t => (t.Station, t.Address)), from, to).Zip(tags, (history, tag) => history with { Scale = tag.Scale, Unit = tag.Unit })];
+    }
 
     /// <summary>
     /// The rows of each of <paramref name="values"/> from <paramref name="from"/> to <paramref name="to"/>, with the last

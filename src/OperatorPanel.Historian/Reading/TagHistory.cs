@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.Historian.Reading;
 
@@ -14,7 +15,19 @@ namespace OperatorPanel.Historian.Reading;
 /// <param name="Samples">The rows.</param>
 public sealed record TagHistory(Station Station, PlcAddress Address, string Symbol, DisplayFormat Format, IReadOnlyList<HistorySample> Samples)
 {
-    public double? Number(HistorySample sample) => sample.Stored is { } v ? TagValue.ToNumber(v, Address, Format) : null;
+    /// <summary>The tag's scale as the project has it now: numbers and texts in engineering units (HistoryReader.Read with the recorded tags).</summary>
+    public TagScale? Scale { get; init; }
 
-    public string Text(HistorySample sample) => sample.Stored is { } v ? TagValue.ToText(v, Address, Format) : "-";
+    /// <summary>The tag's unit, shown after each value.</summary>
+    public string? Unit { get; init; }
+
+    /// <summary>The number a trend plots: the value in the tag's format, scaled; null for a row without a value.</summary>
+    public double? Number(HistorySample sample) => sample.Stored is { } v
+        ? TagValue.ToNumber(v, Address, Format) is var number && Scale is { } scale && TagValues.IsNumeric(Format) ? scale.ToValue(number) : number
+        : null;
+
+    /// <summary>The value as the panel shows it ("16.7 %"); "-" for a row without a value.</summary>
+    public string Text(HistorySample sample) => sample.Stored is { } v
+        ? Format.Fits(Address.Width) ? TagValues.Format(Address, Format, Scale, Unit, TagValue.ToRaw(v, Address).AsSpan()) : TagValue.ToText(v, Address, Format)
+        : "-";
 }

@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.Historian.Recording;
 
@@ -17,6 +18,15 @@ public sealed record RecordedTag(Station Station, PlcAddress Address, string Sym
     /// <summary>Numbers move by amounts a deadband can judge; a bit, a hex code, a bit pattern or characters change or do not.</summary>
     public bool IsNumeric => Format is DisplayFormat.Unsigned or DisplayFormat.Signed or DisplayFormat.Float;
 
+    /// <summary>The tag's linear scale: histories and trends show the engineering value; the stored integer stays raw.</summary>
+    public TagScale? Scale { get; init; }
+
+    /// <summary>The tag's unit, shown after its value ("16.7 %").</summary>
+    public string? Unit { get; init; }
+
+    /// <summary>A value as the panel shows it: format, scale and unit ("16.7 %").</summary>
+    public string Text(ReadOnlySpan<byte> raw) => TagValues.Format(Address, Format, Scale, Unit, raw);
+
     /// <summary>Every recorded value of <paramref name="project"/>: inputs, outputs, then the tags not marked "record": false.</summary>
     public static IReadOnlyList<RecordedTag> Of(PanelProject project)
     {
@@ -26,7 +36,7 @@ public sealed record RecordedTag(Station Station, PlcAddress Address, string Sym
         foreach (var station in project.Stations)
         {
             var candidates = station.Inputs.Concat(station.Outputs).Select(s => new RecordedTag(station.Address, s.Address, s.Symbol, DisplayFormat.Bool, null))
-                .Concat(station.Tags.Where(t => t.Recorded).Select(t => new RecordedTag(station.Address, t.Address, t.Symbol, t.Format, t.Deadband)));
+                .Concat(station.Tags.Where(t => t.Recorded).Select(t => new RecordedTag(station.Address, t.Address, t.Symbol, t.Format, t.Deadband) { Scale = t.Scale, Unit = t.Unit }));
             tags.AddRange(candidates.Where(c => seen.Add((c.Station, c.Address))));
         }
 

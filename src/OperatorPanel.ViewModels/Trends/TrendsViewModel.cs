@@ -3,7 +3,6 @@ using System.ComponentModel;
 using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Projects;
-using OperatorPanel.Historian;
 using OperatorPanel.Historian.Reading;
 using OperatorPanel.Historian.Recording;
 using OperatorPanel.Historian.Storage;
@@ -145,7 +144,7 @@ public sealed partial class TrendsViewModel : ObservableObject, IDisposable
 
             await historian.FlushAsync();
             var (from, to, reader) = (From, To, historian.Reader);
-            var (histories, spans) = await Task.Run(() => (reader.Read(picked.Select(t => (t.Tag.Station, t.Tag.Address)), from, to), reader.Sessions(from, to)));
+            var (histories, spans) = await Task.Run(() => (reader.Read([.. picked.Select(t => t.Tag)], from, to), reader.Sessions(from, to)));
             Plot = TrendPlotBuilder.Build(picked, histories, spans, from, to, IsLive ? to : null, Cursor);
             Message = picked.Count == 0 ? "Pick tags in the list to trend them." : null;
             UpdateValues(picked);
@@ -173,12 +172,12 @@ public sealed partial class TrendsViewModel : ObservableObject, IDisposable
         {
             _session.Values.TryGetValue(tag.Tag.Station, tag.Tag.Address, out var now);
             tag.ValueText = now.HasValue
-                ? $"{TagValue.ToText(TagValue.ToStored(now.Raw), tag.Tag.Address, tag.Tag.Format)} ({now.Quality.ToString().ToLowerInvariant()})"
+                ? $"{tag.Tag.Text(now.Raw.AsSpan())} ({now.Quality.ToString().ToLowerInvariant()})"
                 : $"- ({now.Quality.ToString().ToLowerInvariant()})";
         }
 
         UpdateCursor();
     }
 
-    private static TagHistory Empty(TrendTagViewModel tag) => new(tag.Tag.Station, tag.Tag.Address, tag.Tag.Symbol, tag.Tag.Format, []);
+    private static TagHistory Empty(TrendTagViewModel tag) => new(tag.Tag.Station, tag.Tag.Address, tag.Tag.Symbol, tag.Tag.Format, []) { Scale = tag.Tag.Scale, Unit = tag.Tag.Unit };
 }

@@ -1,6 +1,8 @@
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Values;
 using OperatorPanel.Historian.Reading;
+using OperatorPanel.Historian.Recording;
 using static OperatorPanel.Historian.Tests.HistoryFixture;
 
 namespace OperatorPanel.Historian.Tests.Reading;
@@ -27,6 +29,30 @@ public sealed class HistoryReaderTests
         range.Format.Should().Be(DisplayFormat.Signed);
         range.Samples.Select(s => s.Stored).Should().Equal(2, 3);
         range.Samples[0].At.Should().Be(start.AddMinutes(2));
+    }
+
+    [Fact]
+    public async Task Read_ScaledTagWithUnit_GivesEngineeringNumbersAndTexts()
+    {
+        await using var history = new HistoryFixture(HistorySettings.Default with { DeadbandPercent = 0 });
+        using var recording = history.Record();
+        var start = history.Time.GetUtcNow();
+        history.Time.Advance(TimeSpan.FromMinutes(1));
+        history.Publish(Level, "00A7");
+        await history.Historian.FlushAsync();
+        var level = RecordedTag.Of(history.Project).Single(t => t.Address == Level) with
+        {
+            Scale = new TagScale(0, 1000, 0, 100),
+            Unit = "%",
+        };
+
+        var range = history.Historian.Reader.Read([level], start, start.AddMinutes(10))[0];
+        var last = range.Samples[^1];
+
+        last.Stored.Should().Be(167, "the raw word stays raw in the database");
+        range.Number(last).Should().BeApproximately(16.7, 1e-9, "TankLevel's 0..1000 -> 0..100 %");
+        range.Text(last).Should().Be("16.7 %");
+        level.Text([0x00, 0xA7]).Should().Be("16.7 %");
     }
 
     [Fact]
