@@ -74,6 +74,23 @@ public sealed class ReadOverPpiTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task DiagnosticsRow_StoppedStation_OffersReadOverPpiAndSwitchesItsBus()
+    {
+        var shell = await ConnectedAsync(9600);
+        await Panel.RefreshAsync();
+        shell.Diagnostics.Stations.Single().ReadOverPpiCommand.CanExecute(null).Should().BeFalse("the handler answers");
+        Panel.Plc.Mode = OperatingMode.Stop;
+        await Panel.RefreshAsync();
+        var row = shell.Diagnostics.Stations.Single();
+        row.ReadOverPpiCommand.CanExecute(null).Should().BeTrue();
+
+        await row.ReadOverPpiCommand.ExecuteAsync(null).Guarded();
+
+        _connector.Projects[^1].Stations.Single().Link.Protocol.Should().Be(LinkProtocol.Ppi);
+        shell.Diagnostics.Stations.Single().LinkText.Should().Contain("9600 8E1");
+    }
+
+    [Fact]
     public async Task BackToFreeport_AfterReadOverPpi_ReconnectsWithTheSavedLink()
     {
         var shell = await StoppedAsync(19200);
