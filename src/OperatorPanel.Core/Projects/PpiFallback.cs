@@ -10,6 +10,9 @@ namespace OperatorPanel.Core.Projects;
 /// </summary>
 public static class PpiFallback
 {
+    /// <summary>The S7-200's PPI rates (seed 002, Tables ), as a project's PPI link allows them.</summary>
+    public static IReadOnlyList<int> Rates => LinkReader.PpiRates;
+
     /// <summary>
     /// The PPI rate to try on <paramref name="link"/>: its own baud when that is a PPI rate (seed 002, Tables ),
     /// else 9600, the CPU's default PPI rate. The CPU's rate is in its system block, so a guess may meet silence.
@@ -17,7 +20,7 @@ public static class PpiFallback
     public static int BaudFor(SerialSettings link)
     {
         ArgumentNullException.ThrowIfNull(link);
-        return LinkReader.PpiRates.Contains(link.BaudRate) ? link.BaudRate : 9600;
+        return Rates.Contains(link.BaudRate) ? link.BaudRate : 9600;
     }
 
     /// <summary>The same port as PPI: 8 data bits, even parity, one stop bit, the cable, at <paramref name="baud"/>.</summary>
