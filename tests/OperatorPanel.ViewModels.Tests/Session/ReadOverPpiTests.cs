@@ -58,7 +58,13 @@ public sealed class ReadOverPpiTests : IAsyncDisposable
         _connector.Projects.Should().HaveCount(2, "connected once over Freeport, once over PPI");
         _connector.Projects[1].Stations.Single().Link.Should().Be(new SerialSettings
         {
-            PortName = PanelFixture.Port, BaudRate = ppiBaud, Parity = Parity.Even, DataBits = 8, StopBits = 1, Kind = LinkKind.Cable, Protocol = LinkProtocol.Ppi,
+            PortName = PanelFixture.Port,
+            BaudRate = ppiBaud,
+            Parity = Parity.Even,
+            DataBits = 8,
+            StopBits = 1,
+            Kind = LinkKind.Cable,
+            Protocol = LinkProtocol.Ppi,
         });
         Panel.Session.IsConnected.Should().BeTrue();
         Panel.Session.IsReadingOverPpi.Should().BeTrue();
