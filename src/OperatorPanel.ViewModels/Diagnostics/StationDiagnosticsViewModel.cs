@@ -146,7 +146,7 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
         }
     }
 
-    private bool CanReadOverPpi() => _session.SilentFreeportStation is not null && Status.Health == StationHealth.Stopped && !Status.IsPpi;
+    private bool CanReadOverPpi() => _session.IsConnected && PanelSession.CanReadOverPpi(Status);
 
     private bool CanStop() => Status.StopAvailable && _session.IsConnected && !_session.IsReadOnly;
 

@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.ViewModels.Session;
 
@@ -19,9 +20,19 @@ public sealed partial class PanelSession
     /// <summary>The project to save: <see cref="Project"/> with the links as saved while a bus is read over PPI.</summary>
     public PanelProject SavedProject => _freeportLinks is { } saved ? PpiFallback.Restore(Project, saved) : Project;
 
-    /// <summary>The first Freeport station whose handler is silent (health Stopped) on a connected line; null when none.</summary>
+    /// <summary>
+    /// The first Freeport station on a cable whose handler is silent (health Stopped) on a connected line; null when none.
+    /// Not over a radio module: the modules carry the handler's Freeport frames, PPI needs the cable (LinkReader).
+    /// </summary>
     public StationStatusViewModel? SilentFreeportStation =>
-        IsConnected ? Stations.FirstOrDefault(s => !s.IsPpi && s.Health == StationHealth.Stopped) : null;
+        IsConnected ? Stations.FirstOrDefault(CanReadOverPpi) : null;
+
+    /// <summary>The station is a Freeport station on a cable whose handler fell silent.</summary>
+    public static bool CanReadOverPpi(StationStatusViewModel station)
+    {
+        ArgumentNullException.ThrowIfNull(station);
+        return !station.IsPpi && station.Station.Link.Kind == LinkKind.Cable && station.Health == StationHealth.Stopped;
+    }
 
     /// <summary>
     /// Reconnects with <paramref name="station"/>'s bus switched to PPI (<see cref="PpiFallback"/>); the project is not
@@ -31,7 +42,7 @@ public sealed partial class PanelSession
     {
         ArgumentNullException.ThrowIfNull(station);
         var connector = _connector;
-        if (!IsConnected || connector is null || station.IsPpi)
+        if (!IsConnected || connector is null || !CanReadOverPpi(station))
         {
             return;
         }

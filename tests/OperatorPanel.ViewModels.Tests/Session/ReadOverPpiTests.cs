@@ -44,6 +44,15 @@ public sealed class ReadOverPpiTests : IAsyncDisposable
         shell.ReadOverPpiCommand.CanExecute(null).Should().BeTrue();
     }
 
+    [Fact]
+    public async Task ReadOverPpi_StoppedStationOverRadioModule_NotOffered()
+    {
+        var shell = await StoppedAsync(9600, LinkKind.RadioModule);
+
+        shell.ReadOverPpiCommand.CanExecute(null).Should().BeFalse("the radio modules carry Freeport frames; PPI needs the cable");
+        shell.Diagnostics.Stations.Single().ReadOverPpiCommand.CanExecute(null).Should().BeFalse();
+    }
+
     [Theory]
     [InlineData(9600, 9600)]
     [InlineData(19200, 19200)]
@@ -132,20 +141,20 @@ public sealed class ReadOverPpiTests : IAsyncDisposable
         Panel.Session.SavedProject.Stations.Single().Tags.Select(t => t.Symbol).Should().Equal("Recipe", "Temperature");
     }
 
-    private async Task<ShellViewModel> ConnectedAsync(int baud)
+    private async Task<ShellViewModel> ConnectedAsync(int baud, LinkKind kind = LinkKind.Cable)
     {
         var project = PanelFixture.Project();
         var station = project.Stations.Single();
-        _fixture = new PanelFixture(project with { Stations = [station with { Link = station.Link with { BaudRate = baud } }] });
+        _fixture = new PanelFixture(project with { Stations = [station with { Link = station.Link with { BaudRate = baud, Kind = kind } }] });
         _connector = new RecordingConnector(Panel.Connector);
         var shell = Panel.Shell();
         await Panel.Session.ConnectAsync(_connector).Guarded();
         return shell;
     }
 
-    private async Task<ShellViewModel> StoppedAsync(int baud)
+    private async Task<ShellViewModel> StoppedAsync(int baud, LinkKind kind = LinkKind.Cable)
     {
-        var shell = await ConnectedAsync(baud);
+        var shell = await ConnectedAsync(baud, kind);
         await Panel.RefreshAsync();
         Panel.Plc.Mode = OperatingMode.Stop;
         await Panel.RefreshAsync();
