@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Cli.Hosting;
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Cli.Watch;
@@ -10,7 +11,7 @@ using Spectre.Console.Rendering;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel watch PROJECT [--demo]</c>: the project's stations live in the terminal, over the project's serial ports or
+/// <c>opanel watch PROJECT [--demo] [--ppi [--baud B]]</c>: the project's stations live in the terminal, over the project's serial ports or
 /// an in-process demo line that simulates every station with its own CPU and the demo process; every recorded value goes into the
 /// project's history database from the first cycle (the demo line's into a database of its own).
 /// </summary>
@@ -27,6 +28,12 @@ internal static class WatchCommand
         var once = new Option<bool>("--once") { Description = "One full refresh, print it and exit" };
         var cycles = new Option<int?>("--cycles") { Description = "Stop after this many full refreshes" };
         var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
+        var ppi = new Option<bool>("--ppi")
+        {
+            Description = "Read every bus over PPI, the CPU's own protocol, with no handler (a station in STOP or at TERM answers): "
+                + "8 data bits, even parity, the cable; the project file is not changed",
+        };
+        var baud = new Option<int?>("--baud") { Description = "With --ppi: 9600, 19200 or 187500, the CPU's PPI rate (default: the bus's baud when a PPI rate, else 9600)" };
         var command = new Command(
             "watch",
             "Show a project's stations live: link state and counters, inputs and outputs as lamps, tags, active alarms. "
@@ -35,7 +42,7 @@ internal static class WatchCommand
             + "Records the values into the project's history (the demo line's into its own) from the first cycle: opanel history prints it. "
             + "Exit codes: 0 done, 1 project problems or bad option, 2 every station offline at the end")
         {
-            file, demo, model, once, cycles, duration,
+            file, demo, model, once, cycles, duration, ppi, baud,
         };
         command.SetAction(async parse =>
         {
@@ -47,6 +54,11 @@ internal static class WatchCommand
                 return ProjectProblemsView.Report(cli, path, load, "nothing watched");
             }
 
+            if (!TryReadOverPpi(cli, load.Project, parse.GetValue(ppi), parse.GetValue(baud), out var project, out var ppiError))
+            {
+                return cli.Fail(ExitCodes.BadInput, ppiError);
+            }
+
             var limit = parse.GetValue(once) ? 1 : parse.GetValue(cycles);
             var seconds = parse.GetValue(duration);
             if (limit is <= 0 || seconds is <= 0)
@@ -54,8 +66,8 @@ internal static class WatchCommand
                 return cli.Fail(ExitCodes.BadInput, "--cycles and --duration must be positive");
             }
 
-            await using var historian = Historian.Historian.Open(cli.History.DatabaseFor(path, parse.GetValue(demo)), load.Project, TimeProvider.System, cli.Log, "opanel watch");
-            var (opened, openError) = await WatchSession.TryOpenAsync(load.Project, parse.GetValue(demo), parse.GetValue(model), cli.Log, cli.Journal, historian);
+            await using var historian = Historian.Historian.Open(cli.History.DatabaseFor(path, parse.GetValue(demo)), project, TimeProvider.System, cli.Log, "opanel watch");
+            var (opened, openError) = await WatchSession.TryOpenAsync(project, parse.GetValue(demo), parse.GetValue(model), cli.Log, cli.Journal, historian);
             if (opened is null)
             {
                 return cli.Fail(ExitCodes.BadInput, openError ?? "the demo line did not start");
@@ -80,6 +92,35 @@ internal static class WatchCommand
             return last.AllOffline ? ExitCodes.LinkFailure : ExitCodes.Ok;
         });
         return command;
+    }
+
+    /// <summary>
+    /// --ppi: every bus switched in memory to PPI (PpiFallback, as the panel's Line > Read over PPI), said first (on the
+    /// error stream with --json, which stays one object per line); --baud only with --ppi and only a PPI rate.
+    /// </summary>
+    private static bool TryReadOverPpi(CliContext cli, PanelProject loaded, bool ppi, int? baud, out PanelProject project, [NotNullWhen(false)] out string? error)
+    {
+        (project, error) = (loaded, null);
+        if (!ppi)
+        {
+            error = baud is null ? null : "--baud needs --ppi: a Freeport bus runs at the project's baud";
+            return error is null;
+        }
+
+        if (baud is { } b && !PpiFallback.Rates.Contains(b))
+        {
+            error = $"--baud {b} is not a PPI rate; PPI runs at {string.Join(", ", PpiFallback.Rates)}";
+            return false;
+        }
+
+        project = PpiFallback.Switch(loaded, portName: null, baud);
+        foreach (var link in project.Stations.Select(s => s.Link).DistinctBy(l => l.PortName, StringComparer.OrdinalIgnoreCase))
+        {
+            (cli.Json ? cli.Error : cli.Out).WriteLine(
+                $"reading {link.PortName} over PPI at {PpiFallback.DescribeBaud(link.BaudRate)}: no handler needed, STOP and handler checks are off; the project file is unchanged");
+        }
+
+        return true;
     }
 
     /// <summary>Where the values went: one line after the text view (the JSON stream stays one object per line), and the log.</summary>

@@ -102,7 +102,11 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
     /// The session changed (connected, read-only): whether Stop may run depends on it. Called by the Diagnostics window,
     /// which outlives its rows, so a row never subscribes to the session itself.
     /// </summary>
-    internal void OnSessionChanged() => StopCommand.NotifyCanExecuteChanged();
+    internal void OnSessionChanged()
+    {
+        StopCommand.NotifyCanExecuteChanged();
+        ReadOverPpiCommand.NotifyCanExecuteChanged();
+    }
 
     /// <summary>
     /// StopCommand: the project allows STOP for the station, its IDENTIFY reported FEATURES bit 0, the line is connected
@@ -128,11 +132,28 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
         }
     }
 
+    /// <summary>ReadOverPpiCommand: this Freeport station's handler fell silent; its bus reconnects over PPI (PanelSession.ReadOverPpiAsync).</summary>
+    [RelayCommand(CanExecute = nameof(CanReadOverPpi))]
+    private async Task ReadOverPpiAsync()
+    {
+        try
+        {
+            await _session.ReadOverPpiAsync(Status);
+        }
+        catch (Exception exception) when (exception is not OutOfMemoryException)
+        {
+            _session.StatusLine.ShowError($"{Name}: not read over PPI: {exception.Message}");
+        }
+    }
+
+    private bool CanReadOverPpi() => _session.IsConnected && PanelSession.CanReadOverPpi(Status);
+
     private bool CanStop() => Status.StopAvailable && _session.IsConnected && !_session.IsReadOnly;
 
     private void OnStatusChanged(object? sender, PropertyChangedEventArgs e)
     {
         OnPropertyChanged(string.Empty);
         StopCommand.NotifyCanExecuteChanged();
+        ReadOverPpiCommand.NotifyCanExecuteChanged();
     }
 }

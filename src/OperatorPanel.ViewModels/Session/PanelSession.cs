@@ -27,6 +27,7 @@ public sealed partial class PanelSession : ObservableObject
     private readonly IUiDispatcher _dispatcher;
     private readonly TimeProvider _time;
     private readonly ProjectLine _line;
+    private StationStatusViewModel? _silentFreeportStation;
 
     /// <param name="project">The project to open.</param>
     /// <param name="dispatcher">Where value callbacks run (the UI thread).</param>
@@ -126,6 +127,8 @@ public sealed partial class PanelSession : ObservableObject
     {
         var mode = Mode;
         _line.Load(project);
+        _freeportLinks = null;
+        OnPropertyChanged(nameof(IsReadingOverPpi));
         OnProjectReplaced(mode);
         ResetStations();
         ProjectChanged?.Invoke(this, new ProjectChangedEventArgs(project, ProjectChangeKind.Replaced));
@@ -141,6 +144,13 @@ public sealed partial class PanelSession : ObservableObject
         {
             var address = station.Address;
             station.Update(_line.StatusOf(address), _line.StatisticsFor(address), _line.IdentityOf(address), _line.LastIdentifyOf(address));
+        }
+
+        // The shell offers "Read over PPI" while a Freeport station is silent: it hears when that changes.
+        if (SilentFreeportStation != _silentFreeportStation)
+        {
+            _silentFreeportStation = SilentFreeportStation;
+            OnPropertyChanged(nameof(SilentFreeportStation));
         }
     }
 

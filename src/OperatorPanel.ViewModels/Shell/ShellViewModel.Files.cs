@@ -136,7 +136,7 @@ public sealed partial class ShellViewModel
     /// <summary>Atomic (ProjectFile.TrySave): a failed save leaves the file on disk as it was and the project unsaved.</summary>
     private async Task<bool> SaveToAsync(string path)
     {
-        if (!ProjectFile.TrySave(Session.Project, path, out var error))
+        if (!ProjectFile.TrySave(Session.SavedProject, path, out var error))
         {
             _logger.Warning("Saving {Path} failed: {Error}", path, error);
             await _services.Dialogs.ShowErrorAsync("Project not saved", $"{path}: {error}");

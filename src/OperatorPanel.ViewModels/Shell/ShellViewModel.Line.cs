@@ -74,6 +74,35 @@ public sealed partial class ShellViewModel
         await ConnectAsync();
     }
 
+    /// <summary>
+    /// ReadOverPpiCommand (Line > Read over PPI): offered while a Freeport station's handler is silent (STOP, TERM); its
+    /// bus reconnects over PPI, the project file unchanged (PanelSession.ReadOverPpiAsync).
+    /// </summary>
+    [RelayCommand(CanExecute = nameof(CanReadOverPpi))]
+    private Task ReadOverPpiAsync() =>
+        Session.SilentFreeportStation is { } station ? RelinkAsync(() => Session.ReadOverPpiAsync(station)) : Task.CompletedTask;
+
+    /// <summary>BackToFreeportCommand: the project's own links again, reconnected.</summary>
+    [RelayCommand(CanExecute = nameof(IsReadingOverPpi))]
+    private Task BackToFreeportAsync() => RelinkAsync(() => Session.BackToFreeportAsync());
+
+    private async Task RelinkAsync(Func<Task> relink)
+    {
+        try
+        {
+            await relink();
+        }
+        catch (Exception exception) when (exception is not OutOfMemoryException)
+        {
+            _logger.Error(exception, "Switching the link failed");
+            StatusLine.ShowError($"Not connected: {exception.Message}");
+        }
+    }
+
+    private bool CanReadOverPpi() => Session.SilentFreeportStation is not null;
+
+    private bool IsReadingOverPpi() => Session.IsReadingOverPpi;
+
     private bool CanConnect() => HasProject && !Session.IsConnected;
 
     private bool IsConnected() => Session.IsConnected;

@@ -66,7 +66,8 @@ public sealed partial class ShellViewModel
         }
     }
 
-    private bool CanEditProject() => HasProject && _services.Wizards is not null;
+    // Not while a bus is read over PPI: the wizard would take the in-memory PPI link for the project's.
+    private bool CanEditProject() => HasProject && _services.Wizards is not null && !Session.IsReadingOverPpi;
 
     private void OpenGenerateCode() =>
         GenerateCode = new GenerateCodeViewModel(Session.Project, Math.Clamp(SelectedStationIndex, 0, Session.Project.Stations.Length - 1), _services.Files);

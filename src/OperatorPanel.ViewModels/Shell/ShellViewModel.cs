@@ -135,7 +135,7 @@ public sealed partial class ShellViewModel : ObservableObject
 
     private void NotifyCommands()
     {
-        foreach (var command in new IRelayCommand[] { SaveCommand, SaveAsCommand, ConnectCommand, DisconnectCommand, RefreshNowCommand, DemoCommand, EditProjectCommand, GenerateCodeCommand })
+        foreach (var command in new IRelayCommand[] { SaveCommand, SaveAsCommand, ConnectCommand, DisconnectCommand, RefreshNowCommand, DemoCommand, EditProjectCommand, GenerateCodeCommand, ReadOverPpiCommand, BackToFreeportCommand })
         {
             command.NotifyCanExecuteChanged();
         }

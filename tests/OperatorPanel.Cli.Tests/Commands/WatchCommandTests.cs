@@ -54,6 +54,35 @@ public sealed class WatchCommandTests : IDisposable
     }
 
     [Fact]
+    public void Watch_DemoPpiOnFreeportProject_ReadsEveryBusOverPpiAndSaysSo()
+    {
+        var before = File.ReadAllBytes(Sample);
+
+        var run = CliRunner.Run("watch", Sample, "--demo", "--ppi", "--once");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Should().StartWith(
+            "reading COM3 over PPI at 9600 baud 8E1 (a CPU whose port is set to another PPI rate in its system block will not answer): "
+            + "no handler needed, STOP and handler checks are off; the project file is unchanged" + Environment.NewLine + "Bottling line 1  ");
+        // The demo CPUs of a PPI bus run no handler: the values come over PPI, not from a Freeport handler.
+        run.Out.Should().Contain("Filler  station 2  CPU 224  COM3 (demo) 9600 8E1 PPI  online").And.Contain("handler  no handler (PPI)");
+        run.Out.Should().MatchRegex(@"    BottleCount      VD100 +\d+ bottles  good");
+        run.Out.Should().MatchRegex(@"    StatusWord       MW10 +2#\d{4}_\d{4}_\d{4}_\d{4}  good");
+        File.ReadAllBytes(Sample).Should().Equal(before, "the switch is in memory");
+    }
+
+    [Theory]
+    [InlineData("--ppi", "--baud", "38400", "--baud 38400 is not a PPI rate; PPI runs at 9600, 19200, 187500")]
+    [InlineData("--baud", "19200", "--once", "--baud needs --ppi")]
+    public void Watch_PpiBaudWrong_FailsSayingWhy(string first, string second, string third, string message)
+    {
+        var run = CliRunner.Run("watch", Sample, "--demo", "--once", first, second, third);
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Contain(message);
+    }
+
+    [Fact]
     public void Watch_DemoCyclesJson_PrintsOneObjectPerCycle()
     {
         var run = CliRunner.Run("watch", Sample, "--demo", "--cycles", "2", "--json");
