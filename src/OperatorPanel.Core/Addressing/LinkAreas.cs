@@ -4,8 +4,9 @@ namespace OperatorPanel.Core.Addressing;
 /// What each link kind reaches, said one way everywhere (the CLI, project files, the wizard, <c>opanel address</c>).
 /// The Freeport link talks to the handler we generate, whose protocol has area codes for I, Q, M, V and SM only
 /// (docs/protocol.md, "Area codes"): analog values, timers, counters and S bits are out of its reach, and the PLC program
-/// can copy them to V for it (MOVW AIW0, VW100). The PPI link (coming) talks to the CPU's own protocol, which needs no
-/// handler and reaches those areas itself; until it lands, every message names the copy as the way.
+/// can copy them to V for it (MOVW AIW0, VW100). The PPI link talks to the CPU's own protocol, which needs no handler and
+/// has those areas too (docs/ppi.md section 6), but the panel watches I, Q, M, V and SM over PPI as well so far: every
+/// message names the copy as the way.
 /// </summary>
 public static class LinkAreas
 {
@@ -25,7 +26,7 @@ public static class LinkAreas
 
     /// <summary>"the Freeport link reads only I, Q, M, V and SM: copy ... to V in the PLC program (...) and watch that".</summary>
     internal static string NotServed(string prefix, string example) =>
-        $"the Freeport link reads only {FreeportServed}: {Copy(prefix, example)} and watch that; a PPI link, once the panel has one, reads {What(prefix)} directly";
+        $"the Freeport link reads only {FreeportServed}: {Copy(prefix, example)} and watch that; the CPU's own PPI protocol has {What(prefix)} too, but the panel's PPI link does not read them yet";
 
     private static string Copy(string prefix, string example) => prefix switch
     {

@@ -28,8 +28,8 @@ public sealed class HistoryCommandTests : IDisposable
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Should().StartWith("Bottling line 1: history from ");
         run.Out.Should().MatchRegex(@"Filler\.TankLevel +- +bad", "the first row is the value before the first reply: not read yet");
-        run.Out.Should().MatchRegex(@"Filler\.TankLevel +\d+ +good");
-        run.Out.Should().MatchRegex(@"Filler\.BottleCount +[1-9]\d* +good");
+        run.Out.Should().MatchRegex(@"Filler\.TankLevel +\d+\.\d %  good", "in the tag's engineering units: raw 0..1000 is 0..100 %");
+        run.Out.Should().MatchRegex(@"Filler\.BottleCount +[1-9]\d* bottles +good");
         run.Out.Should().MatchRegex(@"Filler\.EStopHealthy +1 +good");
     }
 
@@ -56,7 +56,7 @@ public sealed class HistoryCommandTests : IDisposable
         var run = CliRunner.Run("history", "LineSpeed", "--project", Sample, "--demo", "--csv", "--history-dir", History);
 
         run.Out.Should().StartWith("Time,Station,Symbol,Address,Value,Number,Quality\r\n");
-        run.Out.Should().MatchRegex(@"\r\n\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z,Filler,LineSpeed,VW140,\d+,\d+,good\r\n");
+        run.Out.Should().MatchRegex(@"\r\n\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z,Filler,LineSpeed,VW140,\d+ bottles/min,\d+,good\r\n", "the value as the panel shows it, with its unit, and its number");
     }
 
     [Fact]

@@ -28,7 +28,7 @@ public sealed class TagArgumentTests
         run.Out.Should().BeEmpty();
         run.Error.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
             "opanel: 'BottleCoutn': no tag, input or output of Filler has this symbol, and it is no address ('BottleCoutn': unknown memory area; an address starts with I, Q, M, V, SM, S, AIW or AQW)",
-            "opanel: AIW0: the Freeport link reads only I, Q, M, V and SM: copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that; a PPI link, once the panel has one, reads analog values directly",
+            "opanel: AIW0: the Freeport link reads only I, Q, M, V and SM: copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that; the CPU's own PPI protocol has analog values too, but the panel's PPI link does not read them yet",
             "opanel: 'VB99999': byte number 99999 is larger than 65535",
             "opanel: 3 arguments are wrong; nothing read");
     }

@@ -37,8 +37,16 @@ public sealed class WriteInterruptTests : IDisposable
         exit.Should().Be(130, error);
         var lines = output.Split('\n', StringSplitOptions.RemoveEmptyEntries);
         lines.Should().HaveCount(4, "every write is printed: done, or not sent");
-        // "confirmed", or under a loaded test host "confirmed (reply lost, read back)": either way finished and read back.
-        lines[0].Should().StartWith("VD300    0 -> 999  confirmed", "the write on the wire was finished and read back (all it printed: {0})", output);
+        // Finished and read back: "confirmed" (or "confirmed (reply lost, read back)"); on a test host so loaded that the
+        // real-time simulator lost the frame, "not applied" as the read-back proved. Either way what it printed is what
+        // the PLC holds, which the read at the end checks.
+        var applied = lines[0].StartsWith("VD300    0 -> 999  confirmed", StringComparison.Ordinal);
+        if (!applied)
+        {
+            lines[0].Should().StartWith("VD300    0 -> 999  not applied", "the write on the wire was finished and read back (all it printed: {0})", output)
+                .And.Contain("the PLC still holds 0");
+        }
+
         lines.Should().Contain(l => l.EndsWith("not sent: interrupted (Ctrl+C) before it was sent", StringComparison.Ordinal));
         error.Should().Contain("opanel: stopping after the write on the wire");
         var journal = Journal();
@@ -47,7 +55,7 @@ public sealed class WriteInterruptTests : IDisposable
         journal.Count(l => l.Contains("\"step\":\"outcome\"", StringComparison.Ordinal)).Should().Be(sent, "and its outcome");
 
         var read = Read("VD300", "VB100", "--device", pty.PathB);
-        read.Out.Should().StartWith("VD300    999 ").And.Contain("VB100    0 ", "a write not sent is not in the PLC");
+        read.Out.Should().StartWith(applied ? "VD300    999 " : "VD300    0 ", "the PLC holds what the write printed").And.Contain("VB100    0 ", "a write not sent is not in the PLC");
         await EndAsync(pty, simulator);
     }
 

@@ -149,7 +149,7 @@ public sealed class PollPlannerTests
     {
         var plan = PollPlanner.Build(Items(One, "AIW0", "VB0"));
 
-        plan.Rejected.Should().Equal(new PlanRejection(Item(One, "AIW0"), "AIW0: the Freeport link reads only I, Q, M, V and SM: copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that; a PPI link, once the panel has one, reads analog values directly"));
+        plan.Rejected.Should().Equal(new PlanRejection(Item(One, "AIW0"), "AIW0: the Freeport link reads only I, Q, M, V and SM: copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that; the CPU's own PPI protocol has analog values too, but the panel's PPI link does not read them yet"));
         Frames(plan).Should().Equal("1: V0+1");
     }
 
