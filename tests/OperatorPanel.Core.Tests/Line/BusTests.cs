@@ -27,14 +27,14 @@ public sealed class BusTests
 
         var identified = bus.IdentifyAsync(Station2);
         var refreshed = bus.RefreshAsync();
-        var onWire = await ReadFrameAsync(pair.BusSide);
+        var onWire = await FreeportWire.ReadFrameAsync(pair.BusSide);
         var nothingMore = await pair.BusSide.ReadAsync(new byte[64], TimeSpan.Zero, default);
 
         onWire.Should().Be(Ascii(RequestCodec.Encode(identify)), "the queue's job goes ahead of the cycle");
         nothingMore.Should().Be(0, "the READ waits for the IDENTIFY reply");
         await pair.BusSide.WriteAsync(ResponseCodec.Encode(Identity(0x01), identify), default);
         (await identified).Response.Should().BeOfType<IdentifyResponse>();
-        (await ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(read)));
+        (await FreeportWire.ReadFrameAsync(pair.BusSide)).Should().Be(Ascii(RequestCodec.Encode(read)));
         await pair.BusSide.WriteAsync(ResponseCodec.Encode(new ReadResponse(Station2, 0x02, [0x2A]), read), default);
         (await refreshed).FramesFailed.Should().Be(0);
         bus.TryGetValue(Station2, Mb0, out var value).Should().BeTrue();
@@ -45,18 +45,5 @@ public sealed class BusTests
     private static IdentifyResponse Identity(byte sequence) =>
         new(Station2, sequence, 2, 1, 3, 1, 0x3C, 116, 5, 0x20, 1, 3, 2, 9, 0, 7764, 428, 0, 0);
 
-    private static string Ascii(byte[] frame) => System.Text.Encoding.ASCII.GetString(frame);
-
-    private static async Task<string> ReadFrameAsync(InMemoryTransport end)
-    {
-        var text = string.Empty;
-        var buffer = new byte[256];
-        while (!text.EndsWith('>'))
-        {
-            var count = await end.ReadAsync(buffer, TimeSpan.FromSeconds(5), default);
-            text += System.Text.Encoding.ASCII.GetString(buffer, 0, count);
-        }
-
-        return text;
-    }
+    private static string Ascii(byte[] frame) => FreeportWire.Text(frame);
 }

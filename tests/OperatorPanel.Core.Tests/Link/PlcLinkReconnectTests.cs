@@ -119,7 +119,7 @@ public sealed class PlcLinkReconnectTests
     private static async Task<PlcCommunicationException> FailsAsync(Task<LinkReply> exchange)
     {
         var failure = (await exchange).Failure;
-        failure.Should().NotBeNull();
+        failure.Should().NotBeNull("the port is gone: the exchange must come back failed, not answered");
         failure!.Kind.Should().Be(PlcErrorKind.PortUnavailable);
         return failure;
     }

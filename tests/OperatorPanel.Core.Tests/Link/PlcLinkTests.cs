@@ -214,7 +214,7 @@ public sealed class PlcLinkTests
         var link = new PlcLink(pair.PanelSide, LinkOptions.For(Some.SerialSettings()) with { InterFrameGap = TimeSpan.Zero }, clock);
 
         var exchange = link.ExchangeAsync(ReadMb0, default);
-        (await ReadFrameAsync(pair.BusSide)).Should().Be(Request);
+        (await FreeportWire.ReadFrameAsync(pair.BusSide)).Should().Be(Request);
         var inFlight = link.StatisticsFor(Station2);
         await pair.BusSide.WriteAsync(Hex.Ascii(Reply(0x01)), default);
         await exchange;
@@ -268,18 +268,5 @@ public sealed class PlcLinkTests
     private static PlcLink NewLink(ITransport transport, TimeProvider clock) =>
         new(transport, LinkOptions.For(Some.SerialSettings()) with { Retries = 2, InterFrameGap = TimeSpan.Zero }, clock);
 
-    private static string Ascii(byte[] frame) => System.Text.Encoding.ASCII.GetString(frame);
-
-    private static async Task<string> ReadFrameAsync(InMemoryTransport end)
-    {
-        var text = string.Empty;
-        var buffer = new byte[256];
-        while (!text.EndsWith('>'))
-        {
-            var count = await end.ReadAsync(buffer, TimeSpan.FromSeconds(5), default);
-            text += System.Text.Encoding.ASCII.GetString(buffer, 0, count);
-        }
-
-        return text;
-    }
+    private static string Ascii(byte[] frame) => FreeportWire.Text(frame);
 }
