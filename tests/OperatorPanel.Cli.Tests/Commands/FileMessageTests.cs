@@ -6,6 +6,7 @@ namespace OperatorPanel.Cli.Tests.Commands;
 /// Bad files and paths as a technician meets them on the command line: each message names the file and says what is
 /// wrong in our words; the hint for a silent station names the notes file generate really writes.
 /// </summary>
+[Collection(RealTimeSerialCollection.Name)]
 public sealed class FileMessageTests : IDisposable
 {
     private readonly string _folder = Path.Combine(Path.GetTempPath(), "opanel-file-messages-" + Guid.NewGuid().ToString("N"));

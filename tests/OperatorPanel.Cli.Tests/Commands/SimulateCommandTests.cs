@@ -13,6 +13,7 @@ namespace OperatorPanel.Cli.Tests.Commands;
 /// <c>opanel simulate</c> on one end of a socat pty pair and the link verbs on the other: the whole serial path in real
 /// time (bounded: the simulation stops itself after --duration).
 /// </summary>
+[Collection(RealTimeSerialCollection.Name)]
 public sealed class SimulateCommandTests
 {
     private static readonly TimeSpan StartLimit = TimeSpan.FromSeconds(3);

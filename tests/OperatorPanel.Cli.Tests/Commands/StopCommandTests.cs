@@ -7,6 +7,7 @@ namespace OperatorPanel.Cli.Tests.Commands;
 /// <c>opanel stop</c>: nothing without --yes; against the in-process demo PLC (its handler generated with STOP) and
 /// against <c>opanel simulate</c> on a socat pty, with and without STOP in the handler.
 /// </summary>
+[Collection(RealTimeSerialCollection.Name)]
 public sealed class StopCommandTests
 {
     [Fact]

@@ -10,6 +10,7 @@ namespace OperatorPanel.Cli.Tests.Commands;
 /// SIGTERM stands for Ctrl+C (both take the same path in the program): a test host started in the background may have
 /// SIGINT ignored, which its children inherit.
 /// </summary>
+[Collection(RealTimeSerialCollection.Name)]
 public sealed class WriteInterruptTests : IDisposable
 {
     private static readonly TimeSpan Limit = TimeSpan.FromSeconds(30);
