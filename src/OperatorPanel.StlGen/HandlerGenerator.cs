@@ -19,6 +19,11 @@ public static class HandlerGenerator
             return new HandlerGenerationResult(diagnostics, null, null, string.Empty, string.Empty, string.Empty);
         }
 
+        if (options.Protocol == 3)
+        {
+            return V3.Generation.Generate(options);
+        }
+
         var program = HandlerBuilder.Build(options);
         var stats = StatsOf(options, program);
         var layout = new HandlerLayout(options.EffectiveBufferStart, options.CopyBytes);
@@ -60,6 +65,7 @@ public static class HandlerGenerator
             CopyBytes = options.CopyBytes,
             ChangesWorkBytes = HandlerLayout.ChangesBytes,
             StopEnabled = options.AllowStop,
+            Networks = program.Blocks.Sum(b => b.Networks.Length),
         };
     }
 }

@@ -25,6 +25,15 @@ public sealed record HandlerStats(
     /// <summary>Whether the handler carries 07 STOP.</summary>
     public bool StopEnabled { get; init; }
 
+    /// <summary>2 (hex frames) or 3 (binary frames).</summary>
+    public int Protocol { get; init; } = 2;
+
+    /// <summary>Version 3: the compact handler (no list, no STOP).</summary>
+    public bool Compact { get; init; }
+
+    /// <summary>Networks in all blocks.</summary>
+    public int Networks { get; init; }
+
     /// <summary>"VB8072-VB8191", or "none".</summary>
     public string CopyRange => CopyBytes == 0 ? "none" : $"VB{LastVByte - CopyBytes + 1}-VB{LastVByte}";
 

@@ -3,12 +3,14 @@ using System.CommandLine;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Simulator.Handlers;
 using OperatorPanel.Simulator.Stl;
 using OperatorPanel.Simulator.Stl.Freeport;
 using OperatorPanel.Stl;
 using OperatorPanel.Stl.Symbols;
 using OperatorPanel.StlGen;
 using OperatorPanel.StlGen.Options;
+using HandlerShape = OperatorPanel.Core.Protocol.V3.HandlerShape;
 
 namespace OperatorPanel.Cli.Commands;
 
@@ -35,11 +37,13 @@ internal static class GenerateCommand
         var interrupt = new Option<int?>("--int") { Description = "First of the handler's 3 interrupt routines (default 125)" };
         var copyBytes = new Option<int>("--copy-bytes") { Description = "V bytes for READ CHANGES copies after the work bytes, 0-255 (0 = none: every READ CHANGES answers the whole list; default 120)", DefaultValueFactory = _ => HandlerDefaults.CopyBytes };
         var allowStop = new Option<bool>("--allow-stop") { Description = "Include 07 STOP: the panel may put the CPU in STOP (default: the station's \"allowStop\" in the project, off unless set; off = no STOP code, the command is refused with error 05)" };
+        var protocol = new Option<int>("--protocol") { Description = "Protocol version of the handler: 2 (hex frames, what the panel speaks today; default) or 3 (binary frames, docs/protocol.md)", DefaultValueFactory = _ => 2 };
+        var compact = new Option<bool>("--compact") { Description = "The compact handler of protocol 3 (IDENTIFY, READ, WRITE, WRITE BIT; no list, no STOP): the choice for a CPU 221 or 222. Implies --protocol 3" };
         var merge = new Option<string?>("--merge") { Description = "A program exported from Micro/WIN (File > Export): check for collisions and write NAME-merged.awl (NAME: the station's name)" };
         var symbols = new Option<string?>("--symbols") { Description = "With --merge: the program's symbol table exported from Micro/WIN (symbol, address, comment, tab-separated), so symbolic operands are checked as their addresses" };
         var command = new Command("generate", "Generate the S7-200 handler program (.awl), symbol table and technician notes. Exit codes: 0 written, 1 bad input, 2 impossible settings")
         {
-            project, output, station, stats, plcPort, buffer, replyDelay, writable, charTimeout, sbr, interrupt, copyBytes, allowStop, merge, symbols,
+            project, output, station, stats, plcPort, buffer, replyDelay, writable, charTimeout, sbr, interrupt, copyBytes, allowStop, protocol, compact, merge, symbols,
         };
         command.SetAction(parse =>
         {
@@ -86,6 +90,8 @@ internal static class GenerateCommand
                 FirstInterrupt = parse.GetValue(interrupt),
                 CopyBytes = parse.GetValue(copyBytes),
                 AllowStop = chosen.AllowStop || parse.GetValue(allowStop),
+                Protocol = parse.GetValue(compact) ? 3 : parse.GetValue(protocol),
+                Compact = parse.GetValue(compact),
             };
             AwlSource? userProgram = null;
             var userPath = parse.GetValue(merge);
@@ -131,8 +137,12 @@ internal static class GenerateCommand
         var (stem, result) = (package.Stem, package.Handler);
         cli.Log.Information("Generated the handler for {Stem}: {Files}", stem, written);
         var measured = ImmutableArray<MeasuredRequest>.Empty;
-        if (withStats && !HandlerMeasurement.TryMeasure(result.AwlText, options.Cpu, options.Port, new Station(options.Station),
-            new LineSettings(options.BaudRate, options.Parity, options.DataBits), FreeDataStart(result.Stats!), out measured, out var failed))
+        var line = new LineSettings(options.BaudRate, options.Parity, options.DataBits);
+        var failed = string.Empty;
+        var ok = !withStats || (options.Protocol == 3
+            ? V3Measurement.TryMeasure(result.AwlText, options.Cpu, options.Port, new Station(options.Station), line, options.Compact ? HandlerShape.Compact : HandlerShape.Full, out measured, out failed)
+            : HandlerMeasurement.TryMeasure(result.AwlText, options.Cpu, options.Port, new Station(options.Station), line, FreeDataStart(result.Stats!), out measured, out failed));
+        if (!ok)
         {
             return cli.Fail(ExitCodes.GeneratorRefused, $"the generated handler did not run in the interpreter: {failed}");
         }

@@ -29,6 +29,13 @@ public static class HandlerDefaults
         return (VBytes(cpu) - FootprintBytes(copyBytes)) & ~1;
     }
 
+    /// <summary>Version 3: the top of V for the full or compact handler, on an even byte.</summary>
+    public static int V3First(CpuProfile cpu, bool compact)
+    {
+        ArgumentNullException.ThrowIfNull(cpu);
+        return (compact ? Core.Protocol.V3.HandlerShape.Compact : Core.Protocol.V3.HandlerShape.Full).DefaultVFirst(VBytes(cpu));
+    }
+
     /// <summary>
     /// The last subroutine number of the CPU (SBR63 on CPU 221/222/224, SBR127 on 224XP/226; docs/sources/s7200-facts.md
     /// section 1): Micro/WIN numbers new subroutines upwards from SBR0, so the top is free in nearly every program.

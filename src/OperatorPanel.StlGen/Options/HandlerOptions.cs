@@ -59,6 +59,15 @@ public sealed record HandlerOptions
     /// <summary>Whether the handler carries 07 STOP; off = no STOP code at all, CMD 07 gets error 05 like any unknown command.</summary>
     public bool AllowStop { get; init; }
 
+    /// <summary>
+    /// 2 (hex frames, docs/protocol.md of version 2: what the panel speaks today) or 3 (binary frames). Version 3 is
+    /// generated on request until the panel's link speaks it.
+    /// </summary>
+    public int Protocol { get; init; } = 2;
+
+    /// <summary>Version 3 only: the compact handler (IDENTIFY, READ, WRITE, WRITE BIT; no list, no STOP).</summary>
+    public bool Compact { get; init; }
+
     /// <summary>The settings a project fixes for one station: CPU, station address, baud, parity, data and stop bits, STOP.</summary>
     public static HandlerOptions For(ProjectStation station)
     {
@@ -93,6 +102,31 @@ public sealed record HandlerOptions
     }
 
     public int EffectiveBufferStart => BufferStart ?? HandlerDefaults.BufferStart(Cpu, CopyBytes);
+
+    /// <summary>Version 3: V_FIRST, by default the top of V for the full or compact shape.</summary>
+    public int EffectiveV3First => BufferStart ?? HandlerDefaults.V3First(Cpu, Compact);
+
+    /// <summary>
+    /// Version 3: SMW92, the receive's end timeout. <see cref="CharTimeoutMs"/> when set, else the character time
+    /// rounded down plus 2 ms (the timer counts in whole ms, so it must outlast one character by more than 1 ms), and
+    /// at least the cable's turnaround, since the reply cannot start before the receive ends (docs/protocol.md section 1.5).
+    /// </summary>
+    public int EffectiveEndTimeoutMs => CharTimeoutMs > 0 ? CharTimeoutMs : Math.Max((int)Math.Floor(CharacterMs) + 2, TurnaroundMs);
+
+    /// <summary>
+    /// Version 3: the write mask as the handler applies it: Q, M and V only (protocol 3 never writes I or SM).
+    /// </summary>
+    public int EffectiveV3WriteMask => WriteMask & 0x1C;
+
+    /// <summary>
+    /// The PC/PPI cable's turnaround at this baud rate, rounded up to whole ms: 28 ms at 1200 baud, halving per doubling
+    /// (docs/sources/s7200-facts.md section 7, unconfirmed: the remembered table; the larger figures are taken). The
+    /// reply may not start earlier after the request's last character, so SMW92 is never shorter.
+    /// </summary>
+    public int TurnaroundMs => (int)Math.Ceiling(28.0 * 1200 / BaudRate);
+
+    /// <summary>One character on the line in ms: start bit, data bits, parity bit if any, 1 stop bit.</summary>
+    public double CharacterMs => 1000.0 * (2 + DataBits + (Parity == Parity.None ? 0 : 1)) / BaudRate;
 
     public int EffectiveFirstSubroutine => FirstSubroutine ?? HandlerDefaults.FirstSubroutine(Cpu);
 

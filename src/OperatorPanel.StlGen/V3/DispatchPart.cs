@@ -1,0 +1,90 @@
+using OperatorPanel.Core.Protocol.V3;
+using OperatorPanel.StlGen.Model;
+using static OperatorPanel.StlGen.Handler.HandlerSnippets;
+using static OperatorPanel.StlGen.V3.Context;
+
+namespace OperatorPanel.StlGen.V3;
+
+/// <summary>
+/// Phase Dispatch, the scan after the request's check passed (docs/protocol.md section 4, steps 3-4): CMD, the payload
+/// length P, then one test per command, the fullest dispatch first (the item commands), with P checked there when the command has one
+/// length (85 otherwise, like an unknown command). A refused request sets STATUS 82-87 and replies without payload
+/// (label 2). A command that has its payload ready hands over to phase Reply for the next scan.
+/// </summary>
+internal static class DispatchPart
+{
+    public static IEnumerable<StlNetwork> Networks(Context c)
+    {
+        var l = c.Layout;
+        yield return Label(Labels.Dispatch, "the request's command");
+        yield return Always(
+            "Request: CMD and P", "CMD = SEQCMD's low 4 bits; STATUS = 80 for now; P = count - 8.",
+            Op("MOVB", l.B(4), l.B(l.Cmd)), Op("ANDB", "16#0F", l.B(l.Cmd)), Op("MOVB", Hex(ReplyStatus.Ok), l.B(l.Status)),
+            Op("BTI", l.B(0), l.W(l.Temp)), Op("-I", "8", l.W(l.Temp)));
+        var commands = new List<(Command Code, int Label, int? Payload)>
+        {
+            (Command.Read, Labels.Read, 4), (Command.Write, Labels.Write, null), (Command.WriteBits, Labels.WriteBits, 5),
+        };
+        if (c.HasList)
+        {
+            commands.AddRange([(Command.ReadList, Labels.ReadList, 0), (Command.ReadListFull, Labels.ReadList, 0)]);
+        }
+
+        commands.Add((Command.Identify, Labels.Identify, 0));
+        if (c.HasList)
+        {
+            commands.Add((Command.DefineList, Labels.DefineList, null));
+        }
+
+        if (c.HasStop)
+        {
+            commands.Add((Command.Stop, Labels.Stop, 4));
+        }
+
+        foreach (var (code, label, payload) in commands)
+        {
+            var net = new NetworkBuilder($"Command {(byte)code:D2} {code}", payload is { } p ? $"CMD = {(byte)code} and P = {p}: label {label}." : $"CMD = {(byte)code}: label {label}.")
+                .Op("LDB=", l.B(l.Cmd), Dec(code));
+            if (payload is { } length)
+            {
+                net.Op("AW=", l.W(l.Temp), Dec(length));
+            }
+
+            yield return net.Op("JMP", Dec(label)).Build();
+        }
+
+        yield return Refusal.If(l, "Unknown command or payload", "Any other CMD, or P not the command's: 85.", ReplyStatus.UnknownCommand, Op("LD", "SM0.0"));
+    }
+
+    /// <summary>The payload is in place in R; the reply's head in the next scan (phase Reply).</summary>
+    public static StlNetwork ToReply(Context c, string title, string comment, params (string, string[])[] ops)
+    {
+        var l = c.Layout;
+        return JumpIf(title, comment, Labels.End, [.. ops, l.Go(Phase.Reply)]);
+    }
+
+    /// <summary>01 IDENTIFY: the 16 fixed bytes, SMB6, SM0.7 and SMW22-SMW26 from byte 6 (docs/protocol.md, 01 IDENTIFY).</summary>
+    public static IEnumerable<StlNetwork> Identify(Context c, Identity fixedPart)
+    {
+        var l = c.Layout;
+        var f = fixedPart.FixedBytes;
+        string Word(int at) => "16#" + string.Concat(f.Skip(at).Take(4).Select(b => b.ToString("X2", System.Globalization.CultureInfo.InvariantCulture)));
+        yield return Label(Labels.Identify, "01 IDENTIFY");
+        yield return Always(
+            "IDENTIFY: the payload",
+            "Bytes 0-15 as generated, SMB6, the flags (bit 0 below), SMW22-SMW26; P = 24.",
+            Op("MOVD", Word(0), l.Dw(6)), Op("MOVD", Word(4), l.Dw(10)), Op("MOVD", Word(8), l.Dw(14)), Op("MOVD", Word(12), l.Dw(18)),
+            Op("MOVB", "SMB6", l.B(22)), Op("MOVB", "0", l.B(23)), Op("BMB", "SMB22", l.B(24), "6"), Op("MOVW", Dec(Identity.PayloadBytes), l.W(l.Temp)));
+        yield return new NetworkBuilder("IDENTIFY: mode switch", "STATUS_FLAGS bit 0 = SM0.7 (switch at RUN); bits 1-7 stay 0.")
+            .Op("LD", "SM0.7").Op("=", l.Bit(23, 0)).Build();
+        yield return ToReply(c, "IDENTIFY: reply", "In R, next scan.", Op("LD", "SM0.0"));
+    }
+
+    public static IEnumerable<StlNetwork> Stop(Context c)
+    {
+        var l = c.Layout;
+        yield return Label(Labels.Stop, "08 STOP");
+        yield return Refusal.If(l, "STOP: \"STOP\"", "Any other 4 bytes: 86.", ReplyStatus.BadParameter, Op("LDD<>", l.Dw(5), "16#53544F50"));
+        yield return JumpIf("STOP: reply", $"80, no payload; the CPU goes to STOP when the reply is out ({c.Names.Transmit}).", Labels.ErrorReply, Op("LD", "SM0.0"));
+    }
+}
