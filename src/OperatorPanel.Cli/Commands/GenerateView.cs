@@ -43,7 +43,7 @@ internal static class GenerateView
 
         cli.Out.WriteLine($"V bytes reserved:       {stats.VRange} ({stats.VBytes} bytes)");
         cli.Out.WriteLine($"READ CHANGES copies:    {stats.CopyRange} ({stats.CopyBytes} bytes; READ CHANGES and STOP work bytes: {stats.ChangesWorkBytes})");
-        cli.Out.WriteLine($"STOP command:           {(stats.StopEnabled ? "enabled (07 STOP puts the CPU in STOP after its reply)" : "not included (07 gets error 05)")}");
+        cli.Out.WriteLine($"STOP command:           {StopText(stats)}");
         cli.Out.WriteLine($"instructions generated: {stats.Instructions}");
         cli.Out.WriteLine($"interrupt events used:  {string.Join(", ", stats.InterruptEvents)}");
         cli.Out.WriteLine($"blocks used:            {string.Join(", ", stats.Blocks.Select(b => $"{b.Name} ({b.NumberText})"))}");
@@ -99,5 +99,14 @@ internal static class GenerateView
         worstInterruptMicroseconds = Us(measured.Max(m => m.WorstInterrupt)),
         worstScanMicroseconds = Us(measured.Max(m => m.WorstScan)),
         mostScansPerReply = measured.Max(m => m.Scans),
+    };
+
+    /// <summary>v2's STOP is 07 (refused with 05 when left out); v3's is 08 (85, an unknown command, when left out or in a compact handler).</summary>
+    private static string StopText(HandlerStats stats) => (stats.Protocol, stats.StopEnabled) switch
+    {
+        (3, true) => "enabled (08 STOP puts the CPU in STOP after its reply)",
+        (3, false) => stats.Compact ? "not included: a compact handler has none (08 gets 85)" : "not included (08 gets 85)",
+        (_, true) => "enabled (07 STOP puts the CPU in STOP after its reply)",
+        _ => "not included (07 gets error 05)",
     };
 }

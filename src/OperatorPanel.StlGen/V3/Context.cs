@@ -34,7 +34,8 @@ internal sealed class Context
 
     public bool HasList => Shape.HasList;
 
-    public bool HasStop => Options.AllowStop;
+    /// <summary>STOP is a full-handler command: the compact handler refuses 08 as unknown (85) whatever the project allows.</summary>
+    public bool HasStop => Options.AllowStop && !Options.Compact;
 
     public string PortOperand => Port.ToString(CultureInfo.InvariantCulture);
 

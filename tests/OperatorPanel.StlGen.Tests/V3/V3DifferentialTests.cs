@@ -154,6 +154,17 @@ public sealed class V3DifferentialTests
     }
 
     [Fact]
+    public void Compact_StopAllowedInTheProject_IsUnknownAndLeavesNoStopCode()
+    {
+        var station = new V3Station(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu222), Station = 5, Compact = true, AllowStop = true }, new Random(6));
+
+        Same(station, Request.Stop(station.Station, 1)).Substring(4, 2).Should().Be("85", "the compact handler has no 08 STOP");
+        station.Plc.Mode.Should().Be(Simulator.Reference.OperatingMode.Run);
+        station.Generated.AwlText.Should().NotMatchRegex(@"(?m)^STOP\b", "no STOP instruction in a compact handler");
+        station.Generated.Stats!.StopEnabled.Should().BeFalse();
+    }
+
+    [Fact]
     public void Stop_AnswersThenStops()
     {
         var station = Full();
