@@ -42,14 +42,14 @@ internal static class CheckPart
         yield return Reduce(b);
         yield return JumpIf("Check: more in this scan", string.Empty, Labels.CheckNext, Op("LDD<", "AC1", "AC2"));
         yield return JumpIf("Check: more in the next scan", "Keep AC1.", Labels.End, Op("LDD<", "AC1", l.Dw(l.End)), Op("MOVD", "AC1", l.Dw(l.Walk)));
-        yield return Always("Check: the A field", "Every double word is in: A = A's two words XORed, XOR B, the frame's first check word.",
-            Op("XORW", l.W(l.SumA + 2), l.W(l.SumA)), Op("XORW", b, l.W(l.SumA)));
+        yield return Always("Check: the A field", "Every double word is in: A's low word ^= its high word and B, so the double word from A's low word on is the check (A field, then B).",
+            Op("XORW", l.W(l.SumA), l.W(l.SumA + 2)), Op("XORW", b, l.W(l.SumA + 2)));
         yield return JumpIf(
-            "Check: the reply's", "The reply's check (STEP's reply bit): the A field and B into the check's place (END); the whole reply is ready (COVERED = END + 3); the request is done.",
-            Labels.Publish, Op("LD", l.PhaseBit(Phase.ReplyFlag)), Op("MOVD", l.Dw(l.End), "AC1"), Op("MOVW", l.W(l.SumA), "*AC1"), Op("+D", "2", "AC1"),
-            Op("MOVW", b, "*AC1"), Op("+D", "1", "AC1"), Op("MOVD", "AC1", l.Dw(l.Covered)), l.Done());
+            "Check: the reply's", "The reply's check (STEP's reply bit) into its place (END) in one double word; the whole reply is ready (COVERED = END + 3); the request is done.",
+            Labels.Publish, Op("LD", l.PhaseBit(Phase.ReplyFlag)), Op("MOVD", l.Dw(l.End), "AC1"), Op("MOVD", l.Dw(l.Check), "*AC1"), Op("+D", "3", "AC1"),
+            Op("MOVD", "AC1", l.Dw(l.Covered)), l.Done());
         yield return JumpIf("Request: check differs", "A frame whose check differs gets no reply (its STATION cannot be trusted).", Labels.Silence,
-            Op("LDW<>", l.W(l.SumA), l.W(l.Rx)), Op("OW<>", b, l.W(l.Rx + 2)));
+            Op("LDD<>", l.Dw(l.Check), l.Dw(l.Rx)));
         yield return JumpIf("Request: checked", "The command in the next scan.", Labels.End, Op("LD", "SM0.0"), l.Go(Phase.Dispatch));
     }
 

@@ -25,21 +25,26 @@ internal static class InterruptPart
         yield return Always("A request is waiting", $"{c.Names.Panel} checks and answers it, a bounded part per scan (phase Start).", l.Go(Phase.Start));
     }
 
+    /// <summary>
+    /// The most frequent case first (bytes ready: the next chunk), so a chunk's routine is the shortest; then the
+    /// transmitter is released, and when the request is done (STEP 0, everything sent) the reply to STOP sets STOP
+    /// now, any other receives the next request.
+    /// </summary>
     public static IEnumerable<StlNetwork> Transmit(Context c)
     {
         var l = c.Layout;
-        if (c.HasStop)
-        {
-            yield return new NetworkBuilder("The reply to STOP is out", $"{c.Names.Panel} executes STOP in its next scan; no receive.")
-                .Op("LDD=", l.Dw(l.Sent), l.Dw(l.Covered)).Op("AW=", l.W(l.Step), "0").Op("AB=", l.B(l.Cmd), Dec(Core.Protocol.V3.Command.Stop)).Op("AB=", l.B(l.Status), Hex(Core.Protocol.V3.ReplyStatus.Ok))
-                .Op("S", l.FlagBit(Layout.StopNow), "1").Op("CRETI").Build();
-        }
-
-        yield return new NetworkBuilder("The whole reply is out", "Everything ready is sent and the request is done (its check too): release the transmitter and receive the next request.")
-            .Op("LDD=", l.Dw(l.Sent), l.Dw(l.Covered)).Op("AW=", l.W(l.Step), "0").Op("R", l.FlagBit(Layout.Owned), "1").Op("RCV", l.B(0), c.PortOperand).Op("CRETI").Build();
         yield return Send(c, "The next chunk", "Bytes ready since the last chunk: send them, keep the transmitter.", Op("LDD>", l.Dw(l.Covered), l.Dw(l.Sent)))
             .Op("CRETI").Build();
         yield return Always("Nothing ready", $"Release the transmitter: {c.Names.Panel} sends the next chunk when it is ready.", Op("R", l.FlagBit(Layout.Owned), "1"));
+        if (c.HasStop)
+        {
+            yield return new NetworkBuilder("The reply to STOP is out", $"{c.Names.Panel} executes STOP in its next scan; no receive.")
+                .Op("LDW=", l.W(l.Step), "0").Op("AD=", l.Dw(l.Sent), l.Dw(l.Covered)).Op("AB=", l.B(l.Cmd), Dec(Core.Protocol.V3.Command.Stop)).Op("AB=", l.B(l.Status), Hex(Core.Protocol.V3.ReplyStatus.Ok))
+                .Op("S", l.FlagBit(Layout.StopNow), "1").Op("CRETI").Build();
+        }
+
+        yield return new NetworkBuilder("The whole reply is out", "Everything ready is sent and the request is done (its check too): receive the next request.")
+            .Op("LDW=", l.W(l.Step), "0").Op("AD=", l.Dw(l.Sent), l.Dw(l.Covered)).Op("RCV", l.B(0), c.PortOperand).Build();
     }
 
     /// <summary>

@@ -67,6 +67,9 @@ internal sealed class Layout
 
     public int SumB => Work + 9;
 
+    /// <summary>The finished check: A's low word (the A field once folded) then B, a double word.</summary>
+    public int Check => SumA + 2;
+
     /// <summary>The request's check as received; its last word is REQCHECK.</summary>
     public int Rx => Work + 11;
 
