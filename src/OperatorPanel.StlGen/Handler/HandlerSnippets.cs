@@ -44,6 +44,21 @@ internal static class HandlerSnippets
         return net.Op("JMP", Dec(label)).Build();
     }
 
+    /// <summary>
+    /// A condition network that ends the subroutine for this scan: CRET (RET's 13 us, docs/sources/s7200-facts.md
+    /// section 6) where a JMP to a label at the block's end is charged 46 us.
+    /// </summary>
+    public static StlNetwork ReturnIf(string title, string comment, params (string Mnemonic, string[] Operands)[] condition)
+    {
+        var net = new NetworkBuilder(title, comment);
+        foreach (var (mnemonic, operands) in condition)
+        {
+            net.Op(mnemonic, operands);
+        }
+
+        return net.Op("CRET").Build();
+    }
+
     public static (string, string[]) Op(string mnemonic, params string[] operands) => (mnemonic, operands);
 
     /// <summary>

@@ -41,7 +41,7 @@ internal static class CheckPart
         yield return Always("Check: second unit", "B ^= the second unit (AC0's low word), then B * x.", Op("XORW", "AC0", b), Op("SLW", b, "1"));
         yield return Reduce(b);
         yield return JumpIf("Check: more in this scan", string.Empty, Labels.CheckNext, Op("LDD<", "AC1", "AC2"));
-        yield return JumpIf("Check: more in the next scan", "Keep AC1.", Labels.End, Op("LDD<", "AC1", l.Dw(l.End)), Op("MOVD", "AC1", l.Dw(l.Walk)));
+        yield return ReturnIf("Check: more in the next scan", "Keep AC1.", Op("LDD<", "AC1", l.Dw(l.End)), Op("MOVD", "AC1", l.Dw(l.Walk)));
         yield return Always("Check: the A field", "Every double word is in: A's low word ^= its high word and B, so the double word from A's low word on is the check (A field, then B).",
             Op("XORW", l.W(l.SumA), l.W(l.SumA + 2)), Op("XORW", b, l.W(l.SumA + 2)));
         yield return JumpIf(
@@ -50,7 +50,7 @@ internal static class CheckPart
             Op("MOVD", "AC1", l.Dw(l.Covered)), l.Done());
         yield return JumpIf("Request: check differs", "A frame whose check differs gets no reply (its STATION cannot be trusted).", Labels.Silence,
             Op("LDD<>", l.Dw(l.Check), l.Dw(l.Rx)));
-        yield return JumpIf("Request: checked", "The command in the next scan.", Labels.End, Op("LD", "SM0.0"), l.Go(Phase.Dispatch));
+        yield return ReturnIf("Request: checked", "The command in the next scan.", Op("LD", "SM0.0"), l.Go(Phase.Dispatch));
     }
 
     /// <summary>B * x modulo x^16 + x^5 + x^3 + x^2 + 1: the bit SLW shifted out (SM1.1) folds back as 16#002D.</summary>

@@ -25,10 +25,9 @@ internal static class DefinePart
             Op("ANDW", Dec(groupBytes - 1), "AC0"));
         yield return Refusal.If(l, "DEFINE LIST: whole groups", $"P 0 or not a multiple of {groupBytes}: 84 (P <= 4 x LIST_ITEMS as MAX_REQUEST = 4 x LIST_ITEMS + 8).",
             ReplyStatus.BadLength, Op("LDW=", l.W(l.Temp), "0"), Op("OW<>", "AC0", "0"));
-        yield return JumpIf(
+        yield return ReturnIf(
             "DEFINE LIST: from slot 0",
-            "Slots from slot 0, data from G (TAIL); items from byte 5 (WALK) to byte 5 + P (END), one per scan.",
-            Labels.End, Op("LD", "SM0.0"), Op("MOVD", l.Ptr(l.Slots), l.Dw(l.NextSlot)), Op("MOVD", l.Ptr(l.G), l.Dw(l.Tail)), Op("MOVD", l.Ptr(5), l.Dw(l.Walk)),
+            "Slots from slot 0, data from G (TAIL); items from byte 5 (WALK) to byte 5 + P (END), one per scan.", Op("LD", "SM0.0"), Op("MOVD", l.Ptr(l.Slots), l.Dw(l.NextSlot)), Op("MOVD", l.Ptr(l.G), l.Dw(l.Tail)), Op("MOVD", l.Ptr(5), l.Dw(l.Walk)),
             Op("ITD", l.W(l.Temp), "AC0"), Op("MOVD", l.Ptr(5), l.Dw(l.End)), Op("+D", "AC0", l.Dw(l.End)), l.Go(Phase.DefineSlot));
         yield return Label(Labels.DefineItem, "phase DefineSlot: the next item");
         yield return Always("DEFINE LIST: the item", "AC2 = its AREA; LENGTH from its fourth byte.",
@@ -36,15 +35,14 @@ internal static class DefinePart
         yield return Refusal.If(l, "DEFINE LIST: LENGTH 1 to 4", "84.", ReplyStatus.BadLength, Op("LDW=", lenWord, "0"), Op("OW>", lenWord, Dec(HandlerShape.ItemBytes)));
         yield return JumpIf("DEFINE LIST: check the item", "Through label 20, back at label 35.", Labels.ItemCheck, Op("LD", "SM0.0"));
         yield return Label(Labels.DefineChecked, "DEFINE LIST: item checked");
-        yield return JumpIf("DEFINE LIST: stored next scan", "Its first byte (AC3) waits in LAST (free till the reply).", Labels.End,
-            Op("LD", "SM0.0"), Op("MOVD", "AC3", l.Dw(l.Last)), l.Go(Phase.DefineStore));
+        yield return ReturnIf("DEFINE LIST: stored next scan", "Its first byte (AC3) waits in LAST (free till the reply).", Op("LD", "SM0.0"), Op("MOVD", "AC3", l.Dw(l.Last)), l.Go(Phase.DefineStore));
         yield return Label(Labels.DefineStore, "phase DefineStore: the slot");
         yield return Always(
             "DEFINE LIST: store the slot", "Destination (TAIL), source (LAST), length; TAIL on by the length; the next slot and item.",
             Op("MOVD", l.Dw(l.NextSlot), "AC1"), Op("MOVD", l.Dw(l.Tail), "*AC1"), Op("+D", "4", "AC1"), Op("MOVD", l.Dw(l.Last), "*AC1"), Op("+D", "4", "AC1"),
             Op("MOVB", ItemPart.Length(l), "*AC1"), Op("INCD", "AC1"), Op("MOVD", "AC1", l.Dw(l.NextSlot)), Op("ITD", lenWord, "AC0"), Op("+D", "AC0", l.Dw(l.Tail)),
             Op("+D", "4", l.Dw(l.Walk)));
-        yield return JumpIf("DEFINE LIST: more items", "The next one in the next scan.", Labels.End, Op("LDD<", l.Dw(l.Walk), l.Dw(l.End)), l.Go(Phase.DefineSlot));
+        yield return ReturnIf("DEFINE LIST: more items", "The next one in the next scan.", Op("LDD<", l.Dw(l.Walk), l.Dw(l.End)), l.Go(Phase.DefineSlot));
         yield return JumpIf(
             "DEFINE LIST: done",
             "The data's end after the last slot; N = P / 4, GROUPS = 1 shifted left by N / 8; D = TAIL - G; the whole list reply's LEN = 9 + D. Reply 80, no payload.",

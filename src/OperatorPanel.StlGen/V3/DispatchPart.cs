@@ -21,30 +21,33 @@ internal static class DispatchPart
             "Request: CMD and P", "CMD = SEQCMD's low 4 bits; STATUS = 80 for now; P = count - 8.",
             Op("MOVB", l.B(4), l.B(l.Cmd)), Op("ANDB", "16#0F", l.B(l.Cmd)), Op("MOVB", Hex(ReplyStatus.Ok), l.B(l.Status)),
             Op("BTI", l.B(0), l.W(l.Temp)), Op("-I", "8", l.W(l.Temp)));
-        var commands = new List<(Command Code, int Label, int? Payload)>
+        var commands = new List<(Command Code, Command Last, int Label, int? Payload)>
         {
-            (Command.Read, Labels.Read, 4), (Command.Write, Labels.Write, null), (Command.WriteBits, Labels.WriteBits, 5),
+            (Command.Read, Command.Read, Labels.Read, 4), (Command.Write, Command.Write, Labels.Write, null), (Command.WriteBits, Command.WriteBits, Labels.WriteBits, 5),
         };
         if (c.HasList)
         {
-            commands.AddRange([(Command.ReadList, Labels.ReadList, 0), (Command.ReadListFull, Labels.ReadList, 0)]);
+            commands.Add((Command.ReadList, Command.ReadListFull, Labels.ReadList, 0));
         }
 
-        commands.Add((Command.Identify, Labels.Identify, 0));
+        commands.Add((Command.Identify, Command.Identify, Labels.Identify, 0));
         if (c.HasList)
         {
-            commands.Add((Command.DefineList, Labels.DefineList, null));
+            commands.Add((Command.DefineList, Command.DefineList, Labels.DefineList, null));
         }
 
         if (c.HasStop)
         {
-            commands.Add((Command.Stop, Labels.Stop, 4));
+            commands.Add((Command.Stop, Command.Stop, Labels.Stop, 4));
         }
 
-        foreach (var (code, label, payload) in commands)
+        foreach (var (code, last, label, payload) in commands)
         {
-            var net = new NetworkBuilder($"Command {(byte)code:D2} {code}", payload is { } p ? $"CMD = {(byte)code} and P = {p}: label {label}." : $"CMD = {(byte)code}: label {label}.")
-                .Op("LDB=", l.B(l.Cmd), Dec(code));
+            var codes = code == last ? $"CMD = {(byte)code}" : $"CMD {(byte)code} or {(byte)last}";
+            var net = new NetworkBuilder(
+                code == last ? $"Command {(byte)code:D2} {code}" : $"Commands {(byte)code:D2} {code}, {(byte)last:D2} {last}",
+                payload is { } p ? $"{codes} and P = {p}: label {label}." : $"{codes}: label {label}.");
+            net = code == last ? net.Op("LDB=", l.B(l.Cmd), Dec(code)) : net.Op("LDB>=", l.B(l.Cmd), Dec(code)).Op("AB<=", l.B(l.Cmd), Dec(last));
             if (payload is { } length)
             {
                 net.Op("AW=", l.W(l.Temp), Dec(length));
@@ -60,7 +63,7 @@ internal static class DispatchPart
     public static StlNetwork ToReply(Context c, string title, string comment, params (string, string[])[] ops)
     {
         var l = c.Layout;
-        return JumpIf(title, comment, Labels.End, [.. ops, l.Go(Phase.Reply)]);
+        return ReturnIf(title, comment, [.. ops, l.Go(Phase.Reply)]);
     }
 
     /// <summary>01 IDENTIFY: the 16 fixed bytes, SMB6, SM0.7 and SMW22-SMW26 from byte 6 (docs/protocol.md, 01 IDENTIFY).</summary>

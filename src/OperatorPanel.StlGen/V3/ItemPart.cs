@@ -44,8 +44,7 @@ internal static class ItemPart
             yield return JumpIf("Item: DEFINE LIST", "On to the slot's checks.", Labels.DefineChecked, Op("LDB=", l.B(l.Cmd), Dec(Command.DefineList)));
         }
 
-        yield return JumpIf("Item: the rest next scan", "WALK = the item's first byte; READ's data, or the write checks and the write (phase Move).", Labels.End,
-            Op("LD", "SM0.0"), Op("MOVD", "AC3", l.Dw(l.Walk)), l.Go(Phase.Move));
+        yield return ReturnIf("Item: the rest next scan", "WALK = the item's first byte; READ's data, or the write checks and the write (phase Move).", Op("LD", "SM0.0"), Op("MOVD", "AC3", l.Dw(l.Walk)), l.Go(Phase.Move));
     }
 
     public static IEnumerable<StlNetwork> Commands(Context c)

@@ -36,7 +36,10 @@ internal static class Labels
     public const int ReplyInR = 50;
     public const int ChangesNext = 54;
 
-    /// <summary>Send what is ready, then back to OB1.</summary>
+    /// <summary>OP_PANEL's phase groups (Builder.Resumes): the list's loops, the heavy steps.</summary>
+    public const int LoopPhases = 70;
+    public const int HeavyPhases = 71;
+
+    /// <summary>Send what is ready, then back to OB1 (the block's end; elsewhere CRET ends the scan's part).</summary>
     public const int Publish = 98;
-    public const int End = 99;
 }

@@ -31,10 +31,9 @@ internal static class ListPart
             Op("MOVD", "0", "*" + l.Dw(l.Tail)), Op("MOVB", "1", l.B(l.Group)), Op("R", l.FlagBit(Layout.Whole), "1"));
         yield return JumpIf("READ LIST FULL: the whole list", "07: its head now; the copy is not valid any more (the next 06 answers whole).", Labels.WholeHead,
             Op("LDB=", l.B(l.Cmd), Dec(Command.ReadListFull)), Op("R", l.FlagBit(Layout.CopyValid), "1"));
-        yield return JumpIf(
+        yield return ReturnIf(
             "READ LIST: a comparison",
-            "Nothing is sent until the reply is known; the comparison from quarter 0 (COUNT); entries from R byte 6 (TEMP) while below R byte 6 + D (LAST: entries beyond would not be shorter); the gather next scan.",
-            Labels.End, Op("LD", "SM0.0"), Op("MOVD", Nowhere, l.Dw(l.Sent)), Op("MOVB", "0", l.B(l.Count)), Op("MOVD", l.Ptr(6), l.Dw(l.Temp)), Op("BTI", l.B(l.D), "AC0"),
+            "Nothing is sent until the reply is known; the comparison from quarter 0 (COUNT); entries from R byte 6 (TEMP) while below R byte 6 + D (LAST: entries beyond would not be shorter); the gather next scan.", Op("LD", "SM0.0"), Op("MOVD", Nowhere, l.Dw(l.Sent)), Op("MOVB", "0", l.B(l.Count)), Op("MOVD", l.Ptr(6), l.Dw(l.Temp)), Op("BTI", l.B(l.D), "AC0"),
             Op("ITD", "AC0", "AC0"), Op("MOVD", l.Ptr(6), l.Dw(l.Last)), Op("+D", "AC0", l.Dw(l.Last)), l.Go(Phase.Gather));
         foreach (var network in Head(c).Concat(Gather(c)).Concat(Compare(c)).Concat(Changes(c)))
         {
@@ -53,8 +52,7 @@ internal static class ListPart
             Op("MOVB", Hex(ReplyStatus.Ok), l.B(l.L + 3)), Op("MOVW", l.W(l.Rx + 2), l.W(l.L + 4)), Op("MOVD", l.Ptr(l.L), l.Dw(l.Sent)),
             Op("MOVD", l.Ptr(l.L + 5), l.Dw(l.Covered)), Op("MOVD", l.Dw(l.Tail), l.Dw(l.End)),
             Op("MOVD", l.Ptr(l.L + 1), l.Dw(l.Walk)), Op("MOVD", "0", l.Dw(l.SumA)), Op("MOVW", "0", l.W(l.SumB)), Op("S", l.FlagBit(Layout.Whole), "1"));
-        yield return JumpIf("Whole list: gather next", "From the dispatch: head and groups leave as the gather goes.", Labels.End,
-            Op("LDB<", l.B(l.Group), l.B(l.Groups)), l.Go(Phase.Gather));
+        yield return ReturnIf("Whole list: gather next", "From the dispatch: head and groups leave as the gather goes.", Op("LDB<", l.B(l.Group), l.B(l.Groups)), l.Go(Phase.Gather));
         yield return JumpIf("Whole list: all of it", "After the comparison, G gathered: head and data leave now, the check from the next scan.", Labels.Publish,
             Op("LD", "SM0.0"), Op("MOVD", l.Dw(l.Tail), l.Dw(l.Covered)), Op("DECD", l.Dw(l.Covered)), l.GoReplyCheck());
     }
@@ -80,7 +78,7 @@ internal static class ListPart
             Op("LDB<", l.B(l.Group), l.B(l.Groups)));
         yield return JumpIf("Gather done: the whole list's check", "From the next scan, while the data leaves.", Labels.Publish,
             Op("LD", l.FlagBit(Layout.Whole)), l.GoReplyCheck());
-        yield return JumpIf("Gather done: compare", "In the next scan.", Labels.End, Op("LD", "SM0.0"), l.Go(Phase.Compare));
+        yield return ReturnIf("Gather done: compare", "In the next scan.", Op("LD", "SM0.0"), l.Go(Phase.Compare));
     }
 
     /// <summary>
@@ -93,10 +91,13 @@ internal static class ListPart
         var l = c.Layout;
         var quarters = (c.Shape.ListBytes + 31) / 32;
         yield return Label(Labels.Compare, "phase Compare: G against the copy");
-        yield return JumpIf("Compare: every quarter done", "After phase Changes over the last quarter.", Labels.CompareDone, Op("LDB=", l.B(l.Count), Dec(quarters)));
-        for (var q = 1; q < quarters; q++)
+        for (var q = quarters; q >= 1; q--)
         {
-            yield return JumpIf($"Compare: from quarter {q}?", string.Empty, Labels.Quarter + q, Op("LDB=", l.B(l.Count), Dec(q)));
+            yield return JumpIf(
+                q == quarters ? "Compare: every quarter done" : $"Compare: from quarter {q}?",
+                "COUNT's bits, the highest quarter first: COUNT has every bit of this quarter's number only when it is at least this one, and the higher ones went before (a contact takes 0.37 us, a byte compare 46).",
+                q == quarters ? Labels.CompareDone : Labels.Quarter + q,
+                [.. BitsOf(q).Select((bit, i) => Op(i == 0 ? "LD" : "A", l.Bit(l.Count, bit)))]);
         }
 
         for (var q = 0; q < quarters; q++)
@@ -105,7 +106,7 @@ internal static class ListPart
             {
                 if (q % 2 == 0)
                 {
-                    yield return JumpIf($"Compare: quarter {q} next scan", string.Empty, Labels.End, Op("LD", "SM0.0"), Op("MOVB", Dec(q), l.B(l.Count)));
+                    yield return ReturnIf($"Compare: quarter {q} next scan", string.Empty, Op("LD", "SM0.0"), Op("MOVB", Dec(q), l.B(l.Count)));
                 }
 
                 yield return Label(Labels.Quarter + q, $"quarter {q}");
@@ -140,8 +141,11 @@ internal static class ListPart
             Op("MOVD", l.Ptr(l.G), l.Dw(l.Walk)), Op("+D", "AC0", l.Dw(l.Walk)), Op("MOVD", l.Ptr(l.C), l.Dw(l.Covered)), Op("+D", "AC0", l.Dw(l.Covered)),
             Op("MOVD", l.Dw(l.Walk), l.Dw(l.End)), Op("+D", "32", l.Dw(l.End)));
         yield return new NetworkBuilder("Changes: not past TAIL", string.Empty).Op("LDD>", l.Dw(l.End), l.Dw(l.Tail)).Op("MOVD", l.Dw(l.Tail), l.Dw(l.End)).Build();
-        yield return JumpIf("Changes: next scan", string.Empty, Labels.End, Op("LD", "SM0.0"), l.Go(Phase.Changes));
+        yield return ReturnIf("Changes: next scan", string.Empty, Op("LD", "SM0.0"), l.Go(Phase.Changes));
     }
+
+    /// <summary>The set bits of <paramref name="value"/>, lowest first.</summary>
+    private static IEnumerable<int> BitsOf(int value) => Enumerable.Range(0, 8).Where(bit => (value & (1 << bit)) != 0);
 
     /// <summary>Phase Changes: two double words of the quarter per scan, unrolled; at its end, phase Compare from the next quarter.</summary>
     private static IEnumerable<StlNetwork> Changes(Context c)
@@ -166,8 +170,7 @@ internal static class ListPart
 
         yield return Label(Labels.ChangesNext, "this scan's double words done");
         yield return Always("Changes: keep the pointers", string.Empty, Op("MOVD", "AC1", l.Dw(l.Walk)), Op("MOVD", "AC2", l.Dw(l.Covered)), Op("MOVD", "AC3", l.Dw(l.Temp)));
-        yield return JumpIf("Changes: more next scan", string.Empty, Labels.End, Op("LDD<", "AC1", l.Dw(l.End)));
-        yield return JumpIf("Changes: the quarter done", "Phase Compare from the next quarter, next scan.", Labels.End,
-            Op("LD", "SM0.0"), Op("INCB", l.B(l.Count)), l.Go(Phase.Compare));
+        yield return ReturnIf("Changes: more next scan", string.Empty, Op("LDD<", "AC1", l.Dw(l.End)));
+        yield return ReturnIf("Changes: the quarter done", "Phase Compare from the next quarter, next scan.", Op("LD", "SM0.0"), Op("INCB", l.B(l.Count)), l.Go(Phase.Compare));
     }
 }

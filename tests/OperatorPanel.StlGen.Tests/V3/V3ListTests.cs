@@ -86,6 +86,30 @@ public sealed class V3ListTests
     }
 
     [Theory]
+    [InlineData(0)]
+    [InlineData(1)]
+    [InlineData(2)]
+    [InlineData(3)]
+    [InlineData(1, 3)]
+    [InlineData(0, 2, 3)]
+    public void ReadList_ChangesInChosenQuarters_AnswerTheirEntriesLikeTheReference(params int[] quarters)
+    {
+        var ranges = Enumerable.Range(0, 32).Select(i => new ReadItem(ProtocolArea.V, 2000 + (i * 4), 4)).ToArray();
+        var (station, pc) = Defined(ranges);
+        pc.Read().Should().Be(ReplyStatus.Ok);
+        pc.Read().Should().Be(ReplyStatus.Unchanged);
+
+        foreach (var quarter in quarters)
+        {
+            station.Poke(ProtocolArea.V, 2000 + (quarter * 32) + 5, (byte)(0x11 * (quarter + 1)));
+        }
+
+        pc.Read().Should().Be(ReplyStatus.Changes, "the comparison resumes at each quarter after one that differs");
+        pc.Known.Should().Equal(Memory(station, pc));
+        pc.Read().Should().Be(ReplyStatus.Unchanged);
+    }
+
+    [Theory]
     [InlineData("")]
     [InlineData("04000001")]
     [InlineData("04000001040000010400000104000001040000010400000104000001")]
@@ -116,6 +140,7 @@ public sealed class V3ListTests
         pc.Raw(Request.ReadList(station.Station, 1)).Should().Be(ReplyStatus.ListNotDefined);
         pc.Raw(Request.DefineList(station.Station, 2, Enumerable.Repeat(new ReadItem(ProtocolArea.V, 0, 1), 8))).Should().Be(ReplyStatus.Ok);
         pc.Raw(new Request(station.Station, 4, Command.ReadList, [0])).Should().Be(ReplyStatus.UnknownCommand, "READ LIST has no payload");
+        pc.Raw(new Request(station.Station, 6, Command.ReadListFull, [1, 2])).Should().Be(ReplyStatus.UnknownCommand, "READ LIST FULL has no payload");
         pc.Raw(Request.ReadListFull(station.Station, 5)).Should().Be(ReplyStatus.Ok);
     }
 
