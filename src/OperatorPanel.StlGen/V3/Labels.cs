@@ -24,7 +24,6 @@ internal static class Labels
     public const int DefineStore = 38;
     public const int ReadList = 40;
     public const int Gather = 41;
-    public const int GatherDone = 45;
     public const int WholeHead = 46;
     public const int Compare = 47;
     public const int CompareDone = 44;
