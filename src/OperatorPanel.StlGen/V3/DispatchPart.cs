@@ -21,33 +21,32 @@ internal static class DispatchPart
             "Request: CMD and P", "CMD = SEQCMD's low 4 bits; STATUS = 80 for now; P = count - 8.",
             Op("MOVB", l.B(4), l.B(l.Cmd)), Op("ANDB", "16#0F", l.B(l.Cmd)), Op("MOVB", Hex(ReplyStatus.Ok), l.B(l.Status)),
             Op("BTI", l.B(0), l.W(l.Temp)), Op("-I", "8", l.W(l.Temp)));
-        var commands = new List<(Command Code, Command Last, int Label, int? Payload)>
+        if (c.HasList)
         {
-            (Command.Read, Command.Read, Labels.Read, 4), (Command.Write, Command.Write, Labels.Write, null), (Command.WriteBits, Command.WriteBits, Labels.WriteBits, 5),
+            yield return JumpIf(
+                $"Commands {(byte)Command.ReadList:D2} {Command.ReadList}, {(byte)Command.ReadListFull:D2} {Command.ReadListFull}",
+                $"The polling's commands first. CMD 6 or 7 (0110, 0111: bit 3 clear, bits 2 and 1 set; CMD is 4 bits) by contacts (0.37 us each, a byte compare 46) and P = 0: label {Labels.ReadList}.",
+                Labels.ReadList, Op("LDN", l.Bit(l.Cmd, 3)), Op("A", l.Bit(l.Cmd, 2)), Op("A", l.Bit(l.Cmd, 1)), Op("AW=", l.W(l.Temp), "0"));
+        }
+
+        var commands = new List<(Command Code, int Label, int? Payload)>
+        {
+            (Command.Read, Labels.Read, 4), (Command.Write, Labels.Write, null), (Command.WriteBits, Labels.WriteBits, 5), (Command.Identify, Labels.Identify, 0),
         };
         if (c.HasList)
         {
-            commands.Add((Command.ReadList, Command.ReadListFull, Labels.ReadList, 0));
-        }
-
-        commands.Add((Command.Identify, Command.Identify, Labels.Identify, 0));
-        if (c.HasList)
-        {
-            commands.Add((Command.DefineList, Command.DefineList, Labels.DefineList, null));
+            commands.Add((Command.DefineList, Labels.DefineList, null));
         }
 
         if (c.HasStop)
         {
-            commands.Add((Command.Stop, Command.Stop, Labels.Stop, 4));
+            commands.Add((Command.Stop, Labels.Stop, 4));
         }
 
-        foreach (var (code, last, label, payload) in commands)
+        foreach (var (code, label, payload) in commands)
         {
-            var codes = code == last ? $"CMD = {(byte)code}" : $"CMD {(byte)code} or {(byte)last}";
-            var net = new NetworkBuilder(
-                code == last ? $"Command {(byte)code:D2} {code}" : $"Commands {(byte)code:D2} {code}, {(byte)last:D2} {last}",
-                payload is { } p ? $"{codes} and P = {p}: label {label}." : $"{codes}: label {label}.");
-            net = code == last ? net.Op("LDB=", l.B(l.Cmd), Dec(code)) : net.Op("LDB>=", l.B(l.Cmd), Dec(code)).Op("AB<=", l.B(l.Cmd), Dec(last));
+            var net = new NetworkBuilder($"Command {(byte)code:D2} {code}", payload is { } p ? $"CMD = {(byte)code} and P = {p}: label {label}." : $"CMD = {(byte)code}: label {label}.")
+                .Op("LDB=", l.B(l.Cmd), Dec(code));
             if (payload is { } length)
             {
                 net.Op("AW=", l.W(l.Temp), Dec(length));
