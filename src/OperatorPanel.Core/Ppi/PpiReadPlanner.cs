@@ -6,9 +6,8 @@ namespace OperatorPanel.Core.Ppi;
 
 /// <summary>
 /// Packs addresses into as few read jobs as the PDU allows (docs/ppi.md section 8): per area the bytes (for T and C the
-/// numbers) are merged
-/// into ranges (bridging gaps up to <see cref="PpiLimits.BridgeGap"/>) no longer than one item can read, and the
-/// ranges fill jobs in address order while the request and its answer fit the PDU and the item limit.
+/// numbers) are merged into ranges (bridging gaps up to <see cref="PpiLimits.BridgeGap"/>) no longer than one item can
+/// read, and the ranges fill jobs in address order while the request and its answer fit the PDU and the item limit.
 /// </summary>
 public static class PpiReadPlanner
 {
