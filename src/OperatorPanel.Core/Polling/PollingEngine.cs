@@ -160,8 +160,7 @@ internal sealed partial class PollingEngine
             var result = await _readers.Writer.WriteAsync(request, oldRaw, cancellationToken).ConfigureAwait(false);
             if (!result.ReadBack.IsDefault)
             {
-                var area = ProtocolAreaExtensions.FromMemoryArea(request.Address.Area)!.Value;
-                _batch.AddRange(_values.Apply(request.Station, area, request.Address.ByteOffset, result.ReadBack, _context.Time.GetUtcNow()));
+                _batch.AddRange(_values.Apply(request.Station, request.Address.Area, request.Address.ByteOffset, result.ReadBack, _context.Time.GetUtcNow()));
             }
 
             return (result.Outcome, oldText);

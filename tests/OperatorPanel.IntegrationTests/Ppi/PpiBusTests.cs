@@ -42,6 +42,44 @@ public sealed class PpiBusTests
     }
 
     [Fact]
+    public async Task Refresh_AnalogSBitsTimersAndCounters_ReadFromTheMemoryTheProgramRunsOn()
+    {
+        var (line, station) = Create(ValuesProgram.Awl);
+        (station.Plc.AreaBytes(MemoryArea.AI)[0], station.Plc.AreaBytes(MemoryArea.AI)[1]) = (0x12, 0x34);
+        station.Plc.AreaBytes(MemoryArea.S)[0] = 0x81;
+        await using var bus = Start(line, "AIW0", "AQW0", "SB0", "S0.7", "T37", "C5", "VB100");
+
+        await bus.RefreshAsync();
+
+        Value(bus, "AIW0").Should().Be("1234 Good");
+        Value(bus, "AQW0").Should().Be("04D2 Good", "MOVW 1234, AQW0");
+        Value(bus, "SB0").Should().Be("81 Good");
+        Value(bus, "S0.7").Should().Be("01 Good");
+        Value(bus, "T37").Should().Be("00FA Good", "MOVW 250, T37");
+        Value(bus, "C5").Should().Be("FFF9 Good", "MOVW -7, C5: the current value is a signed word");
+        bus.PpiCounters!.Jobs.Should().Be(1, "one job carries the byte, word, timer and counter items");
+    }
+
+    [Fact]
+    public async Task Write_AnalogOutputAndSBit_ConfirmedByReadBack_AnalogInputAndTimerRefusedBeforeSending()
+    {
+        var (line, station) = Create();
+        await using var bus = Start(line, "AQW2", "S1.3", "AIW0", "T37");
+
+        var aq = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("AQW2"), [0x01, 0x02]));
+        var s = await bus.WriteAsync(WriteRequest.Bit(Cpu2, PlcAddress.Parse("S1.3"), true));
+        var ai = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("AIW0"), [0x00, 0x01]));
+        var timer = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("T37"), [0x00, 0x01]));
+
+        aq.Should().BeOfType<WriteOutcome.Confirmed>();
+        s.Should().BeOfType<WriteOutcome.Confirmed>();
+        (station.Plc.AreaBytes(MemoryArea.AQ)[2], station.Plc.AreaBytes(MemoryArea.AQ)[3], station.Plc.AreaBytes(MemoryArea.S)[1]).Should().Be(((byte)1, (byte)2, (byte)0x08));
+        ai.Should().BeOfType<WriteOutcome.Failed>().Which.Reason.Should().Be("AIW0: analog inputs are read-only");
+        timer.Should().BeOfType<WriteOutcome.Failed>().Which.Reason.Should().StartWith("T37: the panel reads timer current values but never writes them");
+        Value(bus, "AQW2").Should().Be("0102 Good", "the read-back goes to the value store");
+    }
+
+    [Fact]
     public async Task Refresh_ItemRefusedByTheCpu_OnlyItsValueIsBadWithTheCodesText()
     {
         var (line, station) = Create();
@@ -157,10 +195,10 @@ public sealed class PpiBusTests
         bus.PpiCounters!.Jobs.Should().Be(0);
     }
 
-    private static (StlLine Line, StlStation Station) Create()
+    private static (StlLine Line, StlStation Station) Create(string awl = EmptyProgram.Awl)
     {
         var line = new StlLine(PpiLine);
-        StlStation.TryCreate(EmptyProgram.Awl, CpuProfiles.For(CpuModel.Cpu224), 0, PpiLine, out var station, out var error).Should().BeTrue(error);
+        StlStation.TryCreate(awl, CpuProfiles.For(CpuModel.Cpu224), 0, PpiLine, out var station, out var error).Should().BeTrue(error);
         station!.AttachPpi(new PpiSettings(2, 9600));
         line.Attach(station, runProcess: false);
         line.RunUntil(TimeSpan.FromMilliseconds(50));
