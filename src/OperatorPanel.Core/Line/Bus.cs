@@ -138,7 +138,9 @@ public sealed class Bus : IAsyncDisposable
         ArgumentNullException.ThrowIfNull(journal);
         return _queue.Enqueue(
             $"settling writes cut short on {PortName}",
-            ct => UnfinishedWrites.ResolveAsync(journal, _link, PortName, _time, _logger, ct),
+            ct => _ppi is { } ppi
+                ? UnfinishedWrites.ResolveOverPpiAsync(journal, ppi, PortName, _time, _logger, ct)
+                : UnfinishedWrites.ResolveAsync(journal, _link, PortName, _time, _logger, ct),
             () => ((IReadOnlyList<CutShortWrite>)[], null),
             cancellationToken);
     }

@@ -1,5 +1,6 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
@@ -193,6 +194,42 @@ public sealed class PpiBusTests
         reply.Failure!.Message.Should().Contain("is a PPI bus");
         stop.Verdict.Should().Be(Core.Stop.StopVerdict.NotSent);
         bus.PpiCounters!.Jobs.Should().Be(0);
+    }
+
+    [Theory]
+    [InlineData(0x04, 0xD2, UnfinishedWrites.Applied, "the PLC holds the requested 16#04D2")]
+    [InlineData(0x00, 0x07, UnfinishedWrites.NotApplied, "the PLC still holds the old 16#0007")]
+    public async Task SettleCutShort_WriteLeftOpenOnAPpiBus_IsReadBackWithAnS7ReadJob(byte high, byte low, string outcome, string detail)
+    {
+        var (line, station) = Create();
+        (station.Plc.AreaBytes(MemoryArea.AQ)[2], station.Plc.AreaBytes(MemoryArea.AQ)[3]) = (high, low);
+        var folder = Path.Combine(Path.GetTempPath(), "opanel-ppi-settle-" + Guid.NewGuid().ToString("N"));
+        try
+        {
+            var journal = WriteJournal.In(folder);
+            var intent = new AuditEntry(Guid.NewGuid(), AuditStep.Intent, AuditAction.Write, DateTimeOffset.UnixEpoch, "root", "simulated line", Cpu2, "AQW2", null, "16#0007", "16#04D2");
+            Directory.CreateDirectory(folder);
+            File.WriteAllLines(journal.Path, [new JournalLine(intent, EndedProcessId(), DateTimeOffset.UnixEpoch).Format()]);
+            await using var bus = Start(line, "VB100");
+
+            var (resolved, problem) = await bus.SettleCutShortAsync(journal);
+
+            problem.Should().BeNull();
+            resolved.Should().ContainSingle().Which.Resolution.Should().Match<AuditEntry>(e => e.Outcome == outcome && e.Detail == detail);
+            bus.PpiCounters!.Jobs.Should().Be(1, "one S7 read job, no Freeport frame and no second write");
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
+    }
+
+    /// <summary>The id of a process that has ended: the journal settles only what a program no longer running left open.</summary>
+    private static int EndedProcessId()
+    {
+        using var process = System.Diagnostics.Process.Start(new System.Diagnostics.ProcessStartInfo("true") { UseShellExecute = false })!;
+        process.WaitForExit();
+        return process.Id;
     }
 
     private static (StlLine Line, StlStation Station) Create(string awl = EmptyProgram.Awl)
