@@ -25,7 +25,7 @@ internal static class GenerateCommand
         var project = new Argument<string>("project") { Description = "The .opproj project file" };
         var output = new Option<string>("--output", "-o") { Description = "Folder for the generated files", Required = true };
         var station = new Option<string?>("--station") { Description = "Station name or address (needed when the project has several)" };
-        var stats = new Option<bool>("--stats") { Description = "Print V bytes reserved, instructions generated, interrupt events, SBR/INT used, and per worst-case request (measured in the interpreter at the manual's execution times): instructions, time, longest interrupt routine, most added to one scan, scans until the slice that ends the reply's check" };
+        var stats = new Option<bool>("--stats") { Description = "Print V bytes reserved, instructions and networks generated, the estimated program size beside the CPU's program memory, interrupt events, SBR/INT used, and per worst-case request (measured in the interpreter at the manual's execution times): instructions, time, longest interrupt routine, most added to one scan, scans until the slice that ends the reply's check" };
         var plcPort = new Option<int>("--plc-port") { Description = "The PLC's port 0 or 1 (port 1 on CPU 224XP and 226)" };
         var buffer = new Option<string?>("--buffer") { Description = "First V byte of the handler's bytes (buffer, work bytes, copies), e.g. VB1000 (default: the top of V memory)" };
         var replyDelay = new Option<int>("--reply-delay") { Description = "Reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
@@ -137,7 +137,8 @@ internal static class GenerateCommand
             return cli.Fail(ExitCodes.GeneratorRefused, $"the generated handler did not run in the interpreter: {failed}");
         }
 
-        GenerateView.WriteDone(cli, [.. written], result.Stats!, withStats, measured, warnings);
+        warnings.AddRange(GenerateView.WarnSize(cli, result.Stats!.Size));
+        GenerateView.WriteDone(cli, [.. written], result.Stats, withStats, measured, warnings);
         return ExitCodes.Ok;
     }
 
