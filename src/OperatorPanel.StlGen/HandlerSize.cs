@@ -54,10 +54,16 @@ public sealed record HandlerSize(int Instructions, int Networks, CpuProfile Cpu)
         $"Siemens' Modbus RTU slave library takes {ModbusSlaveProgramBytes} bytes of program and a {ModbusSlaveVBytes}-byte V block (S7-200 System Manual, Modbus Protocol Library)");
 
     /// <summary>
-    /// The warning when <see cref="ExceedsHalfOfProgramMemory"/>, else null: which CPU, the figures, and what to do. Where
-    /// even the lower figure is more than the whole program memory it says the handler does not fit.
+    /// The warning when <see cref="ExceedsHalfOfProgramMemory"/>, else null: <see cref="WarningVerdict"/> (which CPU,
+    /// the figures), then <see cref="WarningAdvice"/> (what to do), as one text.
     /// </summary>
-    public string? Warning
+    public string? Warning => WarningVerdict is { } verdict ? $"{verdict}. {WarningAdvice}" : null;
+
+    /// <summary>
+    /// Which CPU and the figures; where even the lower figure is more than the whole program memory it says the handler
+    /// does not fit. Null when the size is fine.
+    /// </summary>
+    public string? WarningVerdict
     {
         get
         {
@@ -68,13 +74,26 @@ public sealed record HandlerSize(int Instructions, int Networks, CpuProfile Cpu)
 
             var figures = Text($"its {Instructions} instructions take an estimated {LowBytes}-{HighBytes} bytes");
             var memory = Text($"the CPU's {ProgramMemoryBytes} bytes of program memory (with run mode edit)");
-            var verdict = LowBytes > ProgramMemoryBytes
+            return LowBytes > ProgramMemoryBytes
                 ? $"the handler does not fit the {Cpu.DisplayName}: {figures}, more than {memory} even at the lower figure"
                 : $"the handler may leave too little room on the {Cpu.DisplayName}: {figures}, and the upper figure is more than half of {memory}";
+        }
+    }
+
+    /// <summary>What to do: compile in Micro/WIN, a CPU with more program memory where there is one, or PPI. Null when the size is fine.</summary>
+    public string? WarningAdvice
+    {
+        get
+        {
+            if (!ExceedsHalfOfProgramMemory)
+            {
+                return null;
+            }
+
             var larger = CpuProfiles.All.Where(p => p.Revision == CpuRevision.Current && p.ProgramBytes > ProgramMemoryBytes)
                 .Select(p => Text($"{p.Name} {p.ProgramBytes} bytes")).ToList();
             var largerCpu = larger.Count == 0 ? string.Empty : $"use a CPU with more program memory ({string.Join(", ", larger)}), or ";
-            return verdict + ". Compile it with your program in Micro/WIN to see the real size; where they do not fit together, "
+            return "Compile it with your program in Micro/WIN to see the real size; where they do not fit together, "
                 + largerCpu + "reach this PLC over PPI (\"protocol\": \"ppi\" in the project), which needs no program in the PLC";
         }
     }

@@ -66,7 +66,7 @@ internal static class GenerateView
     }
 
     /// <summary>
-    /// Text mode: the size warning on stderr as "opanel: warning STL050 ...", whether or not --stats was given. Returns
+    /// Text mode: the size warning on stderr as "opanel: warning STL050 ..." and a line of advice, whether or not --stats was given. Returns
     /// it as a JSON warning (the merge's shape without file and line) for the final output; none when the size is fine.
     /// </summary>
     public static List<object> WarnSize(CliContext cli, HandlerSize size)
@@ -78,7 +78,9 @@ internal static class GenerateView
 
         if (!cli.Json)
         {
-            cli.Error.WriteLine($"opanel: warning {StlDiagnostics.ProgramMemoryTight} {warning}");
+            // Two lines: a terminal reads them whole, and no line of ours passes 400 characters.
+            cli.Error.WriteLine($"opanel: warning {StlDiagnostics.ProgramMemoryTight} {size.WarningVerdict}.");
+            cli.Error.WriteLine($"opanel: {size.WarningAdvice}.");
         }
 
         return [new { id = StlDiagnostics.ProgramMemoryTight, severity = "warning", message = warning }];

@@ -126,7 +126,11 @@ internal static class SimulatedStations
 
             plcs.Add(new HandlerOptions
             {
-                Cpu = profile, Station = station.Address, BaudRate = settings.BaudRate, Parity = settings.Parity, DataBits = settings.DataBits,
+                Cpu = profile,
+                Station = station.Address,
+                BaudRate = settings.BaudRate,
+                Parity = settings.Parity,
+                DataBits = settings.DataBits,
             });
         }
 

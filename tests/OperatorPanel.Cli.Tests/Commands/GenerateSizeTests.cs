@@ -37,10 +37,10 @@ public sealed class GenerateSizeTests : IDisposable
         run.ExitCode.Should().Be(0, "the size is a warning, not a refusal");
         run.Error.Should().Be(
             "opanel: warning STL050 the handler does not fit the CPU 221: its 1177 instructions take an estimated 4708-8239 bytes, "
-            + "more than the CPU's 4096 bytes of program memory (with run mode edit) even at the lower figure. Compile it with your "
-            + "program in Micro/WIN to see the real size; where they do not fit together, use a CPU with more program memory "
-            + "(CPU 224 8192 bytes, CPU 224XP 12288 bytes, CPU 226 16384 bytes), or reach this PLC over PPI (\"protocol\": \"ppi\" "
-            + "in the project), which needs no program in the PLC" + Environment.NewLine);
+            + "more than the CPU's 4096 bytes of program memory (with run mode edit) even at the lower figure." + Environment.NewLine
+            + "opanel: Compile it with your program in Micro/WIN to see the real size; where they do not fit together, use a CPU with "
+            + "more program memory (CPU 224 8192 bytes, CPU 224XP 12288 bytes, CPU 226 16384 bytes), or reach this PLC over PPI "
+            + "(\"protocol\": \"ppi\" in the project), which needs no program in the PLC." + Environment.NewLine);
         run.Out.Should().NotContain("STL050");
         File.ReadAllText(Path.Combine(Out, "PLC_2-README.txt")).Should()
             .Contain("  Estimated    4708-8239 bytes (4-7 bytes an instruction); Siemens publishes no byte size per")
