@@ -25,6 +25,9 @@ public sealed record HandlerStats(
     /// <summary>Whether the handler carries 07 STOP.</summary>
     public bool StopEnabled { get; init; }
 
+    /// <summary>The instructions and networks, the estimated program size and the CPU's program memory beside it.</summary>
+    public required HandlerSize Size { get; init; }
+
     /// <summary>"VB8072-VB8191", or "none".</summary>
     public string CopyRange => CopyBytes == 0 ? "none" : $"VB{LastVByte - CopyBytes + 1}-VB{LastVByte}";
 
