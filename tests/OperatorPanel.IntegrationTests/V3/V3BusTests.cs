@@ -1,0 +1,196 @@
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Polling;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Protocol.V3;
+using OperatorPanel.Core.Writes;
+
+namespace OperatorPanel.IntegrationTests.V3;
+
+/// <summary>
+/// The panel's v3 side end to end: the one bus owner (Bus.StartV3) polling and writing reference v3 stations
+/// (Simulator/Reference/V3/ReferenceHandler: what a v3 station answers, byte for byte) on a simulated line in simulated
+/// time (<see cref="V3Rig"/>).
+/// </summary>
+public sealed class V3BusTests
+{
+    private static readonly string[] Watched = ["VB100", "MW4", "Q0.3", "VD200"];
+
+    [Fact]
+    public async Task Refresh_FullHandler_DefinesTheListOnceThenOneReadListPerRefresh()
+    {
+        var station = V3Rig.Handler(2);
+        (station.Memory.V[100], station.Memory.M[4], station.Memory.M[5], station.Memory.Q[0]) = (0x42, 0x12, 0x34, 0x08);
+        station.Memory.WriteDoubleWord(ProtocolArea.V, 200, 0xCAFEF00D);
+        await using var rig = V3Rig.Start([station], Watched);
+
+        await rig.Bus.RefreshAsync();
+        await rig.Bus.RefreshAsync();
+
+        rig.Value("VB100").Should().Be("42 Good");
+        rig.Value("MW4").Should().Be("1234 Good");
+        rig.Value("Q0.3").Should().Be("01 Good");
+        rig.Value("VD200").Should().Be("CAFEF00D Good");
+        rig.Requests.Should().Equal(Command.DefineList, Command.ReadList, Command.ReadList);
+        rig.Statuses.Should().Equal(ReplyStatus.Ok, ReplyStatus.Ok, ReplyStatus.Unchanged);
+        rig.Bus.StatusOf(new Station(2)).State.Should().Be(StationState.Online);
+    }
+
+    [Fact]
+    public async Task Refresh_ValuesChanged_ChangesReplyApplied()
+    {
+        var station = V3Rig.Handler(2);
+        await using var rig = V3Rig.Start([station], Watched);
+        await rig.Bus.RefreshAsync();
+
+        station.Memory.V[100] = 0x99;
+        station.Memory.WriteDoubleWord(ProtocolArea.V, 200, 0x01020304);
+        await rig.Bus.RefreshAsync();
+
+        rig.Statuses[^1].Should().Be(ReplyStatus.Changes);
+        rig.Value("VB100").Should().Be("99 Good");
+        rig.Value("VD200").Should().Be("01020304 Good");
+        rig.Value("MW4").Should().Be("0000 Good", "a CHANGES reply leaves the double words it does not name as they were");
+    }
+
+    [Fact]
+    public async Task Refresh_NothingChanged_UnchangedKeepsEveryValueGood()
+    {
+        var station = V3Rig.Handler(2);
+        station.Memory.M[4] = 0x77;
+        await using var rig = V3Rig.Start([station], Watched);
+        await rig.Bus.RefreshAsync();
+
+        await rig.Bus.RefreshAsync();
+        await rig.Bus.RefreshAsync();
+
+        rig.Statuses.TakeLast(2).Should().Equal(ReplyStatus.Unchanged, ReplyStatus.Unchanged);
+        rig.Value("MW4").Should().Be("7700 Good");
+        rig.Value("VB100").Should().Be("00 Good");
+    }
+
+    [Fact]
+    public async Task Refresh_TwoStations_OneReadListEachPerRefresh()
+    {
+        var (two, three) = (V3Rig.Handler(2), V3Rig.Handler(3));
+        (two.Memory.V[100], three.Memory.V[100]) = (0x02, 0x03);
+        await using var rig = V3Rig.Start([two, three], Watched);
+
+        await rig.Bus.RefreshAsync();
+        var afterFirst = rig.Requests.Count;
+        await rig.Bus.RefreshAsync();
+
+        rig.Value("VB100", 2).Should().Be("02 Good");
+        rig.Value("VB100", 3).Should().Be("03 Good");
+        afterFirst.Should().Be(4, "a DEFINE LIST and a READ LIST per station");
+        rig.Requests.Skip(afterFirst).Should().Equal(Command.ReadList, Command.ReadList);
+    }
+
+    [Fact]
+    public async Task Refresh_StationRestarted_ListDefinedAgainAndReadInTheSameRefresh()
+    {
+        var station = V3Rig.Handler(2);
+        await using var rig = V3Rig.Start([station], Watched);
+        await rig.Bus.RefreshAsync();
+
+        station.List.Clear();
+        station.Memory.V[100] = 0x55;
+        await rig.Bus.RefreshAsync();
+
+        rig.Requests.Skip(2).Should().Equal(Command.ReadList, Command.DefineList, Command.ReadList);
+        rig.Statuses.Skip(2).Should().Equal(ReplyStatus.ListNotDefined, ReplyStatus.Ok, ReplyStatus.Ok);
+        rig.Value("VB100").Should().Be("55 Good");
+    }
+
+    [Fact]
+    public async Task Refresh_ReplyFailsItsCheck_RejectedNeverGood_NextRefreshReadsTheWholeList()
+    {
+        var station = V3Rig.Handler(2);
+        station.Memory.V[100] = 0x11;
+        await using var rig = V3Rig.Start([station], Watched);
+        await rig.Bus.RefreshAsync();
+
+        station.Memory.V[100] = 0x22;
+        rig.Tamper = (command, reply) => command == Command.ReadList ? Flip(reply, 6) : reply;
+        await rig.Bus.RefreshAsync();
+        var during = rig.Value("VB100");
+        rig.Tamper = null;
+        await rig.Bus.RefreshAsync();
+
+        during.Should().Be("11 Stale", "the corrupted reply is rejected: the last good value stays, marked stale");
+        rig.Requests.Skip(1).Should().Equal(Command.ReadList, Command.ReadList, Command.ReadListFull);
+        rig.Value("VB100").Should().Be("22 Good");
+    }
+
+    [Fact]
+    public async Task Refresh_ReplyToAnotherFrame_RejectedByRequestCheck()
+    {
+        var station = V3Rig.Handler(2);
+        station.Memory.V[100] = 0x11;
+        await using var rig = V3Rig.Start([station], Watched);
+        await rig.Bus.RefreshAsync();
+
+        station.Memory.V[100] = 0x22;
+        rig.Tamper = (command, reply) => command == Command.ReadList ? WithRequestCheck(reply, 0xBEEF) : reply;
+        await rig.Bus.RefreshAsync();
+
+        rig.Value("VB100").Should().Be("11 Stale", "a well-formed reply whose REQCHECK is not the request's answers another frame");
+        rig.Requests.Skip(2).Should().Equal([Command.ReadList], "a READ LIST is never repeated: its copy may have moved on");
+    }
+
+    [Fact]
+    public async Task Write_WordAndBit_ConfirmedByTheReplysReadBack()
+    {
+        var station = V3Rig.Handler(2);
+        await using var rig = V3Rig.Start([station], Watched);
+
+        var word = await rig.Bus.WriteAsync(WriteRequest.Bytes(new Station(2), PlcAddress.Parse("MW4"), [0xAB, 0xCD]));
+        var bit = await rig.Bus.WriteAsync(WriteRequest.Bit(new Station(2), PlcAddress.Parse("Q0.3"), true));
+
+        word.Should().BeOfType<WriteOutcome.Confirmed>();
+        bit.Should().BeOfType<WriteOutcome.Confirmed>();
+        (station.Memory.M[4], station.Memory.M[5], station.Memory.Q[0]).Should().Be(((byte)0xAB, (byte)0xCD, (byte)0x08));
+        rig.Requests.Should().Equal(Command.Write, Command.WriteBits);
+    }
+
+    [Fact]
+    public async Task Write_ReplyLost_SettledByReadingBack_NeverRepeated()
+    {
+        var station = V3Rig.Handler(2);
+        await using var rig = V3Rig.Start([station], Watched);
+        rig.Tamper = (command, reply) => command == Command.Write ? null : reply;
+
+        var outcome = await rig.Bus.WriteAsync(WriteRequest.Bytes(new Station(2), PlcAddress.Parse("VB100"), [0x5A]));
+
+        outcome.Should().BeOfType<WriteOutcome.ConfirmedByReadBack>().Which.ReadBack.Should().Equal((byte)0x5A);
+        rig.Requests.Should().Equal(Command.Write, Command.Read);
+        station.Memory.V[100].Should().Be(0x5A);
+    }
+
+    [Fact]
+    public async Task Write_IntoTheHandlersOwnBytes_RefusedAsNotWritable()
+    {
+        var station = V3Rig.Handler(2);
+        await using var rig = V3Rig.Start([station], Watched);
+        var own = $"VB{station.Setup.VFirst}";
+
+        var outcome = await rig.Bus.WriteAsync(WriteRequest.Bytes(new Station(2), PlcAddress.Parse(own), [0x01]));
+
+        outcome.Should().BeOfType<WriteOutcome.Failed>().Which.Reason.Should().Contain("write");
+        rig.Statuses.Should().Equal(ReplyStatus.NotWritable);
+    }
+
+    private static byte[] Flip(byte[] frame, int at)
+    {
+        var copy = (byte[])frame.Clone();
+        copy[Math.Min(at, copy.Length - 5)] ^= 0x04;
+        return copy;
+    }
+
+    private static byte[] WithRequestCheck(byte[] reply, ushort check)
+    {
+        var copy = (byte[])reply.Clone();
+        (copy[3], copy[4]) = ((byte)(check >> 8), (byte)check);
+        WordCheck.Write(copy.AsSpan(0, copy.Length - WordCheck.Bytes), copy.AsSpan(copy.Length - WordCheck.Bytes));
+        return copy;
+    }
+}
