@@ -16,7 +16,7 @@ public sealed class V3BusTests
     private static readonly string[] Watched = ["VB100", "MW4", "Q0.3", "VD200"];
 
     [Fact]
-    public async Task Refresh_FullHandler_DefinesTheListOnceThenOneReadListPerRefresh()
+    public async Task Refresh_FullHandler_IdentifiesAndDefinesTheListOnceThenOneReadListPerRefresh()
     {
         var station = V3Rig.Handler(2);
         (station.Memory.V[100], station.Memory.M[4], station.Memory.M[5], station.Memory.Q[0]) = (0x42, 0x12, 0x34, 0x08);
@@ -30,8 +30,8 @@ public sealed class V3BusTests
         rig.Value("MW4").Should().Be("1234 Good");
         rig.Value("Q0.3").Should().Be("01 Good");
         rig.Value("VD200").Should().Be("CAFEF00D Good");
-        rig.Requests.Should().Equal(Command.DefineList, Command.ReadList, Command.ReadList);
-        rig.Statuses.Should().Equal(ReplyStatus.Ok, ReplyStatus.Ok, ReplyStatus.Unchanged);
+        rig.Requests.Should().Equal(Command.Identify, Command.DefineList, Command.ReadList, Command.ReadList);
+        rig.Statuses.Should().Equal(ReplyStatus.Ok, ReplyStatus.Ok, ReplyStatus.Ok, ReplyStatus.Unchanged);
         rig.Bus.StatusOf(new Station(2)).State.Should().Be(StationState.Online);
     }
 
@@ -81,7 +81,7 @@ public sealed class V3BusTests
 
         rig.Value("VB100", 2).Should().Be("02 Good");
         rig.Value("VB100", 3).Should().Be("03 Good");
-        afterFirst.Should().Be(4, "a DEFINE LIST and a READ LIST per station");
+        afterFirst.Should().Be(6, "an IDENTIFY, a DEFINE LIST and a READ LIST per station");
         rig.Requests.Skip(afterFirst).Should().Equal(Command.ReadList, Command.ReadList);
     }
 
@@ -96,8 +96,8 @@ public sealed class V3BusTests
         station.Memory.V[100] = 0x55;
         await rig.Bus.RefreshAsync();
 
-        rig.Requests.Skip(2).Should().Equal(Command.ReadList, Command.DefineList, Command.ReadList);
-        rig.Statuses.Skip(2).Should().Equal(ReplyStatus.ListNotDefined, ReplyStatus.Ok, ReplyStatus.Ok);
+        rig.Requests.Skip(3).Should().Equal(Command.ReadList, Command.DefineList, Command.ReadList);
+        rig.Statuses.Skip(3).Should().Equal(ReplyStatus.ListNotDefined, ReplyStatus.Ok, ReplyStatus.Ok);
         rig.Value("VB100").Should().Be("55 Good");
     }
 
@@ -117,7 +117,7 @@ public sealed class V3BusTests
         await rig.Bus.RefreshAsync();
 
         during.Should().Be("11 Stale", "the corrupted reply is rejected: the last good value stays, marked stale");
-        rig.Requests.Skip(1).Should().Equal(Command.ReadList, Command.ReadList, Command.ReadListFull);
+        rig.Requests.Skip(2).Should().Equal(Command.ReadList, Command.ReadList, Command.ReadListFull);
         rig.Value("VB100").Should().Be("22 Good");
     }
 
@@ -134,7 +134,7 @@ public sealed class V3BusTests
         await rig.Bus.RefreshAsync();
 
         rig.Value("VB100").Should().Be("11 Stale", "a well-formed reply whose REQCHECK is not the request's answers another frame");
-        rig.Requests.Skip(2).Should().Equal([Command.ReadList], "a READ LIST is never repeated: its copy may have moved on");
+        rig.Requests.Skip(3).Should().Equal([Command.ReadList], "a READ LIST is never repeated: its copy may have moved on");
     }
 
     [Fact]

@@ -8,10 +8,14 @@ namespace OperatorPanel.Core.Link.V3;
 /// <summary>
 /// A station silent to IDENTIFY v3 that never answered v3 on this link gets one v2 IDENTIFY and one v1 IDENTIFY: an
 /// older handler ignores v3 frames (its RCV ends on '&gt;' and its check is over hex characters) but answers its own,
-/// and the panel then says to regenerate the PLC code instead of "no answer".
+/// and the panel then says to regenerate the PLC code instead of "no answer". An older handler's RCV, opened by the
+/// '&lt;' of our v3 frames, runs until a '&gt;': a lone '&gt;' ends it first (a v3 station ignores it: it waits for '&lt;'),
+/// or the probe would only close the receive our v3 bytes opened.
 /// </summary>
 public sealed partial class V3Link
 {
+    private static readonly byte[] EndOfOlderFrame = [FrameCodec.EndChar];
+
     /// <summary>"a protocol v2 handler" or "a protocol v1 handler" when one answered its IDENTIFY; else null.</summary>
     private async Task<string?> OlderHandlerAsync(Station station, CancellationToken cancellationToken)
     {
@@ -34,6 +38,9 @@ public sealed partial class V3Link
         var received = new List<byte>();
         try
         {
+            await WaitForGapAsync(cancellationToken).ConfigureAwait(false);
+            await _transport.WriteAsync(EndOfOlderFrame, cancellationToken).ConfigureAwait(false);
+            _lastExchangeEnd = _time.GetTimestamp();
             await WaitForGapAsync(cancellationToken).ConfigureAwait(false);
             _transport.DiscardInput();
             var started = _time.GetTimestamp();
