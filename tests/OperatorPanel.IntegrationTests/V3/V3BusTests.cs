@@ -35,6 +35,32 @@ public sealed class V3BusTests
         rig.Bus.StatusOf(new Station(2)).State.Should().Be(StationState.Online);
     }
 
+    /// <summary>The bench's reference line (Cli/Bench/ReferenceLine.cs): 45 addresses, 74 data bytes in two plan frames.</summary>
+    [Fact]
+    public async Task Refresh_ReferenceLine_BothFramesInOneListOneReadListPerRefresh()
+    {
+        string[] line = ["IB0", "IB1", "IB2", "QB0", "QB1", "VW100", "VD104", "VD112", "VW120", "VB124", "VB130", "VD140", "VW150",
+            "VB170", "V180.0", "VD400", "VD408", "VW420", "VB430", "V440.2", "V440.5", "VW456", "VW1000", "VD1004", "VW1012",
+            "VB1020", "VB1024", "VD1030", "V1040.1", "M0.0", "M0.5", "M1.2", "M1.7", "MB2", "MB3", "MW4", "MD6",
+            .. Enumerable.Range(10, 8).Select(b => $"MB{b}")];
+        var station = V3Rig.Handler(2);
+        station.Memory.WriteDoubleWord(ProtocolArea.V, 1030, 0x11223344);
+        (station.Memory.M[17], station.Memory.I[2]) = (0x80, 0x05);
+        await using var rig = V3Rig.Start([station], line);
+
+        await rig.Bus.RefreshAsync();
+        station.Memory.V[1024] = 0x66;
+        await rig.Bus.RefreshAsync();
+
+        rig.Bus.Plan.Frames.Should().HaveCount(2);
+        rig.Requests.Should().Equal(Command.Identify, Command.DefineList, Command.ReadList, Command.ReadList);
+        rig.Statuses[^1].Should().Be(ReplyStatus.Changes);
+        rig.Value("VD1030").Should().Be("11223344 Good");
+        rig.Value("MB17").Should().Be("80 Good");
+        rig.Value("IB2").Should().Be("05 Good");
+        rig.Value("VB1024").Should().Be("66 Good");
+    }
+
     [Fact]
     public async Task Refresh_ValuesChanged_ChangesReplyApplied()
     {
