@@ -148,6 +148,44 @@ public sealed class V3BusTests
     }
 
     [Fact]
+    public async Task Refresh_ReadListReplyLost_NotRepeated_ValueStale_ThenReadListFullBringsTheChange()
+    {
+        var station = V3Rig.Handler(2);
+        station.Memory.M[4] = 0x01;
+        await using var rig = V3Rig.Start([station], Watched);
+        await rig.Bus.RefreshAsync();
+
+        station.Memory.M[4] = 0x02;
+        rig.Tamper = (command, reply) => command == Command.ReadList ? null : reply;
+        await rig.Bus.RefreshAsync();
+        var during = rig.Value("MW4");
+        rig.Tamper = null;
+        await rig.Bus.RefreshAsync();
+        await rig.Bus.RefreshAsync();
+
+        during.Should().Be("0100 Stale");
+        rig.Line.DroppedReplies.Should().Be(1, "the lost READ LIST was sent once: its copy moved on, so a repeat would report nothing changed");
+        rig.Requests.Skip(3).Should().Equal(Command.ReadList, Command.ReadListFull, Command.ReadList);
+        rig.Statuses.Skip(4).Should().Equal([ReplyStatus.Ok, ReplyStatus.Ok], "07 answers the whole list and invalidates the copy, so the next 06 answers it whole too");
+        rig.Value("MW4").Should().Be("0200 Good");
+    }
+
+    [Fact]
+    public async Task Write_BitReplyLost_SettledByReadingBack_NeverRepeated()
+    {
+        var station = V3Rig.Handler(2);
+        station.Memory.Q[0] = 0x01;
+        await using var rig = V3Rig.Start([station], Watched);
+        rig.Tamper = (command, reply) => command == Command.WriteBits ? null : reply;
+
+        var outcome = await rig.Bus.WriteAsync(WriteRequest.Bit(new Station(2), PlcAddress.Parse("Q0.3"), true));
+
+        outcome.Should().BeOfType<WriteOutcome.ConfirmedByReadBack>().Which.ReadBack.Should().Equal([(byte)0x01], "Q0.3 read back set");
+        station.Memory.Q[0].Should().Be(0x09, "WRITE BITS leaves Q0.0 as the program set it");
+        rig.Requests.Should().Equal(Command.WriteBits, Command.Read);
+    }
+
+    [Fact]
     public async Task Refresh_ReplyToAnotherFrame_RejectedByRequestCheck()
     {
         var station = V3Rig.Handler(2);
