@@ -107,6 +107,25 @@ public sealed class V3LinkTests
         station.Received.Should().BeEmpty();
     }
 
+    [Fact]
+    public async Task Exchange_DeviceVanishedAndBack_ReportedReconnectingThenReopened()
+    {
+        var clock = new ManualTimeProvider();
+        var station = new Responder(request => [Codec.Encode(new Reply(ReplyStatus.Ok, Codec.RequestCheckOf(request), [0x42]))], clock);
+        var link = new V3Link(station, new LinkOptions { Serial = new SerialSettings { PortName = "fake", BaudRate = 9600 } }, clock);
+        var read = new ReadRequest(Two, [new ReadItem(ProtocolArea.M, 0, 1)]);
+        (await link.ExchangeAsync(read, default)).Response.Should().BeOfType<ReadResponse>();
+
+        station.Present = false;
+        var lost = await link.ExchangeAsync(read, default);
+        station.Present = true;
+        var back = await link.ExchangeAsync(read, default);
+
+        lost.Failure!.Message.Should().Be("station 2: serial port fake: discard input failed: the device vanished - reconnecting");
+        back.Response.Should().BeOfType<ReadResponse>().Which.Data.Should().Equal(0x42);
+        link.Outage.Should().BeNull();
+    }
+
     private static (V3Link Link, Responder Station) Create(Func<byte[], IEnumerable<byte[]>?> respond)
     {
         var clock = new ManualTimeProvider();
@@ -133,8 +152,16 @@ public sealed class V3LinkTests
 
         public bool IsOpen { get; private set; }
 
+        /// <summary>False: the device vanished (the port fails and cannot be opened).</summary>
+        public bool Present { get; set; } = true;
+
         public Task OpenAsync(CancellationToken cancellationToken)
         {
+            if (!Present)
+            {
+                throw new PlcCommunicationException(PlcErrorKind.PortUnavailable, null, "serial port fake: open failed: no such port");
+            }
+
             IsOpen = true;
             return Task.CompletedTask;
         }
@@ -171,7 +198,16 @@ public sealed class V3LinkTests
             return Task.FromResult(count);
         }
 
-        public void DiscardInput() => _pending.Clear();
+        public void DiscardInput()
+        {
+            if (!Present)
+            {
+                IsOpen = false;
+                throw new PlcCommunicationException(PlcErrorKind.PortUnavailable, null, "serial port fake: discard input failed: the device vanished");
+            }
+
+            _pending.Clear();
+        }
 
         public ValueTask DisposeAsync() => ValueTask.CompletedTask;
     }

@@ -27,6 +27,7 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
     private readonly ConcurrentDictionary<Station, StationStatistics> _statistics = new();
     private readonly ConcurrentDictionary<Station, Identity> _identities = new();
     private readonly ConcurrentDictionary<Station, bool> _spokeV3 = new();
+    private readonly PortReopener _port;
     private long? _lastExchangeEnd;
     private byte _sequence;
 
@@ -36,7 +37,18 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
         ArgumentNullException.ThrowIfNull(options);
         (_transport, _options, _time) = (transport, options, time ?? TimeProvider.System);
         _log = (log ?? Serilog.Core.Logger.None).ForContext<V3Link>();
+        _port = new PortReopener(transport, _time, _log);
     }
+
+    /// <summary>How the link reopens its port after a failure (<see cref="PortReopener"/>, as <see cref="PlcLink"/>).</summary>
+    public ReconnectOptions Reconnect
+    {
+        get => _port.Options;
+        init => _port.Options = value;
+    }
+
+    /// <summary>The port problem being worked around ("... - reconnecting"); null while connected.</summary>
+    public string? Outage => _port.Outage;
 
     public string PortName => _transport.Name;
 
@@ -86,7 +98,7 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
             var sent = false;
             try
             {
-                await EnsureOpenAsync(cancellationToken).ConfigureAwait(false);
+                await _port.EnsureOpenAsync(cancellationToken).ConfigureAwait(false);
                 await WaitForGapAsync(cancellationToken).ConfigureAwait(false);
                 _transport.DiscardInput();
                 _reader.Reset();
@@ -103,7 +115,8 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
                     statistics.Request();
                 }
 
-                var failure = new PlcCommunicationException(port.Kind, request.Station, $"{request.Station}: {port.Message}", port);
+                var why = port.Station is null ? _port.PortFailureMessage(port) : port.Message;
+                var failure = new PlcCommunicationException(port.Kind, request.Station, $"{request.Station}: {why}", port);
                 return V3Exchange.Failed(failure, sent);
             }
 
@@ -201,14 +214,6 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
         var scans = command is Command.DefineList or Command.ReadList or Command.ReadListFull ? 16 : 8;
         return (_options.Serial.CharacterTime * (requestBytes + replyBytes)) + _options.ReplyDelay + _options.ScanAllowance
             + (_options.HandlerScanAllowance * scans) + _options.Medium.ExtraFor(_options.Serial, requestBytes, replyBytes) + _options.Margin;
-    }
-
-    private async Task EnsureOpenAsync(CancellationToken cancellationToken)
-    {
-        if (!_transport.IsOpen)
-        {
-            await _transport.OpenAsync(cancellationToken).ConfigureAwait(false);
-        }
     }
 
     private async Task WaitForGapAsync(CancellationToken cancellationToken)
