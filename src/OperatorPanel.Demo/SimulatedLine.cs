@@ -53,10 +53,31 @@ public sealed class SimulatedLine
 
     public SimulatedPlcHost HostOn(ITransport port, TimeProvider time, ILogger log) => new(port, Line, time, log);
 
+    /// <summary>
+    /// The simulated station for a handler generated with <paramref name="options"/> (opanel simulate): every option
+    /// the generator takes that the station needs, so <see cref="GeneratedHandler"/> generates the same handler again
+    /// (the line settings come from the line). The options must have passed the generator's check.
+    /// </summary>
+    public static HandlerConfig ConfigFor(HandlerOptions options)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        return new HandlerConfig(
+            new Core.Addressing.Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs,
+            options.EffectiveBufferStart, options.AllowStop, options.CopyBytes, options.CharTimeoutMs, options.FirstSubroutine, options.FirstInterrupt);
+    }
+
     /// <summary>The handler StlGen generates for the station: the same text Generate PLC code / opanel generate saves.</summary>
     private static bool GeneratedHandler(HandlerConfig config, SerialSettings serial, [NotNullWhen(true)] out string? awlText, [NotNullWhen(false)] out string? error) =>
         HandlerGenerator.TryGenerateAwl(
-            HandlerOptions.ForLine(config.Cpu, config.Port, config.Station.Address, config.WriteMask, config.ReplyDelayMs, serial) with { AllowStop = config.AllowStop },
+            HandlerOptions.ForLine(config.Cpu, config.Port, config.Station.Address, config.WriteMask, config.ReplyDelayMs, serial) with
+            {
+                AllowStop = config.AllowStop,
+                BufferStart = config.BufferStart,
+                CopyBytes = config.CopyBytes,
+                CharTimeoutMs = config.CharTimeoutMs,
+                FirstSubroutine = config.FirstSubroutine,
+                FirstInterrupt = config.FirstInterrupt,
+            },
             out awlText,
             out error);
 }

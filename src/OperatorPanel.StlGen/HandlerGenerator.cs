@@ -58,6 +58,7 @@ public static class HandlerGenerator
         var blocks = program.Blocks.Where(b => b.Kind != StlBlockKind.Organization)
             .Select(b => new HandlerBlock(b.Name, b.NumberText, purposes[b.Name]));
         var layout = context.Layout;
+        var networks = program.Blocks.Sum(b => b.Networks.Length);
         return new HandlerStats(
             layout.BufferStart, layout.LastByte, program.InstructionCount, options.Port,
             [context.ReceiveEvent, HandlerContext.DelayEvent, context.TransmitEvent], [.. blocks])
@@ -65,7 +66,7 @@ public static class HandlerGenerator
             CopyBytes = options.CopyBytes,
             ChangesWorkBytes = HandlerLayout.ChangesBytes,
             StopEnabled = options.AllowStop,
-            Networks = program.Blocks.Sum(b => b.Networks.Length),
+            Size = new HandlerSize(program.InstructionCount, networks, options.Cpu),
         };
     }
 }

@@ -31,8 +31,8 @@ public sealed record HandlerStats(
     /// <summary>Version 3: the compact handler (no list, no STOP).</summary>
     public bool Compact { get; init; }
 
-    /// <summary>Networks in all blocks.</summary>
-    public int Networks { get; init; }
+    /// <summary>The instructions and networks, the estimated program size and the CPU's program memory beside it.</summary>
+    public required HandlerSize Size { get; init; }
 
     /// <summary>"VB8072-VB8191", or "none".</summary>
     public string CopyRange => CopyBytes == 0 ? "none" : $"VB{LastVByte - CopyBytes + 1}-VB{LastVByte}";

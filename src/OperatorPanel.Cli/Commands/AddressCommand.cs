@@ -2,22 +2,26 @@ using System.CommandLine;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Cli.Commands;
 
-/// <summary><c>opanel address TEXT --cpu MODEL</c>: the canonical form of an address and what the panel may do with it.</summary>
+/// <summary>
+/// <c>opanel address TEXT --cpu MODEL</c>: the canonical form of an address and what the panel may do with it: over the
+/// Freeport link (<c>writable</c>, the handler's own bytes included) and over PPI (<c>ppi</c>).
+/// </summary>
 internal static class AddressCommand
 {
     public static Command Create(Func<ParseResult, CliContext> context)
     {
-        var text = new Argument<string>("address") { Description = "An S7-200 address such as I0.3, VB100, VW200, VD300, SMB30, AIW0" };
+        var text = new Argument<string>("address") { Description = "An S7-200 address such as I0.3, VB100, VW200, VD300, SMB30, AIW0, T37 (a timer's current value)" };
         var cpu = CpuOptions.Model();
         var revision = CpuOptions.Revision();
         var plcPort = new Option<int>("--plc-port") { Description = "The PLC port the handler serves, 0 or 1 (its port's SMB bytes are the handler's); default 0" };
         var command = new Command(
             "address",
-            "Check an address against a CPU: canonical form, area, byte, bit, width, what the Freeport link does with it, and whether the panel may "
-            + "write it (the CPU's read-only bytes, and the bytes a handler generated with the default settings keeps for itself)")
+            "Check an address against a CPU: canonical form, area, byte, bit, width, what the Freeport and the PPI link do with it, and whether the "
+            + "panel may write it (the CPU's read-only bytes, and the bytes a handler generated with the default settings keeps for itself)")
         {
             text, cpu, revision, plcPort,
         };
@@ -52,9 +56,9 @@ internal static class AddressCommand
             return cli.Fail(ExitCodes.BadInput, rangeError.Message);
         }
 
-        var writeError = AddressRules.Check(address, cpu, AddressUse.Write)?.Message
-            ?? LinkAreas.FreeportRefusal(address)
+        var writeError = LinkAreas.Refusal(address, LinkProtocol.Freeport, cpu, AddressUse.Write)
             ?? HandlerProtection.Refusal(address, cpu, port);
+        var ppiWriteError = LinkAreas.Refusal(address, LinkProtocol.Ppi, cpu, AddressUse.Write);
         var view = new AddressView(
             address.ToString(),
             address.Area.ToString(),
@@ -64,9 +68,14 @@ internal static class AddressCommand
             address.Width.ByteCount(),
             address.LastByte,
             cpu.DisplayName,
-            AddressRules.IsServedByLink(address.Area),
+            LinkAreas.Reads(LinkProtocol.Freeport, address.Area),
             writeError is null,
-            writeError);
+            writeError)
+        {
+            ReadByPpi = LinkAreas.Reads(LinkProtocol.Ppi, address.Area),
+            WritableOverPpi = ppiWriteError is null,
+            NotWritableOverPpiBecause = ppiWriteError,
+        };
 
         if (cli.Json)
         {
@@ -94,15 +103,23 @@ internal sealed record AddressView(
     bool Writable,
     string? NotWritableBecause)
 {
+    public bool ReadByPpi { get; init; }
+
+    public bool WritableOverPpi { get; init; }
+
+    public string? NotWritableOverPpiBecause { get; init; }
+
     public void WriteText(TextWriter o)
     {
+        var numbered = Area is "T" or "C";
         o.WriteLine($"address   {Address}");
         o.WriteLine($"area      {Area}");
-        o.WriteLine($"byte      {ByteOffset}");
+        o.WriteLine(numbered ? $"number    {ByteOffset}" : $"byte      {ByteOffset}");
         o.WriteLine($"bit       {(Bit is { } b ? b.ToString(System.Globalization.CultureInfo.InvariantCulture) : "-")}");
-        o.WriteLine($"width     {Width} ({Bytes} byte{(Bytes == 1 ? string.Empty : "s")}, last byte {LastByte})");
+        o.WriteLine(numbered ? $"width     {Width} (the current value, a signed word)" : $"width     {Width} ({Bytes} byte{(Bytes == 1 ? string.Empty : "s")}, last byte {LastByte})");
         o.WriteLine($"cpu       {Cpu}");
-        o.WriteLine($"link      {(ReadByLink ? $"read by the Freeport link (it reads {LinkAreas.FreeportServed})" : $"not read by the Freeport link (it reads {LinkAreas.FreeportServed})")}");
+        o.WriteLine($"link      {(ReadByLink ? "read" : "not read")} by the Freeport link (it reads {LinkAreas.FreeportServed})");
         o.WriteLine($"writable  {(Writable ? "yes" : "no: " + NotWritableBecause)}");
+        o.WriteLine($"ppi       {(ReadByPpi ? "read" : "not read")} by the PPI link (it reads {LinkAreas.PpiServed}); writable over PPI {(WritableOverPpi ? "yes" : "no: " + NotWritableOverPpiBecause)}");
     }
 }

@@ -14,6 +14,8 @@ internal sealed record CpuProfileView(
     int LocalAnalogInputs,
     int LocalAnalogOutputs,
     int MaxExpansionModules,
+    int ProgramBytes,
+    int ProgramBytesWithoutRunModeEdit,
     IReadOnlyList<AreaView> Areas,
     string ReadOnlySm,
     string Timers,
@@ -35,6 +37,8 @@ internal sealed record CpuProfileView(
         p.LocalAnalogInputs,
         p.LocalAnalogOutputs,
         p.MaxExpansionModules,
+        p.ProgramBytes,
+        p.ProgramBytesWithoutRunModeEdit,
         p.Areas.Select(AreaView.From).ToList(),
         $"SMB0-SMB{p.ReadOnlySmBytes - 1}",
         $"T0-T{p.Timers - 1}",
@@ -52,6 +56,7 @@ internal sealed record CpuProfileView(
         o.WriteLine($"{Name} ({Revision})   SMB6 {Smb6}   ports {CommunicationPorts}   local I/O {LocalDigitalInputs} DI / {LocalDigitalOutputs} DQ"
             + (LocalAnalogInputs + LocalAnalogOutputs > 0 ? $" + {LocalAnalogInputs} AI / {LocalAnalogOutputs} AQ" : string.Empty)
             + $"   expansion modules {MaxExpansionModules}");
+        o.WriteLine($"  program    {ProgramBytes} bytes with run mode edit, {ProgramBytesWithoutRunModeEdit} without");
         o.WriteLine("  areas      " + string.Join("  ", Areas.Select(a => $"{a.Area} {a.Range}")));
         o.WriteLine($"  also       {Timers}  {Counters}  HC x{HighSpeedCounters}  AC0-AC3  L {LocalBytesPerPou} bytes/POU  SBR0-SBR{Subroutines - 1}  INT0-INT{InterruptRoutines - 1}");
         o.WriteLine($"  read-only  {ReadOnlySm}, all of I and AIW");

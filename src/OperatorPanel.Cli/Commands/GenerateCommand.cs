@@ -27,24 +27,17 @@ internal static class GenerateCommand
         var project = new Argument<string>("project") { Description = "The .opproj project file" };
         var output = new Option<string>("--output", "-o") { Description = "Folder for the generated files", Required = true };
         var station = new Option<string?>("--station") { Description = "Station name or address (needed when the project has several)" };
-        var stats = new Option<bool>("--stats") { Description = "Print V bytes reserved, instructions generated, interrupt events, SBR/INT used, and per worst-case request (measured in the interpreter at the manual's execution times): instructions, time, longest interrupt routine, most added to one scan, scans until the slice that ends the reply's check" };
-        var plcPort = new Option<int>("--plc-port") { Description = "The PLC's port 0 or 1 (port 1 on CPU 224XP and 226)" };
-        var buffer = new Option<string?>("--buffer") { Description = "First V byte of the handler's bytes (buffer, work bytes, copies), e.g. VB1000 (default: the top of V memory)" };
-        var replyDelay = new Option<int>("--reply-delay") { Description = "Reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
-        var writable = new Option<string>("--writable") { Description = "Areas the panel may write, e.g. Q,M,V,SM (default)", DefaultValueFactory = _ => "Q,M,V,SM" };
-        var charTimeout = new Option<int>("--char-timeout") { Description = "Receive inter-character timeout in ms (0 = off, default)" };
-        var sbr = new Option<int?>("--sbr") { Description = "Subroutine number of the handler (default: the CPU's last)" };
-        var interrupt = new Option<int?>("--int") { Description = "First of the handler's 3 interrupt routines (default 125)" };
-        var copyBytes = new Option<int>("--copy-bytes") { Description = "V bytes for READ CHANGES copies after the work bytes, 0-255 (0 = none: every READ CHANGES answers the whole list; default 120)", DefaultValueFactory = _ => HandlerDefaults.CopyBytes };
-        var allowStop = new Option<bool>("--allow-stop") { Description = "Include 07 STOP: the panel may put the CPU in STOP (default: the station's \"allowStop\" in the project, off unless set; off = no STOP code, the command is refused with error 05)" };
+        var stats = new Option<bool>("--stats") { Description = "Print V bytes reserved, instructions and networks generated, the estimated program size beside the CPU's program memory, interrupt events, SBR/INT used, and per worst-case request (measured in the interpreter at the manual's execution times): instructions, time, longest interrupt routine, most added to one scan, scans until the slice that ends the reply's check" };
+        var handler = new HandlerOptionSet();
         var protocol = new Option<int>("--protocol") { Description = "Protocol version of the handler: 2 (hex frames, what the panel speaks today; default) or 3 (binary frames, docs/protocol.md)", DefaultValueFactory = _ => 2 };
         var compact = new Option<bool>("--compact") { Description = "The compact handler of protocol 3 (IDENTIFY, READ, WRITE, WRITE BIT; no list, no STOP): the choice for a CPU 221 or 222. Implies --protocol 3" };
         var merge = new Option<string?>("--merge") { Description = "A program exported from Micro/WIN (File > Export): check for collisions and write NAME-merged.awl (NAME: the station's name)" };
         var symbols = new Option<string?>("--symbols") { Description = "With --merge: the program's symbol table exported from Micro/WIN (symbol, address, comment, tab-separated), so symbolic operands are checked as their addresses" };
         var command = new Command("generate", "Generate the S7-200 handler program (.awl), symbol table and technician notes. Exit codes: 0 written, 1 bad input, 2 impossible settings")
         {
-            project, output, station, stats, plcPort, buffer, replyDelay, writable, charTimeout, sbr, interrupt, copyBytes, allowStop, protocol, compact, merge, symbols,
+            project, output, station, stats, protocol, compact, merge, symbols,
         };
+        handler.AddTo(command);
         command.SetAction(parse =>
         {
             var cli = context(parse);
@@ -55,8 +48,7 @@ internal static class GenerateCommand
                 return ProjectProblemsView.Report(cli, path, loaded, "nothing generated");
             }
 
-            if (!GenerateSettings.TrySelectStation(loaded.Project, parse.GetValue(station), out var chosen, out var error)
-                || !GenerateSettings.TryParseWritable(parse.GetValue(writable)!, out var mask, out error))
+            if (!GenerateSettings.TrySelectStation(loaded.Project, parse.GetValue(station), out var chosen, out var error))
             {
                 return cli.Fail(ExitCodes.BadInput, error);
             }
@@ -68,28 +60,13 @@ internal static class GenerateCommand
                     + "(change-only refresh, radio modules; docs/ppi.md)");
             }
 
-            int? start = null;
-            if (parse.GetValue(buffer) is { } bufferText)
+            if (!handler.TryApply(parse, HandlerOptions.For(chosen), out var options, out error))
             {
-                if (!GenerateSettings.TryParseBuffer(bufferText, out var at, out error))
-                {
-                    return cli.Fail(ExitCodes.BadInput, error);
-                }
-
-                start = at;
+                return cli.Fail(ExitCodes.BadInput, error);
             }
 
-            var options = HandlerOptions.For(chosen) with
+            options = options with
             {
-                Port = parse.GetValue(plcPort),
-                BufferStart = start,
-                WriteMask = mask,
-                ReplyDelayMs = parse.GetValue(replyDelay),
-                CharTimeoutMs = parse.GetValue(charTimeout),
-                FirstSubroutine = parse.GetValue(sbr),
-                FirstInterrupt = parse.GetValue(interrupt),
-                CopyBytes = parse.GetValue(copyBytes),
-                AllowStop = chosen.AllowStop || parse.GetValue(allowStop),
                 Protocol = parse.GetValue(compact) ? 3 : parse.GetValue(protocol),
                 Compact = parse.GetValue(compact),
             };
@@ -147,7 +124,8 @@ internal static class GenerateCommand
             return cli.Fail(ExitCodes.GeneratorRefused, $"the generated handler did not run in the interpreter: {failed}");
         }
 
-        GenerateView.WriteDone(cli, [.. written], result.Stats!, withStats, measured, warnings);
+        warnings.AddRange(GenerateView.WarnSize(cli, result.Stats!.Size));
+        GenerateView.WriteDone(cli, [.. written], result.Stats, withStats, measured, warnings);
         return ExitCodes.Ok;
     }
 

@@ -44,7 +44,7 @@ internal static class GenerateView
         cli.Out.WriteLine($"V bytes reserved:       {stats.VRange} ({stats.VBytes} bytes)");
         cli.Out.WriteLine($"READ CHANGES copies:    {stats.CopyRange} ({stats.CopyBytes} bytes; READ CHANGES and STOP work bytes: {stats.ChangesWorkBytes})");
         cli.Out.WriteLine($"STOP command:           {StopText(stats)}");
-        cli.Out.WriteLine($"instructions generated: {stats.Instructions}");
+        WriteSize(cli, stats.Size);
         cli.Out.WriteLine($"interrupt events used:  {string.Join(", ", stats.InterruptEvents)}");
         cli.Out.WriteLine($"blocks used:            {string.Join(", ", stats.Blocks.Select(b => $"{b.Name} ({b.NumberText})"))}");
         cli.Out.WriteLine("measured in the interpreter at the manual's execution times (conservative where it has none); total ms: all the");
@@ -65,6 +65,36 @@ internal static class GenerateView
         cli.Out.WriteLine(FormattableString.Invariant($"most scans per reply:    {measured.Max(m => m.Scans)}"));
     }
 
+    /// <summary>
+    /// Text mode: the size warning on stderr as "opanel: warning STL050 ..." and a line of advice, whether or not --stats was given. Returns
+    /// it as a JSON warning (the merge's shape without file and line) for the final output; none when the size is fine.
+    /// </summary>
+    public static List<object> WarnSize(CliContext cli, HandlerSize size)
+    {
+        if (size.Warning is not { } warning)
+        {
+            return [];
+        }
+
+        if (!cli.Json)
+        {
+            // Two lines: a terminal reads them whole, and no line of ours passes 400 characters.
+            cli.Error.WriteLine($"opanel: warning {StlDiagnostics.ProgramMemoryTight} {size.WarningVerdict}.");
+            cli.Error.WriteLine($"opanel: {size.WarningAdvice}.");
+        }
+
+        return [new { id = StlDiagnostics.ProgramMemoryTight, severity = "warning", message = warning }];
+    }
+
+    private static void WriteSize(CliContext cli, HandlerSize size)
+    {
+        cli.Out.WriteLine($"instructions generated: {size.Instructions} in {size.Networks} networks");
+        cli.Out.WriteLine($"program size estimated: {size.EstimateText}");
+        cli.Out.WriteLine($"                        {HandlerSize.BasisText}");
+        cli.Out.WriteLine($"program memory:         {size.ProgramMemoryText}");
+        cli.Out.WriteLine($"for comparison:         {HandlerSize.ModbusComparisonText}");
+    }
+
     private static string Ms(TimeSpan time) => time.TotalMilliseconds.ToString("0.000", System.Globalization.CultureInfo.InvariantCulture);
 
     private static MeasuredRequest Worst(ImmutableArray<MeasuredRequest> measured) => measured.MaxBy(m => m.ExecutionTime)!;
@@ -77,6 +107,17 @@ internal static class GenerateView
         lastVByte = stats.LastVByte,
         vBytes = stats.VBytes,
         instructions = stats.Instructions,
+        networks = stats.Size.Networks,
+        programBytesLow = stats.Size.LowBytes,
+        programBytesHigh = stats.Size.HighBytes,
+        bytesPerInstructionLow = HandlerSize.LowBytesPerInstruction,
+        bytesPerInstructionHigh = HandlerSize.HighBytesPerInstruction,
+        programBytesBasis = HandlerSize.BasisText,
+        cpuProgramBytes = stats.Size.ProgramMemoryBytes,
+        cpuProgramBytesWithoutRunModeEdit = stats.Size.Cpu.ProgramBytesWithoutRunModeEdit,
+        exceedsHalfOfProgramMemory = stats.Size.ExceedsHalfOfProgramMemory,
+        modbusSlaveProgramBytes = HandlerSize.ModbusSlaveProgramBytes,
+        modbusSlaveVBytes = HandlerSize.ModbusSlaveVBytes,
         copyBytes = stats.CopyBytes,
         changesWorkBytes = stats.ChangesWorkBytes,
         stopEnabled = stats.StopEnabled,

@@ -9,7 +9,8 @@ namespace OperatorPanel.Cli.Commands;
 /// <summary>
 /// One address as <c>opanel read</c> prints it (text and JSON share this shape). Shown is the value in the format asked
 /// for with ADDR:FORMAT (VD16:real -> 12.5), or for a symbol read with --project in its tag's format, scaled and with
-/// its unit (TankLevel -> 55.2 %); null otherwise; the text prints it in place of the unsigned value, and the symbol last.
+/// its unit (TankLevel -> 55.2 %); AIW, AQW, T and C signed (C5 -> -7); null otherwise; the text prints it in place of
+/// the unsigned value, and the symbol last.
 /// </summary>
 internal sealed record ReadValueView(string Address, ulong? Value, string? Hex, string Quality, string? Error, string? Shown = null, string? Symbol = null)
 {
@@ -26,6 +27,8 @@ internal sealed record ReadValueView(string Address, ulong? Value, string? Hex, 
 
         var raw = value.Raw.AsSpan();
         var hex = address.Width == AccessWidth.Bit ? null : ValueFormatter.Hex(raw);
+        // Analog words and timer and counter current values are signed integers in the CPU: shown signed unless asked otherwise.
+        format ??= DisplayFormats.DefaultFor(address) == DisplayFormat.Signed && !target.BySymbol ? DisplayFormat.Signed : null;
         var shown = format is { } f ? ValueFormatter.Format(raw, address.Width, f)
             : target is { BySymbol: true, Tag: { } tag } ? TagValues.Format(tag, raw)
             : null;

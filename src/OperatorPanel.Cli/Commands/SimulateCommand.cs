@@ -13,7 +13,9 @@ namespace OperatorPanel.Cli.Commands;
 /// <c>opanel simulate --cpu M --station N [--station N2 ...] --device PATH</c>, or <c>opanel simulate --project FILE --device
 /// PATH</c> for a project's bus (each station with its own CPU): simulated PLCs with the protocol handler on a real serial
 /// device (a USB-RS485 adapter, or one end of a socat pty pair), until Ctrl+C, SIGTERM or --duration. With --ppi the
-/// CPUs run no handler and their ports speak PPI (docs/ppi.md section 11).
+/// CPUs run no handler and their ports speak PPI (docs/ppi.md section 11). The handler options are opanel generate's
+/// (--plc-port, --buffer, --reply-delay, --writable, --char-timeout, --sbr, --int, --copy-bytes, --allow-stop; one
+/// definition, <see cref="HandlerOptionSet"/>), so a simulated station runs the handler generate writes for them.
 /// </summary>
 internal static class SimulateCommand
 {
@@ -27,11 +29,10 @@ internal static class SimulateCommand
             Description = "Simulate a project's bus: its stations (or those given with --station), each with its own CPU and \"allowStop\", at the bus's baud rate, parity and data bits",
         };
         var serial = new SerialOptionSet(panelSide: false);
-        var replyDelay = new Option<int>("--reply-delay") { Description = "Handler reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
+        var handler = new HandlerOptionSet();
         var noProcess = new Option<bool>("--no-process") { Description = "Do not run the demo bottling process: memory stays as the panel writes it" };
         var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
         var model = ModelOption.Create();
-        var allowStop = new Option<bool>("--allow-stop") { Description = "The handler carries 07 STOP (opanel generate --allow-stop): the panel may put the simulated CPU in STOP" };
         var ppi = new Option<bool>("--ppi")
         {
             Description = "No handler: the CPUs run an empty program and their ports speak PPI, the S7-200's own protocol, at PPI address = "
@@ -40,18 +41,13 @@ internal static class SimulateCommand
         };
         var command = new Command("simulate", "Serve simulated S7-200 PLCs running the protocol handler on a serial device. Exit codes: 0 stopped, 1 bad input, 2 port failure")
         {
-            project, cpu, revision, stations, replyDelay, noProcess, duration, model, allowStop, ppi,
+            project, cpu, revision, stations, noProcess, duration, model, ppi,
         };
         serial.AddTo(command);
+        handler.AddTo(command);
         command.SetAction(async parse =>
         {
             var cli = context(parse);
-            var delay = parse.GetValue(replyDelay);
-            if (delay is < 1 or > 255)
-            {
-                return cli.Fail(ExitCodes.BadInput, $"reply delay {delay} ms is outside 1-255 (SMB34, timed interrupt 0)");
-            }
-
             List<ProjectStation>? fromProject = null;
             if (parse.GetValue(project) is { } path)
             {
@@ -73,7 +69,7 @@ internal static class SimulateCommand
                 return cli.Fail(ExitCodes.BadInput, "--ppi needs the STL model (the reference model has no PPI side): leave out --model reference");
             }
 
-            if (!SimulatedStations.TryBuild(parse, fromProject, cpu, revision, stations, serial, (byte)delay, parse.GetValue(allowStop), speaksPpi, out var configs, out var settings, out var error))
+            if (!SimulatedStations.TryBuild(parse, fromProject, cpu, revision, stations, serial, handler, speaksPpi, out var configs, out var settings, out var error))
             {
                 return cli.Fail(ExitCodes.BadInput, error);
             }

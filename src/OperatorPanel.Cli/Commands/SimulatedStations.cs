@@ -4,26 +4,78 @@ using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
+using OperatorPanel.Demo;
 using OperatorPanel.Simulator.Reference;
+using OperatorPanel.StlGen.Diagnostics;
+using OperatorPanel.StlGen.Options;
 
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
 /// The PLCs <c>opanel simulate</c> serves: from --cpu and --station, or from a project's bus (--project), each station
-/// with its own CPU and "allowStop", on the bus's line settings, so a line of different CPUs shares one device.
+/// with its own CPU and "allowStop", on the bus's line settings, so a line of different CPUs shares one device; each with
+/// the handler options given (the same as opanel generate's).
 /// </summary>
 internal static class SimulatedStations
 {
     /// <summary>
     /// The handler configurations and the line: with <paramref name="fromProject"/> (already checked to share one port)
     /// each station's CPU and "allowStop" and the bus's line settings, --device for the port; else --cpu and --station.
+    /// The handler options (<paramref name="handler"/>: --plc-port, --copy-bytes, --writable ...) apply to every station as
+    /// opanel generate applies them, checked by the generator's own check, so each station runs the handler generate
+    /// would write. With --ppi no handler runs, and giving one of them is an error.
     /// </summary>
     public static bool TryBuild(
         ParseResult parse, IReadOnlyList<ProjectStation>? fromProject, Option<string> cpu, Option<string?> revision, Option<int[]> stations,
-        SerialOptionSet serial, byte replyDelayMs, bool allowStop, bool ppi,
+        SerialOptionSet serial, HandlerOptionSet handler, bool ppi,
         [NotNullWhen(true)] out List<HandlerConfig>? configs, [NotNullWhen(true)] out SerialSettings? settings, [NotNullWhen(false)] out string? error)
     {
         configs = null;
+        settings = null;
+        if (ppi && handler.Given(parse) is { } handlerOption)
+        {
+            error = $"--ppi runs no handler: leave out {handlerOption}";
+            return false;
+        }
+
+        if (!TryLine(parse, fromProject, cpu, revision, stations, serial, ppi, out var plcs, out settings, out error))
+        {
+            return false;
+        }
+
+        configs = [];
+        foreach (var station in plcs)
+        {
+            if (ppi)
+            {
+                configs.Add(new HandlerConfig(new Station(station.Station), station.Cpu));
+                continue;
+            }
+
+            if (!handler.TryApply(parse, station, out var options, out error))
+            {
+                return false;
+            }
+
+            if (HandlerOptionsCheck.Check(options) is { IsEmpty: false } problems)
+            {
+                error = $"station {options.Station}: the handler cannot be generated: {string.Join("; ", problems)}";
+                return false;
+            }
+
+            configs.Add(SimulatedLine.ConfigFor(options));
+        }
+
+        return true;
+    }
+
+    /// <summary>The line and, per PLC, the handler options the project or --cpu and --station fix (CPU, station, line settings, "allowStop").</summary>
+    private static bool TryLine(
+        ParseResult parse, IReadOnlyList<ProjectStation>? fromProject, Option<string> cpu, Option<string?> revision, Option<int[]> stations,
+        SerialOptionSet serial, bool ppi,
+        [NotNullWhen(true)] out List<HandlerOptions>? plcs, [NotNullWhen(true)] out SerialSettings? settings, [NotNullWhen(false)] out string? error)
+    {
+        plcs = null;
         settings = null;
         if (fromProject is not null)
         {
@@ -42,7 +94,7 @@ internal static class SimulatedStations
             settings = ppi
                 ? device with { BaudRate = Simulator.Stl.Ppi.PpiSettings.ForLine(0, link.BaudRate).Baud, Parity = Core.Transport.Parity.Even, DataBits = 8 }
                 : device with { BaudRate = link.BaudRate, Parity = link.Parity, DataBits = link.DataBits };
-            configs = [.. fromProject.Select(s => new HandlerConfig(s.Address, s.Cpu, replyDelayMs: replyDelayMs, allowStop: s.AllowStop || allowStop))];
+            plcs = [.. fromProject.Select(HandlerOptions.For)];
             return true;
         }
 
@@ -58,7 +110,7 @@ internal static class SimulatedStations
             return false;
         }
 
-        configs = [];
+        plcs = [];
         foreach (var address in parse.GetValue(stations) ?? [])
         {
             if (!Station.TryCreate(address, out var station, out error))
@@ -66,13 +118,20 @@ internal static class SimulatedStations
                 return false;
             }
 
-            if (configs.Any(c => c.Station == station))
+            if (plcs.Any(p => p.Station == station.Address))
             {
                 error = $"{station} is given twice; stations on one bus need distinct addresses";
                 return false;
             }
 
-            configs.Add(new HandlerConfig(station, profile, replyDelayMs: replyDelayMs, allowStop: allowStop));
+            plcs.Add(new HandlerOptions
+            {
+                Cpu = profile,
+                Station = station.Address,
+                BaudRate = settings.BaudRate,
+                Parity = settings.Parity,
+                DataBits = settings.DataBits,
+            });
         }
 
         return true;

@@ -22,7 +22,11 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
             model)
     {
         _cpus = [.. configs.Select(c => c.Cpu.DisplayName)];
+        PlcPort = configs[0].Port;
     }
+
+    /// <summary>The PLC port the handlers use (--plc-port; the same for every station of one simulate).</summary>
+    public int PlcPort { get; init; }
 
     /// <summary>The CPUs run no handler and speak PPI (simulate --ppi).</summary>
     public bool Ppi { get; init; }
@@ -38,7 +42,8 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
         var plcs = _cpus.Distinct().Count() > 1
             ? string.Join(", ", Stations.Select((s, i) => $"station {s} ({_cpus[i]})"))
             : $"{Cpu} at station{(Stations.Count == 1 ? string.Empty : "s")} {string.Join(", ", Stations)}";
-        var handler = Ppi ? "no handler, PPI at the station addresses" : $"reply delay {ReplyDelayMs} ms";
+        var handler = Ppi ? "no handler, PPI at the station addresses"
+            : (PlcPort == 0 ? string.Empty : $"PLC port {PlcPort}, ") + $"reply delay {ReplyDelayMs} ms";
         cli.Out.WriteLine($"simulating {plcs} on {Port} {Line}, "
             + $"{handler}, model {Model}, demo process {(Process ? "on" : "off")}; Ctrl+C to stop");
         cli.Out.Flush();

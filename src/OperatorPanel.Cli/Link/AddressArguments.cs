@@ -1,6 +1,7 @@
 using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Cli.Link;
 
@@ -8,10 +9,11 @@ namespace OperatorPanel.Cli.Link;
 internal static class AddressArguments
 {
     /// <summary>
-    /// Parses <paramref name="text"/>: the link must serve its area, and with a known CPU it must exist there (and be
-    /// writable for <see cref="AddressUse.Write"/>).
+    /// Parses <paramref name="text"/>: the target's link must reach its area (PPI reads S, AIW, AQW, T and C as well;
+    /// Freeport does not: <see cref="LinkAreas"/>), and with a known CPU it must exist there (and be writable over that
+    /// link for <see cref="AddressUse.Write"/>). Inputs are never written, CPU known or not.
     /// </summary>
-    public static bool TryParse(string? text, CpuProfile? cpu, AddressUse use, out PlcAddress address, [NotNullWhen(false)] out string? error)
+    public static bool TryParse(string? text, CpuProfile? cpu, LinkProtocol link, AddressUse use, out PlcAddress address, [NotNullWhen(false)] out string? error)
     {
         if (!PlcAddress.TryParse(text, out address, out var parseError))
         {
@@ -19,20 +21,7 @@ internal static class AddressArguments
             return false;
         }
 
-        if (LinkAreas.FreeportRefusal(address) is { } notServed)
-        {
-            error = notServed;
-            return false;
-        }
-
-        if (use == AddressUse.Write && address.Area == MemoryArea.I)
-        {
-            // The handler's write mask never has I (docs/protocol.md): refused here, before anything is read or sent.
-            error = $"{address}: inputs are the field's; the Freeport link writes only {LinkAreas.FreeportWritten}";
-            return false;
-        }
-
-        error = cpu is null ? null : AddressRules.Check(address, cpu, use)?.Message;
+        error = LinkAreas.Refusal(address, link, cpu, use);
         return error is null;
     }
 }

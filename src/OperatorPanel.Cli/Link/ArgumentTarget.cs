@@ -22,7 +22,7 @@ internal sealed record ArgumentTarget(PlcAddress Address, ProjectTag? Tag, strin
             return Check(found, target, use, out error) && Set(new ArgumentTarget(found, tag, station.SymbolOf(found), BySymbol: true), out resolved);
         }
 
-        if (!AddressArguments.TryParse(trimmed, target.Cpu, use, out var address, out error))
+        if (!AddressArguments.TryParse(trimmed, target.Cpu, target.Serial.Protocol, use, out var address, out error))
         {
             // Only a word that is no area at all may have been meant as a symbol; T37 or AIW0 were meant as addresses.
             var unknown = !PlcAddress.TryParse(trimmed, out _, out var syntax) && syntax.Kind == AddressErrorKind.UnknownArea
@@ -49,7 +49,7 @@ internal sealed record ArgumentTarget(PlcAddress Address, ProjectTag? Tag, strin
 
     /// <summary>A symbol's address goes through the same checks as a typed one (link, CPU, writable).</summary>
     private static bool Check(PlcAddress address, LinkTarget target, AddressUse use, [NotNullWhen(false)] out string? error) =>
-        AddressArguments.TryParse(address.ToString(), target.Cpu, use, out _, out error);
+        AddressArguments.TryParse(address.ToString(), target.Cpu, target.Serial.Protocol, use, out _, out error);
 
     private static bool Set(ArgumentTarget value, out ArgumentTarget resolved)
     {

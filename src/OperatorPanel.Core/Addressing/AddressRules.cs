@@ -1,14 +1,27 @@
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Addressing;
 
-/// <summary>Checks an address against a CPU: area present, inside the area, and writable by the panel when it is to be written.</summary>
+/// <summary>
+/// Checks an address against a CPU: area present, inside the area, and writable by the panel over the link when it is
+/// to be written. Whether the link reads the area at all is <see cref="LinkAreas.ReadRefusal"/>'s: a read is checked
+/// against the CPU only (the simulator checks its program's operands here too).
+/// </summary>
 public static class AddressRules
 {
-    /// <summary>Null when the address is fine for <paramref name="use"/> on <paramref name="cpu"/>; otherwise the reason.</summary>
-    public static AddressError? Check(PlcAddress address, CpuProfile cpu, AddressUse use = AddressUse.Read)
+    /// <summary>
+    /// Null when the address is fine for <paramref name="use"/> on <paramref name="cpu"/>; otherwise the reason. A write
+    /// is judged for <paramref name="link"/> (Freeport unless said: it writes the fewest areas).
+    /// </summary>
+    public static AddressError? Check(PlcAddress address, CpuProfile cpu, AddressUse use = AddressUse.Read, LinkProtocol link = LinkProtocol.Freeport)
     {
         ArgumentNullException.ThrowIfNull(cpu);
+        if (AreaSyntax.IsNumbered(address.Area))
+        {
+            return CheckNumbered(address, cpu, use, link);
+        }
+
         if (!cpu.TryGetArea(address.Area, out var area))
         {
             return new AddressError(AddressErrorKind.AreaNotOnCpu, $"{address}: {cpu.Name} has no {AreaName(address.Area)}");
@@ -19,22 +32,32 @@ public static class AddressRules
             return new AddressError(AddressErrorKind.OutOfRange, OutOfRangeMessage(address, area, cpu));
         }
 
-        return use == AddressUse.Write ? WriteRefusal(address, cpu) : null;
+        return use == AddressUse.Write ? WriteRefusal(address, cpu, link) : null;
     }
 
-    /// <summary>True when the panel's link protocol can read this address (<see cref="LinkAreas.FreeportServes"/>).</summary>
-    public static bool IsServedByLink(MemoryArea area) => LinkAreas.FreeportServes(area);
-
-    private static AddressError? WriteRefusal(PlcAddress address, CpuProfile cpu) => address.Area switch
+    /// <summary>T0-T255 and C0-C255 (docs/sources/s7200-facts.md section 1); current values are never written.</summary>
+    private static AddressError? CheckNumbered(PlcAddress address, CpuProfile cpu, AddressUse use, LinkProtocol link)
     {
-        MemoryArea.I => new AddressError(AddressErrorKind.NotWritable, $"{address}: inputs are read from the field; the panel never writes them"),
-        MemoryArea.AI => new AddressError(AddressErrorKind.NotWritable, $"{address}: analog inputs are read-only"),
-        MemoryArea.SM when address.ByteOffset < cpu.ReadOnlySmBytes =>
-            new AddressError(AddressErrorKind.NotWritable, $"{address}: SMB0-SMB{cpu.ReadOnlySmBytes - 1} are read-only system status bytes"),
-        MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM => null,
-        MemoryArea.S or MemoryArea.T or MemoryArea.C or MemoryArea.AQ or MemoryArea.AC or MemoryArea.HC or MemoryArea.L =>
-            new AddressError(AddressErrorKind.NotWritable, $"{address}: the Freeport link writes only Q, M, V and SMB{cpu.ReadOnlySmBytes} and up"),
-    };
+        var (count, what) = address.Area == MemoryArea.T ? (cpu.Timers, "timer") : (cpu.Counters, "counter");
+        if (address.ByteOffset >= count)
+        {
+            return new AddressError(AddressErrorKind.OutOfRange, $"{address} is past the last {what} {AreaSyntax.Prefix(address.Area)}{count - 1} of {cpu.Name}");
+        }
+
+        return use == AddressUse.Write ? WriteRefusal(address, cpu, link) : null;
+    }
+
+    private static AddressError? WriteRefusal(PlcAddress address, CpuProfile cpu, LinkProtocol link)
+    {
+        if (address.Area == MemoryArea.SM && address.ByteOffset < cpu.ReadOnlySmBytes)
+        {
+            return new AddressError(AddressErrorKind.NotWritable, $"{address}: SMB0-SMB{cpu.ReadOnlySmBytes - 1} are read-only system status bytes");
+        }
+
+        return LinkAreas.WriteRefusal(address, link, $"SMB{cpu.ReadOnlySmBytes} and up") is { } refusal
+            ? new AddressError(AddressErrorKind.NotWritable, refusal)
+            : null;
+    }
 
     private static string OutOfRangeMessage(PlcAddress address, CpuArea area, CpuProfile cpu)
     {

@@ -27,6 +27,11 @@ public readonly partial record struct PlcAddress
             return false;
         }
 
+        if (AreaSyntax.IsNumbered(area))
+        {
+            return TryNumbered(input, area, rest, out address, out error);
+        }
+
         var width = AccessWidth.Bit;
         if (rest.Length > 0 && WidthOf(rest[0]) is { } letterWidth)
         {
@@ -85,7 +90,7 @@ public readonly partial record struct PlcAddress
             }
         }
 
-        error = new AddressError(AddressErrorKind.UnknownArea, $"'{input}': unknown memory area; an address starts with I, Q, M, V, SM, S, AIW or AQW");
+        error = new AddressError(AddressErrorKind.UnknownArea, $"'{input}': unknown memory area; an address starts with I, Q, M, V, SM, S, AIW, AQW, T or C");
         return false;
     }
 
@@ -151,6 +156,42 @@ public readonly partial record struct PlcAddress
         }
 
         address = new PlcAddress(area, byteOffset, null, width);
+        error = null;
+        return true;
+    }
+
+    /// <summary>
+    /// T37 or C5: the timer's or counter's current value, a signed word as the CPU holds it. The panel has no form for
+    /// the timer or counter bit: over PPI it comes in a status byte whose layout no source documents (docs/ppi.md
+    /// section 6), so the program copies the bit to M or V when the panel is to show it.
+    /// </summary>
+    private static bool TryNumbered(string input, MemoryArea area, string rest, out PlcAddress address, [NotNullWhen(false)] out AddressError? error)
+    {
+        address = default;
+        var prefix = AreaSyntax.Prefix(area);
+        var what = area == MemoryArea.T ? "timer" : "counter";
+        var digits = LeadingDigits(rest);
+        if (digits.Length == 0)
+        {
+            error = new AddressError(AddressErrorKind.MissingByteNumber, $"'{input}': a {what} is written {prefix} and its number ({prefix}{(area == MemoryArea.T ? 37 : 5)}), which reads its current value");
+            return false;
+        }
+
+        if (!TryNumber(digits, out var number))
+        {
+            error = new AddressError(AddressErrorKind.ByteNumberTooLarge, $"'{input}': {what} number {digits} is larger than {MaxByteOffset}");
+            return false;
+        }
+
+        if (digits.Length < rest.Length)
+        {
+            error = rest[digits.Length] == '.'
+                ? new AddressError(AddressErrorKind.UnexpectedBitNumber, $"'{input}': {prefix}{number} is the {what}'s current value and takes no bit number; the panel does not read {what} bits (copy the bit to M or V in the PLC program)")
+                : Trailing(input, rest[digits.Length..]);
+            return false;
+        }
+
+        address = new PlcAddress(area, number, null, AccessWidth.Word);
         error = null;
         return true;
     }

@@ -3,7 +3,8 @@ using System.Globalization;
 namespace OperatorPanel.Core.Addressing;
 
 /// <summary>
-/// A direct S7-200 address such as <c>I0.3</c>, <c>VB100</c>, <c>VW200</c>, <c>VD300</c>, <c>SMB30</c> or <c>AIW0</c>.
+/// A direct S7-200 address such as <c>I0.3</c>, <c>VB100</c>, <c>VW200</c>, <c>VD300</c>, <c>SMB30</c>, <c>AIW0</c> or
+/// <c>T37</c> (a timer's or counter's current value: one word, numbered rather than placed at a byte).
 /// Immutable; <see cref="ToString"/> prints the canonical form that <see cref="TryParse(string?, out PlcAddress, out AddressError?)"/> reads back.
 /// </summary>
 public readonly partial record struct PlcAddress
@@ -21,7 +22,7 @@ public readonly partial record struct PlcAddress
 
     public MemoryArea Area { get; }
 
-    /// <summary>Number of the first byte, counted from byte 0 of <see cref="Area"/>.</summary>
+    /// <summary>Number of the first byte, counted from byte 0 of <see cref="Area"/>; for a timer or counter its number (T37: 37).</summary>
     public int ByteOffset { get; }
 
     /// <summary>Bit 0-7 within the byte for a bit address; null otherwise.</summary>
@@ -70,6 +71,11 @@ public readonly partial record struct PlcAddress
     public override string ToString()
     {
         var area = AreaSyntax.Prefix(Area);
+        if (AreaSyntax.IsNumbered(Area))
+        {
+            return string.Create(CultureInfo.InvariantCulture, $"{area}{ByteOffset}");
+        }
+
         return Width == AccessWidth.Bit
             ? string.Create(CultureInfo.InvariantCulture, $"{area}{ByteOffset}.{Bit}")
             : string.Create(CultureInfo.InvariantCulture, $"{area}{Width.Letter()}{ByteOffset}");

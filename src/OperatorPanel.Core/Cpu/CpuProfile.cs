@@ -26,6 +26,15 @@ public sealed record CpuProfile
 
     public required int MaxExpansionModules { get; init; }
 
+    /// <summary>
+    /// Program memory in bytes with run mode edit enabled: the smaller of the manual's two figures, taken as the room a
+    /// program has because a PLC programmer may use run mode edit (CPU 224: 8192 bytes, 12288 without).
+    /// </summary>
+    public required int ProgramBytes { get; init; }
+
+    /// <summary>Program memory in bytes without run mode edit (the same as <see cref="ProgramBytes"/> on CPU 221/222 and Early CPUs).</summary>
+    public required int ProgramBytesWithoutRunModeEdit { get; init; }
+
     /// <summary>Byte-addressable areas present on this CPU (I, Q, M, V, SM, S, L, and AI/AQ where it has analog).</summary>
     public required ImmutableArray<CpuArea> Areas { get; init; }
 

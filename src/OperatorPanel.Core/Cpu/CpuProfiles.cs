@@ -23,16 +23,21 @@ public static class CpuProfiles
     private static readonly ImmutableArray<FreeportBaudRate> CurrentRates =
         [.. CommonRates, new(57600, 0b111), new(115200, 0b110)];
 
+    /// <summary>
+    /// Program memory in bytes, with and without run mode edit: Current from the System Manual 08/2008 Table 1-1, Early
+    /// from seed 002 Table 1-1 ("Program 2048 / 2048 / 4096 words"; that edition has no run mode edit, so both figures
+    /// are the same). docs/cpu-profiles.md.
+    /// </summary>
     public static ImmutableArray<CpuProfile> All { get; } =
     [
-        Make(CpuModel.Cpu221, CpuRevision.Early, io: (6, 4, 0, 0), modules: 0, vBytes: 2048, smBytes: 180, analogBytes: 0, hsc: 4, sbr: 64, ports: 1, id: 0x60),
-        Make(CpuModel.Cpu221, CpuRevision.Current, io: (6, 4, 0, 0), modules: 0, vBytes: 2048, smBytes: 180, analogBytes: 0, hsc: 4, sbr: 64, ports: 1, id: 0x60),
-        Make(CpuModel.Cpu222, CpuRevision.Early, io: (8, 6, 0, 0), modules: 2, vBytes: 2048, smBytes: 300, analogBytes: 32, hsc: 4, sbr: 64, ports: 1, id: 0x00),
-        Make(CpuModel.Cpu222, CpuRevision.Current, io: (8, 6, 0, 0), modules: 2, vBytes: 2048, smBytes: 300, analogBytes: 32, hsc: 4, sbr: 64, ports: 1, id: 0x00),
-        Make(CpuModel.Cpu224, CpuRevision.Early, io: (14, 10, 0, 0), modules: 7, vBytes: 5120, smBytes: 550, analogBytes: 32, hsc: 6, sbr: 64, ports: 1, id: 0x20),
-        Make(CpuModel.Cpu224, CpuRevision.Current, io: (14, 10, 0, 0), modules: 7, vBytes: 8192, smBytes: 550, analogBytes: 64, hsc: 6, sbr: 64, ports: 1, id: 0x20),
-        Make(CpuModel.Cpu224XP, CpuRevision.Current, io: (14, 10, 2, 1), modules: 7, vBytes: 10240, smBytes: 550, analogBytes: 64, hsc: 6, sbr: 128, ports: 2, id: 0x20),
-        Make(CpuModel.Cpu226, CpuRevision.Current, io: (24, 16, 0, 0), modules: 7, vBytes: 10240, smBytes: 550, analogBytes: 64, hsc: 6, sbr: 128, ports: 2, id: 0x90),
+        Make(CpuModel.Cpu221, CpuRevision.Early, io: (6, 4, 0, 0), program: (4096, 4096), modules: 0, vBytes: 2048, smBytes: 180, analogBytes: 0, hsc: 4, sbr: 64, ports: 1, id: 0x60),
+        Make(CpuModel.Cpu221, CpuRevision.Current, io: (6, 4, 0, 0), program: (4096, 4096), modules: 0, vBytes: 2048, smBytes: 180, analogBytes: 0, hsc: 4, sbr: 64, ports: 1, id: 0x60),
+        Make(CpuModel.Cpu222, CpuRevision.Early, io: (8, 6, 0, 0), program: (4096, 4096), modules: 2, vBytes: 2048, smBytes: 300, analogBytes: 32, hsc: 4, sbr: 64, ports: 1, id: 0x00),
+        Make(CpuModel.Cpu222, CpuRevision.Current, io: (8, 6, 0, 0), program: (4096, 4096), modules: 2, vBytes: 2048, smBytes: 300, analogBytes: 32, hsc: 4, sbr: 64, ports: 1, id: 0x00),
+        Make(CpuModel.Cpu224, CpuRevision.Early, io: (14, 10, 0, 0), program: (8192, 8192), modules: 7, vBytes: 5120, smBytes: 550, analogBytes: 32, hsc: 6, sbr: 64, ports: 1, id: 0x20),
+        Make(CpuModel.Cpu224, CpuRevision.Current, io: (14, 10, 0, 0), program: (8192, 12288), modules: 7, vBytes: 8192, smBytes: 550, analogBytes: 64, hsc: 6, sbr: 64, ports: 1, id: 0x20),
+        Make(CpuModel.Cpu224XP, CpuRevision.Current, io: (14, 10, 2, 1), program: (12288, 16384), modules: 7, vBytes: 10240, smBytes: 550, analogBytes: 64, hsc: 6, sbr: 128, ports: 2, id: 0x20),
+        Make(CpuModel.Cpu226, CpuRevision.Current, io: (24, 16, 0, 0), program: (16384, 24576), modules: 7, vBytes: 10240, smBytes: 550, analogBytes: 64, hsc: 6, sbr: 128, ports: 2, id: 0x90),
     ];
 
     /// <summary>The profile of a model; the revision defaults to Current, the one on sale in the last manual.</summary>
@@ -60,7 +65,7 @@ public static class CpuProfiles
         All.Where(p => p.Model == model).Select(p => p.Revision);
 
     private static CpuProfile Make(
-        CpuModel model, CpuRevision revision, (int In, int Out, int AnalogIn, int AnalogOut) io, int modules,
+        CpuModel model, CpuRevision revision, (int In, int Out, int AnalogIn, int AnalogOut) io, (int WithRunModeEdit, int WithoutRunModeEdit) program, int modules,
         int vBytes, int smBytes, int analogBytes, int hsc, int sbr, int ports, byte id)
     {
         var areas = ImmutableArray.CreateBuilder<CpuArea>();
@@ -87,6 +92,8 @@ public static class CpuProfiles
             LocalAnalogInputs = io.AnalogIn,
             LocalAnalogOutputs = io.AnalogOut,
             MaxExpansionModules = modules,
+            ProgramBytes = program.WithRunModeEdit,
+            ProgramBytesWithoutRunModeEdit = program.WithoutRunModeEdit,
             Areas = areas.ToImmutable(),
             HighSpeedCounters = hsc,
             Subroutines = sbr,

@@ -2,6 +2,7 @@ using System.Collections.Concurrent;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Protocol;
@@ -26,6 +27,7 @@ public sealed class Bus : IAsyncDisposable
 {
     private readonly IPlcLink _link;
     private readonly PpiLink? _ppi;
+    private readonly V3Link? _v3;
     private readonly IAsyncDisposable _wire;
     private readonly BusSettings _settings;
     private readonly TimeProvider _time;
@@ -41,9 +43,9 @@ public sealed class Bus : IAsyncDisposable
     private Task _loop = Task.CompletedTask;
     private bool _polling;
 
-    private Bus(IPlcLink link, PpiLink? ppi, string portName, IAsyncDisposable wire, PollPlan plan, BusSettings settings, TimeProvider time, ILogger logger, Action<IReadOnlyList<ValueChange>>? onChanges)
+    private Bus(IPlcLink link, PpiLink? ppi, V3Link? v3, string portName, IAsyncDisposable wire, PollPlan plan, BusSettings settings, TimeProvider time, ILogger logger, Action<IReadOnlyList<ValueChange>>? onChanges)
     {
-        (_link, _ppi, PortName, _wire, _settings, _time, _logger) = (link, ppi, portName, wire, settings, time, logger);
+        (_link, _ppi, _v3, PortName, _wire, _settings, _time, _logger) = (link, ppi, v3, portName, wire, settings, time, logger);
         _stations = new StationTracker(time, logger.ForContext<PollingEngine>());
         _queue = new BusQueue(logger.ForContext<Bus>());
         _onChanges = onChanges ?? (_ => { });
@@ -62,7 +64,7 @@ public sealed class Bus : IAsyncDisposable
         ArgumentNullException.ThrowIfNull(link);
         ArgumentNullException.ThrowIfNull(plan);
         ArgumentNullException.ThrowIfNull(settings);
-        return new Bus(link, null, link.PortName, link, plan, settings, time ?? TimeProvider.System, logger ?? Serilog.Core.Logger.None, onChanges);
+        return new Bus(link, null, null, link.PortName, link, plan, settings, time ?? TimeProvider.System, logger ?? Serilog.Core.Logger.None, onChanges);
     }
 
     /// <summary>
@@ -75,7 +77,20 @@ public sealed class Bus : IAsyncDisposable
         ArgumentNullException.ThrowIfNull(link);
         ArgumentNullException.ThrowIfNull(plan);
         ArgumentNullException.ThrowIfNull(settings);
-        return new Bus(new FreeportRefusedLink(link.PortName), link, link.PortName, link, plan, settings, time ?? TimeProvider.System, logger ?? Serilog.Core.Logger.None, onChanges);
+        return new Bus(new FreeportRefusedLink(link.PortName), link, null, link.PortName, link, plan, settings, time ?? TimeProvider.System, logger ?? Serilog.Core.Logger.None, onChanges);
+    }
+
+    /// <summary>
+    /// Starts polling <paramref name="plan"/> in protocol v3 on <paramref name="link"/>, which the bus owns from now on:
+    /// experimental, for tests, until the v3 handler meets its goals (docs/v3-panel-side.md). Writes, IDENTIFY, STOP
+    /// and the settling of cut-short writes go through the link's IPlcLink face; stations are read by the v3 readers.
+    /// </summary>
+    public static Bus StartV3(V3Link link, PollPlan plan, BusSettings settings, TimeProvider? time = null, ILogger? logger = null, Action<IReadOnlyList<ValueChange>>? onChanges = null)
+    {
+        ArgumentNullException.ThrowIfNull(link);
+        ArgumentNullException.ThrowIfNull(plan);
+        ArgumentNullException.ThrowIfNull(settings);
+        return new Bus(link, null, link, link.PortName, link, plan, settings, time ?? TimeProvider.System, logger ?? Serilog.Core.Logger.None, onChanges);
     }
 
     /// <summary>
@@ -138,7 +153,9 @@ public sealed class Bus : IAsyncDisposable
         ArgumentNullException.ThrowIfNull(journal);
         return _queue.Enqueue(
             $"settling writes cut short on {PortName}",
-            ct => UnfinishedWrites.ResolveAsync(journal, _link, PortName, _time, _logger, ct),
+            ct => _ppi is { } ppi
+                ? UnfinishedWrites.ResolveOverPpiAsync(journal, ppi, PortName, _time, _logger, ct)
+                : UnfinishedWrites.ResolveAsync(journal, _link, PortName, _time, _logger, ct),
             () => ((IReadOnlyList<CutShortWrite>)[], null),
             cancellationToken);
     }
@@ -250,7 +267,7 @@ public sealed class Bus : IAsyncDisposable
 
     private PollingEngine NewEngine(PollPlan plan, RefreshMode mode)
     {
-        var engine = new PollingEngine(_link, plan, _stations, _queue, _time, _logger, _settings.Polling, _onChanges, _ppi)
+        var engine = new PollingEngine(_link, plan, _stations, _queue, _time, _logger, _settings.Polling, _onChanges, _ppi, _v3)
         {
             Mode = mode,
             MinimumPeriod = _settings.MinimumPeriod,

@@ -43,6 +43,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         _options = options;
         _time = time ?? TimeProvider.System;
         _log = (log ?? Serilog.Core.Logger.None).ForContext<PlcLink>();
+        _port = new PortReopener(transport, _time, _log);
     }
 
     public string PortName => _transport.Name;

@@ -2,6 +2,7 @@ using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Polling;
 
@@ -108,7 +109,7 @@ public static class PollPlanner
     {
         if (ProtocolAreaExtensions.FromMemoryArea(item.Address.Area) is null)
         {
-            return LinkAreas.FreeportRefusal(item.Address);
+            return LinkAreas.ReadRefusal(item.Address, LinkProtocol.Freeport);
         }
 
         return cpus.TryGetValue(item.Station, out var cpu) ? AddressRules.Check(item.Address, cpu)?.Message : null;

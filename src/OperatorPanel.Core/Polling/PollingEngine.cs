@@ -54,13 +54,13 @@ internal sealed partial class PollingEngine
     /// <paramref name="ppi"/> the bus speaks PPI and its stations are read and written over it.
     /// </summary>
     public PollingEngine(
-        IPlcLink link, PollPlan plan, StationTracker? stations, BusQueue? queue, TimeProvider time, ILogger logger, PollingOptions options, Action<IReadOnlyList<ValueChange>>? onChanges, PpiLink? ppi = null)
+        IPlcLink link, PollPlan plan, StationTracker? stations, BusQueue? queue, TimeProvider time, ILogger logger, PollingOptions options, Action<IReadOnlyList<ValueChange>>? onChanges, PpiLink? ppi = null, Link.V3.V3Link? v3 = null)
     {
         ArgumentNullException.ThrowIfNull(link);
         ArgumentNullException.ThrowIfNull(plan);
         var log = logger.ForContext<PollingEngine>();
         stations ??= new StationTracker(time, log);
-        _context = new PollingContext(plan, link, new FrameJudge(stations), options, time, log) { Ppi = ppi };
+        _context = new PollingContext(plan, link, new FrameJudge(stations), options, time, log) { Ppi = ppi, V3 = v3 };
         _values = new ValueStore(plan.Values.Select(v => v.Item), time.GetUtcNow());
         _readers = new ReaderChoice(_context);
         _rest = new OfflineRest(stations, log);
@@ -160,8 +160,7 @@ internal sealed partial class PollingEngine
             var result = await _readers.Writer.WriteAsync(request, oldRaw, cancellationToken).ConfigureAwait(false);
             if (!result.ReadBack.IsDefault)
             {
-                var area = ProtocolAreaExtensions.FromMemoryArea(request.Address.Area)!.Value;
-                _batch.AddRange(_values.Apply(request.Station, area, request.Address.ByteOffset, result.ReadBack, _context.Time.GetUtcNow()));
+                _batch.AddRange(_values.Apply(request.Station, request.Address.Area, request.Address.ByteOffset, result.ReadBack, _context.Time.GetUtcNow()));
             }
 
             return (result.Outcome, oldText);

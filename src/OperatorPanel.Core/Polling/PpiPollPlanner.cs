@@ -2,15 +2,16 @@ using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Ppi;
-using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Polling;
 
 /// <summary>
 /// The plan of a PPI bus: per station <see cref="PpiReadPlanner"/> merges the watched bytes into S7 items and packs them
 /// into jobs (docs/ppi.md section 8); each item becomes one poll frame of one block, in job order, so a per-item return
-/// code touches only the values that item carries, and Readers/PpiReader packs the frames back into the same jobs. Only
-/// I, Q, M, V and SM are watched, as on a Freeport bus (the values' path carries those areas).
+/// code touches only the values that item carries, and Readers/PpiReader packs the frames back into the same jobs. The
+/// frames carry the S7 items themselves (<see cref="PollFrame.PpiItem"/>), so every area PPI reads is watched: I, Q, M,
+/// V, SM, S, AIW, AQW and timer and counter current values (<see cref="LinkAreas.Reads"/>).
 /// </summary>
 public static class PpiPollPlanner
 {
@@ -42,7 +43,7 @@ public static class PpiPollPlanner
             foreach (var request in plan.Requests)
             {
                 firstOfRequest.Add(frames.Count - first);
-                frames.AddRange(request.Items.Select(item => new PollFrame(station.Key, [BlockOf(item)])));
+                frames.AddRange(request.Items.Select(item => PollFrame.ForPpi(station.Key, item)));
             }
 
             foreach (var item in accepted.OrderBy(i => i.Address.Area).ThenBy(i => i.Address.ByteOffset).ThenBy(i => i.Address.Bit))
@@ -61,20 +62,8 @@ public static class PpiPollPlanner
         return new PollPlan(frames.ToImmutable(), values.ToImmutable(), rejected.ToImmutable(), cpuMap, PollCostModel.Default);
     }
 
-    /// <summary>The bytes an S7 item of I, Q, M, V or SM covers, as a block of a poll frame.</summary>
-    private static ReadItem BlockOf(Ppi.S7.S7Item item)
-    {
-        var area = Enum.GetValues<ProtocolArea>().First(a => PpiAddressing.TryArea(a.ToMemoryArea(), out var code) && code == item.Area);
-        return new ReadItem(area, item.ByteOffset, item.DataLength);
-    }
-
     private static string? RejectionReason(WatchedItem item, ImmutableDictionary<Station, CpuProfile> cpus)
     {
-        if (ProtocolAreaExtensions.FromMemoryArea(item.Address.Area) is null)
-        {
-            return $"{item.Address}: the panel reads only I, Q, M, V and SM, over PPI as over Freeport";
-        }
-
-        return cpus.TryGetValue(item.Station, out var cpu) ? AddressRules.Check(item.Address, cpu)?.Message : null;
+        return LinkAreas.Refusal(item.Address, LinkProtocol.Ppi, cpus.GetValueOrDefault(item.Station));
     }
 }

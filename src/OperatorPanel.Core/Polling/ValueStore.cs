@@ -1,6 +1,5 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Core.Polling;
 
@@ -39,13 +38,13 @@ internal sealed class ValueStore
     }
 
     /// <summary>Stores fresh bytes of one area (a write's read-back) into every watched address lying wholly inside them.</summary>
-    public List<ValueChange> Apply(Station station, ProtocolArea area, int offset, ImmutableArray<byte> bytes, DateTimeOffset now)
+    public List<ValueChange> Apply(Station station, MemoryArea area, int offset, ImmutableArray<byte> bytes, DateTimeOffset now)
     {
         List<WatchedItem> inside;
         lock (_lock)
         {
             inside = [.. _values.Keys.Where(i => i.Station == station
-                && ProtocolAreaExtensions.FromMemoryArea(i.Address.Area) == area
+                && i.Address.Area == area
                 && i.Address.ByteOffset >= offset
                 && i.Address.LastByte < offset + bytes.Length)];
         }

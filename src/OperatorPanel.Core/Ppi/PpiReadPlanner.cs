@@ -5,9 +5,9 @@ using OperatorPanel.Core.Ppi.S7;
 namespace OperatorPanel.Core.Ppi;
 
 /// <summary>
-/// Packs addresses into as few read jobs as the PDU allows (docs/ppi.md section 8): per area the bytes are merged
-/// into ranges (bridging gaps up to <see cref="PpiLimits.BridgeGap"/>) no longer than one item can read, and the
-/// ranges fill jobs in address order while the request and its answer fit the PDU and the item limit.
+/// Packs addresses into as few read jobs as the PDU allows (docs/ppi.md section 8): per area the bytes (for T and C the
+/// numbers) are merged into ranges (bridging gaps up to <see cref="PpiLimits.BridgeGap"/>) no longer than one item can
+/// read, and the ranges fill jobs in address order while the request and its answer fit the PDU and the item limit.
 /// </summary>
 public static class PpiReadPlanner
 {
@@ -36,16 +36,21 @@ public static class PpiReadPlanner
         return new PpiReadPlan(requests, Locate(wanted, requests), rejected.ToImmutable());
     }
 
-    /// <summary>Merged byte ranges of one area, none longer than one item reads (whole words for AI and AQ).</summary>
+    /// <summary>
+    /// Merged ranges of one area, none longer than one item reads: bytes (whole words for AI and AQ), or for T and C
+    /// elements of 5 answer bytes each, a gap bridged while it costs no more bytes than <see cref="PpiLimits.BridgeGap"/>.
+    /// </summary>
     private static IEnumerable<S7Item> Ranges(MemoryArea area, IEnumerable<PlcAddress> addresses, PpiLimits limits)
     {
-        var words = AreaSyntax.IsAnalog(area);
-        var longest = words ? limits.MaxReadBytes & ~1 : limits.MaxReadBytes;
+        var numbered = AreaSyntax.IsNumbered(area);
+        var unit = numbered ? S7Item.TimerCounterBytes : 1;
+        var longest = AreaSyntax.IsAnalog(area) ? limits.MaxReadBytes & ~1 : limits.MaxReadBytes / unit;
+        var gap = limits.BridgeGap / unit;
         var merged = new List<(int First, int Last)>();
         foreach (var address in addresses.OrderBy(a => a.ByteOffset))
         {
-            var (first, last) = (address.ByteOffset, address.LastByte);
-            if (merged.Count > 0 && first - merged[^1].Last - 1 <= limits.BridgeGap && last - merged[^1].First < longest)
+            var (first, last) = (address.ByteOffset, numbered ? address.ByteOffset : address.LastByte);
+            if (merged.Count > 0 && first - merged[^1].Last - 1 <= gap && last - merged[^1].First < longest)
             {
                 merged[^1] = (merged[^1].First, Math.Max(merged[^1].Last, last));
             }
@@ -97,11 +102,9 @@ public static class PpiReadPlanner
                 var items = requests[r].Items;
                 for (var i = 0; i < items.Length; i++)
                 {
-                    var item = items[i];
-                    var offset = address.ByteOffset - item.ByteOffset;
-                    if (item.Area == area && offset >= 0 && address.LastByte - item.ByteOffset < item.DataLength)
+                    if (SliceIn(items[i], area, address) is { } slice)
                     {
-                        slices[address] = new PpiSlice(r, i, offset, address.Width.ByteCount());
+                        slices[address] = new PpiSlice(r, i, slice.Offset, slice.Length);
                         break;
                     }
                 }
@@ -109,5 +112,25 @@ public static class PpiReadPlanner
         }
 
         return slices.ToImmutable();
+    }
+
+    /// <summary>Where <paramref name="address"/>'s bytes are in <paramref name="item"/>'s answer; null when it is not there.</summary>
+    private static (int Offset, int Length)? SliceIn(S7Item item, S7Area area, PlcAddress address)
+    {
+        if (item.Area != area)
+        {
+            return null;
+        }
+
+        if (item.IsTimerOrCounter)
+        {
+            var element = address.ByteOffset - item.Address;
+            return element >= 0 && element < item.Count
+                ? ((element * S7Item.TimerCounterBytes) + PpiAddressing.CurrentValueOffset, 2)
+                : null;
+        }
+
+        var offset = address.ByteOffset - item.ByteOffset;
+        return offset >= 0 && address.LastByte - item.ByteOffset < item.DataLength ? (offset, address.Width.ByteCount()) : null;
     }
 }

@@ -1,9 +1,10 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Projects;
 
-/// <summary>Reads an address property: the STL syntax, the shape its list demands, then the station's CPU.</summary>
+/// <summary>Reads an address property: the STL syntax, the shape its list demands, the station's link, then its CPU.</summary>
 internal static class AddressReader
 {
     /// <summary>Longer text cannot be an address (the longest, "SMB65535", has 8 characters).</summary>
@@ -14,7 +15,11 @@ internal static class AddressReader
     /// <param name="cpu">The station's CPU; null when it was unreadable, so only the syntax and shape are checked.</param>
     /// <param name="shape">Null when the address suits the list, else why not ("an input is an I bit...").</param>
     /// <param name="use">Write when the panel will write the address.</param>
-    public static PlcAddress? Read(JsonFields fields, string name, CpuProfile? cpu, Func<PlcAddress, string?> shape, AddressUse use = AddressUse.Read)
+    /// <param name="link">
+    /// The station's link protocol, which decides the areas it reaches (<see cref="LinkAreas"/>); null when the link
+    /// was unreadable (its problem is reported), so only the CPU is checked, as by the link that reaches the most.
+    /// </param>
+    public static PlcAddress? Read(JsonFields fields, string name, CpuProfile? cpu, Func<PlcAddress, string?> shape, AddressUse use = AddressUse.Read, LinkProtocol? link = null)
     {
         var text = fields.String(name);
         if (text is null)
@@ -34,7 +39,9 @@ internal static class AddressReader
             return null;
         }
 
-        var refusal = shape(address) ?? (cpu is null ? null : AddressRules.Check(address, cpu, use)?.Message);
+        var refusal = shape(address) ?? (link is { } protocol
+            ? LinkAreas.Refusal(address, protocol, cpu, use)
+            : cpu is null ? null : AddressRules.Check(address, cpu, use, LinkProtocol.Ppi)?.Message);
         if (refusal is not null)
         {
             fields.Problem(name, refusal);
@@ -44,11 +51,16 @@ internal static class AddressReader
         return address;
     }
 
-    public static string Kind(PlcAddress address) => address.Width switch
+    public static string Kind(PlcAddress address) => address.Area switch
     {
-        AccessWidth.Bit => "a bit",
-        AccessWidth.Byte => "a byte",
-        AccessWidth.Word => "a word",
-        AccessWidth.DoubleWord => "a double word",
+        MemoryArea.T => "a timer's current value",
+        MemoryArea.C => "a counter's current value",
+        _ => address.Width switch
+        {
+            AccessWidth.Bit => "a bit",
+            AccessWidth.Byte => "a byte",
+            AccessWidth.Word => "a word",
+            AccessWidth.DoubleWord => "a double word",
+        },
     };
 }

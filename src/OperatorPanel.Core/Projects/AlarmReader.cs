@@ -2,17 +2,18 @@ using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Alarms;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Projects;
 
 /// <summary>Reads a station's <c>alarms</c>: a flag bit, its text, class and whether it must be acknowledged.</summary>
 internal static class AlarmReader
 {
-    public static ImmutableArray<AlarmDefinition>? ReadAll(JsonFields station, CpuProfile? cpu, EntryRegistry registry) =>
+    public static ImmutableArray<AlarmDefinition>? ReadAll(JsonFields station, CpuProfile? cpu, LinkProtocol? link, EntryRegistry registry) =>
         station.Entries("alarms", entry =>
         {
             entry.ReportUnknown("flag", "text", "class", "acknowledgementRequired");
-            var flag = AddressReader.Read(entry, "flag", cpu, Shape);
+            var flag = AddressReader.Read(entry, "flag", cpu, Shape, link: link);
             if (flag is { } f && !registry.ClaimAddress(entry, "flag", "alarms", f))
             {
                 flag = null;
@@ -39,6 +40,6 @@ internal static class AlarmReader
             return $"an alarm flag is a bit such as M2.0; {address} is {AddressReader.Kind(address)}";
         }
 
-        return LinkAreas.FreeportRefusal(address);
+        return null;
     }
 }

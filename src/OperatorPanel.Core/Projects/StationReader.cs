@@ -77,8 +77,8 @@ internal static class StationReader
         var registry = new EntryRegistry();
         var inputs = IoSymbolReader.ReadAll(fields, "inputs", MemoryArea.I, cpu, registry);
         var outputs = IoSymbolReader.ReadAll(fields, "outputs", MemoryArea.Q, cpu, registry);
-        var tags = TagReader.ReadAll(fields, cpu, registry);
-        var alarms = AlarmReader.ReadAll(fields, cpu, registry);
+        var tags = TagReader.ReadAll(fields, cpu, link?.Protocol, registry);
+        var alarms = AlarmReader.ReadAll(fields, cpu, link?.Protocol, registry);
         if (name is null || address is null || cpu is null || link is null || allowStop is null || inputs is null || outputs is null || tags is null || alarms is null)
         {
             return null;

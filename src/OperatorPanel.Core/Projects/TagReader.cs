@@ -1,29 +1,31 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.Core.Values;
 
 namespace OperatorPanel.Core.Projects;
 
 /// <summary>
-/// Reads a station's <c>tags</c>: memory cells of M and V (seed 000 §7), or read-only views of I, Q and SM.
+/// Reads a station's <c>tags</c>: memory cells of M and V (seed 000 §7), or views of I, Q and SM; on a PPI station also
+/// of S, AIW, AQW and timer and counter current values (T37, C5), which the Freeport link does not reach (<see cref="LinkAreas"/>).
 /// Two tags may share an address, e.g. VD120 shown once as a float and once in hex. Optional, as an HMI has them:
 /// <c>unit</c>, <c>scale</c> (<c>{"rawLow", "rawHigh", "low", "high"}</c>, linear) and <c>min</c>/<c>max</c> (what the
 /// operator may write, in scaled units); scale and range only for numbers (unsigned, signed, float).
 /// </summary>
 internal static class TagReader
 {
-    public static ImmutableArray<ProjectTag>? ReadAll(JsonFields station, CpuProfile? cpu, EntryRegistry registry) =>
-        station.Entries("tags", entry => Read(entry, cpu, registry));
+    public static ImmutableArray<ProjectTag>? ReadAll(JsonFields station, CpuProfile? cpu, LinkProtocol? link, EntryRegistry registry) =>
+        station.Entries("tags", entry => Read(entry, cpu, link, registry));
 
-    private static ProjectTag? Read(JsonFields entry, CpuProfile? cpu, EntryRegistry registry)
+    private static ProjectTag? Read(JsonFields entry, CpuProfile? cpu, LinkProtocol? link, EntryRegistry registry)
     {
         entry.ReportUnknown("symbol", "address", "format", "writable", "description", "unit", "scale", "min", "max", "record", "deadband");
         var symbol = registry.ClaimSymbol(entry);
         var writable = entry.Bool("writable", fallback: false);
         var use = writable == true ? AddressUse.Write : AddressUse.Read;
-        var address = AddressReader.Read(entry, "address", cpu, Shape, use);
-        var format = entry.Word("format", DisplayFormats.DefaultFor(address?.Width ?? AccessWidth.Bit));
+        var address = AddressReader.Read(entry, "address", cpu, _ => null, use, link);
+        var format = entry.Word("format", address is { } read ? DisplayFormats.DefaultFor(read) : DisplayFormat.Bool);
         if (address is { } a && format is { } f && !f.Fits(a.Width))
         {
             entry.Problem("format", $"{JsonWords.Of(f)} cannot show {a}, {AddressReader.Kind(a)}; {FitHint(f)}");
@@ -88,8 +90,6 @@ internal static class TagReader
 
         return new TagScale(rl, rh, l, h);
     }
-
-    private static string? Shape(PlcAddress address) => LinkAreas.FreeportRefusal(address);
 
     private static string FitHint(DisplayFormat format) => format switch
     {

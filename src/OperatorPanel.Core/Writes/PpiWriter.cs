@@ -1,4 +1,5 @@
 using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Polling.Readers;
@@ -9,8 +10,8 @@ using OperatorPanel.Core.Transport;
 namespace OperatorPanel.Core.Writes;
 
 /// <summary>
-/// A write over PPI (docs/ppi.md sections 5 and 7): checked as a Freeport write is (<see cref="WriteCommand.TryBuild"/>:
-/// Q, M, V and SM, the address on the station's CPU), sent once as an S7 write-var job (a bit as a bit item, so the
+/// A write over PPI (docs/ppi.md sections 5 and 7): checked for what the PPI link writes (<see cref="LinkAreas.Refusal"/>:
+/// Q, M, V, SM, S and AQW, the address on the station's CPU), sent once as an S7 write-var job (a bit as a bit item, so the
 /// other bits of its byte are left alone), then judged by a read job of the same bytes: confirmed, mismatch, or unknown
 /// when the read-back fails. A write whose answer was lost is never sent again: the read-back settles it
 /// (<see cref="LostReplyResolution"/>). The station's state follows each answer.
@@ -20,9 +21,9 @@ internal sealed class PpiWriter(PollingContext context, PpiLink link) : IStation
     public async Task<WriteResult> WriteAsync(WriteRequest request, ImmutableArray<byte> oldRaw, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(request);
-        if (!WriteCommand.TryBuild(request, context.Plan.Cpus.GetValueOrDefault(request.Station), out _, out var refusal))
+        if (LinkAreas.Refusal(request.Address, LinkProtocol.Ppi, context.Plan.Cpus.GetValueOrDefault(request.Station), AddressUse.Write) is { } refusal)
         {
-            return new WriteResult(refusal, default);
+            return new WriteResult(new WriteOutcome.Failed(refusal, WriteFailureKind.InvalidRequest), default);
         }
 
         var value = request.Value.Aggregate(0u, (sum, b) => (sum << 8) | b);

@@ -16,19 +16,27 @@ namespace OperatorPanel.Core.Writes;
 /// (not applied), or neither or no answer (unknown); a STOP is settled by IDENTIFY (an answer means it runs). Each is
 /// recorded as "resolved at start" and logged. Intents on a simulated line are settled as unknown: that PLC ended with
 /// its program. When the port itself cannot be opened nothing is settled: a later start, with the port back, does it.
+/// The read-back speaks the bus's own protocol: Freeport frames to the handler here, S7 read jobs on a PPI bus
+/// (UnfinishedWrites.Ppi.cs), so no start sends one protocol's frames onto the other's bus.
 /// </summary>
-public static class UnfinishedWrites
+public static partial class UnfinishedWrites
 {
     public const string Applied = "applied";
     public const string NotApplied = "not applied";
     public const string Unknown = "unknown";
 
     /// <summary>The settled writes and STOPs, oldest first; and a problem reading the journal, if any.</summary>
-    public static async Task<(IReadOnlyList<CutShortWrite> Resolved, string? Problem)> ResolveAsync(
+    public static Task<(IReadOnlyList<CutShortWrite> Resolved, string? Problem)> ResolveAsync(
         WriteJournal journal, IPlcLink link, string port, TimeProvider? time = null, ILogger? logger = null, CancellationToken cancellationToken = default)
     {
-        ArgumentNullException.ThrowIfNull(journal);
         ArgumentNullException.ThrowIfNull(link);
+        return ResolveAsync(journal, port, (intent, ct) => ReadBackAsync(intent, link, ct), time, logger, cancellationToken);
+    }
+
+    private static async Task<(IReadOnlyList<CutShortWrite> Resolved, string? Problem)> ResolveAsync(
+        WriteJournal journal, string port, Func<AuditEntry, CancellationToken, Task<Settlement>> readBack, TimeProvider? time, ILogger? logger, CancellationToken cancellationToken)
+    {
+        ArgumentNullException.ThrowIfNull(journal);
         ArgumentNullException.ThrowIfNull(port);
         var clock = time ?? TimeProvider.System;
         var log = logger ?? Logger.None;
@@ -43,7 +51,7 @@ public static class UnfinishedWrites
         {
             var settled = IsSimulated(intent.Port)
                 ? new Settlement(Unknown, "it went to a simulated PLC, which ended with its program")
-                : await ReadBackAsync(intent, link, cancellationToken).ConfigureAwait(false);
+                : await readBack(intent, cancellationToken).ConfigureAwait(false);
             if (settled.PortGone)
             {
                 log.Warning("{Action} {Entry:l} was cut short earlier and is not settled yet: {Reason:l}", intent.Action, intent.Describe(), settled.Detail);
@@ -99,7 +107,13 @@ public static class UnfinishedWrites
             return new Settlement(Unknown, $"the read-back got {(reply.Response is ErrorResponse refused ? ProtocolErrorText.Describe(refused.Error) : $"a {reply.Response?.Command} reply")}");
         }
 
-        var now = ValueStore.Extract(address, read.Data.AsSpan());
+        return Judge(intent, address, requested, read.Data.AsSpan());
+    }
+
+    /// <summary>Applied, not applied or unknown, from the bytes the target holds now (a bit's whole byte).</summary>
+    private static Settlement Judge(AuditEntry intent, PlcAddress address, System.Collections.Immutable.ImmutableArray<byte> requested, ReadOnlySpan<byte> raw)
+    {
+        var now = ValueStore.Extract(address, raw);
         var nowText = WriteLog.Format(address, now);
         if (now.AsSpan().SequenceEqual(requested.AsSpan()))
         {

@@ -7,7 +7,8 @@ namespace OperatorPanel.Simulator.Reference;
 /// <summary>
 /// What the handler is generated with: station, port, write mask (bit n = area code n writable; bit 1, I, never),
 /// reply delay (1-255 ms, SMB34), the CPU, where its own V bytes start (by default where the generator puts them:
-/// the end of V), whether STOP (07) is in it and how many V bytes READ CHANGES may use for copies (COPY_BYTES).
+/// the end of V), whether STOP (07) is in it, how many V bytes READ CHANGES may use for copies (COPY_BYTES), and for the
+/// STL model the receive timeout and block numbers.
 /// Invalid settings are programming errors and throw.
 /// </summary>
 public sealed record HandlerConfig
@@ -23,7 +24,10 @@ public sealed record HandlerConfig
         byte replyDelayMs = 5,
         int? bufferStart = null,
         bool allowStop = false,
-        int copyBytes = HandlerMemory.DefaultCopyBytes)
+        int copyBytes = HandlerMemory.DefaultCopyBytes,
+        int charTimeoutMs = 0,
+        int? firstSubroutine = null,
+        int? firstInterrupt = null)
     {
         ArgumentNullException.ThrowIfNull(cpu);
         ArgumentOutOfRangeException.ThrowIfNegative(copyBytes);
@@ -36,7 +40,9 @@ public sealed record HandlerConfig
             throw new ArgumentOutOfRangeException(nameof(writeMask), writeMask, "only bits 2-5 (Q, M, V, SM) may be set; I is never writable");
         }
 
+        ArgumentOutOfRangeException.ThrowIfNegative(charTimeoutMs);
         (Station, Cpu, Port, WriteMask, ReplyDelayMs, AllowStop, CopyBytes) = (station, cpu, port, writeMask, replyDelayMs, allowStop, copyBytes);
+        (CharTimeoutMs, FirstSubroutine, FirstInterrupt) = (charTimeoutMs, firstSubroutine, firstInterrupt);
         var vBytes = cpu.TryGetArea(MemoryArea.V, out var v) ? v.ByteCount : 0;
         BufferStart = bufferStart ?? ((vBytes - HandlerVBytes) & ~1);
         ArgumentOutOfRangeException.ThrowIfNegative(BufferStart, nameof(bufferStart));
@@ -67,6 +73,17 @@ public sealed record HandlerConfig
     public byte WriteMask { get; }
 
     public byte ReplyDelayMs { get; }
+
+    /// <summary>
+    /// The receive inter-character timeout in ms (0 = off), the subroutine and first interrupt routine numbers (null =
+    /// the generator's defaults): what the STL model's handler is generated with; the reference model has no receive
+    /// timer and no blocks, so it ignores them.
+    /// </summary>
+    public int CharTimeoutMs { get; }
+
+    public int? FirstSubroutine { get; }
+
+    public int? FirstInterrupt { get; }
 
     public bool MayWrite(ProtocolArea area) => (WriteMask & (1 << (int)area)) != 0;
 

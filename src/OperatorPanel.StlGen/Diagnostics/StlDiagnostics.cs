@@ -95,4 +95,10 @@ public static class StlDiagnostics
 
     /// <summary>Merge with a symbol table: a symbolic operand the table does not hold (named with its line); nothing is written.</summary>
     public const string SymbolNotInTable = "STL042";
+
+    /// <summary>
+    /// Warning, never a refusal: the upper estimate of the handler's program size is more than half the CPU's program
+    /// memory (<see cref="HandlerSize.Warning"/>); the handler is still generated.
+    /// </summary>
+    public const string ProgramMemoryTight = "STL050";
 }

@@ -57,6 +57,7 @@ public static class TechnicianNotes
         w.Line($"  Accumulators AC0-AC3: {panel} changes them while it serves a request (it keeps its own");
         w.Line("               in V between scans); code after the CALL must not expect values from before it");
         w.Line(string.Empty);
+        WriteSize(w, stats);
         w.Line("Programming device and TERM");
         w.Line("  In STOP the CPU gives the port back to PPI by itself. With the mode switch at TERM the handler");
         w.Line("  gives it back to PPI too, so Micro/WIN can connect while the program keeps running; turning the");
@@ -111,7 +112,46 @@ public static class TechnicianNotes
         w.Line(options.CharTimeoutMs == 0
             ? "  A request cut off mid-way waits for the next '<' (no inter-character timeout)."
             : $"  A request cut off mid-way is dropped after {options.CharTimeoutMs} ms without a character (SMW{(options.Port == 0 ? 92 : 192)}).");
-        w.Line($"  Generated: {stats.Instructions} instructions.");
+    }
+
+    /// <summary>The handler's size beside the CPU's program memory, and the warning when it may leave too little room.</summary>
+    private static void WriteSize(LineWriter w, HandlerStats stats)
+    {
+        var size = stats.Size;
+        w.Line("Program size (compile it in Micro/WIN for the real figure)");
+        Wrapped(w, "Instructions", $"{size.Instructions} in {size.Networks} networks");
+        Wrapped(w, "Estimated", $"{size.EstimateText}; {HandlerSize.BasisText}");
+        Wrapped(w, "CPU", $"program memory {size.ProgramMemoryText}");
+        Wrapped(w, "V memory", $"{stats.VBytes} bytes (above)");
+        Wrapped(w, "Comparison", HandlerSize.ModbusComparisonText);
+        if (size.Warning is { } warning)
+        {
+            Wrapped(w, "WARNING", warning + ".");
+        }
+
+        w.Line(string.Empty);
+    }
+
+    /// <summary>"  Label        text" with the text wrapped at word ends so no line passes 110 characters.</summary>
+    private static void Wrapped(LineWriter w, string label, string text)
+    {
+        const int Width = 110;
+        var line = $"  {label,-12} ";
+        var indent = new string(' ', line.Length);
+        var empty = true;
+        foreach (var word in text.Split(' '))
+        {
+            if (!empty && line.Length + 1 + word.Length > Width)
+            {
+                w.Line(line);
+                (line, empty) = (indent, true);
+            }
+
+            line += (empty ? string.Empty : " ") + word;
+            empty = false;
+        }
+
+        w.Line(line);
     }
 
     /// <summary>PC/PPI cable 6ES7 901-3BF20-0XA0, seed 002 Table A-8 "Baud Rate Switch Selections" (1 = up); null where it has none.</summary>

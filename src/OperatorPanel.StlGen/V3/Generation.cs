@@ -44,7 +44,7 @@ internal static class Generation
             StopEnabled = c.HasStop,
             Protocol = 3,
             Compact = !c.HasList,
-            Networks = program.Blocks.Sum(b => b.Networks.Length),
+            Size = new HandlerSize(program.InstructionCount, program.Blocks.Sum(b => b.Networks.Length), options.Cpu),
         };
     }
 }

@@ -4,6 +4,7 @@ using CommunityToolkit.Mvvm.ComponentModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.StlGen;
+using OperatorPanel.StlGen.Diagnostics;
 using OperatorPanel.StlGen.Merge;
 using OperatorPanel.StlGen.Options;
 
@@ -73,7 +74,16 @@ public sealed partial class GenerateCodeViewModel
 
         _package = package;
         Stats.Add($"V memory: {result.Stats!.VRange} ({result.Stats.VBytes} bytes)");
-        Stats.Add(string.Create(CultureInfo.InvariantCulture, $"Instructions: {result.Stats.Instructions}"));
+        var size = result.Stats.Size;
+        Stats.Add(string.Create(CultureInfo.InvariantCulture, $"Instructions: {size.Instructions} in {size.Networks} networks"));
+        Stats.Add($"Program size, estimated: {size.EstimateText}; {HandlerSize.BasisText}");
+        Stats.Add($"Program memory: {size.ProgramMemoryText}");
+        Stats.Add($"For comparison: {HandlerSize.ModbusComparisonText}");
+        if (size.Warning is { } warning)
+        {
+            Diagnostics.Add(new GenerateDiagnosticRow(StlDiagnostics.ProgramMemoryTight, 0, warning, IsWarning: true));
+        }
+
         Stats.Add($"Interrupt events: {string.Join(", ", result.Stats.InterruptEvents)} (port {result.Stats.Port})");
         foreach (var block in result.Stats.Blocks)
         {

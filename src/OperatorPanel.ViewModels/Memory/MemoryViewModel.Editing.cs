@@ -28,9 +28,9 @@ public sealed partial class MemoryViewModel
             return;
         }
 
-        if (AddressRules.Check(address, cell.Station.Cpu, AddressUse.Write) is { } addressError)
+        if (LinkAreas.Refusal(address, cell.Station.Link.Protocol, cell.Station.Cpu, AddressUse.Write) is { } addressError)
         {
-            Refuse(cell, addressError.Message);
+            Refuse(cell, addressError);
             return;
         }
 

@@ -53,9 +53,14 @@ public sealed partial class MemoryViewModel
         }
 
         var symbol = NewSymbol.Trim();
-        AddError = address.Area is not (MemoryArea.M or MemoryArea.V)
-            ? $"{address}: the Memory window holds M and V cells; inputs and outputs have their own windows"
-            : AddressRules.Check(address, station.Cpu, AddressUse.Write)?.Message
+        // M and V cells are added writable; S, AIW, AQW, T and C are watched where the station's link reads them (PPI),
+        // writable where it writes them (S, AQW), and refused with the link's reason on Freeport.
+        var link = station.Link.Protocol;
+        var monitored = address.Area is MemoryArea.S or MemoryArea.AI or MemoryArea.AQ or MemoryArea.T or MemoryArea.C;
+        var writable = LinkAreas.Refusal(address, link, station.Cpu, AddressUse.Write) is null;
+        AddError = address.Area is not (MemoryArea.M or MemoryArea.V) && !monitored
+            ? $"{address}: the Memory window holds M and V cells (and over PPI S, AIW, AQW, T and C); inputs and outputs have their own windows"
+            : LinkAreas.Refusal(address, link, station.Cpu, monitored ? AddressUse.Read : AddressUse.Write)
             ?? (symbol.Length == 0 ? $"{address}: give the cell a symbol"
             : ProjectEdits.SymbolTaken(station, symbol) ? $"{symbol}: {station.Name} already has a symbol of that name" : null);
         if (AddError is not null)
@@ -63,7 +68,7 @@ public sealed partial class MemoryViewModel
             return;
         }
 
-        var tag = new ProjectTag(symbol, address, DisplayFormats.DefaultFor(address.Width), Writable: true, Description: string.Empty);
+        var tag = new ProjectTag(symbol, address, DisplayFormats.DefaultFor(address), writable, Description: string.Empty);
         var edited = ProjectEdits.WithTags(_session.Project, station.Address, station.Tags.Add(tag));
         if (await ApplyEditAsync(edited, (station.Address, symbol), message => AddError = message))
         {

@@ -46,7 +46,7 @@ public sealed partial class AlarmTextsStepViewModel : WizardStepViewModel
         for (var i = 0; i < Alarms.Count; i++)
         {
             var row = Alarms[i];
-            var error = WizardAddress.Check(row.Flag, context.Cpu, AddressUse.Read, Shape, out var flag);
+            var error = WizardAddress.Check(row.Flag, context, AddressUse.Read, Shape, out var flag);
             error ??= flags.Add(flag) ? null : $"{flag} already has an alarm";
             error ??= string.IsNullOrWhiteSpace(row.Text) ? "the alarm text is empty; the operator would see a blank message" : null;
             row.Error = error;

@@ -95,7 +95,7 @@ public sealed partial class IoSymbolsStepViewModel : WizardStepViewModel
         for (var i = 0; i < rows.Count; i++)
         {
             var row = rows[i];
-            var error = WizardAddress.Check(row.Address, context.Cpu, AddressUse.Read, a => WizardAddress.IsBitOf(a, area) ? null : $"{kind}, not {a}", out var address);
+            var error = WizardAddress.Check(row.Address, context, AddressUse.Read, a => WizardAddress.IsBitOf(a, area) ? null : $"{kind}, not {a}", out var address);
             error ??= addresses.Add(address) ? null : $"{address} is listed twice";
             error ??= string.IsNullOrWhiteSpace(row.Symbol) ? "the symbol is empty" : null;
             error ??= symbols.Add(row.Symbol.Trim()) ? null : $"symbol '{row.Symbol.Trim()}' is used twice";

@@ -9,7 +9,8 @@ namespace OperatorPanel.ViewModels.Wizard;
 
 /// <summary>
 /// Step 3: the memory cells the PLC memory window watches (seed 000 §7: any bit, byte, word or double word of M and V;
-/// I, Q and SM read-only as the project file allows). Each address is checked against the CPU, for writing when writable.
+/// I, Q and SM as the project file allows; on a PPI link (step 5) also S, AIW, AQW, T and C). Each address is checked
+/// against the link and the CPU, for writing when writable.
 /// </summary>
 public sealed partial class MemoryCellsStepViewModel : WizardStepViewModel
 {
@@ -74,7 +75,7 @@ public sealed partial class MemoryCellsStepViewModel : WizardStepViewModel
         {
             var row = Cells[i];
             var use = row.Writable ? AddressUse.Write : AddressUse.Read;
-            var error = WizardAddress.Check(row.Address, context.Cpu, use, Served, out var address);
+            var error = WizardAddress.Check(row.Address, context, use, _ => null, out var address);
             error ??= row.Format.Fits(address.Width) ? null : $"{row.Format} cannot show {address}";
             if (error is null)
             {
@@ -94,6 +95,4 @@ public sealed partial class MemoryCellsStepViewModel : WizardStepViewModel
         MoveDownCommand.NotifyCanExecuteChanged();
         return problems;
     }
-
-    private static string? Served(PlcAddress address) => LinkAreas.FreeportRefusal(address);
 }

@@ -131,7 +131,7 @@ public sealed partial class ProjectWizardViewModel : ObservableObject
     }
 
     private WizardContext ContextFor(WizardStepViewModel step) =>
-        new(CpuStep.Cpu, step == MemoryStep ? IoStep.Symbols() : new HashSet<string>());
+        new(CpuStep.Cpu, step == MemoryStep ? IoStep.Symbols() : new HashSet<string>(), LinkStep.Protocol);
 
     [RelayCommand(CanExecute = nameof(CanGoBack))]
     private void Back() => CurrentIndex--;

@@ -1,13 +1,13 @@
 using OperatorPanel.Core.Addressing;
-using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
-/// <summary>An address typed in a wizard row: the STL syntax, the shape its table demands, then the CPU (AddressRules).</summary>
+/// <summary>An address typed in a wizard row: the STL syntax, the shape its table demands, then the link and the CPU (LinkAreas).</summary>
 internal static class WizardAddress
 {
     /// <summary>Null when <paramref name="text"/> is a fitting address; otherwise the reason, naming the text.</summary>
-    public static string? Check(string text, CpuProfile cpu, AddressUse use, Func<PlcAddress, string?> shape, out PlcAddress address)
+    public static string? Check(string text, WizardContext context, AddressUse use, Func<PlcAddress, string?> shape, out PlcAddress address)
     {
         address = default;
         if (string.IsNullOrWhiteSpace(text))
@@ -20,7 +20,15 @@ internal static class WizardAddress
             return syntax.Message;
         }
 
-        return shape(address) ?? AddressRules.Check(address, cpu, use)?.Message;
+        if (shape(address) is { } misfit)
+        {
+            return misfit;
+        }
+
+        var refusal = LinkAreas.Refusal(address, context.Link, context.Cpu, use);
+        return refusal is not null && context.Link == LinkProtocol.Freeport && LinkAreas.Refusal(address, LinkProtocol.Ppi, context.Cpu, use) is null
+            ? $"{refusal} (choose PPI in step 5, Link)"
+            : refusal;
     }
 
     public static bool IsBitOf(PlcAddress address, params MemoryArea[] areas) =>

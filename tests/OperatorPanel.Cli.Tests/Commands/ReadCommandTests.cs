@@ -18,6 +18,21 @@ public sealed class ReadCommandTests
     }
 
     [Fact]
+    public void Read_DemoOverPpi_AnalogTimerCounterAndSBits_ReadGood()
+    {
+        // The demo's PPI CPU runs an empty program, so every value is 0: the values themselves are proven in
+        // IntegrationTests/Ppi (PpiBusTests, PpiSerialTests); here the CLI accepts and reads them over PPI.
+        var run = CliRunner.Run("read", "AIW0", "T37", "C5", "SB0", "--demo", "--ppi");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            "AIW0     0           16#0000      good",
+            "T37      0           16#0000      good",
+            "C5       0           16#0000      good",
+            "SB0      0           16#00        good");
+    }
+
+    [Fact]
     public void Read_DemoJson_PrintsAnArray()
     {
         var run = CliRunner.Run("read", "SMB6", "Q0.0", "--demo", "--cpu", "226", "--json");
@@ -32,7 +47,8 @@ public sealed class ReadCommandTests
 
     [Theory]
     [InlineData("VB99999", "byte number")]
-    [InlineData("AIW0", "AIW0: the Freeport link reads only I, Q, M, V and SM: copy the analog value to V in the PLC program (MOVW AIW0, VW100)")]
+    [InlineData("AIW0", "AIW0: the Freeport link reads only I, Q, M, V and SM: its handler reaches memory through pointers, and an S7-200 pointer cannot reach analog values; copy the analog value to V in the PLC program (MOVW AIW0, VW100)")]
+    [InlineData("T37", "T37: the Freeport link reads only I, Q, M, V and SM: its handler leaves timers out to stay small; copy the current value to V in the PLC program (MOVW T37, VW100) and watch that, or read the station over PPI")]
     [InlineData("VB8192", "VB8192")]
     public void Read_BadAddress_ExitsOneWithTheMessage(string address, string message)
     {

@@ -102,7 +102,9 @@ public sealed class SimulateCommandTests
         var writeInStop = CliRunner.Run(["write", "MW4=7", .. line]);
 
         write.ExitCode.Should().Be(0, write.Error);
-        write.Out.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+        // Each write is confirmed: straight from the CPU's answer or, when a stalled host missed that answer (seen at a
+        // load average of 30), by the read-back that follows; either way once, with the value the CPU holds.
+        write.Out.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Select(ConfirmedPart).Should().Equal(
             "VB100    0 -> 66  confirmed", "MW4      0 -> 4660  confirmed", "Q0.1     0 -> 1  confirmed");
         read.ExitCode.Should().Be(0, read.Error);
         read.Out.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal(
@@ -116,6 +118,10 @@ public sealed class SimulateCommandTests
         writeInStop.Out.Should().StartWith("MW4      4660 -> 7  confirmed");
         (await simulator).Should().Be(0);
     }
+
+    /// <summary>A write's line up to "confirmed", without the " (reply lost, read back): ..." a lost answer adds.</summary>
+    private static string ConfirmedPart(string line) =>
+        line.Split(" (reply lost, read back)", 2)[0];
 
     /// <summary>The S7 STOP job (docs/ppi.md section 5) from a master of the test's own: the panel offers no STOP over PPI.</summary>
     private static async Task StopOverPpiAsync(string device)

@@ -27,8 +27,8 @@ public sealed class TagArgumentTests
         run.ExitCode.Should().Be(1);
         run.Out.Should().BeEmpty();
         run.Error.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
-            "opanel: 'BottleCoutn': no tag, input or output of Filler has this symbol, and it is no address ('BottleCoutn': unknown memory area; an address starts with I, Q, M, V, SM, S, AIW or AQW)",
-            "opanel: AIW0: the Freeport link reads only I, Q, M, V and SM: copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that; the CPU's own PPI protocol has analog values too, but the panel's PPI link does not read them yet",
+            "opanel: 'BottleCoutn': no tag, input or output of Filler has this symbol, and it is no address ('BottleCoutn': unknown memory area; an address starts with I, Q, M, V, SM, S, AIW, AQW, T or C)",
+            "opanel: AIW0: the Freeport link reads only I, Q, M, V and SM: its handler reaches memory through pointers, and an S7-200 pointer cannot reach analog values; copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads analog values",
             "opanel: 'VB99999': byte number 99999 is larger than 65535",
             "opanel: 3 arguments are wrong; nothing read");
     }
@@ -80,15 +80,17 @@ public sealed class TagArgumentTests
     }
 
     [Fact]
-    public void LinkMessages_ReadAndAddress_SayTheSameAboutWhatTheFreeportLinkReads()
+    public void LinkMessages_ReadAndAddress_SayWhatEachLinkReads()
     {
         var read = CliRunner.Run("read", "AIW0", "--demo");
         var timer = CliRunner.Run("address", "T37", "--cpu", "224");
         var address = CliRunner.Run("address", "AIW0", "--cpu", "224");
 
         read.Error.Should().Contain("the Freeport link reads only I, Q, M, V and SM");
-        timer.Error.Should().Contain("the Freeport link reads only I, Q, M, V and SM").And.Contain("MOVW T37, VW100");
-        address.Out.Should().Contain("link      not read by the Freeport link (it reads I, Q, M, V and SM)");
+        timer.Out.Should().Contain("link      not read by the Freeport link (it reads I, Q, M, V and SM)")
+            .And.Contain("ppi       read by the PPI link (it reads I, Q, M, V, SM, S, AIW, AQW, T and C); writable over PPI no: T37: the panel reads timer current values but never writes them");
+        address.Out.Should().Contain("link      not read by the Freeport link (it reads I, Q, M, V and SM)")
+            .And.Contain("writable over PPI no: AIW0: analog inputs are read-only");
     }
 
     private static string SamplePath()

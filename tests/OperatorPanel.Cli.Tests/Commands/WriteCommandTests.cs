@@ -73,7 +73,7 @@ public sealed class WriteCommandTests
         var run = CliRunner.Run("write", "I0.0=1", "--device", "/dev/opanel-no-such-port");
 
         run.ExitCode.Should().Be(1, "bad input, found before anything is read or sent (a port failure would be 2)");
-        run.Error.Should().Be("opanel: I0.0: inputs are the field's; the Freeport link writes only Q, M, V and SM; nothing written" + Environment.NewLine);
+        run.Error.Should().Be("opanel: I0.0: inputs are read from the field; the panel never writes them; nothing written" + Environment.NewLine);
     }
 
     [Fact]
@@ -82,7 +82,7 @@ public sealed class WriteCommandTests
         var run = CliRunner.Run("write", "I0.0=1", "--demo", "--json");
 
         run.ExitCode.Should().Be(1);
-        run.Out.Should().Contain("\"error\": \"I0.0: inputs are the field's; the Freeport link writes only Q, M, V and SM; nothing written\"");
+        run.Out.Should().Contain("\"error\": \"I0.0: inputs are read from the field; the panel never writes them; nothing written\"");
     }
 
     [Fact]

@@ -10,7 +10,7 @@ public sealed class AddressArgumentFuzzTests
     [
         "VW99999", "I9.9", "V.1", "VB-1", "16#GG", "", " ", "V", "VB", "VW", "I0.", "I.0", "Q0.8", "M32.0", "SMB65536",
         "VB4294967296", "VB99999999999999999999", "VD-0", "VB1e3", "VB0x10", "V B0", "\0", "VB\0", "\u00C4B0", "AIW1",
-        "AQW-2", "T0", "C0", "AC0", "HC0", "LB0", "SB32", "VW200=", "=1", "VB0,VB1", "'VB0'",
+        "AQW-2", "T0.0", "CW0", "T256", "AC0", "HC0", "LB0", "SB32", "VW200=", "=1", "VB0,VB1", "'VB0'",
         new string('V', 10_000), "VB" + new string('9', 10_000),
     ];
 

@@ -30,6 +30,9 @@ public sealed class PlcAddressTests
     [InlineData("SMD36", MemoryArea.SM, 36, null, AccessWidth.DoubleWord, "SMD36")]
     [InlineData("  VB0100 ", MemoryArea.V, 100, null, AccessWidth.Byte, "VB100")]
     [InlineData("VD65532", MemoryArea.V, 65532, null, AccessWidth.DoubleWord, "VD65532")]
+    [InlineData("t37", MemoryArea.T, 37, null, AccessWidth.Word, "T37")]
+    [InlineData("C5", MemoryArea.C, 5, null, AccessWidth.Word, "C5")]
+    [InlineData("T0", MemoryArea.T, 0, null, AccessWidth.Word, "T0")]
     public void TryParse_ValidText_ReadsAreaOffsetBitAndWidth(string text, MemoryArea area, int offset, int? bit, AccessWidth width, string canonical)
     {
         PlcAddress.TryParse(text, out var address, out var error).Should().BeTrue(error?.Message);
@@ -45,8 +48,11 @@ public sealed class PlcAddressTests
     [InlineData(null, AddressErrorKind.Empty, "address is empty")]
     [InlineData("   ", AddressErrorKind.Empty, "address is empty")]
     [InlineData("X0.0", AddressErrorKind.UnknownArea, "unknown memory area")]
-    [InlineData("T37", AddressErrorKind.UnknownArea, "timers (T)")]
-    [InlineData("C5", AddressErrorKind.UnknownArea, "counters (C)")]
+    [InlineData("T37.0", AddressErrorKind.UnexpectedBitNumber, "T37 is the timer's current value and takes no bit number; the panel does not read timer bits")]
+    [InlineData("TW37", AddressErrorKind.MissingByteNumber, "a timer is written T and its number (T37)")]
+    [InlineData("C", AddressErrorKind.MissingByteNumber, "a counter is written C and its number (C5)")]
+    [InlineData("C5X", AddressErrorKind.TrailingText, "unexpected 'X' after the address")]
+    [InlineData("T99999", AddressErrorKind.ByteNumberTooLarge, "timer number 99999 is larger than 65535")]
     [InlineData("AC0", AddressErrorKind.UnknownArea, "accumulators")]
     [InlineData("HC0", AddressErrorKind.UnknownArea, "high-speed counters")]
     [InlineData("LB0", AddressErrorKind.UnknownArea, "local memory")]

@@ -23,6 +23,21 @@ public sealed class CpuProfilesTests
     }
 
     [Theory]
+    [InlineData(CpuModel.Cpu221, CpuRevision.Current, 4096, 4096)]
+    [InlineData(CpuModel.Cpu222, CpuRevision.Current, 4096, 4096)]
+    [InlineData(CpuModel.Cpu224, CpuRevision.Current, 8192, 12288)]
+    [InlineData(CpuModel.Cpu224XP, CpuRevision.Current, 12288, 16384)]
+    [InlineData(CpuModel.Cpu226, CpuRevision.Current, 16384, 24576)]
+    [InlineData(CpuModel.Cpu221, CpuRevision.Early, 4096, 4096)]
+    [InlineData(CpuModel.Cpu224, CpuRevision.Early, 8192, 8192)]
+    public void ProgramBytes_PerCpu_AreTheManualsFiguresWithAndWithoutRunModeEdit(CpuModel model, CpuRevision revision, int withEdit, int withoutEdit)
+    {
+        var cpu = CpuProfiles.For(model, revision);
+
+        (cpu.ProgramBytes, cpu.ProgramBytesWithoutRunModeEdit).Should().Be((withEdit, withoutEdit));
+    }
+
+    [Theory]
     [InlineData(CpuRevision.Early, 300, 0b111)]
     [InlineData(CpuRevision.Early, 600, 0b110)]
     [InlineData(CpuRevision.Early, 9600, 0b010)]

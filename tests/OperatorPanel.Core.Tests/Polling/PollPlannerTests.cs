@@ -147,9 +147,10 @@ public sealed class PollPlannerTests
     [Fact]
     public void Build_AreaNotServedByTheLink_IsRejectedWithReason()
     {
-        var plan = PollPlanner.Build(Items(One, "AIW0", "VB0"));
+        var plan = PollPlanner.Build(Items(One, "AIW0", "VB0", "T37"));
 
-        plan.Rejected.Should().Equal(new PlanRejection(Item(One, "AIW0"), "AIW0: the Freeport link reads only I, Q, M, V and SM: copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that; the CPU's own PPI protocol has analog values too, but the panel's PPI link does not read them yet"));
+        plan.Rejected.Should().Equal(new PlanRejection(Item(One, "AIW0"), "AIW0: the Freeport link reads only I, Q, M, V and SM: its handler reaches memory through pointers, and an S7-200 pointer cannot reach analog values; copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads analog values"),
+            new PlanRejection(Item(One, "T37"), "T37: the Freeport link reads only I, Q, M, V and SM: its handler leaves timers out to stay small; copy the current value to V in the PLC program (MOVW T37, VW100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads timers"));
         Frames(plan).Should().Equal("1: V0+1");
     }
 

@@ -2,6 +2,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.IntegrationTests.Transport;
@@ -63,6 +64,28 @@ internal sealed class SerialLineRig : IAsyncDisposable
         var options = LinkOptions.For(panelSerial) with { ScanAllowance = TimeSpan.FromMilliseconds(400), HandlerScanAllowance = TimeSpan.Zero };
         var host = new SimulatedPlcHost(tap, line, TimeProvider.System);
         var bus = Bus.Start(new PlcLink(new SerialPortTransport(panelSerial), options), PollPlanner.Build(items, cpus), new BusSettings { Mode = RefreshMode.OnDemand });
+        var rig = new SerialLineRig(pty, tap, bus, host);
+        rig._hostRun = Task.Run(() => rig.Host.RunAsync(rig._stop.Token));
+        return rig;
+    }
+
+    /// <summary>
+    /// Reference v3 stations on <paramref name="line"/>, polled by the panel's v3 link (Bus.StartV3) over the pty pair;
+    /// lists on, on demand.
+    /// </summary>
+    public static async Task<SerialLineRig> StartV3Async(V3ReferenceLine line, IEnumerable<string> watched, int baud = 19200)
+    {
+        var pty = await SocatPtyPair.StartAsync();
+        var plcSerial = new SerialSettings { PortName = pty.PathB, BaudRate = baud };
+        var panelSerial = new SerialSettings { PortName = pty.PathA, BaudRate = baud };
+        var tap = new PlcPortTap(new SerialPortTransport(plcSerial));
+        await tap.OpenAsync(default);
+        var stations = line.Stations.Select(s => (s.Setup.Station, s.Setup.Cpu)).ToList();
+        var items = stations.SelectMany(s => watched.Select(a => new WatchedItem(s.Station, PlcAddress.Parse(a))));
+        var options = LinkOptions.For(panelSerial) with { ScanAllowance = TimeSpan.FromMilliseconds(400), HandlerScanAllowance = TimeSpan.Zero };
+        var host = new SimulatedPlcHost(tap, line, TimeProvider.System);
+        var plan = PollPlanner.Build(items, stations.ToDictionary(s => s.Station, s => s.Cpu));
+        var bus = Bus.StartV3(new V3Link(new SerialPortTransport(panelSerial), options), plan, new BusSettings { Mode = RefreshMode.OnDemand });
         var rig = new SerialLineRig(pty, tap, bus, host);
         rig._hostRun = Task.Run(() => rig.Host.RunAsync(rig._stop.Token));
         return rig;

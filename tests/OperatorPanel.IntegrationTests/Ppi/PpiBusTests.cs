@@ -1,5 +1,6 @@
 using System.Collections.Immutable;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
@@ -39,6 +40,44 @@ public sealed class PpiBusTests
         Value(bus, "MW4").Should().Be("1234 Good");
         bus.StatusOf(Cpu2).State.Should().Be(StationState.Online);
         bus.PpiCounters!.Jobs.Should().Be(1, "three addresses fit one read job");
+    }
+
+    [Fact]
+    public async Task Refresh_AnalogSBitsTimersAndCounters_ReadFromTheMemoryTheProgramRunsOn()
+    {
+        var (line, station) = Create(ValuesProgram.Awl);
+        (station.Plc.AreaBytes(MemoryArea.AI)[0], station.Plc.AreaBytes(MemoryArea.AI)[1]) = (0x12, 0x34);
+        station.Plc.AreaBytes(MemoryArea.S)[0] = 0x81;
+        await using var bus = Start(line, "AIW0", "AQW0", "SB0", "S0.7", "T37", "C5", "VB100");
+
+        await bus.RefreshAsync();
+
+        Value(bus, "AIW0").Should().Be("1234 Good");
+        Value(bus, "AQW0").Should().Be("04D2 Good", "MOVW 1234, AQW0");
+        Value(bus, "SB0").Should().Be("81 Good");
+        Value(bus, "S0.7").Should().Be("01 Good");
+        Value(bus, "T37").Should().Be("00FA Good", "MOVW 250, T37");
+        Value(bus, "C5").Should().Be("FFF9 Good", "MOVW -7, C5: the current value is a signed word");
+        bus.PpiCounters!.Jobs.Should().Be(1, "one job carries the byte, word, timer and counter items");
+    }
+
+    [Fact]
+    public async Task Write_AnalogOutputAndSBit_ConfirmedByReadBack_AnalogInputAndTimerRefusedBeforeSending()
+    {
+        var (line, station) = Create();
+        await using var bus = Start(line, "AQW2", "S1.3", "AIW0", "T37");
+
+        var aq = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("AQW2"), [0x01, 0x02]));
+        var s = await bus.WriteAsync(WriteRequest.Bit(Cpu2, PlcAddress.Parse("S1.3"), true));
+        var ai = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("AIW0"), [0x00, 0x01]));
+        var timer = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("T37"), [0x00, 0x01]));
+
+        aq.Should().BeOfType<WriteOutcome.Confirmed>();
+        s.Should().BeOfType<WriteOutcome.Confirmed>();
+        (station.Plc.AreaBytes(MemoryArea.AQ)[2], station.Plc.AreaBytes(MemoryArea.AQ)[3], station.Plc.AreaBytes(MemoryArea.S)[1]).Should().Be(((byte)1, (byte)2, (byte)0x08));
+        ai.Should().BeOfType<WriteOutcome.Failed>().Which.Reason.Should().Be("AIW0: analog inputs are read-only");
+        timer.Should().BeOfType<WriteOutcome.Failed>().Which.Reason.Should().StartWith("T37: the panel reads timer current values but never writes them");
+        Value(bus, "AQW2").Should().Be("0102 Good", "the read-back goes to the value store");
     }
 
     [Fact]
@@ -157,10 +196,46 @@ public sealed class PpiBusTests
         bus.PpiCounters!.Jobs.Should().Be(0);
     }
 
-    private static (StlLine Line, StlStation Station) Create()
+    [Theory]
+    [InlineData(0x04, 0xD2, UnfinishedWrites.Applied, "the PLC holds the requested 16#04D2")]
+    [InlineData(0x00, 0x07, UnfinishedWrites.NotApplied, "the PLC still holds the old 16#0007")]
+    public async Task SettleCutShort_WriteLeftOpenOnAPpiBus_IsReadBackWithAnS7ReadJob(byte high, byte low, string outcome, string detail)
+    {
+        var (line, station) = Create();
+        (station.Plc.AreaBytes(MemoryArea.AQ)[2], station.Plc.AreaBytes(MemoryArea.AQ)[3]) = (high, low);
+        var folder = Path.Combine(Path.GetTempPath(), "opanel-ppi-settle-" + Guid.NewGuid().ToString("N"));
+        try
+        {
+            var journal = WriteJournal.In(folder);
+            var intent = new AuditEntry(Guid.NewGuid(), AuditStep.Intent, AuditAction.Write, DateTimeOffset.UnixEpoch, "root", "simulated line", Cpu2, "AQW2", null, "16#0007", "16#04D2");
+            Directory.CreateDirectory(folder);
+            File.WriteAllLines(journal.Path, [new JournalLine(intent, EndedProcessId(), DateTimeOffset.UnixEpoch).Format()]);
+            await using var bus = Start(line, "VB100");
+
+            var (resolved, problem) = await bus.SettleCutShortAsync(journal);
+
+            problem.Should().BeNull();
+            resolved.Should().ContainSingle().Which.Resolution.Should().Match<AuditEntry>(e => e.Outcome == outcome && e.Detail == detail);
+            bus.PpiCounters!.Jobs.Should().Be(1, "one S7 read job, no Freeport frame and no second write");
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
+    }
+
+    /// <summary>The id of a process that has ended: the journal settles only what a program no longer running left open.</summary>
+    private static int EndedProcessId()
+    {
+        using var process = System.Diagnostics.Process.Start(new System.Diagnostics.ProcessStartInfo("true") { UseShellExecute = false })!;
+        process.WaitForExit();
+        return process.Id;
+    }
+
+    private static (StlLine Line, StlStation Station) Create(string awl = EmptyProgram.Awl)
     {
         var line = new StlLine(PpiLine);
-        StlStation.TryCreate(EmptyProgram.Awl, CpuProfiles.For(CpuModel.Cpu224), 0, PpiLine, out var station, out var error).Should().BeTrue(error);
+        StlStation.TryCreate(awl, CpuProfiles.For(CpuModel.Cpu224), 0, PpiLine, out var station, out var error).Should().BeTrue(error);
         station!.AttachPpi(new PpiSettings(2, 9600));
         line.Attach(station, runProcess: false);
         line.RunUntil(TimeSpan.FromMilliseconds(50));

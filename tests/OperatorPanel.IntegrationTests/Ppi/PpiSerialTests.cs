@@ -50,6 +50,26 @@ public sealed class PpiSerialTests
     }
 
     [Fact]
+    public async Task Read_AnalogSTimerAndCounter_ComeFromTheMemoryTheProgramRunsOn()
+    {
+        var line = new StlLine(PpiLine);
+        var station = Station(line, ValuesProgram.Awl, 2);
+        (station.Plc.AreaBytes(MemoryArea.AI)[2], station.Plc.AreaBytes(MemoryArea.AI)[3]) = (0x30, 0x39);
+        station.Plc.AreaBytes(MemoryArea.S)[1] = 0x05;
+        await using var rig = await Rig.StartAsync(line);
+        var plan = PpiReadPlanner.Plan([PlcAddress.Parse("AIW2"), PlcAddress.Parse("AQW0"), PlcAddress.Parse("SB1"), PlcAddress.Parse("T37"), PlcAddress.Parse("C5")]);
+
+        var results = await rig.Master.ReadAsync(new Station(2), plan.Requests[0].Items, default).WaitAsync(Rig.Limit);
+
+        plan.Requests.Should().ContainSingle();
+        Value(plan, results, "AIW2").Should().Be("3039", "12345 set in the simulated CPU's analog input");
+        Value(plan, results, "AQW0").Should().Be("04D2", "the program's MOVW 1234, AQW0");
+        Value(plan, results, "SB1").Should().Be("05");
+        Value(plan, results, "T37").Should().Be("00FA", "the program's MOVW 250, T37: the low word of the timer's 4-byte value");
+        Value(plan, results, "C5").Should().Be("FFF9", "the program's MOVW -7, C5");
+    }
+
+    [Fact]
     public async Task Read_HandlerStationInStopAnswersOverPpi_WhileInRunItIsSilent()
     {
         var line = new StlLine(PpiLine);

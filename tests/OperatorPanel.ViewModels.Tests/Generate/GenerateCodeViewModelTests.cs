@@ -90,9 +90,13 @@ public sealed class GenerateCodeViewModelTests : IDisposable
         generate.SaveCommand.CanExecute(null).Should().BeTrue();
         generate.SaveCommand.Execute(null);
 
-        generate.Diagnostics.Should().BeEmpty();
+        // The handler's upper size estimate is more than half a CPU 224's program memory: a warning, nothing refused.
+        generate.Diagnostics.Should().ContainSingle().Which.Should().Match<GenerateDiagnosticRow>(d => d.Id == "STL050" && d.IsWarning);
+        generate.Diagnostics[0].Message.Should().Be(expected.Stats!.Size.Warning);
         generate.Preview.Should().Be(expected.AwlText);
-        generate.Stats.Should().Contain($"V memory: {expected.Stats!.VRange} (428 bytes)");
+        generate.Stats.Should().Contain($"V memory: {expected.Stats!.VRange} (428 bytes)")
+            .And.Contain($"Program memory: 8192 bytes on the CPU 224 (with run mode edit; 12288 without)")
+            .And.Contain($"Instructions: {expected.Stats.Instructions} in {expected.Stats.Size.Networks} networks");
         File.ReadAllText(_folder.File("Filler-handler.awl"), Encoding.ASCII).Should().Be(expected.AwlText);
         File.ReadAllText(_folder.File("Filler-symbols.txt"), Encoding.ASCII).Should().Be(expected.SymbolTableText);
         File.ReadAllText(_folder.File("Filler-README.txt"), Encoding.ASCII).Should().Be(expected.TechnicianText);

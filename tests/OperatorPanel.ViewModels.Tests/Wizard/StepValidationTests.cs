@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.ViewModels.Wizard;
 
 namespace OperatorPanel.ViewModels.Tests.Wizard;
@@ -11,7 +12,7 @@ public sealed class StepValidationTests
     [InlineData("VW8191", false, "Cell 1 (VW8191): VW8191 ends at VB8192, past the last V byte VB8191 of CPU 224.")]
     [InlineData("SMB5", true, "Cell 1 (SMB5): SMB5: SMB0-SMB29 are read-only system status bytes.")]
     [InlineData("IB0", true, "Cell 1 (IB0): IB0: inputs are read from the field; the panel never writes them.")]
-    [InlineData("SB0", false, "Cell 1 (SB0): SB0: the Freeport link reads only I, Q, M, V and SM: copy the S bits to V in the PLC program (MOVB SB0, VB100) and watch that; the CPU's own PPI protocol has S bits too, but the panel's PPI link does not read them yet.")]
+    [InlineData("SB0", false, "Cell 1 (SB0): SB0: the Freeport link reads only I, Q, M, V and SM: its handler leaves S bits out to stay small; copy the S bits to V in the PLC program (MOVB SB0, VB100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads S bits (choose PPI in step 5, Link).")]
     [InlineData("VW1O0", false, null)]
     public void MemoryCell_AddressRefused_NamesTheCellAndTheRule(string address, bool writable, string? message)
     {
@@ -26,6 +27,29 @@ public sealed class StepValidationTests
             wizard.Message.Should().StartWith("Cell 1 (VW1O0): ");
         }
         else
+        {
+            wizard.Message.Should().Be(message);
+        }
+    }
+
+    [Theory]
+    [InlineData("AIW0", false, null)]
+    [InlineData("AQW2", true, null)]
+    [InlineData("T37", false, null)]
+    [InlineData("C5", false, null)]
+    [InlineData("SB0", true, null)]
+    [InlineData("AIW0", true, "Cell 1 (AIW0): AIW0: analog inputs are read-only.")]
+    [InlineData("T37", true, "Cell 1 (T37): T37: the panel reads timer current values but never writes them: no source says how a CPU takes that write over PPI, and the Freeport handler does not reach them.")]
+    public void MemoryCell_PpiLink_AnalogTimerCounterAndSCellsAcceptedWhereThePpiLinkReachesThem(string address, bool writable, string? message)
+    {
+        var wizard = ProjectWizardViewModelTests.NewWizard();
+        wizard.LinkStep.Protocol = LinkProtocol.Ppi;
+        wizard.CurrentIndex = 2;
+
+        wizard.MemoryStep.Cells.Add(new MemoryCellRowViewModel("Cell", address, DisplayFormat.Signed, writable));
+
+        wizard.NextCommand.CanExecute(null).Should().Be(message is null, wizard.Message);
+        if (message is not null)
         {
             wizard.Message.Should().Be(message);
         }

@@ -57,7 +57,7 @@ internal sealed class FrameJudge(StationTracker stations)
     public static string Describe(PollFrame frame)
     {
         ArgumentNullException.ThrowIfNull(frame);
-        return string.Join(", ", frame.Items.Select(i => $"{i.Area}{i.Offset}+{i.Length}"));
+        return frame.PpiItem is { } item ? item.ToString() : string.Join(", ", frame.Items.Select(i => $"{i.Area}{i.Offset}+{i.Length}"));
     }
 
     public static string Describe(PlcResponse? response) => response switch

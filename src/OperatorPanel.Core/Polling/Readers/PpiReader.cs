@@ -1,7 +1,6 @@
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Ppi.S7;
-using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Core.Polling.Readers;
@@ -23,9 +22,7 @@ internal sealed class PpiReader(PollingContext context, PpiLink link) : IStation
         var items = new List<S7Item>();
         foreach (var index in pending)
         {
-            var block = context.Plan.Frames[index].Items[0];
-            PpiAddressing.TryRange(block.Area.ToMemoryArea(), block.Offset, block.Length, out var item, out _);
-            items.Add(item);
+            items.Add(context.Plan.Frames[index].PpiItem!.Value);
             if (items.Count > PpiLimits.Default.MaxReadItems || S7AnswerCodec.ReadAnswerLength(items) > PpiLimits.Default.PduSize)
             {
                 items.RemoveAt(items.Count - 1);

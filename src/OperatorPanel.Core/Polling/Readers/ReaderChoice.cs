@@ -12,7 +12,7 @@ namespace OperatorPanel.Core.Polling.Readers;
 /// longer than READ LIST, so its lists are read with READ LIST; with FEATURES bit 2 the lists in step go first in one
 /// <see cref="ChangesOfListsReader"/> exchange. <see cref="PlainReader"/> is last for every station. A PPI bus
 /// (<see cref="PollingContext.Ppi"/>) reads every station with <see cref="PpiReader"/> and writes with
-/// <see cref="PpiWriter"/>. The place where a new way of reading is chosen (docs/architecture.md, "Readers").
+/// <see cref="PpiWriter"/>; a v3 bus (<see cref="PollingContext.V3"/>) reads as <see cref="V3ReaderChoice"/> says. The place where a new way of reading is chosen (docs/architecture.md, "Readers").
 /// </summary>
 internal sealed class ReaderChoice
 {
@@ -20,11 +20,13 @@ internal sealed class ReaderChoice
     private readonly Lock _gate = new();
     private readonly Dictionary<Station, StoredLists> _lists = [];
     private readonly Dictionary<Station, ImmutableArray<IStationReader>> _readers = [];
+    private readonly V3ReaderChoice? _v3;
 
     public ReaderChoice(PollingContext context)
     {
         ArgumentNullException.ThrowIfNull(context);
         _context = context;
+        _v3 = context.V3 is { } v3 ? new V3ReaderChoice(context, v3) : null;
         Writer = context.Ppi is { } ppi ? new PpiWriter(context, ppi) : new FreeportWriter(context);
         foreach (var station in context.Plan.Stations)
         {
@@ -63,6 +65,12 @@ internal sealed class ReaderChoice
         {
             // A PPI bus: no handler, so no IDENTIFY to choose from; every station is read with S7 jobs.
             return [new PpiReader(_context, ppi)];
+        }
+
+        if (_v3 is { } v3)
+        {
+            // A v3 bus: the writer above works through the link's IPlcLink face; reading has its own readers.
+            return v3.Choose(lists.Station);
         }
 
         var plain = new PlainReader(_context);

@@ -38,7 +38,7 @@ public sealed record StlSetting(PlcAddress Address, uint Value, TimeSpan At)
             return false;
         }
 
-        if (address.Area == MemoryArea.AQ || (address.Area == MemoryArea.SM && address.ByteOffset < cpu.ReadOnlySmBytes))
+        if (address.Area is MemoryArea.AQ or MemoryArea.T or MemoryArea.C || (address.Area == MemoryArea.SM && address.ByteOffset < cpu.ReadOnlySmBytes))
         {
             error = $"'{text}': {address} is written by the CPU or the program, not set from outside";
             return false;

@@ -1,0 +1,137 @@
+using System.Diagnostics;
+using OperatorPanel.Cli;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
+using OperatorPanel.TestKit;
+
+namespace OperatorPanel.Cli.Tests.Commands;
+
+/// <summary>
+/// <c>opanel simulate</c> with the handler options <c>opanel generate</c> takes (--plc-port, --copy-bytes, --writable,
+/// --char-timeout, --buffer, --sbr, --int): the simulated station runs the handler generated with them, seen over a
+/// socat pty pair in real time from the panel's side.
+/// </summary>
+[Collection(RealTimeSerialCollection.Name)]
+public sealed class SimulateHandlerOptionsTests
+{
+    private static readonly TimeSpan StartLimit = TimeSpan.FromSeconds(3);
+
+    [Fact]
+    public async Task Simulate_PlcPort1OnCpu226_AnswersFromThePort1HandlerWithItsCharTimeout()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        var simulator = await StartAsync(pty, "--cpu", "226", "--plc-port", "1", "--char-timeout", "50", "--buffer", "VB1000", "--sbr", "10", "--int", "20");
+
+        var read = CliRunner.Run(["read", "SMB30", "SMB130", "SMW192", "VB1000", "--station", "2", "--device", pty.PathB, "--scan-ms", "1000"]);
+
+        read.ExitCode.Should().Be(0, read.Error);
+        read.Out.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Take(3).Should().Equal(
+            "SMB30    0           16#00        good", // port 0 untouched: the handler set up port 1
+            "SMB130   9           16#09        good", // Freeport, 9600 8N1 on port 1
+            "SMW192   50          16#0032      good"); // the inter-character timeout of port 1
+        (await simulator.Exit).Should().Be(0);
+        simulator.Text.Should().StartWith($"simulating CPU 226 at station 2 on {pty.PathA} 9600 8N1, PLC port 1, reply delay 5 ms");
+    }
+
+    [Fact]
+    public async Task Simulate_WritableQ_RefusesAnMWriteWithTheHandlersError03AndConfirmsAQWrite()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        var simulator = await StartAsync(pty, "--cpu", "224", "--writable", "Q");
+        string[] line = ["--station", "2", "--device", pty.PathB, "--scan-ms", "1000"];
+
+        var refused = CliRunner.Run(["write", "MB5=7", .. line]);
+        var confirmed = CliRunner.Run(["write", "QB0=7", .. line]);
+
+        refused.ExitCode.Should().Be(1);
+        refused.Out.Should().StartWith("MB5      0 -> 7  failed: station 2 refused the write: error 03");
+        confirmed.ExitCode.Should().Be(0, confirmed.Error);
+        confirmed.Out.Should().StartWith("QB0      0 -> 7  confirmed");
+        (await simulator.Exit).Should().Be(0);
+    }
+
+    [Theory]
+    [InlineData("0", true)]
+    [InlineData("120", false)]
+    public async Task Simulate_CopyBytes_ZeroAnswersEveryReadChangesWithTheWholeList(string copyBytes, bool wholeListAgain)
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        var simulator = await StartAsync(pty, "--cpu", "224", "--copy-bytes", copyBytes);
+        var station = new Station(2);
+        var serial = new SerialSettings { PortName = pty.PathB };
+        await using var link = new PlcLink(new SerialPortTransport(serial), LinkOptions.For(serial) with { ScanAllowance = TimeSpan.FromSeconds(1) });
+
+        var defined = await link.ExchangeAsync(new DefineListRequest(station, 1, [new ReadItem(ProtocolArea.M, 0, 8)]), default);
+        var first = await link.ExchangeAsync(new ReadChangesRequest(station, 1, full: true), default);
+        var second = await link.ExchangeAsync(new ReadChangesRequest(station, 1, full: false), default);
+
+        defined.Response.Should().NotBeNull(defined.Failure?.Message);
+        first.Response.Should().BeOfType<ReadChangesResponse>().Which.Full.Should().BeTrue();
+        var again = second.Response.Should().BeOfType<ReadChangesResponse>().Subject;
+        again.Full.Should().Be(wholeListAgain, "without copy bytes the handler cannot compare, so it answers the whole list every time");
+        again.Data.Length.Should().Be(wholeListAgain ? 8 : 0);
+        again.Changes.Should().BeEmpty("the --no-process PLC's M bytes do not change");
+        (await simulator.Exit).Should().Be(0);
+    }
+
+    [Theory]
+    [InlineData("--plc-port", "1", "opanel: station 2: the handler cannot be generated: STL001: port 1 is not on the CPU 224; allowed: port 0")]
+    [InlineData("--copy-bytes", "256", "opanel: station 2: the handler cannot be generated: STL030")]
+    [InlineData("--writable", "I,Q", "opanel: station 2: the handler cannot be generated: STL011")]
+    [InlineData("--writable", "X", "opanel: --writable: 'X' is not an area; use a comma-separated list of Q, M, V, SM")]
+    [InlineData("--buffer", "MB10", "opanel: --buffer MB10: give the handler's first V byte, e.g. VB1000")]
+    [InlineData("--sbr", "64", "opanel: station 2: the handler cannot be generated: STL009")]
+    public void Simulate_ImpossibleHandlerOption_RefusedAsGenerateRefusesIt(string option, string value, string message)
+    {
+        var run = CliRunner.Run("simulate", "--cpu", "224", "--station", "2", "--device", "/dev/null", option, value);
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().StartWith(message);
+    }
+
+    [Fact]
+    public void SimulatePpi_HandlerOption_SaysPpiRunsNoHandler()
+    {
+        var run = CliRunner.Run("simulate", "--ppi", "--cpu", "224", "--station", "2", "--device", "/dev/null", "--copy-bytes", "0");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be("opanel: --ppi runs no handler: leave out --copy-bytes" + Environment.NewLine);
+    }
+
+    private static async Task<Simulation> StartAsync(SocatPtyPair pty, params string[] options)
+    {
+        var output = new StringWriter();
+        var synchronized = TextWriter.Synchronized(output);
+        string[] args = ["simulate", "--station", "2", "--device", pty.PathA, "--duration", "4", "--no-process", "--log-dir", LogDir, .. options];
+        var simulation = new Simulation(Task.Run(() => OpanelApp.Run(args, synchronized, TextWriter.Null)), synchronized, output);
+        var watch = Stopwatch.StartNew();
+        while (!simulation.Text.Contains("simulating", StringComparison.Ordinal))
+        {
+            // Process start-up only: the one place real waiting is allowed, bounded by StartLimit.
+            watch.Elapsed.Should().BeLessThan(StartLimit, $"the simulator should have started: {simulation.Text}");
+            simulation.Exit.IsCompleted.Should().BeFalse($"the simulator stopped: {simulation.Text}");
+            await Task.Delay(20);
+        }
+
+        return simulation;
+    }
+
+    private static string LogDir => Path.Combine(Path.GetTempPath(), "opanel-tests-logs");
+
+    private sealed record Simulation(Task<int> Exit, TextWriter Synchronized, StringWriter Inner)
+    {
+        public string Text
+        {
+            get
+            {
+                // TextWriter.Synchronized locks the wrapper itself; read under the same lock.
+                lock (Synchronized)
+                {
+                    return Inner.ToString();
+                }
+            }
+        }
+    }
+}
