@@ -52,9 +52,9 @@ public sealed class PollingEngineSerialTests
         var dword = await rig.Bus.WriteAsync(WriteRequest.Bytes(station, PlcAddress.Parse("VD300"), [0x00, 0x01, 0x86, 0xA0])).WaitAsync(SerialLineRig.Limit);
         var output = await rig.Bus.WriteAsync(WriteRequest.Bytes(station, PlcAddress.Parse("QB1"), [0x5A])).WaitAsync(SerialLineRig.Limit);
 
-        word.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0x01, 0x2C);
-        dword.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0x00, 0x01, 0x86, 0xA0);
-        output.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0x5A);
+        ConfirmedWrite.ReadBackOf(word).Should().Equal(0x01, 0x2C);
+        ConfirmedWrite.ReadBackOf(dword).Should().Equal(0x00, 0x01, 0x86, 0xA0);
+        ConfirmedWrite.ReadBackOf(output).Should().Equal(0x5A);
         plc.Memory.ReadWord(ProtocolArea.V, 200).Should().Be(300);
         plc.Memory.ReadDoubleWord(ProtocolArea.V, 300).Should().Be(100_000);
         plc.Memory.Q[1].Should().Be(0x5A);
@@ -103,8 +103,8 @@ public sealed class PollingEngineSerialTests
         var reset = await rig.Bus.WriteAsync(WriteRequest.Bit(station, m5, false)).WaitAsync(SerialLineRig.Limit);
         var afterReset = plc.Memory.M[5];
 
-        set.Should().BeOfType<WriteOutcome.Confirmed>();
-        reset.Should().BeOfType<WriteOutcome.Confirmed>();
+        ConfirmedWrite.ReadBackOf(set);
+        ConfirmedWrite.ReadBackOf(reset);
         (afterSet & 0x0F).Should().Be(0x03, "M5.0 stays set and only M5.1 was added");
         (afterSet & 0xF0).Should().NotBe(polled & 0xF0, "the program changed the byte after the panel polled it");
         readBackAfterSet.Should().Be(afterSet, "the read-back is the whole byte as the PLC holds it");

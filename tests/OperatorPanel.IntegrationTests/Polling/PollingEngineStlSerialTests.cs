@@ -45,8 +45,8 @@ public sealed class PollingEngineStlSerialTests
         var word = await rig.Bus.WriteAsync(WriteRequest.Bytes(new Station(2), PlcAddress.Parse("VW200"), [0x01, 0x2C])).WaitAsync(SerialLineRig.Limit);
         var output = await rig.Bus.WriteAsync(WriteRequest.Bytes(new Station(2), PlcAddress.Parse("QB1"), [0x5A])).WaitAsync(SerialLineRig.Limit);
 
-        word.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0x01, 0x2C);
-        output.Should().BeOfType<WriteOutcome.Confirmed>().Which.ReadBack.Should().Equal(0x5A);
+        ConfirmedWrite.ReadBackOf(word).Should().Equal(0x01, 0x2C);
+        ConfirmedWrite.ReadBackOf(output).Should().Equal(0x5A);
         station.Memory.ReadWord(ProtocolArea.V, 200).Should().Be(300);
         station.Memory.Q[1].Should().Be(0x5A);
     }
