@@ -27,13 +27,14 @@ internal sealed class HandlerProbe
     private readonly LineSettings _line;
     private readonly List<(StlScan Scan, long Instructions)> _scans = [];
     private readonly List<StlInterruptRun> _runs = [];
+    private readonly Func<IReadOnlyList<byte>, bool> _replyEnded;
     private readonly long _idleInstructions;
     private long _instructionsAtScanStart;
     private TimeSpan _now = TimeSpan.FromMilliseconds(50);
 
-    private HandlerProbe(StlPlc plc, FreeportPort port, LineSettings line)
+    private HandlerProbe(StlPlc plc, FreeportPort port, LineSettings line, Func<IReadOnlyList<byte>, bool> replyEnded)
     {
-        (_plc, _port, _line) = (plc, port, line);
+        (_plc, _port, _line, _replyEnded) = (plc, port, line, replyEnded);
         _plc.ScanCompleted += (_, scan) =>
         {
             _scans.Add((scan, _plc.InstructionsExecuted - _instructionsAtScanStart));
@@ -50,7 +51,6 @@ internal sealed class HandlerProbe
     public static bool TryCreate(CpuProfile cpu, Station station, LineSettings line, int replyDelayMs, TimeSpan userProgram, out HandlerProbe? probe, out string error)
     {
         ArgumentNullException.ThrowIfNull(cpu);
-        probe = null;
         var options = new HandlerOptions
         {
             Cpu = cpu,
@@ -60,6 +60,38 @@ internal sealed class HandlerProbe
             DataBits = line.DataBits,
             ReplyDelayMs = replyDelayMs,
         };
+        return TryCreate(options, line, userProgram, reply => reply[^1] == (byte)'>', out probe, out error);
+    }
+
+    /// <summary>
+    /// The protocol 3 handler (full: with the list), whose reply ends after LEN bytes (docs/protocol-v3.md section 1.6),
+    /// never at a byte's value.
+    /// </summary>
+    public static bool TryCreateV3(CpuProfile cpu, Station station, LineSettings line, TimeSpan userProgram, out HandlerProbe? probe, out string error)
+    {
+        ArgumentNullException.ThrowIfNull(cpu);
+        var options = new HandlerOptions
+        {
+            Cpu = cpu,
+            Station = station.Address,
+            BaudRate = line.Baud,
+            Parity = line.Parity,
+            DataBits = line.DataBits,
+            Protocol = 3,
+        };
+        return TryCreate(options, line, userProgram, reply => reply.Count >= 2 && reply.Count >= reply[1], out probe, out error);
+    }
+
+    /// <summary>The handler the probe runs, as generated (.awl text).</summary>
+    public string AwlText { get; private init; } = string.Empty;
+
+    /// <summary>The last reply's bytes, each with the end of its stop bit, counted from the request's last character.</summary>
+    public IReadOnlyList<(byte Value, TimeSpan At)> LastReply { get; private set; } = [];
+
+    private static bool TryCreate(HandlerOptions options, LineSettings line, TimeSpan userProgram, Func<IReadOnlyList<byte>, bool> replyEnded, out HandlerProbe? probe, out string error)
+    {
+        probe = null;
+        var cpu = options.Cpu;
         var generated = HandlerGenerator.Generate(options);
         if (!generated.Ok)
         {
@@ -77,14 +109,14 @@ internal sealed class HandlerProbe
         var plc = new StlPlc(load.Program) { UserProgramTime = userProgram };
         var port = new FreeportPort(options.Port, plc.Memory, cpu, line);
         plc.AttachPort(port);
-        probe = new HandlerProbe(plc, port, line);
+        probe = new HandlerProbe(plc, port, line, replyEnded) { AwlText = generated.AwlText };
         error = string.Empty;
         return true;
     }
 
     /// <summary>
-    /// Sends <paramref name="frame"/> and runs the PLC until the reply has left and the port receives again. False
-    /// when the handler did not answer (it keeps silent on a request it does not understand) or faulted.
+    /// Sends <paramref name="frame"/> and runs the PLC until the reply has left (its '&gt;' in v2, its LEN bytes in v3)
+    /// and the port receives again. False when the handler did not answer (it keeps silent on a request it does not understand) or faulted.
     /// <paramref name="replyChars"/>: the characters the handler sent.
     /// </summary>
     public bool TryServe(byte[] frame, out HandlerCost? cost, out int replyChars, out string error)
@@ -99,7 +131,7 @@ internal sealed class HandlerProbe
         TimeSpan? replyStart = null;
         var replyEnd = TimeSpan.Zero;
         var ended = false;
-        replyChars = 0;
+        var reply = new List<(byte Value, TimeSpan At)>();
         while (_plc.Fault is null && t < giveUp && !(ended && !_port.IsTransmitting && _port.IsReceiving))
         {
             t += Step;
@@ -107,14 +139,15 @@ internal sealed class HandlerProbe
             foreach (var c in _port.TakeTransmitted())
             {
                 replyStart ??= c.At - _line.CharacterTime;
-                replyChars++;
-                ended |= c.Value == (byte)'>';
+                reply.Add((c.Value, c.At - requestEnd));
+                ended |= _replyEnded([.. reply.Select(r => r.Value)]);
                 replyEnd = c.At;
             }
         }
 
         _now = t + Step;
         _plc.RunUntil(_now);
+        (replyChars, LastReply) = (reply.Count, reply);
         (cost, error) = (null, string.Empty);
         if (_plc.Fault is { } fault)
         {

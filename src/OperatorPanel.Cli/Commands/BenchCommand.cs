@@ -1,12 +1,14 @@
 using System.CommandLine;
 using OperatorPanel.Cli.Bench;
+using OperatorPanel.Cli.Bench.V3;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel bench link [--radio] [--scan-ms M] [--air-baud B] [--cycles N]</c>, <c>opanel bench link --ppi [--baud 9600|19200|187500]</c>
+/// <c>opanel bench link [--radio] [--scan-ms M] [--air-baud B] [--cycles N]</c>, <c>opanel bench link --protocol 3 [--radio]</c>,
+/// <c>opanel bench link --ppi [--baud 9600|19200|187500]</c>
 /// (and <c>bench stl</c>, <c>bench plan</c>, <c>bench history</c>):
 /// the characters of a full refresh of the reference line against one item per request and the hex bound, the
 /// MODELLED time of a steady and an idle refresh on the PC/PPI cable or (--radio) the radio modules, the targets
@@ -58,9 +60,15 @@ internal static class BenchCommand
             Description = "With --ppi at 187500 baud: the USB-RS485 adapter's latency timer in ms (default 16, FTDI's default)",
             DefaultValueFactory = _ => 16,
         };
+        var protocol = new Option<int>("--protocol")
+        {
+            Description = "Freeport protocol version: 2 (hex frames, what the panel speaks until the switch-over; default) or 3 (binary frames, "
+                + "docs/protocol-v3.md: modelled only, no measured round trip)",
+            DefaultValueFactory = _ => 2,
+        };
         var command = new Command("link", "Characters, modelled refresh time (cable, --radio or --ppi) and targets of the reference line; measured round trip")
         {
-            cycles, radio, scan, air, ppi, baud, usbLatency,
+            cycles, radio, scan, air, ppi, baud, usbLatency, protocol,
         };
         command.SetAction(async (parse, cancellationToken) =>
         {
@@ -81,6 +89,19 @@ internal static class BenchCommand
             if (airBaud is < 600 or > 500_000)
             {
                 return cli.Fail(ExitCodes.BadInput, $"--air-baud {airBaud}: the CC1100 runs at 600-500000 baud");
+            }
+
+            var version = parse.GetValue(protocol);
+            if (version is not (2 or 3))
+            {
+                return cli.Fail(ExitCodes.BadInput, $"--protocol {version}: give 2 or 3");
+            }
+
+            if (version == 3)
+            {
+                return parse.GetValue(ppi)
+                    ? cli.Fail(ExitCodes.BadInput, "--protocol 3 and --ppi: PPI is the CPU's own protocol, not a Freeport version; leave out one")
+                    : RunV3(cli, Model(parse.GetValue(radio), scanMs, airBaud));
             }
 
             if (parse.GetValue(ppi))
@@ -114,6 +135,43 @@ internal static class BenchCommand
                 : ExitCodes.Ok;
         });
         return command;
+    }
+
+    /// <summary><c>bench link --protocol 3</c>: the reference line's v3 refresh (<see cref="V3LinkReport"/>); modelled only.</summary>
+    private static int RunV3(CliContext cli, LinkTimeModel model)
+    {
+        if (!V3LinkReport.TryCreate(ReferenceLine.Create(), model, out var report, out var error))
+        {
+            return cli.Fail(ExitCodes.LinkFailure, $"the v3 handler could not be run: {error}");
+        }
+
+        if (cli.Json)
+        {
+            cli.WriteJson(new
+            {
+                protocol = 3,
+                medium = report.Medium,
+                scanMs = model.ProgramScanMs,
+                steadyBytes = report.Steady.Chars,
+                steadyMs = Math.Round(report.Steady.TotalMs, 1),
+                idleBytes = report.Idle.Chars,
+                idleMs = Math.Round(report.Idle.TotalMs, 1),
+                binaryBoundMs = Math.Round(report.BinaryBoundMs, 1),
+                steadyFloorMs = Math.Round(report.Floors.Steady.TotalMs, 1),
+                idleFloorMs = Math.Round(report.Floors.Idle.TotalMs, 1),
+                notes = report.Problems,
+                summary = report.SummaryLine,
+            });
+        }
+        else
+        {
+            V3LinkText.Write(cli.Out, report);
+            cli.Out.WriteLine();
+            cli.Out.WriteLine(report.SummaryLine);
+        }
+
+        cli.Log.Information("{Summary}", report.SummaryLine);
+        return ExitCodes.Ok;
     }
 
     /// <summary><c>bench link --ppi</c>: the reference line over PPI (<see cref="PpiBench"/>); modelled only, no pty part.</summary>

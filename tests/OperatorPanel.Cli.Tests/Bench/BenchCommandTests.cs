@@ -84,4 +84,39 @@ public sealed class BenchCommandTests
         exit.Should().Be(1);
         error.Should().Contain("--cycles 0");
     }
+
+    [Fact]
+    public void BenchLink_Protocol3_PartsGoalsAndTheBytesSummaryLineLast()
+    {
+        var (exit, output, error) = CliRunner.Run("bench", "link", "--protocol", "3");
+
+        exit.Should().Be(0, $"stderr: {error}");
+        output.Should().Contain("one DEFINE LIST of 32 slots, 76 data bytes")
+            .And.Contain("READ LIST FULL (steady: the whole list): 8 + 85 bytes")
+            .And.Contain("READ LIST (idle: UNCHANGED): 8 + 9 bytes")
+            .And.Contain("binary bound: 74 bytes")
+            .And.MatchRegex(@"steady <= 1\.5 x binary bound = 115\.6 ms: \d+\.\d ms, (met|NOT MET)");
+        output.Should().NotContain("NOTE");
+        var lines = output.TrimEnd().Split('\n');
+        lines[^1].Should().MatchRegex(@"^bench link: steady 93 bytes, \d+\.\d ms, \d+\.\d\d x binary bound; idle 17 bytes, \d+\.\d ms$");
+    }
+
+    [Fact]
+    public void BenchLink_Protocol3RadioLongScan_SaysTheModuleDropsRepliesPausedOverTheEndTimer()
+    {
+        var (exit, output, _) = CliRunner.Run("bench", "link", "--protocol", "3", "--radio", "--scan-ms", "10");
+
+        exit.Should().Be(0);
+        output.Should().Contain("each module forwards a frame once Core's Reader has it whole by its LEN")
+            .And.Contain("NOTE READ LIST (idle: UNCHANGED): the PLC module dropped the reply");
+    }
+
+    [Fact]
+    public void BenchLink_Protocol3WithPpi_Refused()
+    {
+        var (exit, _, error) = CliRunner.Run("bench", "link", "--protocol", "3", "--ppi");
+
+        exit.Should().Be(1);
+        error.Should().Contain("--protocol 3 and --ppi");
+    }
 }

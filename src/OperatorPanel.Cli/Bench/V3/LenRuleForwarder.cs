@@ -1,0 +1,46 @@
+using OperatorPanel.Core.Protocol.V3;
+
+namespace OperatorPanel.Cli.Bench.V3;
+
+/// <summary>
+/// A radio module's receiving side for v3 (docs/protocol-v3.md section 1.6): it cuts frames with Core's
+/// <see cref="Reader"/> (the LEN rule: '&lt;', LEN, then LEN bytes in all, whatever their values) and forgets a partial
+/// frame after an idle line longer than END_TIMEOUT_MS. Fed the bytes with the time each one's stop bit ended, it says
+/// when the frame came out whole (the module may then send it on) or that a pause inside the frame made it drop it.
+/// </summary>
+internal static class LenRuleForwarder
+{
+    /// <returns>The time the frame was whole, or null when it never was; and the partial frames dropped on a pause.</returns>
+    public static (TimeSpan? Whole, int Dropped) Receive(IReadOnlyList<(byte Value, TimeSpan At)> bytes, TimeSpan characterTime, TimeSpan idleLimit, int minLen)
+    {
+        ArgumentNullException.ThrowIfNull(bytes);
+        var reader = new Reader(minLen);
+        var dropped = 0;
+        TimeSpan? last = null;
+        foreach (var (value, at) in bytes)
+        {
+            // The line was idle from the previous stop bit to this byte's start bit.
+            if (last is { } previous && reader.PendingBytes > 0 && at - characterTime - previous > idleLimit)
+            {
+                reader.Reset();
+                dropped++;
+            }
+
+            reader.Append([value]);
+            last = at;
+            if (reader.TryTake(out _))
+            {
+                return (at, dropped);
+            }
+        }
+
+        return (null, dropped);
+    }
+
+    /// <summary>Bytes sent back to back from time 0 (a PC's write, a module's forwarding), each with its stop bit's end.</summary>
+    public static IReadOnlyList<(byte Value, TimeSpan At)> BackToBack(byte[] frame, TimeSpan characterTime)
+    {
+        ArgumentNullException.ThrowIfNull(frame);
+        return [.. frame.Select((b, i) => (b, characterTime * (i + 1)))];
+    }
+}

@@ -1,0 +1,42 @@
+using OperatorPanel.Cli.Bench;
+using OperatorPanel.Cli.Bench.V3;
+
+namespace OperatorPanel.Cli.Tests.Bench.V3;
+
+/// <summary>The v3 report on the reference line: frames from Codec, the handler run in the interpreter (simulated time, not timed).</summary>
+public sealed class V3LinkReportTests
+{
+    [Fact]
+    public void TryCreate_ReferenceLineCable_OneListBytesFromCodecTotalsAreTheirParts()
+    {
+        var model = new LinkTimeModel(new LineSetting(9600, "8N1", 10), 0, 5, 5, null);
+
+        V3LinkReport.TryCreate(ReferenceLine.Create(), model, out var report, out var error).Should().BeTrue(error);
+
+        report.Frames.List.Items.Should().HaveCount(32);
+        report.Frames.List.DataBytes.Should().Be(76, "74 distinct data bytes in 30 slots, 2 SMB6 fillers");
+        (report.Steady.RequestChars, report.Steady.ReplyChars).Should().Be((8, 85));
+        (report.Idle.RequestChars, report.Idle.ReplyChars).Should().Be((8, 9));
+        report.BinaryBoundMs.Should().BeApproximately(77.08, 0.01);
+        report.Problems.Should().BeEmpty();
+        report.Stats.Steady.Should().NotBeNull();
+        report.Steady.TotalMs.Should().BeApproximately(report.Steady.Parts.Sum(p => p.Ms), 1e-9);
+        report.Steady.TotalMs.Should().BeGreaterThanOrEqualTo(report.Floors.Steady.TotalMs);
+        report.Idle.TotalMs.Should().BeGreaterThanOrEqualTo(report.Floors.Idle.TotalMs);
+        report.SummaryLine.Should().Be(string.Create(
+            System.Globalization.CultureInfo.InvariantCulture,
+            $"bench link: steady 93 bytes, {report.Steady.TotalMs:0.0} ms, {report.Steady.TotalMs / 77.0833:0.00} x binary bound; idle 17 bytes, {report.Idle.TotalMs:0.0} ms"));
+    }
+
+    [Fact]
+    public void TryCreate_NoUserProgram_SteadyAboveTheFloorByTheHandlersFirstScans()
+    {
+        var model = new LinkTimeModel(new LineSetting(9600, "8N1", 10), 0, 0, 5, null);
+
+        V3LinkReport.TryCreate(ReferenceLine.Create(), model, out var report, out _).Should().BeTrue();
+
+        // With no user program a scan is the handler's slice alone: the steady refresh stays within ~6 ms of the wire's floor.
+        report.Floors.Steady.TotalMs.Should().BeApproximately((97 * 1.0416667) + 9, 0.01);
+        report.Steady.TotalMs.Should().BeInRange(report.Floors.Steady.TotalMs, report.Floors.Steady.TotalMs + 10);
+    }
+}
