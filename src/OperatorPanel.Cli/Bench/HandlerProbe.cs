@@ -51,15 +51,7 @@ internal sealed class HandlerProbe
     public static bool TryCreate(CpuProfile cpu, Station station, LineSettings line, int replyDelayMs, TimeSpan userProgram, out HandlerProbe? probe, out string error)
     {
         ArgumentNullException.ThrowIfNull(cpu);
-        var options = new HandlerOptions
-        {
-            Cpu = cpu,
-            Station = station.Address,
-            BaudRate = line.Baud,
-            Parity = line.Parity,
-            DataBits = line.DataBits,
-            ReplyDelayMs = replyDelayMs,
-        };
+        var options = Options(cpu, station, line) with { ReplyDelayMs = replyDelayMs };
         return TryCreate(options, line, userProgram, reply => reply[^1] == (byte)'>', out probe, out error);
     }
 
@@ -70,17 +62,18 @@ internal sealed class HandlerProbe
     public static bool TryCreateV3(CpuProfile cpu, Station station, LineSettings line, TimeSpan userProgram, out HandlerProbe? probe, out string error)
     {
         ArgumentNullException.ThrowIfNull(cpu);
-        var options = new HandlerOptions
-        {
-            Cpu = cpu,
-            Station = station.Address,
-            BaudRate = line.Baud,
-            Parity = line.Parity,
-            DataBits = line.DataBits,
-            Protocol = 3,
-        };
+        var options = Options(cpu, station, line) with { Protocol = 3 };
         return TryCreate(options, line, userProgram, reply => reply.Count >= 2 && reply.Count >= reply[1], out probe, out error);
     }
+
+    private static HandlerOptions Options(CpuProfile cpu, Station station, LineSettings line) => new()
+    {
+        Cpu = cpu,
+        Station = station.Address,
+        BaudRate = line.Baud,
+        Parity = line.Parity,
+        DataBits = line.DataBits,
+    };
 
     /// <summary>The handler the probe runs, as generated (.awl text).</summary>
     public string AwlText { get; private init; } = string.Empty;
