@@ -200,6 +200,22 @@ log_count_above() { [ "$(log_count "$1")" -gt "$2" ]; }
 app_alive() { [ -n "$app_pid" ] && kill -0 "$app_pid" 2>/dev/null; }
 screenshot() { /usr/bin/import -display "$DISPLAY" -window root "$1"; }
 colours() { /usr/bin/convert "$1" -format %k info:; }
+# Pictures every 3 s until three in a row differ from one another (something on screen moves), at most 90 s; the last
+# is kept as $1. Fails naming $2 (what should have moved) when nothing changed, or when the picture is nearly blank.
+screenshot_moving() {
+  local shot=$1 what=$2 changes=0
+  screenshot "$work/a.png"
+  for _ in $(seq 1 30); do
+    sleep 3
+    screenshot "$work/b.png"
+    if cmp -s "$work/a.png" "$work/b.png"; then changes=0; else changes=$((changes + 1)); fi
+    mv "$work/b.png" "$work/a.png"
+    [ "$changes" -lt 2 ] || break
+  done
+  cp "$work/a.png" "$shot"
+  [ "$changes" -ge 2 ] || fail "$what did not change for 90 s after the log showed it live (see $shot)"
+  [ "$(colours "$shot")" -gt 100 ] || fail "the screenshot of $what is nearly blank ($(colours "$shot") colours)"
+}
 # A panel window is up when Wine has mapped a top-level window whose title names the panel.
 window_titled() { xdotool search --onlyvisible --name "$1" >/dev/null 2>&1; }
 # Every step ends with the panel healthy: no binding WPF could not resolve, no error the panel did not expect.
@@ -247,21 +263,8 @@ wait_for 240 log_has "Live values shown" || fail "the panel showed no changing v
 grep -h -m 1 -F "Live values shown" "$logs"/*.log
 
 begin "screenshot the live demo"
-# The log line is written on the UI thread; the picture reaches the X server later. Take pictures until three in a row
-# differ from one another (the values are moving on screen), at most 90 s; the last one is kept.
-shot="$art/panel-demo.png"
-screenshot "$work/a.png"
-changes=0
-for _ in $(seq 1 30); do
-  sleep 3
-  screenshot "$work/b.png"
-  if cmp -s "$work/a.png" "$work/b.png"; then changes=0; else changes=$((changes + 1)); fi
-  mv "$work/b.png" "$work/a.png"
-  [ "$changes" -lt 2 ] || break
-done
-cp "$work/a.png" "$shot"
-[ "$changes" -ge 2 ] || fail "the screen did not change for 90 s after the log showed live values (see $shot)"
-[ "$(colours "$shot")" -gt 100 ] || fail "the screenshot is nearly blank ($(colours "$shot") colours)"
+# The log line is written on the UI thread; the picture reaches the X server later: wait for the values to move on screen.
+screenshot_moving "$art/panel-demo.png" "the screen"
 main_title='Bottling line 1 \(demo\) - Operator Panel'
 window_titled "$main_title" || fail "no window titled 'Bottling line 1 (demo) - Operator Panel'"
 panel_clean
@@ -370,20 +373,8 @@ wait_for 240 log_count_above "Trend drawn:" "$trends_before" || fail "the Trends
 grep -h -F "Trend drawn:" "$logs"/*.log | tail -n 1
 
 begin "screenshot the live trend"
-# Redrawn every second from the demo's history: pictures until three in a row differ (the trend moves), at most 90 s.
-shot="$art/trends-demo.png"
-screenshot "$work/a.png"
-changes=0
-for _ in $(seq 1 30); do
-  sleep 3
-  screenshot "$work/b.png"
-  if cmp -s "$work/a.png" "$work/b.png"; then changes=0; else changes=$((changes + 1)); fi
-  mv "$work/b.png" "$work/a.png"
-  [ "$changes" -lt 2 ] || break
-done
-cp "$work/a.png" "$shot"
-[ "$changes" -ge 2 ] || fail "the Trends pane did not change for 90 s after the log said it drew (see $shot)"
-[ "$(colours "$shot")" -gt 100 ] || fail "the Trends screenshot is nearly blank ($(colours "$shot") colours)"
+# Redrawn every second from the demo's history: wait for the trend to move on screen.
+screenshot_moving "$art/trends-demo.png" "the Trends pane"
 ls "$profile_unix/AppData/Local/OperatorPanel/history/"*-demo.history.db >/dev/null 2>&1 || fail "no demo history database in the user's history folder"
 panel_clean
 close_panel
