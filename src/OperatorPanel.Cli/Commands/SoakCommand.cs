@@ -5,6 +5,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
+using OperatorPanel.Simulator.Reference.V3;
 using OperatorPanel.Simulator.Soak;
 using OperatorPanel.Simulator.Stl.Freeport;
 using OperatorPanel.StlGen;
@@ -135,17 +136,15 @@ internal static class SoakCommand
     {
         plc = default;
         error = string.Empty;
+        var options = new HandlerOptions { Cpu = Cpu, Station = 2, BaudRate = baud, Protocol = 3 };
         if (model == SimulationModel.Reference)
         {
-            var config = new HandlerConfig(new Station(2), Cpu);
-            var reference = new ReferencePlc(config);
-            var bus = new BusSimulator();
-            bus.Attach(reference);
-            plc = (new Simulator.Hosting.ReferenceLine(bus, []), reference.Memory, config.BufferStart);
+            var reference = new ReferenceHandler(new HandlerSetup(
+                new Station(2), Cpu, endTimeoutMs: (byte)options.EffectiveEndTimeoutMs, vFirst: options.EffectiveV3First));
+            plc = (new V3ReferenceLine([reference]), reference.Memory, reference.Setup.VFirst);
             return true;
         }
 
-        var options = new HandlerOptions { Cpu = Cpu, Station = 2, BaudRate = baud };
         var generated = HandlerGenerator.Generate(options);
         if (!generated.Ok)
         {
@@ -162,7 +161,7 @@ internal static class SoakCommand
 
         var line = new StlLine(settings);
         line.Attach(station, runProcess: false);
-        plc = (line, station.Memory, options.EffectiveBufferStart);
+        plc = (line, station.Memory, options.EffectiveV3First);
         return true;
     }
 }

@@ -70,7 +70,7 @@ public sealed record SoakFigures
     /// <summary>Lines run side by side (own pty pairs, PLC and seed each), counted together.</summary>
     public int Lines { get; init; } = 1;
 
-    /// <summary>Lines whose handler answered one of the IDENTIFY attempts, so that from then on their lists were polled with 09.</summary>
+    /// <summary>Lines whose handler answered one of the soak's IDENTIFY attempts (the list reader also asks IDENTIFY itself before its first DEFINE LIST).</summary>
     public int LinesIdentified { get; init; }
 
     public bool ZerosHold => WrongValuesShownGood == 0 && FalseConfirmations == 0 && WritesOutOfOrder == 0;
@@ -116,7 +116,7 @@ public sealed record SoakFigures
         yield return string.Create(c, $"soak {Faults}, seed {Seed}, {Elapsed.TotalSeconds:F0} s{lines}");
         yield return string.Create(c, $"  line: {CharactersOnLine} characters, {BitsFlipped} bits flipped, {CharactersDropped} characters dropped, {FramesDropped} frames dropped");
         yield return string.Create(c, $"  exchanges {Exchanges}, retries {Retries}, timeouts {Timeouts}, corrupt replies {CorruptReplies}, error replies {NegativeReplies}");
-        yield return string.Create(c, $"  handler identified on {LinesIdentified} of {Lines} line(s): lists polled with 09 READ CHANGES OF LISTS there, with 08 per list elsewhere");
+        yield return string.Create(c, $"  handler identified on {LinesIdentified} of {Lines} line(s) before the list reader asked itself");
         yield return string.Create(c, $"  values shown as good {ValuesShownGood}, wrong values shown as good {WrongValuesShownGood} (must be 0)");
         yield return string.Create(c, $"  writes {WritesSent}, confirmed {WritesConfirmed} ({ConfirmedByReadBack} by read-back), false confirmations {FalseConfirmations} (must be 0), executed out of order {WritesOutOfOrder} (must be 0)");
         var notConfirmed = WritesNotConfirmed.Count == 0 ? "none" : string.Join(", ", WritesNotConfirmed.Select(p => $"{p.Key} {p.Value}"));

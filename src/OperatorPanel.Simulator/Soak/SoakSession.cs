@@ -2,6 +2,7 @@ using System.Buffers.Binary;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
@@ -13,8 +14,8 @@ namespace OperatorPanel.Simulator.Soak;
 
 /// <summary>
 /// A soak run end to end: the simulated PLC (behind an <see cref="ExecutedWriteObserver"/>) on its pty, the
-/// <see cref="NoisyLineProxy"/> between the two pty pairs, and the real panel stack (SerialPortTransport, PlcLink, Bus
-/// and its polling loop) on the panel's pty. The panel alternates, by the seed, between writing a new value to a double word
+/// <see cref="NoisyLineProxy"/> between the two pty pairs, and the real panel stack (SerialPortTransport, V3Link, Bus
+/// and its polling loop, speaking protocol v3) on the panel's pty. The panel alternates, by the seed, between writing a new value to a double word
 /// of the <see cref="SoakRegion"/> and refreshing the region, until the duration is up; then the
 /// <see cref="SoakJudge"/> holds what it showed and confirmed against what the PLC executed.
 /// </summary>
@@ -38,8 +39,8 @@ public static class SoakSession
         var proxy = new NoisyLineProxy(proxyPanel, proxyPlc, setup.Faults, setup.Seed);
         var panelSerial = Serial(setup, setup.PanelPort);
         var items = region.Slots.Select(s => new WatchedItem(setup.Station, Address(s)));
-        await using var bus = Bus.Start(
-            new PlcLink(new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial), time, log),
+        await using var bus = Bus.StartV3(
+            new V3Link(new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial), time, log),
             PollPlanner.Build(items, new Dictionary<Station, Core.Cpu.CpuProfile> { [setup.Station] = setup.Cpu }),
             new BusSettings { Mode = RefreshMode.OnDemand },
             time,
@@ -126,7 +127,7 @@ public static class SoakSession
     /// <summary>The panel's side of the run: its writes and the good values it showed, recorded for the judge.</summary>
     private sealed class SoakWork(SoakSetup setup, Bus bus, TimeProvider time)
     {
-        /// <summary>IDENTIFY attempts before the run goes on without: at 1% flips its 62-character reply rarely survives.</summary>
+        /// <summary>IDENTIFY attempts before the run goes on without: at 1% flips its 41-byte exchange rarely survives.</summary>
         private const int IdentifyAttempts = 30;
 
         /// <summary>Until identified, one step in this many is an IDENTIFY, so the attempts spread over the run.</summary>
@@ -137,7 +138,7 @@ public static class SoakSession
 
         public List<SoakWrite> Writes { get; } = [];
 
-        /// <summary>The handler answered IDENTIFY, so the bus polls its lists with 09 as the panel does.</summary>
+        /// <summary>The handler answered IDENTIFY, so the bus polls its list with READ LIST as the panel does.</summary>
         public bool Identified { get; private set; }
 
         public List<ShownValue> Shown { get; } = [];
@@ -173,7 +174,7 @@ public static class SoakSession
             }
         }
 
-        /// <summary>IDENTIFY as the panel sends it on connecting; the bus hears the reply (READ CHANGES copies, 09).</summary>
+        /// <summary>IDENTIFY as the panel sends it on connecting; without it the list reader asks for it itself.</summary>
         private async Task IdentifyAsync(CancellationToken cancellationToken)
         {
             _identifyAttempts++;

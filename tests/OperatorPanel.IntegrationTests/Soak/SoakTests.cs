@@ -11,8 +11,8 @@ using Xunit.Abstractions;
 namespace OperatorPanel.IntegrationTests.Soak;
 
 /// <summary>
-/// The short soak (docs/soak.md): the real panel stack writes and reads a region of V through the noisy-line proxy in
-/// front of the generated handler in the STL interpreter, and the judge holds every good value and every confirmed
+/// The short soak (docs/soak.md): the real panel stack (protocol v3) writes and reads a region of V through the noisy-line proxy in
+/// front of the generated v3 handler in the STL interpreter, and the judge holds every good value and every confirmed
 /// write against what the PLC executed. Real time; the counts vary with the machine's speed and the faults make most
 /// exchanges fail, so only the zeros and floors on the work done are asserted. `opanel soak` runs it for longer.
 /// </summary>
@@ -38,7 +38,7 @@ public sealed class SoakTests(ITestOutputHelper output)
     }
 
     /// <summary>
-    /// The judge's other side: on a clean line the handler is identified (so its list is polled with 09, as the panel
+    /// The judge's other side: on a clean line the handler is identified (so its list is polled with READ LIST, as the panel
     /// does), every write is confirmed and executed, and values are shown.
     /// </summary>
     [Fact]
@@ -58,7 +58,7 @@ public sealed class SoakTests(ITestOutputHelper output)
     {
         using var panelPair = await SocatPtyPair.StartAsync();
         using var plcPair = await SocatPtyPair.StartAsync();
-        var options = new HandlerOptions { Cpu = Cpu, Station = 2, BaudRate = Baud };
+        var options = new HandlerOptions { Cpu = Cpu, Station = 2, BaudRate = Baud, Protocol = 3 };
         var generated = HandlerGenerator.Generate(options);
         generated.Ok.Should().BeTrue(string.Join("; ", generated.Diagnostics));
         var settings = new LineSettings(Baud, Core.Transport.Parity.None, 8);
@@ -81,7 +81,7 @@ public sealed class SoakTests(ITestOutputHelper output)
                 Cpu = Cpu,
                 Line = line,
                 Memory = station!.Memory,
-                HandlerFirstByte = options.EffectiveBufferStart,
+                HandlerFirstByte = options.EffectiveV3First,
             },
             TimeProvider.System,
             log: null,

@@ -1,11 +1,16 @@
-using System.Text;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Protocol.V3;
 using OperatorPanel.Simulator.Soak;
 
 namespace OperatorPanel.Simulator.Tests.Soak;
 
 public sealed class FaultInjectorTests
 {
-    private static readonly byte[] Frames = Encoding.ASCII.GetBytes(string.Concat(Enumerable.Repeat("<0201030400000A>", 2000)));
+    /// <summary>A v3 WRITE of VW10 = 16#3C3E: its data bytes are '&lt;' and '&gt;', which must not start or end a frame.</summary>
+    private static readonly byte[] Write = Codec.Encode(Request.Write(new Station(2), 1, ProtocolArea.V, 10, [0x3C, 0x3E]));
+
+    private static readonly byte[] Frames = [.. Enumerable.Repeat(Write, 2000).SelectMany(f => f)];
 
     [Fact]
     public void Pass_SameSeed_GivesTheSameFaults()
@@ -38,13 +43,40 @@ public sealed class FaultInjectorTests
     }
 
     [Fact]
-    public void Pass_EveryFrameDropped_LeavesOnlyWhatIsBetweenFrames()
+    public void Pass_EveryFrameDropped_LeavesOnlyWhatIsBetweenFramesByTheirLen()
     {
         var injector = new FaultInjector(new LineFaults("all frames", 0, 0, 1), 1);
 
-        var received = injector.Pass(Encoding.ASCII.GetBytes("x<0201>y<0301>z"));
+        var received = injector.Pass([(byte)'x', .. Write, (byte)'y', .. Write, (byte)'z']);
 
-        Encoding.ASCII.GetString(received).Should().Be("xyz");
+        received.Should().Equal((byte)'x', (byte)'y', (byte)'z');
+        injector.FramesDropped.Should().Be(2);
+    }
+
+    [Fact]
+    public void Pass_FrameArrivingInPieces_IsDroppedWholeAndTheNextByteKept()
+    {
+        var injector = new FaultInjector(new LineFaults("all frames", 0, 0, 1), 1);
+
+        var received = new List<byte>();
+        foreach (var piece in Write.Append((byte)'z').Chunk(3))
+        {
+            received.AddRange(injector.Pass(piece));
+        }
+
+        received.Should().Equal((byte)'z');
+        injector.FramesDropped.Should().Be(1);
+    }
+
+    [Fact]
+    public void Pass_StartCharacterWithImpossibleLen_IsNotFollowedAsAFrame()
+    {
+        var injector = new FaultInjector(new LineFaults("all frames", 0, 0, 1), 1);
+
+        // LEN 2: no v3 frame is that short; followed, it would end the drop anywhere (or swallow the frame after it).
+        var received = injector.Pass([(byte)'<', 0x02, (byte)'k', .. Write]);
+
+        received.Should().Equal((byte)'k');
         injector.FramesDropped.Should().Be(2);
     }
 
