@@ -44,26 +44,49 @@ public static class TechnicianNotes
         w.Line("     RUN set from Micro/WIN with the switch at TERM leaves the port to PPI, and the panel gets no answer.");
         w.Line(string.Empty);
         w.Line("What it reserves (do not use these in your program or its data block)");
-        w.Line($"  V memory     {stats.VRange} ({stats.VBytes} bytes: a 256-byte buffer, {HandlerLayout.WorkBytes} work bytes and {stats.CopyBytes} bytes");
-        w.Line("               of READ CHANGES copies); the panel cannot write there either (error 03). --merge checks an");
-        w.Line("               exported program for these collisions.");
+        if (stats.Protocol >= 3)
+        {
+            w.Line($"  V memory     {stats.VRange} ({stats.VBytes} bytes: the request and reply buffer and work bytes{(stats.Compact ? string.Empty : ", the list's slots and its copy")});");
+            w.Line("               the panel cannot write there either (refused, 83). --merge checks an exported program for these");
+            w.Line("               collisions.");
+        }
+        else
+        {
+            w.Line($"  V memory     {stats.VRange} ({stats.VBytes} bytes: a 256-byte buffer, {HandlerLayout.WorkBytes} work bytes and {stats.CopyBytes} bytes");
+            w.Line("               of READ CHANGES copies); the panel cannot write there either (error 03). --merge checks an");
+            w.Line("               exported program for these collisions.");
+        }
+
         foreach (var block in stats.Blocks)
         {
             w.Line($"  {block.NumberText,-12} {block.Name}: {block.Purpose}");
         }
 
         w.Line($"  Events       {string.Join(", ", stats.InterruptEvents)} (ATCH by the handler; do not attach your own routines to them)");
-        w.Line($"  Port         port {options.Port}: SMB{smb.Control}, SMB{smb.Receive}-SMB{smb.Receive + 8}; timed interrupt 0 (SMB34)");
+        w.Line(stats.Protocol >= 3
+            ? $"  Port         port {options.Port}: SMB{smb.Control}, SMB{smb.Receive}-SMB{smb.Receive + 8} (no timed interrupt: SMB34 stays yours)"
+            : $"  Port         port {options.Port}: SMB{smb.Control}, SMB{smb.Receive}-SMB{smb.Receive + 8}; timed interrupt 0 (SMB34)");
         w.Line($"  Accumulators AC0-AC3: {panel} changes them while it serves a request (it keeps its own");
         w.Line("               in V between scans); code after the CALL must not expect values from before it");
         w.Line(string.Empty);
         WriteSize(w, stats);
+        if (stats.Compact)
+        {
+            w.Line("The compact handler");
+            w.Line("  It answers IDENTIFY, READ, WRITE and WRITE BITS only, to fit a small CPU. It leaves out the list (DEFINE");
+            w.Line("  LIST, READ LIST: the panel reads with READ, at most 16 bytes an exchange, so a refresh of many values");
+            w.Line("  takes more exchanges and time) and STOP from the panel. Generate without --compact for the full handler.");
+            w.Line(string.Empty);
+        }
+
         w.Line("Programming device and TERM");
         w.Line("  In STOP the CPU gives the port back to PPI by itself. With the mode switch at TERM the handler");
         w.Line("  gives it back to PPI too, so Micro/WIN can connect while the program keeps running; turning the");
         w.Line("  switch back to RUN takes the port again for the panel. No panel request is answered meanwhile.");
         w.Line(stats.StopEnabled
             ? "  STOP from the panel is included: after answering it the handler executes STOP; RUN again by the switch or Micro/WIN."
+            : stats.Compact
+            ? "  STOP from the panel is not in the compact handler."
             : "  STOP from the panel is not included (regenerate with --allow-stop to include it).");
         w.Line(string.Empty);
         WritePcSide(w, options);
@@ -93,13 +116,20 @@ public static class TechnicianNotes
         w.Line($"  - The panel's project has this PLC as station {options.Station} at {options.BaudRate} baud, {options.DataBits} data bits,");
         w.Line($"    parity {options.Parity.ToString().ToLowerInvariant()}; no other PLC on the bus has station number {options.Station} (two would garble each other).");
         w.Line("  - The cable and its switches, as above; the bus wiring, + to + and - to -.");
-        w.Line($"  - Your program leaves SMB{control}, SMB{receive}-SMB{receive + 8}, SMB34, events {string.Join(", ", stats.InterruptEvents)} and the V range above alone.");
+        var smb34 = stats.Protocol >= 3 ? string.Empty : ", SMB34";
+        w.Line($"  - Your program leaves SMB{control}, SMB{receive}-SMB{receive + 8}{smb34}, events {string.Join(", ", stats.InterruptEvents)} and the V range above alone.");
         w.Line("  - opanel identify answers but its cpu check says MISMATCH: generate for this PLC's CPU again and download.");
         w.Line(string.Empty);
     }
 
     private static void WriteTiming(LineWriter w, HandlerOptions options, HandlerStats stats)
     {
+        if (stats.Protocol >= 3)
+        {
+            WriteTimingV3(w, options);
+            return;
+        }
+
         w.Line("Timing (at the manual's execution times; conservative where the manual gives none)");
         w.Line("  The receive interrupt only notes that a request for this station has arrived and listens again");
         w.Line($"  at once after any other frame (under {SlicePart.InterruptBoundMs} ms). {options.Names.Panel} then checks the frame");
@@ -112,6 +142,22 @@ public static class TechnicianNotes
         w.Line(options.CharTimeoutMs == 0
             ? "  A request cut off mid-way waits for the next '<' (no inter-character timeout)."
             : $"  A request cut off mid-way is dropped after {options.CharTimeoutMs} ms without a character (SMW{(options.Port == 0 ? 92 : 192)}).");
+    }
+
+    /// <summary>Protocol 3 (docs/protocol.md sections 1.5, 4 and 7): the end timer, the slices, the chunked reply.</summary>
+    private static void WriteTimingV3(LineWriter w, HandlerOptions options)
+    {
+        var end = options.EffectiveEndTimeoutMs;
+        var smw = options.Port == 0 ? 92 : 192;
+        w.Line("Timing (at the manual's execution times; conservative where the manual gives none)");
+        w.Line($"  A request ends {end} ms after its last character (the receive's inter-character timer, SMW{smw}); the receive");
+        w.Line("  interrupt then takes it when its length and station match, or listens again at once. A request cut off");
+        w.Line($"  mid-way ends the same way and is ignored. {options.Names.Panel} then checks the frame (a 4-byte word check over its");
+        w.Line("  bytes) and builds the reply a part per scan, each part sized to add at most 2 ms to a scan; a scan without");
+        w.Line("  a request costs it about 0.1 ms. opanel generate --stats prints the measured figures per request.");
+        w.Line($"  The reply starts no earlier than the end timer ({end} ms), so a PC/PPI cable or converter can turn the line");
+        w.Line("  around, and leaves in parts while its check is computed: it may pause a few scans of your program");
+        w.Line("  between two characters. A long scan of your program slows the panel.");
     }
 
     /// <summary>The handler's size beside the CPU's program memory, and the warning when it may leave too little room.</summary>

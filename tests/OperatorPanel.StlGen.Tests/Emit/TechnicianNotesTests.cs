@@ -20,6 +20,30 @@ public sealed class TechnicianNotesTests
         notes.Should().Contain("     port settings (PPI address, baud rate) apply only while the port speaks PPI; the handler sets SMB130 itself.");
     }
 
+    [Fact]
+    public void Write_Protocol3Full_NoTimedInterruptRefusal83AndTheEndTimer()
+    {
+        var notes = Lines(HandlerGoldenTests.Cpu224Port0Station2 with { Protocol = 3 });
+
+        notes.Should().Contain("  Port         port 0: SMB30, SMB86-SMB94 (no timed interrupt: SMB34 stays yours)");
+        notes.Should().Contain("  - Your program leaves SMB30, SMB86-SMB94, events 23, 9 and the V range above alone.");
+        notes.Should().Contain(l => l.Contains("the list's slots and its copy", StringComparison.Ordinal));
+        notes.Should().Contain("               the panel cannot write there either (refused, 83). --merge checks an exported program for these");
+        notes.Should().Contain("  A request ends 4 ms after its last character (the receive's inter-character timer, SMW92); the receive");
+        notes.Should().NotContain(l => l.Contains("READ CHANGES", StringComparison.Ordinal) || l.Contains("CRC", StringComparison.Ordinal) || l.Contains("compact", StringComparison.Ordinal));
+    }
+
+    [Fact]
+    public void Write_Compact_SaysWhatItLeavesOutAndThatStopIsNotInIt()
+    {
+        var notes = Lines(HandlerGoldenTests.Cpu224Port0Station2 with { Protocol = 3, Compact = true, AllowStop = true });
+
+        notes.Should().Contain("The compact handler");
+        notes.Should().Contain("  It answers IDENTIFY, READ, WRITE and WRITE BITS only, to fit a small CPU. It leaves out the list (DEFINE");
+        notes.Should().Contain("  STOP from the panel is not in the compact handler.");
+        notes.Should().NotContain(l => l.Contains("list's slots", StringComparison.Ordinal));
+    }
+
     [Theory]
     [InlineData(9600, "  Older PC/PPI cable (6ES7 901-3BF20-0XA0): baud switches 1-3 at 010 (1 = up) for 9600 baud.")]
     [InlineData(19200, "  Older PC/PPI cable (6ES7 901-3BF20-0XA0): baud switches 1-3 at 001 (1 = up) for 19200 baud.")]
