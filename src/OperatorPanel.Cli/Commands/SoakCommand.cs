@@ -14,7 +14,7 @@ using OperatorPanel.StlGen.Options;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel soak [--minutes N] [--profile flips|mixed|clean] [--seed N] [--baud B] [--lines N] [--model stl|reference]</c>: the long soak of docs/soak.md.
+/// <c>opanel soak [--minutes N] [--profile flips|mixed|clean] [--seed N] [--baud B] [--lines N] [--model stl|reference] [--scan-ms M]</c>: the long soak of docs/soak.md.
 /// The panel stack works against the generated CPU 226 handler in the STL interpreter (or the reference model) through a noisy-line proxy
 /// between two socat pty pairs, and the judge prints the figures per profile (both noisy profiles unless one is
 /// named). Exit 0 when the must-be-0 figures are 0, 2 when one is not, 1 for a bad option or a missing socat.
@@ -35,7 +35,12 @@ internal static class SoakCommand
             DefaultValueFactory = _ => 1,
         };
         var model = ModelOption.Create();
-        var command = new Command("soak", "Soak the link on a noisy simulated line and judge it against what the PLC executed") { minutes, profile, seed, baud, lines, model };
+        var scan = new Option<double>("--scan-ms")
+        {
+            Description = "With the generated handler: the machine program's time per scan beside the handler, in ms (default 5, as bench link assumes)",
+            DefaultValueFactory = _ => 5,
+        };
+        var command = new Command("soak", "Soak the link on a noisy simulated line and judge it against what the PLC executed") { minutes, profile, seed, baud, lines, model, scan };
         command.SetAction(async (parse, cancellationToken) =>
         {
             var cli = context(parse);
@@ -43,6 +48,12 @@ internal static class SoakCommand
             if (!(length > 0 && length <= 24 * 60))
             {
                 return cli.Fail(ExitCodes.BadInput, $"--minutes {length}: give more than 0 and at most 1440");
+            }
+
+            var scanMs = parse.GetValue(scan);
+            if (!(scanMs >= 0 && scanMs <= 400))
+            {
+                return cli.Fail(ExitCodes.BadInput, $"--scan-ms {scanMs}: give 0-400 ms (the S7-200 watchdog ends a scan at 500 ms)");
             }
 
             var lineCount = parse.GetValue(lines);
@@ -71,7 +82,7 @@ internal static class SoakCommand
             foreach (var faults in profiles)
             {
                 var runs = await Task.WhenAll(Enumerable.Range(0, lineCount).Select(i =>
-                    RunAsync(socat, parse.GetValue(model), faults, parse.GetValue(seed) + i, parse.GetValue(baud), TimeSpan.FromMinutes(length), cli, cancellationToken)));
+                    RunAsync(socat, parse.GetValue(model), faults, parse.GetValue(seed) + i, parse.GetValue(baud), TimeSpan.FromMilliseconds(scanMs), TimeSpan.FromMinutes(length), cli, cancellationToken)));
                 if (runs.Any(r => r is null))
                 {
                     return ExitCodes.BadInput;
@@ -99,9 +110,9 @@ internal static class SoakCommand
     }
 
     private static async Task<SoakFigures?> RunAsync(
-        string socat, SimulationModel model, LineFaults faults, int seed, int baud, TimeSpan duration, CliContext cli, CancellationToken cancellationToken)
+        string socat, SimulationModel model, LineFaults faults, int seed, int baud, TimeSpan userProgram, TimeSpan duration, CliContext cli, CancellationToken cancellationToken)
     {
-        if (!TryCreatePlc(model, baud, out var plc, out var error))
+        if (!TryCreatePlc(model, baud, userProgram, out var plc, out var error))
         {
             cli.Fail(ExitCodes.BadInput, error);
             return null;
@@ -132,7 +143,7 @@ internal static class SoakCommand
     }
 
     /// <summary>Station 2 on a line of its own: the generated handler in the interpreter, or the reference model.</summary>
-    private static bool TryCreatePlc(SimulationModel model, int baud, out (ISimulatedLine Line, PlcMemory Memory, int HandlerFirstByte) plc, out string error)
+    private static bool TryCreatePlc(SimulationModel model, int baud, TimeSpan userProgram, out (ISimulatedLine Line, PlcMemory Memory, int HandlerFirstByte) plc, out string error)
     {
         plc = default;
         error = string.Empty;
@@ -159,6 +170,8 @@ internal static class SoakCommand
             return false;
         }
 
+        // The machine's own program runs beside the handler: the handler's reply then leaves in chunks over several scans.
+        station.Plc.UserProgramTime = userProgram;
         var line = new StlLine(settings);
         line.Attach(station, runProcess: false);
         plc = (line, station.Memory, options.EffectiveV3First);

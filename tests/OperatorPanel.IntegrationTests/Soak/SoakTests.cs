@@ -63,8 +63,10 @@ public sealed class SoakTests(ITestOutputHelper output)
         generated.Ok.Should().BeTrue(string.Join("; ", generated.Diagnostics));
         var settings = new LineSettings(Baud, Core.Transport.Parity.None, 8);
         StlStation.TryCreate(generated.AwlText, Cpu, 0, settings, out var station, out var error).Should().BeTrue(error);
+        // A machine program of 5 ms a scan beside the handler, as on a real line (and as bench link assumes).
+        station!.Plc.UserProgramTime = TimeSpan.FromMilliseconds(5);
         var line = new StlLine(settings);
-        line.Attach(station!, runProcess: false);
+        line.Attach(station, runProcess: false);
 
         var figures = await SoakSession.RunAsync(
             new SoakSetup
