@@ -20,6 +20,9 @@ internal sealed class HandlerProbe
 {
     private static readonly TimeSpan Step = TimeSpan.FromMilliseconds(0.5);
     private static readonly TimeSpan GiveUp = TimeSpan.FromSeconds(2);
+
+    /// <summary>Scans of the user's program granted on top of <see cref="GiveUp"/>: a long scan (--scan-ms) slows every phase.</summary>
+    private const int GiveUpScans = 64;
     private static readonly TimeSpan IdleRun = TimeSpan.FromMilliseconds(50);
 
     private readonly StlPlc _plc;
@@ -119,7 +122,7 @@ internal sealed class HandlerProbe
         _runs.Clear();
         _port.Deliver(frame, _now);
         var requestEnd = _now + (_line.CharacterTime * frame.Length);
-        var giveUp = requestEnd + GiveUp;
+        var giveUp = requestEnd + GiveUp + (_plc.UserProgramTime * GiveUpScans);
         var t = _now;
         TimeSpan? replyStart = null;
         var replyEnd = TimeSpan.Zero;

@@ -62,9 +62,9 @@ internal static class BenchCommand
         };
         var protocol = new Option<int>("--protocol")
         {
-            Description = "Freeport protocol version: 2 (hex frames, what the panel speaks until the switch-over; default) or 3 (binary frames, "
-                + "docs/protocol-v3.md: modelled only, no measured round trip)",
-            DefaultValueFactory = _ => 2,
+            Description = "Freeport protocol version: 3 (binary frames, docs/protocol.md; default: modelled from the generated handler run in "
+                + "the interpreter) or 2 (the former hex frames, for comparison; modelled and measured over a socat pty)",
+            DefaultValueFactory = _ => 3,
         };
         var command = new Command("link", "Characters, modelled refresh time (cable, --radio or --ppi) and targets of the reference line; measured round trip")
         {
@@ -97,16 +97,16 @@ internal static class BenchCommand
                 return cli.Fail(ExitCodes.BadInput, $"--protocol {version}: give 2 or 3");
             }
 
-            if (version == 3)
-            {
-                return parse.GetValue(ppi)
-                    ? cli.Fail(ExitCodes.BadInput, "--protocol 3 and --ppi: PPI is the CPU's own protocol, not a Freeport version; leave out one")
-                    : RunV3(cli, Model(parse.GetValue(radio), scanMs, airBaud));
-            }
-
             if (parse.GetValue(ppi))
             {
-                return await RunPpiAsync(cli, parse.GetValue(baud), scanMs, parse.GetValue(usbLatency), parse.GetValue(radio));
+                return parse.GetResult(protocol) is { Implicit: false }
+                    ? cli.Fail(ExitCodes.BadInput, $"--protocol {version} and --ppi: PPI is the CPU's own protocol, not a Freeport version; leave out one")
+                    : await RunPpiAsync(cli, parse.GetValue(baud), scanMs, parse.GetValue(usbLatency), parse.GetValue(radio));
+            }
+
+            if (version == 3)
+            {
+                return RunV3(cli, Model(parse.GetValue(radio), scanMs, airBaud));
             }
 
             var line = ReferenceLine.Create();

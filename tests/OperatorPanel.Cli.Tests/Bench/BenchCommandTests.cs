@@ -6,9 +6,9 @@ namespace OperatorPanel.Cli.Tests.Bench;
 public sealed class BenchCommandTests
 {
     [Fact]
-    public void BenchLink_Text_LabelsModelAndMeasurementAndEndsWithTheSummaryLine()
+    public void BenchLinkProtocol2_Text_LabelsModelAndMeasurementAndEndsWithTheSummaryLine()
     {
-        var (exit, output, error) = CliRunner.Run("bench", "link", "--cycles", "2");
+        var (exit, output, error) = CliRunner.Run("bench", "link", "--protocol", "2", "--cycles", "2");
 
         exit.Should().Be(0, $"stderr: {error}");
         output.Should().Contain("Reference line: CPU 226 (Current), station 2")
@@ -26,10 +26,10 @@ public sealed class BenchCommandTests
     }
 
     [Fact]
-    public void BenchLink_Radio_ModelsTheRadioModulesAndTakesLongerThanTheCable()
+    public void BenchLinkProtocol2_Radio_ModelsTheRadioModulesAndTakesLongerThanTheCable()
     {
-        var (_, cable, _) = CliRunner.Run("bench", "link", "--cycles", "1", "--json");
-        var (exit, radio, error) = CliRunner.Run("bench", "link", "--cycles", "1", "--json", "--radio");
+        var (_, cable, _) = CliRunner.Run("bench", "link", "--protocol", "2", "--cycles", "1", "--json");
+        var (exit, radio, error) = CliRunner.Run("bench", "link", "--protocol", "2", "--cycles", "1", "--json", "--radio");
 
         exit.Should().Be(0, $"stderr: {error}");
         var cableModel = JsonDocument.Parse(cable).RootElement.GetProperty("modelled");
@@ -41,9 +41,9 @@ public sealed class BenchCommandTests
     }
 
     [Fact]
-    public void BenchLink_Json_GivesRowsTargetsTheModelAndTheMeasurement()
+    public void BenchLinkProtocol2_Json_GivesRowsTargetsTheModelAndTheMeasurement()
     {
-        var (exit, output, error) = CliRunner.Run("bench", "link", "--cycles", "2", "--json");
+        var (exit, output, error) = CliRunner.Run("bench", "link", "--protocol", "2", "--cycles", "2", "--json");
 
         exit.Should().Be(0, $"stdout: {output} stderr: {error}");
         using var json = JsonDocument.Parse(output);
@@ -61,7 +61,7 @@ public sealed class BenchCommandTests
     [InlineData("--air-baud", "100")]
     public void BenchLink_BadModelOption_FailsAsBadInputNamingIt(string option, string value)
     {
-        var (exit, _, error) = CliRunner.Run("bench", "link", "--cycles", "1", option, value);
+        var (exit, _, error) = CliRunner.Run("bench", "link", "--protocol", "2", "--cycles", "1", option, value);
 
         exit.Should().Be(1);
         error.Should().Contain($"{option} {value}");
@@ -79,16 +79,16 @@ public sealed class BenchCommandTests
     [Fact]
     public void BenchLink_ZeroCycles_FailsAsBadInput()
     {
-        var (exit, _, error) = CliRunner.Run("bench", "link", "--cycles", "0");
+        var (exit, _, error) = CliRunner.Run("bench", "link", "--protocol", "2", "--cycles", "0");
 
         exit.Should().Be(1);
         error.Should().Contain("--cycles 0");
     }
 
     [Fact]
-    public void BenchLink_Protocol3_PartsGoalsAndTheBytesSummaryLineLast()
+    public void BenchLink_Default_IsProtocol3PartsGoalsAndTheBytesSummaryLineLast()
     {
-        var (exit, output, error) = CliRunner.Run("bench", "link", "--protocol", "3");
+        var (exit, output, error) = CliRunner.Run("bench", "link");
 
         exit.Should().Be(0, $"stderr: {error}");
         output.Should().Contain("one DEFINE LIST of 32 slots, 76 data bytes")
@@ -102,13 +102,23 @@ public sealed class BenchCommandTests
     }
 
     [Fact]
-    public void BenchLink_Protocol3RadioLongScan_SaysTheModuleDropsRepliesPausedOverTheEndTimer()
+    public void BenchLink_Protocol3RadioTenMsScan_RepliesPausedBetweenChunksStillForwarded()
     {
         var (exit, output, _) = CliRunner.Run("bench", "link", "--protocol", "3", "--radio", "--scan-ms", "10");
 
         exit.Should().Be(0);
         output.Should().Contain("each module forwards a frame once Core's Reader has it whole by its LEN")
-            .And.Contain("NOTE READ LIST (idle: UNCHANGED): the PLC module dropped the reply");
+            .And.Contain("drops a partial frame after an idle line over 1000 ms");
+        output.Should().NotContain("NOTE");
+    }
+
+    [Fact]
+    public void BenchLink_Protocol3RadioScanOverTheDropTime_SaysTheModuleDropsThePausedReply()
+    {
+        var (exit, output, _) = CliRunner.Run("bench", "link", "--protocol", "3", "--radio", "--scan-ms", "90");
+
+        exit.Should().Be(0);
+        output.Should().Contain("NOTE READ LIST FULL (steady: the whole list): the PLC module dropped the reply: a pause inside it exceeded 1000 ms");
     }
 
     [Fact]

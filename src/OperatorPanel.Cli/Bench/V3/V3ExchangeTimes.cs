@@ -22,7 +22,7 @@ internal static class V3ExchangeTimes
         ArgumentNullException.ThrowIfNull(problems);
         var c = model.Line.CharacterMs;
         var character = TimeSpan.FromMilliseconds(c);
-        var idleLimit = TimeSpan.FromMilliseconds(endTimeoutMs);
+        var idleLimit = TimeSpan.FromMilliseconds(LenRuleForwarder.PartialFrameDropMs);
         var requestBytes = planned.Request.Length;
         var parts = ImmutableArray.CreateBuilder<TimePart>();
         if (model.Radio is { } radio)
@@ -43,7 +43,7 @@ internal static class V3ExchangeTimes
         if (model.Radio is { } back)
         {
             // The PLC-side module forwards the reply once the LEN rule says it is whole; a pause longer than
-            // END_TIMEOUT_MS inside it makes the module drop the partial frame (the reply is then lost).
+            // PartialFrameDropMs inside it makes the module drop the partial frame (the reply is then lost).
             var (whole, dropped) = LenRuleForwarder.Receive(reply, character, idleLimit, Codec.MinReplyLen);
             var start = reply.Count == 0 ? TimeSpan.Zero : reply[0].At - character;
             if (whole is { } at && dropped == 0)
@@ -52,7 +52,7 @@ internal static class V3ExchangeTimes
             }
             else
             {
-                problems.Add(Invariant($"{planned.Name}: the PLC module dropped the reply: a pause inside it exceeded END_TIMEOUT_MS ({endTimeoutMs} ms)"));
+                problems.Add(Invariant($"{planned.Name}: the PLC module dropped the reply: a pause inside it exceeded {LenRuleForwarder.PartialFrameDropMs} ms"));
             }
 
             parts.Add(new(Invariant($"reply on the bus until the PLC module has it whole by its LEN, {pauses:0.00} ms of it pauses between chunks"), onBus));

@@ -23,7 +23,7 @@ internal static class V3LinkText
         {
             o.WriteLine($"  radio         {radio}");
             o.WriteLine("                each module forwards a frame once Core's Reader has it whole by its LEN (docs/protocol-v3.md 1.6),");
-            o.WriteLine(Invariant($"                and drops a partial frame after an idle line over END_TIMEOUT_MS ({report.EndTimeoutMs} ms)"));
+            o.WriteLine(Invariant($"                and drops a partial frame after an idle line over {LenRuleForwarder.PartialFrameDropMs} ms (longer than any chunk pause of a scan up to that)"));
         }
         else
         {

@@ -34,30 +34,30 @@ public sealed class V3ExchangeTimesTests
     }
 
     [Fact]
-    public void Of_RadioReplyPausedLongerThanTheEndTimer_ModuleDropsItAndSaysSo()
+    public void Of_RadioReplyPausedLongerThanTheDropTime_ModuleDropsItAndSaysSo()
     {
         var model = new LinkTimeModel(Line, 0, 5, 20, RadioModuleTiming.Default);
         var planned = new V3PlannedExchange("idle", new byte[8], 9);
         var problems = new List<string>();
-        var handler = new HandlerCost(3, TimeSpan.FromMilliseconds(10), TimeSpan.FromMilliseconds((9 * Byte) + 4.5), "fixed");
+        var handler = new HandlerCost(3, TimeSpan.FromMilliseconds(10), TimeSpan.FromMilliseconds((9 * Byte) + 1000.5), "fixed");
 
-        V3ExchangeTimes.Of(model, 4, planned, handler, Timed(9, 10, 4.5), problems);
+        V3ExchangeTimes.Of(model, 4, planned, handler, Timed(9, 10, 1000.5), problems);
 
         problems.Should().ContainSingle().Which.Should().Contain("the PLC module dropped the reply");
     }
 
     [Fact]
-    public void Of_RadioReplyWithShortPause_ForwardedAtItsLastByte()
+    public void Of_RadioReplyPausedLessThanTheDropTime_ForwardedAtItsLastByte()
     {
         var model = new LinkTimeModel(Line, 0, 5, 20, RadioModuleTiming.Default);
         var planned = new V3PlannedExchange("idle", new byte[8], 9);
         var problems = new List<string>();
-        var handler = new HandlerCost(3, TimeSpan.FromMilliseconds(10), TimeSpan.FromMilliseconds((9 * Byte) + 3.5), "fixed");
+        var handler = new HandlerCost(3, TimeSpan.FromMilliseconds(10), TimeSpan.FromMilliseconds((9 * Byte) + 999.5), "fixed");
 
-        var exchange = V3ExchangeTimes.Of(model, 4, planned, handler, Timed(9, 10, 3.5), problems);
+        var exchange = V3ExchangeTimes.Of(model, 4, planned, handler, Timed(9, 10, 999.5), problems);
 
         problems.Should().BeEmpty();
-        exchange.Parts.Single(p => p.What.StartsWith("reply on the bus", StringComparison.Ordinal)).Ms.Should().BeApproximately((9 * Byte) + 3.5, 1e-3);
+        exchange.Parts.Single(p => p.What.StartsWith("reply on the bus", StringComparison.Ordinal)).Ms.Should().BeApproximately((9 * Byte) + 999.5, 1e-3);
     }
 
     /// <summary>A reply of <paramref name="bytes"/> bytes ('&lt;', LEN, then '&gt;' bytes) starting at <paramref name="startMs"/>, one pause before its last 2 bytes.</summary>
