@@ -18,6 +18,9 @@ namespace OperatorPanel.StlGen.Tests.V3;
 internal sealed class V3Station
 {
     private static readonly TimeSpan Margin = TimeSpan.FromMilliseconds(30);
+
+    /// <summary>Scans of the user's program time granted on top of the 5 s a reply may take: a DEFINE LIST of 32 items takes 84 scans.</summary>
+    private const int SettleScans = 128;
     private readonly StlPlc _plc;
     private readonly FreeportPort _port;
     private TimeSpan _now = TimeSpan.FromMilliseconds(50);
@@ -55,6 +58,9 @@ internal sealed class V3Station
 
     public Station Station => new(Options.Station);
 
+    /// <summary>The port's RCV is armed: the station hears the next request.</summary>
+    public bool Receiving => _port.IsReceiving;
+
     public void Poke(ProtocolArea area, int offset, params byte[] bytes)
     {
         bytes.CopyTo(Reference.Memory.Area(area), offset);
@@ -81,7 +87,7 @@ internal sealed class V3Station
                 break;
             }
 
-            if (t >= deadline + TimeSpan.FromSeconds(5))
+            if (t >= deadline + TimeSpan.FromSeconds(5) + (_plc.UserProgramTime * SettleScans))
             {
                 throw new InvalidOperationException($"the port never settled; sent so far {Convert.ToHexString([.. got])}");
             }
