@@ -25,7 +25,10 @@ internal sealed class V3Station
     private readonly FreeportPort _port;
     private TimeSpan _now = TimeSpan.FromMilliseconds(50);
 
-    public V3Station(HandlerOptions options, Random random)
+    /// <param name="options">The handler's options (protocol 3 is set here).</param>
+    /// <param name="random">The initial memory's bytes.</param>
+    /// <param name="userProgram">The user's own program merged into the handler's .awl text before it is loaded; none: the handler alone.</param>
+    public V3Station(HandlerOptions options, Random random, Func<string, string>? userProgram = null)
     {
         Options = options with { Protocol = 3 };
         Generated = HandlerGenerator.Generate(Options);
@@ -34,7 +37,7 @@ internal sealed class V3Station
             throw new InvalidOperationException("not generated: " + string.Join("; ", Generated.Diagnostics));
         }
 
-        var load = StlProgramLoader.Load(Generated.AwlText, Options.Cpu);
+        var load = StlProgramLoader.Load(userProgram is null ? Generated.AwlText : userProgram(Generated.AwlText), Options.Cpu);
         _plc = new StlPlc(load.Program ?? throw new InvalidOperationException("not loaded: " + string.Join("; ", load.Diagnostics)));
         Line = new LineSettings(Options.BaudRate, Options.Parity, Options.DataBits);
         _port = new FreeportPort(Options.Port, _plc.Memory, Options.Cpu, Line);
