@@ -21,9 +21,23 @@ internal sealed class HandlerProbe
     private static readonly TimeSpan Step = TimeSpan.FromMilliseconds(0.5);
     private static readonly TimeSpan GiveUp = TimeSpan.FromSeconds(2);
 
-    /// <summary>Scans of the user's program granted on top of <see cref="GiveUp"/>: a long scan (--scan-ms) slows every phase.</summary>
-    private const int GiveUpScans = 64;
+    /// <summary>
+    /// Scans without handler work granted on top of <see cref="GiveUp"/>, counted from the handler's last work (a scan
+    /// above an idle one, or a character sent), not from the request: a request's work takes up to 84 scans (DEFINE LIST
+    /// of 32 SM items, generate --stats --protocol 3), each as long as the user's program (--scan-ms), so a bound counted
+    /// from the request's end gave up on a DEFINE LIST still being served at 97 ms scans and more.
+    /// </summary>
+    private const int GiveUpScans = 8;
+
+    /// <summary>Scans after the request's end after which the probe gives up even on a handler still working (one that never ends).</summary>
+    private const int MostScans = 1024;
     private static readonly TimeSpan IdleRun = TimeSpan.FromMilliseconds(50);
+
+    /// <summary>
+    /// Scans the idle run lasts at least: at a user's program of 50 ms and more, <see cref="IdleRun"/> held no whole scan,
+    /// so an idle scan's instructions were 0 and every scan counted as the handler's work.
+    /// </summary>
+    private const int IdleScans = 3;
 
     private readonly StlPlc _plc;
     private readonly FreeportPort _port;
@@ -46,7 +60,7 @@ internal sealed class HandlerProbe
         _plc.InterruptServed += (_, run) => _runs.Add(run);
         _plc.RunUntil(_now);
         _scans.Clear();
-        _now += IdleRun;
+        _now += Max(IdleRun, _plc.UserProgramTime * IdleScans);
         _plc.RunUntil(_now);
         _idleInstructions = _scans.Count == 0 ? 0 : _scans.Max(s => s.Instructions);
     }
@@ -112,7 +126,8 @@ internal sealed class HandlerProbe
 
     /// <summary>
     /// Sends <paramref name="frame"/> and runs the PLC until the reply has left (its '&gt;' in v2, its LEN bytes in v3)
-    /// and the port receives again. False when the handler did not answer (it keeps silent on a request it does not understand) or faulted.
+    /// and the port receives again. False when the handler did not answer (it keeps silent on a request it does not understand:
+    /// given up <see cref="GiveUp"/> and <see cref="GiveUpScans"/> scans after its last work) or faulted.
     /// <paramref name="replyChars"/>: the characters the handler sent.
     /// </summary>
     public bool TryServe(byte[] frame, out HandlerCost? cost, out int replyChars, out string error)
@@ -122,18 +137,27 @@ internal sealed class HandlerProbe
         _runs.Clear();
         _port.Deliver(frame, _now);
         var requestEnd = _now + (_line.CharacterTime * frame.Length);
-        var giveUp = requestEnd + GiveUp + (_plc.UserProgramTime * GiveUpScans);
+        var lastWork = requestEnd;
+        var mostScans = requestEnd + GiveUp + (_plc.UserProgramTime * MostScans);
         var t = _now;
         TimeSpan? replyStart = null;
         var replyEnd = TimeSpan.Zero;
         var ended = false;
         var reply = new List<(byte Value, TimeSpan At)>();
-        while (_plc.Fault is null && t < giveUp && !(ended && !_port.IsTransmitting && _port.IsReceiving))
+        var scansSeen = 0;
+        while (_plc.Fault is null && t < Min(lastWork + GiveUp + (_plc.UserProgramTime * GiveUpScans), mostScans) && !(ended && !_port.IsTransmitting && _port.IsReceiving))
         {
             t += Step;
             _plc.RunUntil(t);
+            if (_scans.Skip(scansSeen).Any(s => s.Instructions > _idleInstructions))
+            {
+                lastWork = t;
+            }
+
+            scansSeen = _scans.Count;
             foreach (var c in _port.TakeTransmitted())
             {
+                lastWork = t;
                 replyStart ??= c.At - _line.CharacterTime;
                 reply.Add((c.Value, c.At - requestEnd));
                 ended |= _replyEnded([.. reply.Select(r => r.Value)]);
@@ -160,6 +184,10 @@ internal sealed class HandlerProbe
         cost = new HandlerCost(WorkScans(requestEnd), start - requestEnd, replyEnd - start, "measured: generated handler in the interpreter");
         return true;
     }
+
+    private static TimeSpan Min(TimeSpan a, TimeSpan b) => a < b ? a : b;
+
+    private static TimeSpan Max(TimeSpan a, TimeSpan b) => a > b ? a : b;
 
     /// <summary>
     /// The scans from the request's end to the last one in which the handler executed more than an idle scan (the

@@ -49,7 +49,10 @@ internal static class InterruptPart
 
     /// <summary>
     /// After <paramref name="condition"/>: XMT the bytes after SENT up to COVERED, from the byte at SENT, which takes
-    /// their count (docs/sources/s7200-facts.md section 8: XMT's table through *VD), and SENT = COVERED.
+    /// their count (docs/sources/s7200-facts.md section 8: XMT's table through *VD or *AC; here *AC1, read by nothing
+    /// after the XMT), and SENT = COVERED before the XMT: a user's interrupt routine may run between OP_PANEL's XMT and
+    /// its next instruction for longer than the chunk takes on the wire (facts section 5: an interrupt comes "at any
+    /// point", none pre-empts another), and OP_TX, served after it, must find SENT moved on, or it sends the chunk again.
     /// </summary>
     public static NetworkBuilder Send(Context c, string title, string comment, params (string, string[])[] condition)
     {
@@ -61,6 +64,6 @@ internal static class InterruptPart
         }
 
         return net.Op("MOVD", l.Dw(l.Covered), "AC0").Op("-D", l.Dw(l.Sent), "AC0").Op("MOVB", "AC0", "*" + l.Dw(l.Sent))
-            .Op("XMT", "*" + l.Dw(l.Sent), c.PortOperand).Op("MOVD", l.Dw(l.Covered), l.Dw(l.Sent));
+            .Op("MOVD", l.Dw(l.Sent), "AC1").Op("MOVD", l.Dw(l.Covered), l.Dw(l.Sent)).Op("XMT", "*AC1", c.PortOperand);
     }
 }

@@ -52,7 +52,7 @@ internal static class ListPart
             Op("MOVB", Hex(ReplyStatus.Ok), l.B(l.L + 3)), Op("MOVW", l.W(l.Rx + 2), l.W(l.L + 4)), Op("MOVD", l.Ptr(l.L), l.Dw(l.Sent)),
             Op("MOVD", l.Ptr(l.L + 5), l.Dw(l.Covered)), Op("MOVD", l.Dw(l.Tail), l.Dw(l.End)),
             Op("MOVD", l.Ptr(l.L + 1), l.Dw(l.Walk)), Op("MOVD", "0", l.Dw(l.SumA)), Op("MOVW", "0", l.W(l.SumB)), Op("S", l.FlagBit(Layout.Whole), "1"));
-        yield return ReturnIf("Whole list: gather next", "From the dispatch: head and groups leave as the gather goes.", Op("LDB<", l.B(l.Group), l.B(l.Groups)), l.Go(Phase.Gather));
+        yield return ReturnIf("Whole list: gather next", "From the dispatch: head and data leave when the last group is gathered.", Op("LDB<", l.B(l.Group), l.B(l.Groups)), l.Go(Phase.Gather));
         yield return JumpIf("Whole list: all of it", "After the comparison, G gathered: head and data leave now, the check from the next scan.", Labels.Publish,
             Op("LD", "SM0.0"), Op("MOVD", l.Dw(l.Tail), l.Dw(l.Covered)), Op("DECD", l.Dw(l.Covered)), l.GoReplyCheck());
     }
@@ -73,9 +73,11 @@ internal static class ListPart
         }
 
         yield return Always("Gather: on", "COVERED = the group's last byte; the next group.", Op("DECD", l.Dw(l.Covered)), Op("SLB", l.B(l.Group), "1"));
-        yield return JumpIf("Gather: more groups", "The next group in the next scan; a whole list's bytes so far leave now.", Labels.Publish,
+        // Nothing leaves before the whole list is gathered: a second chunk's XMT count goes into the byte before it (the
+        // first chunk's last), which the check, walked only after the gather, would then read instead of the data.
+        yield return ReturnIf("Gather: more groups", "The next group in the next scan; nothing leaves yet: the next chunk's count would overwrite a byte the check has not read.",
             Op("LDB<", l.B(l.Group), l.B(l.Groups)));
-        yield return JumpIf("Gather done: the whole list's check", "From the next scan, while the data leaves.", Labels.Publish,
+        yield return JumpIf("Gather done: the whole list's check", "Head and data leave now in one chunk, the check from the next scan.", Labels.Publish,
             Op("LD", l.FlagBit(Layout.Whole)), l.GoReplyCheck());
         yield return ReturnIf("Gather done: compare", "In the next scan.", Op("LD", "SM0.0"), l.Go(Phase.Compare));
     }

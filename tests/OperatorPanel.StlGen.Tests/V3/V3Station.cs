@@ -18,11 +18,17 @@ namespace OperatorPanel.StlGen.Tests.V3;
 internal sealed class V3Station
 {
     private static readonly TimeSpan Margin = TimeSpan.FromMilliseconds(30);
+
+    /// <summary>Scans of the user's program time granted on top of the 5 s a reply may take: a DEFINE LIST of 32 items takes 84 scans.</summary>
+    private const int SettleScans = 128;
     private readonly StlPlc _plc;
     private readonly FreeportPort _port;
     private TimeSpan _now = TimeSpan.FromMilliseconds(50);
 
-    public V3Station(HandlerOptions options, Random random)
+    /// <param name="options">The handler's options (protocol 3 is set here).</param>
+    /// <param name="random">The initial memory's bytes.</param>
+    /// <param name="userProgram">The user's own program merged into the handler's .awl text before it is loaded; none: the handler alone.</param>
+    public V3Station(HandlerOptions options, Random random, Func<string, string>? userProgram = null)
     {
         Options = options with { Protocol = 3 };
         Generated = HandlerGenerator.Generate(Options);
@@ -31,7 +37,7 @@ internal sealed class V3Station
             throw new InvalidOperationException("not generated: " + string.Join("; ", Generated.Diagnostics));
         }
 
-        var load = StlProgramLoader.Load(Generated.AwlText, Options.Cpu);
+        var load = StlProgramLoader.Load(userProgram is null ? Generated.AwlText : userProgram(Generated.AwlText), Options.Cpu);
         _plc = new StlPlc(load.Program ?? throw new InvalidOperationException("not loaded: " + string.Join("; ", load.Diagnostics)));
         Line = new LineSettings(Options.BaudRate, Options.Parity, Options.DataBits);
         _port = new FreeportPort(Options.Port, _plc.Memory, Options.Cpu, Line);
@@ -54,6 +60,9 @@ internal sealed class V3Station
     public StlPlc Plc => _plc;
 
     public Station Station => new(Options.Station);
+
+    /// <summary>The port's RCV is armed: the station hears the next request.</summary>
+    public bool Receiving => _port.IsReceiving;
 
     public void Poke(ProtocolArea area, int offset, params byte[] bytes)
     {
@@ -81,7 +90,7 @@ internal sealed class V3Station
                 break;
             }
 
-            if (t >= deadline + TimeSpan.FromSeconds(5))
+            if (t >= deadline + TimeSpan.FromSeconds(5) + (_plc.UserProgramTime * SettleScans))
             {
                 throw new InvalidOperationException($"the port never settled; sent so far {Convert.ToHexString([.. got])}");
             }
