@@ -36,6 +36,22 @@ public sealed class GenerateCommandTests : IDisposable
     }
 
     [Theory]
+    [InlineData(true, false)]
+    [InlineData(false, true)]
+    public void Generate_ProjectCompactOrCompactOption_WritesTheCompactHandler(bool inProject, bool option)
+    {
+        var project = NewProject("224", "2");
+        var root = JsonNode.Parse(File.ReadAllText(project))!;
+        root["stations"]![0]!["compact"] = inProject;
+        File.WriteAllText(project, root.ToJsonString());
+
+        var run = option ? CliRunner.Run("generate", project, "-o", Out, "--compact") : CliRunner.Run("generate", project, "-o", Out);
+
+        run.ExitCode.Should().Be(0, run.Error);
+        File.ReadAllText(Path.Combine(Out, "PLC_2-symbols.txt")).Should().StartWith("OP_BUF\tVB8118\t", "V_FIRST of the compact handler's 74 V bytes on a CPU 224: 8192 - 74");
+    }
+
+    [Theory]
     [InlineData(false, false)]
     [InlineData(true, true)]
     public void Generate_ProjectAllowStop_IncludesTheStopCodeOnlyWhenSet(bool allowStop, bool stopCode)
