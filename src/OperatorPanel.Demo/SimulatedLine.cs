@@ -61,9 +61,15 @@ public sealed class SimulatedLine
     public static HandlerConfig ConfigFor(HandlerOptions options)
     {
         ArgumentNullException.ThrowIfNull(options);
+        var v3 = options.Protocol == 3;
         return new HandlerConfig(
             new Core.Addressing.Station(options.Station), options.Cpu, options.Port, (byte)options.WriteMask, (byte)options.ReplyDelayMs,
-            options.EffectiveBufferStart, options.AllowStop, options.CopyBytes, options.CharTimeoutMs, options.FirstSubroutine, options.FirstInterrupt);
+            v3 ? null : options.EffectiveBufferStart, options.AllowStop, options.CopyBytes, options.CharTimeoutMs, options.FirstSubroutine, options.FirstInterrupt)
+        {
+            Protocol = options.Protocol,
+            Compact = options.Compact,
+            V3First = v3 ? options.BufferStart : null,
+        };
     }
 
     /// <summary>The handler StlGen generates for the station: the same text Generate PLC code / opanel generate saves.</summary>
@@ -71,8 +77,10 @@ public sealed class SimulatedLine
         HandlerGenerator.TryGenerateAwl(
             HandlerOptions.ForLine(config.Cpu, config.Port, config.Station.Address, config.WriteMask, config.ReplyDelayMs, serial) with
             {
+                Protocol = config.Protocol,
+                Compact = config.Compact,
                 AllowStop = config.AllowStop,
-                BufferStart = config.BufferStart,
+                BufferStart = config.Protocol == 3 ? config.V3First : config.BufferStart,
                 CopyBytes = config.CopyBytes,
                 CharTimeoutMs = config.CharTimeoutMs,
                 FirstSubroutine = config.FirstSubroutine,

@@ -2,6 +2,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Protocol.V3;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
@@ -15,7 +16,7 @@ public sealed class SimulatedLineTests
 
     [Theory]
     [InlineData("Stl", typeof(StlLine))]
-    [InlineData("Reference", typeof(ReferenceLine))]
+    [InlineData("Reference", typeof(V3ReferenceLine))]
     public void TryCreate_Model_ChoosesTheLine(string model, Type expected)
     {
         SimulatedLine.TryCreate([new HandlerConfig(new Station(2), Cpu226, port: 1)], Enum.Parse<SimulationModel>(model), Serial(19200), runProcess: true, out var line, out var error)
@@ -47,12 +48,28 @@ public sealed class SimulatedLineTests
             .Should().BeTrue(error);
         line!.WarmUp(TimeSpan.FromMilliseconds(50));
 
-        line.Line.Deliver(RequestCodec.Encode(new StopRequest(new Station(2), 1)));
+        var stop = Codec.Encode(Request.Stop(new Station(2), 1));
+        line.Line.Deliver(stop);
         line.WarmUp(TimeSpan.FromMilliseconds(200));
 
-        var reply = System.Text.Encoding.ASCII.GetString(line.Line.TakeTransmitted());
-        reply.Substring(5, 4).Should().Be(allowStop ? "8700" : "8705", "STATUS 00 with STOP generated, 05 unknown command without");
+        Codec.TryDecodeReplyTo(line.Line.TakeTransmitted(), stop, out var reply, out var error2).Should().BeTrue(error2.ToString());
+        reply.Status.Should().Be(allowStop ? ReplyStatus.Ok : ReplyStatus.UnknownCommand, "80 with STOP generated, 85 (unknown command) without");
         line.Line.Should().BeOfType<StlLine>().Which.Stations[0].Mode.Should().Be(expected);
+    }
+
+    [Fact]
+    public void TryCreate_ProtocolTwoStation_RunsTheV2HandlerForTheRegenerateMessage()
+    {
+        SimulatedLine.TryCreate([new HandlerConfig(new Station(2), Cpu226) { Protocol = 2 }], SimulationModel.Stl, Serial(9600), runProcess: false, out var line, out var error)
+            .Should().BeTrue(error);
+        line!.WarmUp(TimeSpan.FromMilliseconds(50));
+
+        line.Line.Deliver(RequestCodec.Encode(new IdentifyRequest(new Station(2), 1)));
+        line.WarmUp(TimeSpan.FromMilliseconds(300));
+
+        var reply = System.Text.Encoding.ASCII.GetString(line.Line.TakeTransmitted());
+        reply.Should().StartWith("<02018100", "a v2 reply in hex characters: station 02, SEQ 01, CMD 01 with bit 7, STATUS 00").And.EndWith(">");
+        line.Line.FramesReceived.Should().Be(1, "a v2 line counts frames by '>'");
     }
 
     [Fact]

@@ -29,13 +29,11 @@ internal static class GenerateCommand
         var station = new Option<string?>("--station") { Description = "Station name or address (needed when the project has several)" };
         var stats = new Option<bool>("--stats") { Description = "Print V bytes reserved, instructions and networks generated, the estimated program size beside the CPU's program memory, interrupt events, SBR/INT used, and per worst-case request (measured in the interpreter at the manual's execution times): instructions, time, longest interrupt routine, most added to one scan, scans until the slice that ends the reply's check" };
         var handler = new HandlerOptionSet();
-        var protocol = new Option<int>("--protocol") { Description = "Protocol version of the handler: 2 (hex frames, what the panel speaks today; default) or 3 (binary frames, docs/protocol.md)", DefaultValueFactory = _ => 2 };
-        var compact = new Option<bool>("--compact") { Description = "The compact handler of protocol 3 (IDENTIFY, READ, WRITE, WRITE BIT; no list, no STOP): the choice for a CPU 221 or 222. Implies --protocol 3" };
         var merge = new Option<string?>("--merge") { Description = "A program exported from Micro/WIN (File > Export): check for collisions and write NAME-merged.awl (NAME: the station's name)" };
         var symbols = new Option<string?>("--symbols") { Description = "With --merge: the program's symbol table exported from Micro/WIN (symbol, address, comment, tab-separated), so symbolic operands are checked as their addresses" };
         var command = new Command("generate", "Generate the S7-200 handler program (.awl), symbol table and technician notes. Exit codes: 0 written, 1 bad input, 2 impossible settings")
         {
-            project, output, station, stats, protocol, compact, merge, symbols,
+            project, output, station, stats, merge, symbols,
         };
         handler.AddTo(command);
         command.SetAction(parse =>
@@ -65,11 +63,6 @@ internal static class GenerateCommand
                 return cli.Fail(ExitCodes.BadInput, error);
             }
 
-            options = options with
-            {
-                Protocol = parse.GetValue(compact) ? 3 : parse.GetValue(protocol),
-                Compact = parse.GetValue(compact),
-            };
             AwlSource? userProgram = null;
             var userPath = parse.GetValue(merge);
             if (userPath is not null && !AwlFiles.TryRead(userPath, out userProgram, out error))

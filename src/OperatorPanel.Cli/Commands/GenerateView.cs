@@ -42,7 +42,9 @@ internal static class GenerateView
         }
 
         cli.Out.WriteLine($"V bytes reserved:       {stats.VRange} ({stats.VBytes} bytes)");
-        cli.Out.WriteLine($"READ CHANGES copies:    {stats.CopyRange} ({stats.CopyBytes} bytes; READ CHANGES and STOP work bytes: {stats.ChangesWorkBytes})");
+        cli.Out.WriteLine(stats.Protocol == 3
+            ? $"list copy:              {(stats.CopyBytes == 0 ? "none (compact handler: no list)" : $"{stats.CopyRange} ({stats.CopyBytes} bytes, LIST_BYTES: what READ LIST compares against)")}"
+            : $"READ CHANGES copies:    {stats.CopyRange} ({stats.CopyBytes} bytes; READ CHANGES and STOP work bytes: {stats.ChangesWorkBytes})");
         cli.Out.WriteLine($"STOP command:           {StopText(stats)}");
         WriteSize(cli, stats.Size);
         cli.Out.WriteLine($"interrupt events used:  {string.Join(", ", stats.InterruptEvents)}");

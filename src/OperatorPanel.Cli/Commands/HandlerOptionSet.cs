@@ -12,6 +12,19 @@ namespace OperatorPanel.Cli.Commands;
 /// </summary>
 internal sealed class HandlerOptionSet
 {
+    public Option<int> Protocol { get; } = new("--protocol")
+    {
+        Description = "Protocol version of the handler: 3 (binary frames, docs/protocol-v3.md: what the panel speaks; default) or 2 "
+            + "(the previous hex frames: the panel tells such a station to regenerate its PLC code)",
+        DefaultValueFactory = _ => 3,
+    };
+
+    public Option<bool> Compact { get; } = new("--compact")
+    {
+        Description = "The compact handler of protocol 3 (IDENTIFY, READ, WRITE, WRITE BITS; no list, no STOP): the choice for a CPU 221 or 222 "
+            + "(default: the station's \"compact\" in the project, off unless set)",
+    };
+
     public Option<int> PlcPort { get; } = new("--plc-port") { Description = "The PLC's port 0 or 1 (port 1 on CPU 224XP and 226)" };
 
     public Option<string?> Buffer { get; } = new("--buffer")
@@ -19,15 +32,19 @@ internal sealed class HandlerOptionSet
         Description = "First V byte of the handler's bytes (buffer, work bytes, copies), e.g. VB1000 (default: the top of V memory)",
     };
 
-    public Option<int> ReplyDelay { get; } = new("--reply-delay") { Description = "Reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
+    public Option<int> ReplyDelay { get; } = new("--reply-delay") { Description = "Protocol 2 only: reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
 
     public Option<string> Writable { get; } = new("--writable")
     {
-        Description = "Areas the panel may write, e.g. Q,M,V,SM (default)",
+        Description = "Areas the panel may write, e.g. Q,M,V,SM (default; protocol 3 never writes SM: Q, M and V of the list count)",
         DefaultValueFactory = _ => "Q,M,V,SM",
     };
 
-    public Option<int> CharTimeout { get; } = new("--char-timeout") { Description = "Receive inter-character timeout in ms (0 = off, default)" };
+    public Option<int> CharTimeout { get; } = new("--char-timeout")
+    {
+        Description = "Receive inter-character timeout in ms. Protocol 3: END_TIMEOUT_MS, the receive ends this long after the last "
+            + "character (0 = default: one character + 2 ms, at least the cable's turnaround; 4 ms at 9600 baud). Protocol 2: 0 = off (default)",
+    };
 
     public Option<int?> Subroutine { get; } = new("--sbr") { Description = "Subroutine number of the handler (default: the CPU's last)" };
 
@@ -35,7 +52,7 @@ internal sealed class HandlerOptionSet
 
     public Option<int> CopyBytes { get; } = new("--copy-bytes")
     {
-        Description = "V bytes for READ CHANGES copies after the work bytes, 0-255 (0 = none: every READ CHANGES answers the whole list; default 120)",
+        Description = "Protocol 2 only: V bytes for READ CHANGES copies after the work bytes, 0-255 (0 = none: every READ CHANGES answers the whole list; default 120)",
         DefaultValueFactory = _ => HandlerDefaults.CopyBytes,
     };
 
@@ -45,7 +62,7 @@ internal sealed class HandlerOptionSet
             + "off = no STOP code, the command is refused with error 05)",
     };
 
-    private Option[] All => [PlcPort, Buffer, ReplyDelay, Writable, CharTimeout, Subroutine, Interrupt, CopyBytes, AllowStop];
+    private Option[] All => [Protocol, Compact, PlcPort, Buffer, ReplyDelay, Writable, CharTimeout, Subroutine, Interrupt, CopyBytes, AllowStop];
 
     public void AddTo(Command command)
     {
@@ -59,14 +76,36 @@ internal sealed class HandlerOptionSet
     public string? Given(ParseResult parse) => All.FirstOrDefault(o => parse.GetResult(o) is { Implicit: false })?.Name;
 
     /// <summary>
-    /// <paramref name="station"/> (CPU, address, line settings and "allowStop" from the project or --cpu/--station) with the
-    /// options given; --allow-stop adds STOP, it never removes a project's.
+    /// <paramref name="station"/> (CPU, address, line settings, "allowStop" and "compact" from the project or --cpu/--station)
+    /// with the options given; --allow-stop adds STOP and --compact the compact shape, neither removes a project's.
+    /// --compact implies protocol 3; the options only protocol 2 has are refused with protocol 3.
     /// </summary>
     public bool TryApply(ParseResult parse, HandlerOptions station, [NotNullWhen(true)] out HandlerOptions? options, [NotNullWhen(false)] out string? error)
     {
         ArgumentNullException.ThrowIfNull(parse);
         ArgumentNullException.ThrowIfNull(station);
         options = null;
+        var compact = station.Compact || parse.GetValue(Compact);
+        var given = parse.GetResult(Protocol) is { Implicit: false };
+        var protocol = compact && !given ? 3 : parse.GetValue(Protocol);
+        if (protocol is not (2 or 3))
+        {
+            error = $"--protocol {protocol}: the handler speaks protocol 3 (or the previous 2)";
+            return false;
+        }
+
+        if (protocol == 2 && compact)
+        {
+            error = "--compact is a protocol 3 handler: leave out --protocol 2 (or \"compact\" in the project)";
+            return false;
+        }
+
+        if (protocol == 3 && new Option[] { ReplyDelay, CopyBytes }.FirstOrDefault(o => parse.GetResult(o) is { Implicit: false }) is { } v2Only)
+        {
+            error = $"{v2Only.Name} is a protocol 2 option; a protocol 3 handler has no reply delay (END_TIMEOUT_MS, --char-timeout, holds the reply back) and no READ CHANGES copies";
+            return false;
+        }
+
         if (!GenerateSettings.TryParseWritable(parse.GetValue(Writable)!, out var mask, out error))
         {
             return false;
@@ -85,6 +124,8 @@ internal sealed class HandlerOptionSet
 
         options = station with
         {
+            Protocol = protocol,
+            Compact = compact,
             Port = parse.GetValue(PlcPort),
             BufferStart = start,
             WriteMask = mask,

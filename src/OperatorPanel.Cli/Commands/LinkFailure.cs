@@ -42,7 +42,7 @@ internal sealed record LinkFailure(string Error, PlcErrorKind? Kind, string? Hin
             PlcErrorKind.AnotherMaster =>
                 "another PPI master (Micro/WIN, a TD 200, an HMI or a CPU in PPI master mode) is on the bus: the panel does not share "
                 + "the bus with another master; disconnect it or give the panel its own port",
-            PlcErrorKind.NegativeReply or PlcErrorKind.HandlerProtocolV1 or null => null,
+            PlcErrorKind.NegativeReply or PlcErrorKind.HandlerOutdated or null => null,
         };
     }
 

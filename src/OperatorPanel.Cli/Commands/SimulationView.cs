@@ -23,7 +23,23 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
     {
         _cpus = [.. configs.Select(c => c.Cpu.DisplayName)];
         PlcPort = configs[0].Port;
+        Protocol = configs[0].Protocol;
+        Compact = configs[0].Compact;
+        EndTimeoutMs = Protocol == 3 ? configs[0].V3SetupFor(settings).EndTimeoutMs : 0;
+        Stop = configs.Any(c => c.AllowStop && !(c.Protocol == 3 && c.Compact));
     }
+
+    /// <summary>The handlers' protocol: 3 (what the panel speaks) or 2 (simulate --protocol 2).</summary>
+    public int Protocol { get; init; }
+
+    /// <summary>Protocol 3: the compact handler (no list, no STOP).</summary>
+    public bool Compact { get; init; }
+
+    /// <summary>Protocol 3: END_TIMEOUT_MS (SMW92), the receive's end and the reply's earliest start.</summary>
+    public int EndTimeoutMs { get; init; }
+
+    /// <summary>STOP is in at least one station's handler.</summary>
+    public bool Stop { get; init; }
 
     /// <summary>The PLC port the handlers use (--plc-port; the same for every station of one simulate).</summary>
     public int PlcPort { get; init; }
@@ -42,8 +58,11 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
         var plcs = _cpus.Distinct().Count() > 1
             ? string.Join(", ", Stations.Select((s, i) => $"station {s} ({_cpus[i]})"))
             : $"{Cpu} at station{(Stations.Count == 1 ? string.Empty : "s")} {string.Join(", ", Stations)}";
+        var timing = Protocol == 3
+            ? $"protocol 3 {(Compact ? "compact" : "full")} handler, END_TIMEOUT_MS {EndTimeoutMs}{(Stop ? ", STOP" : string.Empty)}"
+            : $"protocol 2 handler, reply delay {ReplyDelayMs} ms";
         var handler = Ppi ? "no handler, PPI at the station addresses"
-            : (PlcPort == 0 ? string.Empty : $"PLC port {PlcPort}, ") + $"reply delay {ReplyDelayMs} ms";
+            : (PlcPort == 0 ? string.Empty : $"PLC port {PlcPort}, ") + timing;
         cli.Out.WriteLine($"simulating {plcs} on {Port} {Line}, "
             + $"{handler}, model {Model}, demo process {(Process ? "on" : "off")}; Ctrl+C to stop");
         cli.Out.Flush();

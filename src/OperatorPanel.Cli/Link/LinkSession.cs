@@ -1,6 +1,7 @@
 using System.Diagnostics.CodeAnalysis;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Transport;
@@ -50,16 +51,16 @@ internal sealed class LinkSession : IAsyncDisposable
             ? Bus.StartPpi(
                 new PpiLink(transport, PpiOptionsFor(target.Serial, target.ScanAllowance, demo is not null), TimeProvider.System, log),
                 plan, BusSettings.OnDemand with { Audit = cli.Journal }, TimeProvider.System, log)
-            : Bus.OnDemand(new PlcLink(transport, OptionsFor(target.Serial, target.ScanAllowance, demo is not null), TimeProvider.System, log), plan, TimeProvider.System, log, cli.Journal);
+            : Bus.OnDemand(new V3Link(transport, OptionsFor(target.Serial, target.ScanAllowance, demo is not null), TimeProvider.System, log), plan, TimeProvider.System, log, cli.Journal);
         session = new LinkSession(bus, demo);
         error = null;
         return true;
     }
 
-    /// <summary>The medium's link options, with the scan time allowed for (--scan-ms) and, on a demo line, its host allowance.</summary>
+    /// <summary>The medium's protocol v3 link options, with the scan time allowed for (--scan-ms) and, on a demo line, its host allowance.</summary>
     public static LinkOptions OptionsFor(SerialSettings serial, TimeSpan? scanAllowance, bool demo)
     {
-        var options = LinkOptions.For(serial);
+        var options = V3LinkOptions.For(serial);
         options = scanAllowance is { } scan ? options with { ScanAllowance = scan } : options;
         return demo ? options with { ScanAllowance = options.ScanAllowance + DemoLine.HostAllowance } : options;
     }

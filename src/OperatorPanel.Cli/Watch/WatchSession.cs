@@ -142,7 +142,7 @@ internal sealed class WatchSession : IAsyncDisposable
                 }
 
                 var failure = reply.Failure!;
-                if (failure.Kind == PlcErrorKind.HandlerProtocolV1 || attempt == IdentifyAttempts)
+                if (failure.Kind == PlcErrorKind.HandlerOutdated || attempt == IdentifyAttempts)
                 {
                     _handlerChecks[station.Address] = $"not identified: {failure.Message}";
                     log.Warning("{Station}: IDENTIFY failed: {Reason}", station.Address, failure.Message);

@@ -82,8 +82,8 @@ public sealed class Bus : IAsyncDisposable
 
     /// <summary>
     /// Starts polling <paramref name="plan"/> in protocol v3 on <paramref name="link"/>, which the bus owns from now on:
-    /// experimental, for tests, until the v3 handler meets its goals (docs/v3-panel-side.md). Writes, IDENTIFY, STOP
-    /// and the settling of cut-short writes go through the link's IPlcLink face; stations are read by the v3 readers.
+    /// how every Freeport bus of a project runs (Line/ProjectLine). Writes, IDENTIFY, STOP and the settling of cut-short
+    /// writes go through the link's IPlcLink face; stations are read by the v3 readers (docs/v3-panel-side.md).
     /// </summary>
     public static Bus StartV3(V3Link link, PollPlan plan, BusSettings settings, TimeProvider? time = null, ILogger? logger = null, Action<IReadOnlyList<ValueChange>>? onChanges = null)
     {
@@ -99,6 +99,10 @@ public sealed class Bus : IAsyncDisposable
     /// </summary>
     public static Bus OnDemand(PlcLink link, PollPlan plan, TimeProvider? time = null, ILogger? logger = null, IAuditTrail? audit = null) =>
         Start(link, plan, BusSettings.OnDemand with { Audit = audit }, time, logger);
+
+    /// <summary>As above in protocol v3: READ per range (a DEFINE LIST would cost more than the one or two refreshes it serves).</summary>
+    public static Bus OnDemand(V3Link link, PollPlan plan, TimeProvider? time = null, ILogger? logger = null, IAuditTrail? audit = null) =>
+        StartV3(link, plan, BusSettings.OnDemand with { Audit = audit }, time, logger);
 
     public string PortName { get; }
 
@@ -160,8 +164,16 @@ public sealed class Bus : IAsyncDisposable
             cancellationToken);
     }
 
-    /// <summary>What the station said in its last answered IDENTIFY on this bus; null before one answered.</summary>
-    public IdentifyResponse? IdentityOf(Station station) => _identities.GetValueOrDefault(station);
+    /// <summary>
+    /// What the station said in its last answered IDENTIFY on this bus; null before one answered. On a v3 bus the link's
+    /// (it also hears the IDENTIFY the list reader sends itself), with the whole v3 identity in
+    /// <see cref="IdentifyResponse.V3Identity"/>.
+    /// </summary>
+    public IdentifyResponse? IdentityOf(Station station)
+    {
+        var stored = _identities.GetValueOrDefault(station);
+        return _v3?.IdentityOf(station) is { } v3 && stored?.V3Identity != v3 ? V3Link.AsIdentifyResponse(station, v3) : stored;
+    }
 
     /// <summary>What the station's last IDENTIFY brought: its reply (a refusal included) or the failure; null before any.</summary>
     public LinkReply? LastIdentifyOf(Station station) => _lastIdentify.GetValueOrDefault(station);

@@ -1,6 +1,7 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Projects;
@@ -16,8 +17,8 @@ namespace OperatorPanel.Core.Line;
 /// <summary>
 /// A project's line: its buses. While connected, each <see cref="ProjectBus"/> (the stations on one serial port) is a
 /// running <see cref="Bus"/> over a transport from the <see cref="ILineConnector"/>. A value travels one way: the
-/// transport's bytes → <see cref="PlcLink"/> (FrameReader, ResponseCodec: the reply to the link's own sequence number) →
-/// the bus's polling loop (a reader per way of reading, ValueStore: a <see cref="ValueChange"/> batch per cycle) → this
+/// transport's bytes → <see cref="V3Link"/> (protocol v3: Protocol/V3's Reader cuts frames by LEN, Codec takes the reply
+/// whose REQCHECK is the request's) → the bus's polling loop (a reader per way of reading, ValueStore: a <see cref="ValueChange"/> batch per cycle) → this
 /// line, which routes each change by <see cref="WatchedItem"/> to the <see cref="ILineValues"/> subscribers of that
 /// address only, through <see cref="ProjectLineOptions.Deliver"/> (the UI dispatcher in the panel); docs/architecture.md
 /// walks it hop by hop. The panel's session and <c>opanel watch</c> both open their line here. Connect, disconnect and
@@ -90,7 +91,7 @@ public sealed partial class ProjectLine : IAsyncDisposable
             };
             var running = bus.Serial.Protocol == LinkProtocol.Ppi
                 ? Bus.StartPpi(new PpiLink(transport, _options.PpiOptionsFor(bus.Serial), _time, _logger), bus.Plan(), settings, _time, _logger, OnBusChanges)
-                : Bus.Start(new PlcLink(transport, options, _time, _logger), bus.Plan(), settings, _time, _logger, OnBusChanges);
+                : Bus.StartV3(new V3Link(transport, options, _time, _logger), bus.Plan(), settings, _time, _logger, OnBusChanges);
             _buses.Add(new LineBus(bus, running));
         }
 

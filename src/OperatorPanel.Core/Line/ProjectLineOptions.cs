@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Transport;
 
@@ -9,7 +10,7 @@ namespace OperatorPanel.Core.Line;
 public sealed record ProjectLineOptions
 {
     /// <summary>Timing and retry rules of each bus's link; the medium's defaults unless a caller allows longer PLC scans.</summary>
-    public Func<SerialSettings, LinkOptions> LinkOptionsFor { get; init; } = serial => LinkOptions.For(serial);
+    public Func<SerialSettings, LinkOptions> LinkOptionsFor { get; init; } = serial => V3LinkOptions.For(serial);
 
     /// <summary>Timing and repeats of a PPI bus's masters; the master's defaults at the bus's baud unless a caller allows more.</summary>
     public Func<SerialSettings, PpiMasterOptions> PpiOptionsFor { get; init; } = serial => PpiMasterOptions.ForBaud(serial.BaudRate);

@@ -174,7 +174,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
         if (kind == PlcErrorKind.NoAnswer && request is IdentifyRequest identify && !_spokeV2.ContainsKey(identify.Station)
             && await AnswersV1ProbeAsync(identify, statistics, cancellationToken).ConfigureAwait(false))
         {
-            return new LinkReply.Failed(new PlcCommunicationException(PlcErrorKind.HandlerProtocolV1, request.Station, HandlerV1.Message(request.Station)), Sent: true);
+            return new LinkReply.Failed(new PlcCommunicationException(PlcErrorKind.HandlerOutdated, request.Station, HandlerV1.Message(request.Station)), Sent: true);
         }
 
         // Debug: the bus's station states log a station falling silent, once (Polling/StationTracker).

@@ -16,8 +16,8 @@ namespace OperatorPanel.Core.Projects;
 /// <param name="Tags">Memory cells shown in the PLC memory window.</param>
 /// <param name="Alarms">Flag bits whose rising state shows a message.</param>
 /// <remarks>
-/// <see cref="AllowStop"/> ("allowStop" in the file, default false) is an init property so the many stations built
-/// in code keep their shape.
+/// <see cref="AllowStop"/> ("allowStop" in the file, default false) and <see cref="Compact"/> ("compact", default false)
+/// are init properties so the many stations built in code keep their shape.
 /// </remarks>
 public sealed record ProjectStation(
     string Name,
@@ -34,6 +34,14 @@ public sealed record ProjectStation(
     /// by default: a remote STOP halts the line (docs/protocol.md, "07 STOP").
     /// </summary>
     public bool AllowStop { get; init; }
+
+    /// <summary>
+    /// The station's handler is the compact protocol 3 handler (IDENTIFY, READ, WRITE, WRITE BITS; no list, no STOP:
+    /// 74 V bytes and about half the instructions, docs/protocol-v3.md section 6), the choice for a CPU 221 or 222 whose
+    /// 4096 bytes of program memory the full handler would crowd. The panel reads such a station with READ; opanel
+    /// generate and Generate PLC code honour it. Off by default, and old project files (without "compact") load unchanged.
+    /// </summary>
+    public bool Compact { get; init; }
 
     /// <summary>The symbol the project gives <paramref name="address"/> (an output, input or tag; the first tag of several); null if none.</summary>
     public string? SymbolOf(PlcAddress address) =>

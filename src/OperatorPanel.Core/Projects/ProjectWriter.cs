@@ -74,6 +74,12 @@ internal static class ProjectWriter
         }
         json.WriteEndObject();
         json.WriteBoolean("allowStop", station.AllowStop);
+        if (station.Compact)
+        {
+            // Written only when set, so a project with the full handler keeps the file it always had.
+            json.WriteBoolean("compact", true);
+        }
+
         WriteSymbols(json, "inputs", station.Inputs);
         WriteSymbols(json, "outputs", station.Outputs);
         json.WriteStartArray("tags");

@@ -60,7 +60,7 @@ internal static class StationReader
             return null;
         }
 
-        fields.ReportUnknown("name", "address", "cpu", "link", "allowStop", "inputs", "outputs", "tags", "alarms");
+        fields.ReportUnknown("name", "address", "cpu", "link", "allowStop", "compact", "inputs", "outputs", "tags", "alarms");
         var name = fields.String("name");
         if (name is not null && string.IsNullOrWhiteSpace(name))
         {
@@ -72,6 +72,7 @@ internal static class StationReader
         var cpu = CpuReader.Read(fields.Object("cpu"));
         var link = LinkReader.Read(fields.Object("link"), cpu);
         var allowStop = fields.Bool("allowStop", fallback: false);
+        var compact = fields.Bool("compact", fallback: false);
         keys = new StationKeys(fields, name, address, link);
 
         var registry = new EntryRegistry();
@@ -79,12 +80,12 @@ internal static class StationReader
         var outputs = IoSymbolReader.ReadAll(fields, "outputs", MemoryArea.Q, cpu, registry);
         var tags = TagReader.ReadAll(fields, cpu, link?.Protocol, registry);
         var alarms = AlarmReader.ReadAll(fields, cpu, link?.Protocol, registry);
-        if (name is null || address is null || cpu is null || link is null || allowStop is null || inputs is null || outputs is null || tags is null || alarms is null)
+        if (name is null || address is null || cpu is null || link is null || allowStop is null || compact is null || inputs is null || outputs is null || tags is null || alarms is null)
         {
             return null;
         }
 
-        return new ProjectStation(name, address.Value, cpu, link, inputs.Value, outputs.Value, tags.Value, alarms.Value) { AllowStop = allowStop.Value };
+        return new ProjectStation(name, address.Value, cpu, link, inputs.Value, outputs.Value, tags.Value, alarms.Value) { AllowStop = allowStop.Value, Compact = compact.Value };
     }
 
     private static Station? ReadAddress(JsonFields fields)

@@ -39,6 +39,13 @@ public sealed record IdentifyResponse(
 {
     public override CommandCode Command => CommandCode.Identify;
 
+    /// <summary>
+    /// The whole protocol v3 IDENTIFY (LIST_ITEMS, LIST_BYTES, MAX_REQUEST, END_TIMEOUT_MS, FEATURES) this response was
+    /// mapped from (Link/V3/V3Link.Translate.cs); null for a v2 reply. <see cref="ReplyDelayMs"/> then holds
+    /// END_TIMEOUT_MS and <see cref="CopyBytes"/> LIST_BYTES.
+    /// </summary>
+    public V3.Identity? V3Identity { get; init; }
+
     /// <summary>SM0.7: the mode switch is at RUN (off means TERM).</summary>
     public bool ModeSwitchRun => (StatusFlags & 0x01) != 0;
 

@@ -128,7 +128,7 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null, AuditConte
         bool? answers = failure.Kind switch
         {
             PlcErrorKind.NoAnswer or PlcErrorKind.Timeout => false,
-            PlcErrorKind.HandlerProtocolV1 or PlcErrorKind.NegativeReply => true,
+            PlcErrorKind.HandlerOutdated or PlcErrorKind.NegativeReply => true,
             PlcErrorKind.PortUnavailable or PlcErrorKind.FrameCorrupt or PlcErrorKind.AnotherMaster => null,
         };
         return new SilenceCheck(answers, failure.Message);

@@ -19,10 +19,11 @@ public enum PlcErrorKind
     NoAnswer,
 
     /// <summary>
-    /// IDENTIFY got no answer but the station answered the v1 IDENTIFY probe: its handler speaks protocol v1, ignores
-    /// every v2 frame, and must be regenerated and downloaded (<see cref="Link.HandlerV1"/>).
+    /// The station runs an Operator Panel handler of an older protocol (v1 or v2): IDENTIFY v3 got no answer but the
+    /// station answered a v2 or v1 IDENTIFY (Link/V3/HandlerBeforeV3), or its IDENTIFY reply is not v3's. It ignores the
+    /// panel's frames and must be regenerated (opanel generate) and downloaded.
     /// </summary>
-    HandlerProtocolV1,
+    HandlerOutdated,
 
     /// <summary>
     /// PPI: another master is on the bus (its token frames or its requests were seen). The panel is a PPI master that

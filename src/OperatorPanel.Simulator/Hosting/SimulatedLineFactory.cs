@@ -15,7 +15,8 @@ public static class SimulatedLineFactory
 {
     /// <summary>
     /// The <paramref name="stations"/> on a line of <paramref name="serial"/>'s settings. For the STL model each station
-    /// runs the text <paramref name="handlerSource"/> gives for it; false with a message naming the station and the
+    /// runs the text <paramref name="handlerSource"/> gives for it (the handler of its protocol); the reference model is
+    /// Reference/V3's for protocol 3 stations (<see cref="V3ReferenceLine"/>), the v2 one for protocol 2; false with a message naming the station and the
     /// source's or the loader's reason when one cannot run (the reference model never asks the source).
     /// </summary>
     public static bool TryCreate(
@@ -35,6 +36,7 @@ public static class SimulatedLineFactory
         ArgumentNullException.ThrowIfNull(serial);
         ArgumentNullException.ThrowIfNull(handlerSource);
         line = null;
+        var configs = stations.ToList();
         if (model == SimulationModel.Reference && ppi == PpiMode.WithoutHandler)
         {
             error = "PPI is simulated by the STL model only (--model stl)";
@@ -43,14 +45,22 @@ public static class SimulatedLineFactory
 
         if (model == SimulationModel.Reference)
         {
-            line = CreateReference(stations, runProcess);
+            if (configs.Select(c => c.Protocol).Distinct().Count() > 1)
+            {
+                error = "the reference model serves one protocol per line: give every station protocol 3, or use the STL model";
+                return false;
+            }
+
+            line = configs.All(c => c.Protocol == 3)
+                ? new V3ReferenceLine(configs.Select(c => new Reference.V3.ReferenceHandler(c.V3SetupFor(serial))), runProcess) { CharacterTime = serial.CharacterTime }
+                : CreateReference(configs, runProcess);
             error = null;
             return true;
         }
 
         var pcLine = LineSettings.From(serial);
-        var stl = new StlLine(pcLine);
-        foreach (var config in stations)
+        var stl = new StlLine(pcLine) { Protocol = configs.FirstOrDefault()?.Protocol ?? 2 };
+        foreach (var config in configs)
         {
             var awlText = EmptyProgram.Awl;
             if (ppi == PpiMode.BesideHandler && !handlerSource(config, serial, out awlText, out var sourceError))

@@ -17,6 +17,8 @@ public sealed class StlLine : ISimulatedLine
 
     private readonly List<StlStation> _stations = [];
     private readonly List<DemoProcess> _processes = [];
+    private readonly Core.Protocol.V3.Reader _requests = new(Core.Protocol.V3.Codec.MinRequestLen);
+    private readonly Core.Protocol.V3.Reader _replies = new();
 
     public StlLine(LineSettings pcLine) => Bus = new FreeportBus(pcLine);
 
@@ -27,6 +29,12 @@ public sealed class StlLine : ISimulatedLine
     public IReadOnlyList<DemoProcess> Processes => _processes;
 
     public TimeSpan Now { get; private set; }
+
+    /// <summary>
+    /// The protocol the handlers speak, for counting frames (<see cref="FramesReceived"/>, <see cref="Replies"/>): 2 ends
+    /// a frame at '&gt;'; 3 (binary frames) cuts them by LEN as a radio module does (Protocol/V3's Reader).
+    /// </summary>
+    public int Protocol { get; init; } = 2;
 
     public int FramesReceived { get; private set; }
 
@@ -70,10 +78,7 @@ public sealed class StlLine : ISimulatedLine
 
     public void Deliver(ReadOnlySpan<byte> characters)
     {
-        foreach (var b in characters)
-        {
-            FramesReceived += b == FrameCodec.EndChar ? 1 : 0;
-        }
+        FramesReceived += Protocol == 3 ? Count(_requests, characters) : characters.Count(FrameCodec.EndChar);
 
         Bus.Deliver(characters, Now);
     }
@@ -84,7 +89,20 @@ public sealed class StlLine : ISimulatedLine
     public IReadOnlyList<WireCharacter> TakeCharacters()
     {
         var sent = Bus.TakeTransmitted().Where(c => !c.IsBreak).ToList();
-        Replies += sent.Count(c => c.Value == FrameCodec.EndChar && !c.IsPpi);
+        byte[] freeport = [.. sent.Where(c => !c.IsPpi).Select(c => c.Value)];
+        Replies += Protocol == 3 ? Count(_replies, freeport) : freeport.Count(b => b == FrameCodec.EndChar);
         return sent;
+    }
+
+    private static int Count(Core.Protocol.V3.Reader reader, ReadOnlySpan<byte> bytes)
+    {
+        reader.Append(bytes);
+        var frames = 0;
+        while (reader.TryTake(out _))
+        {
+            frames++;
+        }
+
+        return frames;
     }
 }

@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Protocol.V3;
+using OperatorPanel.Simulator.Reference;
 using OperatorPanel.Simulator.Reference.V3;
 
 namespace OperatorPanel.Simulator.Hosting;
@@ -9,21 +10,27 @@ namespace OperatorPanel.Simulator.Hosting;
 /// time-out (SMW92, END_TIMEOUT_MS) passes without a character or its request buffer is full; the message is handed to
 /// the model then, and its reply leaves at that moment (after any reply still going out) and also reaches the other
 /// stations' RCV, as on a real bus. Characters take <see cref="CharacterTime"/> each (zero: no time). <see cref="Tamper"/>
-/// lets a test drop or change a reply on its way to the PC (a lost or corrupted reply).
+/// lets a test drop or change a reply on its way to the PC (a lost or corrupted reply). With demo processes
+/// (<c>opanel simulate</c>, the demo line) the bottle filler drives each station's memory as time passes.
 /// </summary>
 public sealed class V3ReferenceLine : ISimulatedLine
 {
     private readonly List<Receiver> _receivers;
+    private readonly List<DemoProcess> _processes;
     private readonly Queue<(TimeSpan Due, byte[] Reply)> _out = new();
     private TimeSpan _lastDue;
 
-    public V3ReferenceLine(IEnumerable<ReferenceHandler> stations)
+    public V3ReferenceLine(IEnumerable<ReferenceHandler> stations, bool runProcess = false)
     {
         ArgumentNullException.ThrowIfNull(stations);
-        _receivers = [.. stations.Select(s => new Receiver(s))];
+        _receivers = [.. stations.Select(s => new Receiver(new V3DemoStation(s)))];
+        _processes = runProcess ? [.. _receivers.Select(r => new DemoProcess(r.Demo))] : [];
     }
 
     public IReadOnlyList<ReferenceHandler> Stations => [.. _receivers.Select(r => r.Station)];
+
+    /// <summary>Whether the demo bottle filler drives the stations' memory.</summary>
+    public bool RunsProcess => _processes.Count > 0;
 
     public TimeSpan Now { get; private set; }
 
@@ -50,11 +57,26 @@ public sealed class V3ReferenceLine : ISimulatedLine
     {
         while (_receivers.Where(r => r.Pending && r.EndsAt <= until).OrderBy(r => r.EndsAt).FirstOrDefault() is { } ended)
         {
-            Now = Max(Now, ended.EndsAt);
+            Advance(ended.EndsAt);
             Complete(ended);
         }
 
-        Now = Max(Now, until);
+        Advance(until);
+    }
+
+    private void Advance(TimeSpan to)
+    {
+        if (to <= Now)
+        {
+            return;
+        }
+
+        foreach (var process in _processes)
+        {
+            process.Advance(to - Now);
+        }
+
+        Now = to;
     }
 
     public void Deliver(ReadOnlySpan<byte> characters)
@@ -90,7 +112,7 @@ public sealed class V3ReferenceLine : ISimulatedLine
     {
         var message = receiver.End();
         FramesReceived++;
-        if (receiver.Station.HandleMessage(message) is not { } reply)
+        if (receiver.Demo.HandleMessage(message) is not { } reply)
         {
             return;
         }
@@ -119,12 +141,14 @@ public sealed class V3ReferenceLine : ISimulatedLine
     private static TimeSpan Max(TimeSpan a, TimeSpan b) => a > b ? a : b;
 
     /// <summary>One station's RCV: idle until '&lt;', then every character until the end time-out or a full buffer.</summary>
-    private sealed class Receiver(ReferenceHandler station)
+    private sealed class Receiver(V3DemoStation station)
     {
         private readonly List<byte> _message = [];
         private TimeSpan _lastAt;
 
-        public ReferenceHandler Station { get; } = station;
+        public V3DemoStation Demo { get; } = station;
+
+        public ReferenceHandler Station => Demo.Handler;
 
         public bool Pending => _message.Count > 0;
 

@@ -5,10 +5,12 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.Simulator.Reference;
 
 /// <summary>
-/// What the handler is generated with: station, port, write mask (bit n = area code n writable; bit 1, I, never),
-/// reply delay (1-255 ms, SMB34), the CPU, where its own V bytes start (by default where the generator puts them:
-/// the end of V), whether STOP (07) is in it, how many V bytes READ CHANGES may use for copies (COPY_BYTES), and for the
-/// STL model the receive timeout and block numbers.
+/// What the handler is generated with: its protocol (<see cref="Protocol"/>: 3, what the panel speaks, or 2), station,
+/// port, write mask (bit n = area code n writable; bit 1, I, never), the CPU, whether STOP is in it, and for the STL
+/// model the receive timeout and block numbers. Protocol 3 adds the compact shape, END_TIMEOUT_MS (the receive
+/// timeout, <see cref="CharTimeoutMs"/>; 0 = the line's default) and V_FIRST (<see cref="V3First"/>); protocol 2 the
+/// reply delay (1-255 ms, SMB34), the buffer start and the READ CHANGES copies (COPY_BYTES). A v3 station is
+/// simulated by Reference/V3's model from <see cref="V3SetupFor"/>.
 /// Invalid settings are programming errors and throw.
 /// </summary>
 public sealed record HandlerConfig
@@ -49,7 +51,29 @@ public sealed record HandlerConfig
         ArgumentOutOfRangeException.ThrowIfGreaterThan(BufferStart + HandlerVBytes, vBytes, nameof(bufferStart));
     }
 
-    /// <summary>V byte offset of the handler's buffer: V_FIRST in IDENTIFY.</summary>
+    /// <summary>3 (binary frames: what the panel speaks; default) or 2 (hex frames: the panel tells it to regenerate).</summary>
+    public int Protocol { get; init; } = 3;
+
+    /// <summary>Protocol 3: the compact handler (IDENTIFY, READ, WRITE, WRITE BITS; no list, no STOP).</summary>
+    public bool Compact { get; init; }
+
+    /// <summary>Protocol 3: V_FIRST as given (--buffer); null = the top of V for the shape.</summary>
+    public int? V3First { get; init; }
+
+    /// <summary>
+    /// The protocol 3 setup of this station on <paramref name="serial"/>'s line: compact or full, Q/M/V of the write
+    /// mask, END_TIMEOUT_MS as given or the line's default (as the generator takes it), STOP unless compact.
+    /// </summary>
+    public V3.HandlerSetup V3SetupFor(Core.Transport.SerialSettings serial)
+    {
+        ArgumentNullException.ThrowIfNull(serial);
+        var end = CharTimeoutMs > 0 ? CharTimeoutMs : Core.Link.V3.V3LinkOptions.DefaultEndTimeoutMs(serial);
+        return new V3.HandlerSetup(
+            Station, Cpu, Compact ? Core.Protocol.V3.HandlerShape.Compact : Core.Protocol.V3.HandlerShape.Full, Port,
+            (byte)(WriteMask & V3.HandlerSetup.DefaultWriteMask), (byte)end, AllowStop && !Compact, V3First);
+    }
+
+    /// <summary>Protocol 2: V byte offset of the handler's buffer: V_FIRST in IDENTIFY.</summary>
     public int BufferStart { get; }
 
     /// <summary>

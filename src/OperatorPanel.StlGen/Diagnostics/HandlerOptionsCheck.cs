@@ -76,7 +76,11 @@ public static partial class HandlerOptionsCheck
             return;
         }
 
-        var bytes = HandlerDefaults.FootprintBytes(options.CopyBytes);
+        // Protocol 3 keeps V_BYTES of its full or compact shape from V_FIRST; protocol 2 its buffer, work bytes and copies.
+        var bytes = options.Protocol == 3
+            ? (options.Compact ? Core.Protocol.V3.HandlerShape.Compact : Core.Protocol.V3.HandlerShape.Full).VBytes
+            : HandlerDefaults.FootprintBytes(options.CopyBytes);
+        start = options.Protocol == 3 ? options.EffectiveV3First : start;
         var end = start + bytes - 1;
         if (start < 0 || end >= vBytes)
         {

@@ -6,7 +6,9 @@ namespace OperatorPanel.StlGen.Merge;
 
 /// <summary>
 /// What the handler for checked <see cref="HandlerOptions"/> reserves, in the terms a user's program could collide with:
-/// block numbers and names, interrupt events, the port and its special memory bytes, the V bytes.
+/// block numbers and names, interrupt events, the port and its special memory bytes, the V bytes. For protocol 3 the
+/// events, blocks and SM bytes are v2's superset (v3 has no timed interrupt, SMB34 stays the user's: reported anyway,
+/// the conservative side), the V bytes its own.
 /// </summary>
 internal sealed class HandlerFootprint
 {
@@ -20,8 +22,10 @@ internal sealed class HandlerFootprint
         ReceiveEvent = context.ReceiveEvent;
         TransmitEvent = context.TransmitEvent;
         var layout = context.Layout;
-        FirstVByte = layout.BufferStart;
-        LastVByte = layout.LastByte;
+        // Protocol 3 keeps its bytes from V_FIRST (HandlerShape.VBytes of the full or compact shape), not v2's layout.
+        (FirstVByte, LastVByte) = options.Protocol == 3
+            ? (options.EffectiveV3First, options.EffectiveV3First + (options.Compact ? Core.Protocol.V3.HandlerShape.Compact : Core.Protocol.V3.HandlerShape.Full).VBytes - 1)
+            : (layout.BufferStart, layout.LastByte);
         PortControlByte = context.SmPort(30);
         FirstReceiveByte = context.SmPort(86);
         LastReceiveByte = context.SmPort(94);

@@ -1,4 +1,5 @@
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
 
@@ -60,20 +61,23 @@ public sealed record HandlerOptions
     public bool AllowStop { get; init; }
 
     /// <summary>
-    /// 2 (hex frames, docs/protocol.md of version 2: what the panel speaks today) or 3 (binary frames). Version 3 is
-    /// generated on request until the panel's link speaks it.
+    /// 3 (binary frames, docs/protocol-v3.md: what the panel speaks) or 2 (hex frames, the previous protocol). The
+    /// record's default stays 2 for the v2 generator's tests and benches; every product path (<see cref="For"/>,
+    /// <see cref="ForLine"/>, opanel generate, the panel's Generate PLC code) asks for 3, and the panel tells a v2
+    /// handler to regenerate.
     /// </summary>
     public int Protocol { get; init; } = 2;
 
     /// <summary>Version 3 only: the compact handler (IDENTIFY, READ, WRITE, WRITE BIT; no list, no STOP).</summary>
     public bool Compact { get; init; }
 
-    /// <summary>The settings a project fixes for one station: CPU, station address, baud, parity, data and stop bits, STOP.</summary>
+    /// <summary>The settings a project fixes for one station: protocol 3, CPU, station address, baud, parity, data and stop bits, STOP, compact.</summary>
     public static HandlerOptions For(ProjectStation station)
     {
         ArgumentNullException.ThrowIfNull(station);
         return new HandlerOptions
         {
+            Protocol = 3,
             Cpu = station.Cpu,
             Station = station.Address.Address,
             BaudRate = station.Link.BaudRate,
@@ -81,6 +85,7 @@ public sealed record HandlerOptions
             DataBits = station.Link.DataBits,
             StopBits = station.Link.StopBits,
             AllowStop = station.AllowStop,
+            Compact = station.Compact,
         };
     }
 
@@ -111,7 +116,7 @@ public sealed record HandlerOptions
     /// rounded down plus 2 ms (the timer counts in whole ms, so it must outlast one character by more than 1 ms), and
     /// at least the cable's turnaround, since the reply cannot start before the receive ends (docs/protocol.md section 1.5).
     /// </summary>
-    public int EffectiveEndTimeoutMs => CharTimeoutMs > 0 ? CharTimeoutMs : Math.Max((int)Math.Floor(CharacterMs) + 2, TurnaroundMs);
+    public int EffectiveEndTimeoutMs => CharTimeoutMs > 0 ? CharTimeoutMs : V3LinkOptions.DefaultEndTimeoutMs(BaudRate, Parity, DataBits);
 
     /// <summary>
     /// Version 3: the write mask as the handler applies it: Q, M and V only (protocol 3 never writes I or SM).

@@ -38,7 +38,7 @@ public sealed partial class AlarmsViewModel
         StationHealth.Offline => "offline",
         StationHealth.Stopped => "not answering",
         StationHealth.StoppedByPanel => "stopped by the panel",
-        StationHealth.HandlerMismatch or StationHealth.HandlerV1 => "runs another handler",
+        StationHealth.HandlerMismatch or StationHealth.HandlerOutdated => "runs another handler",
         StationHealth.Unknown or null => "not connected",
     };
 

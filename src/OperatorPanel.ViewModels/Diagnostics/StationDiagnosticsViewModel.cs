@@ -64,7 +64,18 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
     public string HandlerText => Status.IsPpi
         ? "none needed: the bus speaks PPI"
         : Status.Identity is { } id
-        ? $"protocol {id.ProtocolVersion}, handler revision {id.HandlerRevision}{(id.ProtocolMatches ? string.Empty : " (the panel speaks protocol " + Core.Protocol.HandlerIdentity.ProtocolVersion + ")")}"
+        ? $"protocol {id.ProtocolVersion}, handler revision {id.HandlerRevision}{(id.ProtocolMatches ? string.Empty : " (the panel speaks protocol " + StationIdentity.PanelProtocol + ")")}"
+            + (id.V3 is { } v3 ? $", {(v3.HasList ? "full" : "compact")}" : string.Empty)
+        : "-";
+
+    /// <summary>
+    /// The v3 IDENTIFY's shape fields: FEATURES, LIST_ITEMS and LIST_BYTES, MAX_REQUEST, END_TIMEOUT_MS, the handler's
+    /// V bytes (docs/protocol-v3.md section 2, 01 IDENTIFY); "-" before one answered.
+    /// </summary>
+    public string HandlerShapeText => Status.Identity?.V3 is { } v3
+        ? $"FEATURES 16#{v3.Features:X2} ({(v3.HasList ? "list" : "no list")}{(v3.HasStop ? ", STOP" : string.Empty)}); "
+            + (v3.HasList ? $"list of {v3.ListItems} items, {v3.ListBytes} bytes; " : "no list: read with READ; ")
+            + $"requests up to {v3.MaxRequestBytes} bytes; END_TIMEOUT_MS {v3.EndTimeoutMs}; own V bytes VB{v3.VFirst}-VB{v3.VFirst + v3.VBytes - 1}"
         : "-";
 
     /// <summary>RUN when it answers (Freeport works only in RUN); STOP or TERM when it went silent after answering.</summary>
@@ -73,7 +84,7 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
         StationHealth.Online or StationHealth.HandlerMismatch => Status.Identity is { ModeSwitchRun: false } ? "RUN, mode switch at TERM" : "RUN",
         StationHealth.Stopped => "STOP or TERM (no Freeport reply)",
         StationHealth.StoppedByPanel => "STOP (by the panel)",
-        StationHealth.HandlerV1 => "RUN (handler protocol v1)",
+        StationHealth.HandlerOutdated => "RUN (handler of an older protocol)",
         StationHealth.Offline => "unknown (offline)",
         StationHealth.Unknown => "-",
     };

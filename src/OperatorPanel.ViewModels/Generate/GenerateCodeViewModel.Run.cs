@@ -150,8 +150,10 @@ public sealed partial class GenerateCodeViewModel
         var interrupt = Number(FirstInterrupt, "first INT");
         var delay = Number(ReplyDelay, "reply delay");
         var charTimeout = Number(CharTimeout, "inter-character timeout");
+        // Protocol 3: the panel speaks it and tells an older handler to regenerate (docs/protocol-v3.md section 8).
         options = new HandlerOptions
         {
+            Protocol = 3,
             Cpu = station.Cpu,
             Port = Port,
             BaudRate = station.Link.BaudRate,
@@ -166,6 +168,7 @@ public sealed partial class GenerateCodeViewModel
             CharTimeoutMs = charTimeout ?? 0,
             WriteMask = (WriteQ ? 1 << 2 : 0) | (WriteM ? 1 << 3 : 0) | (WriteV ? 1 << 4 : 0) | (WriteSm ? 1 << 5 : 0),
             AllowStop = station.AllowStop,
+            Compact = station.Compact,
         };
         return Diagnostics.Count == 0;
     }

@@ -98,7 +98,7 @@ public sealed partial class GenerateCodeViewModel : ObservableObject
         var cpu = Station.Cpu;
         Ports = [.. Enumerable.Range(0, cpu.CommunicationPorts)];
         _port = 0;
-        _bufferStart = string.Create(CultureInfo.InvariantCulture, $"VB{HandlerDefaults.BufferStart(cpu)}");
+        _bufferStart = string.Create(CultureInfo.InvariantCulture, $"VB{HandlerDefaults.V3First(cpu, Station.Compact)}"); // V_FIRST of the project's protocol 3 handler
         _firstSubroutine = HandlerDefaults.FirstSubroutine(cpu).ToString(CultureInfo.InvariantCulture);
         _firstInterrupt = HandlerDefaults.FirstInterrupt(cpu).ToString(CultureInfo.InvariantCulture);
         var defaults = new HandlerOptions { Cpu = cpu };

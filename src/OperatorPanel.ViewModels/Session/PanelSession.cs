@@ -4,6 +4,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
@@ -57,10 +58,10 @@ public sealed partial class PanelSession : ObservableObject
     }
 
     /// <summary>
-    /// The timing and retry rules of each bus's link; LinkOptions.For (the medium's defaults) unless the App sets a
-    /// longer scan allowance for slow PLC programs. Set before connecting.
+    /// The timing and retry rules of each bus's link; V3LinkOptions.For (protocol v3, the medium's defaults) unless the
+    /// App sets a longer scan allowance for slow PLC programs. Set before connecting.
     /// </summary>
-    public Func<SerialSettings, LinkOptions> LinkOptionsFor { get; init; } = serial => LinkOptions.For(serial);
+    public Func<SerialSettings, LinkOptions> LinkOptionsFor { get; init; } = serial => V3LinkOptions.For(serial);
 
     /// <summary>The project is replaced, edited or saved. Raised on the UI thread.</summary>
     public event EventHandler<ProjectChangedEventArgs>? ProjectChanged;

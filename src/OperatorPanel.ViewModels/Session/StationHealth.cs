@@ -27,8 +27,8 @@ public enum StationHealth
     StoppedByPanel,
 
     /// <summary>
-    /// It ignores the panel's frames but answered the v1 IDENTIFY probe: it runs an Operator Panel handler of protocol
-    /// version 1, which must be generated again and downloaded (Core/Link/HandlerV1).
+    /// It ignores the panel's frames but answered a v2 or v1 IDENTIFY: it runs an Operator Panel handler of an older
+    /// protocol, which must be generated again and downloaded (Core/Link/V3/HandlerBeforeV3, PlcErrorKind.HandlerOutdated).
     /// </summary>
-    HandlerV1,
+    HandlerOutdated,
 }

@@ -6,7 +6,7 @@ namespace OperatorPanel.ViewModels.Session;
 /// <summary>What a station said about itself in its IDENTIFY reply (docs/protocol.md, "01 IDENTIFY").</summary>
 /// <param name="Model">The CPU model the handler was generated for; null for a code this panel does not know.</param>
 /// <param name="Revision">Early or current, as the handler was generated.</param>
-/// <param name="ProtocolVersion">The frame protocol the handler speaks; this panel speaks version 2.</param>
+/// <param name="ProtocolVersion">The frame protocol the handler speaks; this panel speaks version 3.</param>
 /// <param name="HandlerRevision">The generator revision of the handler program.</param>
 /// <param name="Smb6">SMB6, the CPU identifier register (CPU type in bits 4-7, seed 002 Table C-7).</param>
 /// <param name="ModeSwitchRun">SM0.7: the mode switch is at RUN.</param>
@@ -24,7 +24,13 @@ public sealed record StationIdentity(
     ushort MinScanMs,
     ushort MaxScanMs)
 {
-    public bool ProtocolMatches => ProtocolVersion == HandlerIdentity.ProtocolVersion;
+    /// <summary>The protocol this panel speaks (docs/protocol-v3.md).</summary>
+    public const byte PanelProtocol = Core.Protocol.V3.Identity.ProtocolVersion;
+
+    public bool ProtocolMatches => ProtocolVersion == PanelProtocol;
+
+    /// <summary>The whole v3 IDENTIFY (the handler's shape: list, STOP, MAX_REQUEST, END_TIMEOUT_MS, V bytes); null for an older reply.</summary>
+    public Core.Protocol.V3.Identity? V3 { get; init; }
 
     /// <summary>FEATURES bit 0: the handler was generated with 07 STOP (docs/protocol.md, "01 IDENTIFY").</summary>
     public bool StopEnabled { get; init; }
@@ -43,6 +49,7 @@ public sealed record StationIdentity(
             reply.LastScanMs, reply.MinScanMs, reply.MaxScanMs)
         {
             StopEnabled = reply.StopEnabled,
+            V3 = reply.V3Identity,
         };
     }
 

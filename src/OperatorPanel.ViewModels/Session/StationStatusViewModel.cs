@@ -13,7 +13,7 @@ namespace OperatorPanel.ViewModels.Session;
 public sealed partial class StationStatusViewModel(ProjectStation station) : ObservableObject
 {
     private bool _hasAnswered;
-    private bool _handlerV1;
+    private bool _handlerOutdated;
     private bool _lineOpen;
 
     public ProjectStation Station { get; } = station;
@@ -63,9 +63,9 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
         StationHealth.Offline => "offline: " + (LastError ?? "no reply"),
         StationHealth.Stopped => "no answer: PLC in STOP, mode switch at TERM, or off the bus",
         StationHealth.HandlerMismatch =>
-            $"handler protocol version {Identity?.ProtocolVersion} is not the panel's {HandlerIdentity.ProtocolVersion}: generate and download the PLC code again",
+            $"handler protocol version {Identity?.ProtocolVersion} is not the panel's {StationIdentity.PanelProtocol}: generate and download the PLC code again",
         StationHealth.StoppedByPanel => "stopped by the panel: the port speaks PPI until someone sets RUN",
-        StationHealth.HandlerV1 => "handler protocol v1: regenerate the PLC code (File > Generate PLC code) and download it",
+        StationHealth.HandlerOutdated => "handler of an older protocol (the panel speaks v3): regenerate the PLC code (File > Generate PLC code) and download it",
         StationHealth.Unknown => _lineOpen ? "not read yet" : "not connected",
     };
 
@@ -112,7 +112,7 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
         if (lastIdentify is not null)
         {
             var failure = lastIdentify.Failure;
-            _handlerV1 = failure?.Kind == PlcErrorKind.HandlerProtocolV1;
+            _handlerOutdated = failure?.Kind == PlcErrorKind.HandlerOutdated;
             IdentifyError = lastIdentify.Response switch
             {
                 IdentifyResponse => null,
@@ -140,9 +140,9 @@ public sealed partial class StationStatusViewModel(ProjectStation station) : Obs
             return StationHealth.HandlerMismatch;
         }
 
-        if (_handlerV1 && status.State != StationState.Online)
+        if (_handlerOutdated && status.State != StationState.Online)
         {
-            return StationHealth.HandlerV1;
+            return StationHealth.HandlerOutdated;
         }
 
         // StationTracker writes "{kind}: {message}"; a missing port is offline whatever the station did before.

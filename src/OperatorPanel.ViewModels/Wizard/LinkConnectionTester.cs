@@ -1,6 +1,7 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Protocol;
@@ -48,7 +49,7 @@ public sealed class LinkConnectionTester : IConnectionTester
     public async Task<LinkReply> IdentifyAsync(SerialSettings link, Station station, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(link);
-        await using var bus = Bus.OnDemand(new PlcLink(_openTransport(link), LinkOptions.For(link), _time), PollPlan.Empty, _time);
+        await using var bus = Bus.OnDemand(new V3Link(_openTransport(link), V3LinkOptions.For(link), _time), PollPlan.Empty, _time);
         return await bus.IdentifyAsync(station, cancellationToken);
     }
 

@@ -75,7 +75,7 @@ public sealed partial class LinkStepViewModel
     private static string Describe(string where, string portName, PlcCommunicationException failure) => failure.Kind switch
     {
         PlcErrorKind.PortUnavailable => $"{portName} could not be used: {failure.Message}",
-        PlcErrorKind.HandlerProtocolV1 => $"{where}: {failure.Message}.",
+        PlcErrorKind.HandlerOutdated => $"{where}: {failure.Message}.",
         PlcErrorKind.AnotherMaster => $"{where}: another PPI master is on the bus; the panel does not share it. ({failure.Message})",
         PlcErrorKind.FrameCorrupt => $"{where}: garbled replies; check that baud rate and parity match the handler. ({failure.Message})",
         PlcErrorKind.Timeout or PlcErrorKind.NegativeReply or PlcErrorKind.NoAnswer =>

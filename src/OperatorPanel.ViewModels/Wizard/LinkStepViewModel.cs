@@ -22,16 +22,19 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
     private int _dataBits;
     private LinkKind _kind;
     private LinkProtocol _protocol;
+    private bool _compact;
 
-    internal LinkStepViewModel(SerialSettings link, CpuStepViewModel cpuStep, ISerialPortCatalog catalog, IConnectionTester tester, TimeProvider time)
+    internal LinkStepViewModel(SerialSettings link, bool compact, CpuStepViewModel cpuStep, ISerialPortCatalog catalog, IConnectionTester tester, TimeProvider time)
     {
         (_cpuStep, _catalog, _tester, _time) = (cpuStep, catalog, tester, time);
-        (_portName, _baudRate, _parity, _dataBits, _kind, _protocol) = (link.PortName, link.BaudRate, link.Parity, link.DataBits, link.Kind, link.Protocol);
+        (_portName, _baudRate, _parity, _dataBits, _kind, _protocol, _compact) = (link.PortName, link.BaudRate, link.Parity, link.DataBits, link.Kind, link.Protocol, compact);
         cpuStep.PropertyChanged += (_, e) =>
         {
             if (e.PropertyName == nameof(CpuStepViewModel.Cpu))
             {
                 OnPropertyChanged(nameof(BaudRates));
+                // The compact handler is the default offered for the CPUs with 4096 bytes of program memory.
+                Compact = IsSmallCpu(_cpuStep.Cpu);
             }
         };
         RefreshPorts();
@@ -76,8 +79,26 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
             }
 
             OnPropertyChanged(nameof(BaudRates));
+            OnPropertyChanged(nameof(CanBeCompact));
         }
     }
+
+    /// <summary>Why the compact handler is offered first for a CPU 221 or 222, in one sentence for the step's page.</summary>
+    public static string CompactHint =>
+        "The compact handler (read and write only: no change-only list, no remote STOP) needs 74 V bytes and about half the "
+        + "program of the full one, so it is the default for a CPU 221 or 222, whose 4096 bytes of program memory the full "
+        + "handler would crowd; the panel then reads 16 bytes per request instead of the whole list in one.";
+
+    /// <summary>
+    /// The station's handler is the compact protocol 3 one (ProjectStation.Compact); set when the CPU step chooses a CPU
+    /// 221 or 222, cleared for the larger CPUs, and the user may change it. Freeport only.
+    /// </summary>
+    public bool Compact { get => _compact; set => Edit(ref _compact, value); }
+
+    /// <summary>A handler only runs on a Freeport bus.</summary>
+    public bool CanBeCompact => Protocol == LinkProtocol.Freeport;
+
+    private static bool IsSmallCpu(Core.Cpu.CpuProfile cpu) => cpu.Model is Core.Cpu.CpuModel.Cpu221 or Core.Cpu.CpuModel.Cpu222;
 
     public IReadOnlyList<Parity> Parities { get; } = Enum.GetValues<Parity>();
 

@@ -3,6 +3,7 @@ using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
@@ -48,7 +49,7 @@ public sealed partial class ProjectWizardViewModel : ObservableObject
         CpuStep.CpuChanged += IoStep.FollowCpu;
         MemoryStep = new MemoryCellsStepViewModel(station.Tags);
         AlarmStep = new AlarmTextsStepViewModel(station.Alarms);
-        LinkStep = new LinkStepViewModel(station.Link, CpuStep, ports, tester, time ?? TimeProvider.System);
+        LinkStep = new LinkStepViewModel(station.Link, station.Compact, CpuStep, ports, tester, time ?? TimeProvider.System);
         Steps = [CpuStep, IoStep, MemoryStep, AlarmStep, LinkStep];
         foreach (var step in Steps)
         {
@@ -165,6 +166,7 @@ public sealed partial class ProjectWizardViewModel : ObservableObject
             IoStep.BuildInputs(), IoStep.BuildOutputs(), MemoryStep.Build(), AlarmStep.Build())
         {
             AllowStop = CpuStep.AllowStop,
+            Compact = LinkStep.Compact && LinkStep.Protocol == LinkProtocol.Freeport,
         };
         var project = _original with { Name = CpuStep.ProjectName.Trim(), Stations = _original.Stations.SetItem(_stationIndex, station) };
         var problems = ProjectFile.Check(project);

@@ -15,7 +15,7 @@ public sealed class GenerateCommandTests : IDisposable
     {
         var project = NewProject("224", "2");
 
-        var run = CliRunner.Run("generate", project, "-o", Out);
+        var run = CliRunner.Run("generate", project, "--protocol", "2", "-o", Out);
 
         run.ExitCode.Should().Be(0, run.Error);
         Directory.GetFiles(Out).Select(Path.GetFileName).Should().BeEquivalentTo("PLC_2-handler.awl", "PLC_2-symbols.txt", "PLC_2-README.txt");
@@ -23,6 +23,32 @@ public sealed class GenerateCommandTests : IDisposable
         awl.Should().NotContain(b => b > 0x7E);
         File.ReadAllText(Path.Combine(Out, "PLC_2-handler.awl")).Should().Contain("SUBROUTINE_BLOCK OP_PANEL:SBR63\r\n").And.Contain("LDB<>  VB8020, 2\r\n");
         File.ReadAllText(Path.Combine(Out, "PLC_2-symbols.txt")).Should().StartWith("OP_BUF\tVB7764\t");
+    }
+
+    [Fact]
+    public void Generate_NoProtocolGiven_WritesTheProtocol3HandlerThePanelSpeaks()
+    {
+        var run = CliRunner.Run("generate", NewProject("224", "2"), "-o", Out);
+
+        run.ExitCode.Should().Be(0, run.Error);
+        File.ReadAllText(Path.Combine(Out, "PLC_2-symbols.txt")).Should().StartWith("OP_BUF\tVB7444\tPanel handler v3:", "V_FIRST of the full v3 handler on a CPU 224: 8192 - 747, even");
+        File.ReadAllText(Path.Combine(Out, "PLC_2-handler.awl")).Should().Contain("SUBROUTINE_BLOCK OP_PANEL:SBR63\r\n");
+    }
+
+    [Theory]
+    [InlineData(true, false)]
+    [InlineData(false, true)]
+    public void Generate_ProjectCompactOrCompactOption_WritesTheCompactHandler(bool inProject, bool option)
+    {
+        var project = NewProject("224", "2");
+        var root = JsonNode.Parse(File.ReadAllText(project))!;
+        root["stations"]![0]!["compact"] = inProject;
+        File.WriteAllText(project, root.ToJsonString());
+
+        var run = option ? CliRunner.Run("generate", project, "-o", Out, "--compact") : CliRunner.Run("generate", project, "-o", Out);
+
+        run.ExitCode.Should().Be(0, run.Error);
+        File.ReadAllText(Path.Combine(Out, "PLC_2-symbols.txt")).Should().StartWith("OP_BUF\tVB8118\t", "V_FIRST of the compact handler's 74 V bytes on a CPU 224: 8192 - 74");
     }
 
     [Theory]
@@ -35,7 +61,7 @@ public sealed class GenerateCommandTests : IDisposable
         root["stations"]![0]!["allowStop"] = allowStop;
         File.WriteAllText(project, root.ToJsonString());
 
-        var run = CliRunner.Run("generate", project, "-o", Out);
+        var run = CliRunner.Run("generate", project, "--protocol", "2", "-o", Out);
 
         run.ExitCode.Should().Be(0, run.Error);
         var awl = File.ReadAllText(Path.Combine(Out, "PLC_2-handler.awl"));
@@ -48,7 +74,7 @@ public sealed class GenerateCommandTests : IDisposable
     {
         var project = NewProject("224", "2");
 
-        var run = CliRunner.Run("generate", project, "-o", Out, "--stats");
+        var run = CliRunner.Run("generate", project, "--protocol", "2", "-o", Out, "--stats");
 
         run.ExitCode.Should().Be(0);
         run.Out.Should().Contain("V bytes reserved:       VB7764-VB8191 (428 bytes)")
@@ -64,7 +90,7 @@ public sealed class GenerateCommandTests : IDisposable
     {
         var project = NewProject("224", "2");
 
-        var run = CliRunner.Run("generate", project, "-o", Out, "--stats");
+        var run = CliRunner.Run("generate", project, "--protocol", "2", "-o", Out, "--stats");
 
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Should().Contain("  no request (a scan)                                      0 ->   0            43     0.000               0.000          0.121      0")
@@ -89,7 +115,7 @@ public sealed class GenerateCommandTests : IDisposable
     {
         var project = NewProject("224", "2");
 
-        var run = CliRunner.Run("generate", project, "-o", Out, "--stats", "--json");
+        var run = CliRunner.Run("generate", project, "--protocol", "2", "-o", Out, "--stats", "--json");
 
         run.ExitCode.Should().Be(0, run.Error);
         using var json = JsonDocument.Parse(run.Out);
@@ -115,7 +141,7 @@ public sealed class GenerateCommandTests : IDisposable
     {
         var project = NewProject("226", "17");
 
-        var run = CliRunner.Run("generate", project, "-o", Out, "--plc-port", "1", "--buffer", "VB1000", "--stats", "--json");
+        var run = CliRunner.Run("generate", project, "--protocol", "2", "-o", Out, "--plc-port", "1", "--buffer", "VB1000", "--stats", "--json");
 
         run.ExitCode.Should().Be(0);
         using var json = JsonDocument.Parse(run.Out);
@@ -137,7 +163,7 @@ public sealed class GenerateCommandTests : IDisposable
     {
         var project = NewProject("224", "2");
 
-        var run = CliRunner.Run("generate", project, "-o", Out, option, value);
+        var run = CliRunner.Run("generate", project, "--protocol", "2", "-o", Out, option, value);
 
         run.ExitCode.Should().Be(2);
         run.Error.Should().StartWith($"opanel: {id}: ");
@@ -149,7 +175,7 @@ public sealed class GenerateCommandTests : IDisposable
     {
         var project = NewProject("224", "2");
 
-        var run = CliRunner.Run("generate", project, "-o", Out, "--plc-port", "1", "--json");
+        var run = CliRunner.Run("generate", project, "--protocol", "2", "-o", Out, "--plc-port", "1", "--json");
 
         run.ExitCode.Should().Be(2);
         using var json = JsonDocument.Parse(run.Out);
@@ -174,7 +200,7 @@ public sealed class GenerateCommandTests : IDisposable
         var file = Path.Combine(_folder, "plc");
         File.WriteAllText(file, "not a folder");
 
-        var run = CliRunner.Run("generate", project, "-o", file);
+        var run = CliRunner.Run("generate", project, "--protocol", "2", "-o", file);
 
         run.ExitCode.Should().Be(1);
         run.Error.Should().Be($"opanel: {file} is a file, not a folder: give the folder for the generated files{Environment.NewLine}");
@@ -186,8 +212,8 @@ public sealed class GenerateCommandTests : IDisposable
     {
         var project = TwoStationProject();
 
-        var refused = CliRunner.Run("generate", project, "-o", Out);
-        var chosen = CliRunner.Run("generate", project, "-o", Out, "--station", "9");
+        var refused = CliRunner.Run("generate", project, "--protocol", "2", "-o", Out);
+        var chosen = CliRunner.Run("generate", project, "--protocol", "2", "-o", Out, "--station", "9");
 
         refused.ExitCode.Should().Be(1);
         refused.Error.Should().Contain("choose one with --station");

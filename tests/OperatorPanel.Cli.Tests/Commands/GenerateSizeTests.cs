@@ -17,7 +17,7 @@ public sealed class GenerateSizeTests : IDisposable
     [Fact]
     public void GenerateStats_Cpu224_PrintsInstructionsNetworksTheEstimateTheProgramMemoryAndTheModbusComparison()
     {
-        var run = CliRunner.Run("generate", NewProject("224"), "-o", Out, "--stats");
+        var run = CliRunner.Run("generate", NewProject("224"), "--protocol", "2", "-o", Out, "--stats");
 
         run.ExitCode.Should().Be(0, run.Error);
         Lines(run.Out).SkipWhile(l => !l.StartsWith("instructions generated:", StringComparison.Ordinal)).Take(5).Should().Equal(
@@ -32,7 +32,7 @@ public sealed class GenerateSizeTests : IDisposable
     [Fact]
     public void Generate_Cpu221WithoutStats_WarnsThatTheHandlerDoesNotFitAndStillWritesIt()
     {
-        var run = CliRunner.Run("generate", NewProject("221"), "-o", Out);
+        var run = CliRunner.Run("generate", NewProject("221"), "--protocol", "2", "-o", Out);
 
         run.ExitCode.Should().Be(0, "the size is a warning, not a refusal");
         run.Error.Should().Be(
@@ -51,7 +51,7 @@ public sealed class GenerateSizeTests : IDisposable
     [Fact]
     public void GenerateJson_Cpu221_CarriesTheFiguresAndTheWarning()
     {
-        var run = CliRunner.Run("generate", NewProject("221"), "-o", Out, "--stats", "--json");
+        var run = CliRunner.Run("generate", NewProject("221"), "--protocol", "2", "-o", Out, "--stats", "--json");
 
         run.ExitCode.Should().Be(0, run.Error);
         run.Error.Should().BeEmpty("with --json the warning is in the output");
@@ -73,7 +73,7 @@ public sealed class GenerateSizeTests : IDisposable
     [Fact]
     public void Generate_Cpu226_WarnsTheUpperFigureIsOverHalfAndOffersPpiOnly()
     {
-        var run = CliRunner.Run("generate", NewProject("226"), "-o", Out);
+        var run = CliRunner.Run("generate", NewProject("226"), "--protocol", "2", "-o", Out);
 
         run.ExitCode.Should().Be(0);
         run.Error.Should().StartWith("opanel: warning STL050 the handler may leave too little room on the CPU 226: its 1177 instructions take "

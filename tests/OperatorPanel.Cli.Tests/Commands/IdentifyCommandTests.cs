@@ -12,12 +12,16 @@ public sealed class IdentifyCommandTests
 
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Should().Contain("station       7 on demo")
-            .And.Contain("protocol      version 2, handler revision 1, at most 116 bytes per READ (2 fewer per further item)")
+            .And.Contain("protocol      version 3, handler revision 1, full handler, at most 16 bytes per READ (MAX_DATA)")
             .And.Contain("generated for CPU 224 (Current)")
             .And.Contain("SMB6          16#20: CPU 224 or CPU 224XP")
             .And.Contain("mode switch   RUN")
-            .And.Contain("write mask    16#3C: Q M V SM")
-            .And.Contain("reply delay   5 ms")
+            .And.Contain("write mask    16#1C: Q M V")
+            .And.Contain("FEATURES      16#03: list, STOP")
+            .And.Contain("list          32 items, 128 bytes (LIST_ITEMS, LIST_BYTES): one READ LIST a refresh")
+            .And.Contain("requests      at most 136 bytes (MAX_REQUEST)")
+            .And.Contain("end time-out  4 ms (END_TIMEOUT_MS")
+            .And.Contain("handler V     VB7444-VB8190 (747 bytes, V_FIRST/V_BYTES: never written by the panel)")
             .And.Contain("STOP          in the handler (FEATURES bit 0): opanel stop can put it into STOP")
             .And.Contain("cpu check     ok: matches CPU 224");
         run.Out.Should().MatchRegex(@"scan          last \d ms, min \d ms, max \d ms");
@@ -50,7 +54,11 @@ public sealed class IdentifyCommandTests
 
         using var json = JsonDocument.Parse(run.Out);
         json.RootElement.GetProperty("smb6").GetString().Should().Be("16#00");
-        json.RootElement.GetProperty("writableAreas").EnumerateArray().Select(a => a.GetString()).Should().Equal("Q", "M", "V", "SM");
+        json.RootElement.GetProperty("writableAreas").EnumerateArray().Select(a => a.GetString()).Should().Equal(["Q", "M", "V"], "protocol 3 never writes I or SM");
+        json.RootElement.GetProperty("protocolVersion").GetInt32().Should().Be(3);
+        (json.RootElement.GetProperty("listItems").GetInt32(), json.RootElement.GetProperty("listBytes").GetInt32(), json.RootElement.GetProperty("maxRequest").GetInt32())
+            .Should().Be((32, 128, 136));
+        json.RootElement.GetProperty("endTimeoutMs").GetInt32().Should().Be(4, "one character at 9600 baud + 2 ms, at least the cable's 4 ms turnaround");
         json.RootElement.GetProperty("cpuMismatch").ValueKind.Should().Be(JsonValueKind.Null);
     }
 

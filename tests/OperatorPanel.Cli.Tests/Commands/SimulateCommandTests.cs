@@ -49,13 +49,13 @@ public sealed class SimulateCommandTests
             "SMB6     144         16#90        good",
             "Q1.1     1                        good"); // the panel owns Q1.1 now; the demo process leaves it alone
         silent.ExitCode.Should().Be(2);
-        silent.Error.Should().StartWith($"opanel: station 9 on {pty.PathB}: no valid reply to Read after ")
+        silent.Error.Should().StartWith($"opanel: station 9 on {pty.PathB}: no valid reply to v3 Read after ")
             .And.Contain("opanel: nothing answers as station 9: check that the PLC is in RUN with its mode switch at RUN")
             .And.Contain("handler was generated for station 9 at 19200 8N1");
 
         (await simulator).Should().Be(0);
         var summary = Text(output, simulatorOut);
-        summary.Should().StartWith($"simulating CPU 226 at stations 3, 4 on {pty.PathA} 19200 8N1, reply delay 5 ms, model {model}, demo process on");
+        summary.Should().StartWith($"simulating CPU 226 at stations 3, 4 on {pty.PathA} 19200 8N1, protocol 3 full handler, END_TIMEOUT_MS 2, model {model}, demo process on");
         summary.Should().MatchRegex($@"stopped serving {Regex.Escape(pty.PathA)}: \d+ frames received, \d+ answered");
     }
 
@@ -188,7 +188,7 @@ public sealed class SimulateCommandTests
         capper.Out.Should().Contain("generated for CPU 226 (Current)").And.Contain("STOP          not in the handler");
         (await simulator).Should().Be(0);
         Text(output, simulatorOut).Should().StartWith(
-            $"simulating station 2 (CPU 224), station 3 (CPU 226) on {pty.PathA} 9600 8N1, reply delay 5 ms, model stl, demo process off");
+            $"simulating station 2 (CPU 224), station 3 (CPU 226) on {pty.PathA} 9600 8N1, protocol 3 full handler, END_TIMEOUT_MS 4, STOP, model stl, demo process off");
         File.Delete(project);
     }
 

@@ -19,7 +19,7 @@ public sealed class SimulateHandlerOptionsTests
     private static readonly TimeSpan StartLimit = TimeSpan.FromSeconds(3);
 
     [Fact]
-    public async Task Simulate_PlcPort1OnCpu226_AnswersFromThePort1HandlerWithItsCharTimeout()
+    public async Task Simulate_PlcPort1OnCpu226_AnswersFromThePort1HandlerWithItsEndTimeout()
     {
         using var pty = await SocatPtyPair.StartAsync();
         var simulator = await StartAsync(pty, "--cpu", "226", "--plc-port", "1", "--char-timeout", "50", "--buffer", "VB1000", "--sbr", "10", "--int", "20");
@@ -30,9 +30,9 @@ public sealed class SimulateHandlerOptionsTests
         read.Out.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Take(3).Should().Equal(
             "SMB30    0           16#00        good", // port 0 untouched: the handler set up port 1
             "SMB130   9           16#09        good", // Freeport, 9600 8N1 on port 1
-            "SMW192   50          16#0032      good"); // the inter-character timeout of port 1
+            "SMW192   50          16#0032      good"); // END_TIMEOUT_MS, port 1's inter-character timer
         (await simulator.Exit).Should().Be(0);
-        simulator.Text.Should().StartWith($"simulating CPU 226 at station 2 on {pty.PathA} 9600 8N1, PLC port 1, reply delay 5 ms");
+        simulator.Text.Should().StartWith($"simulating CPU 226 at station 2 on {pty.PathA} 9600 8N1, PLC port 1, protocol 3 full handler, END_TIMEOUT_MS 50");
     }
 
     [Fact]
@@ -55,10 +55,10 @@ public sealed class SimulateHandlerOptionsTests
     [Theory]
     [InlineData("0", true)]
     [InlineData("120", false)]
-    public async Task Simulate_CopyBytes_ZeroAnswersEveryReadChangesWithTheWholeList(string copyBytes, bool wholeListAgain)
+    public async Task SimulateProtocol2_CopyBytes_ZeroAnswersEveryReadChangesWithTheWholeList(string copyBytes, bool wholeListAgain)
     {
         using var pty = await SocatPtyPair.StartAsync();
-        var simulator = await StartAsync(pty, "--cpu", "224", "--copy-bytes", copyBytes);
+        var simulator = await StartAsync(pty, "--cpu", "224", "--protocol", "2", "--copy-bytes", copyBytes);
         var station = new Station(2);
         var serial = new SerialSettings { PortName = pty.PathB };
         await using var link = new PlcLink(new SerialPortTransport(serial), LinkOptions.For(serial) with { ScanAllowance = TimeSpan.FromSeconds(1) });
@@ -78,7 +78,9 @@ public sealed class SimulateHandlerOptionsTests
 
     [Theory]
     [InlineData("--plc-port", "1", "opanel: station 2: the handler cannot be generated: STL001: port 1 is not on the CPU 224; allowed: port 0")]
-    [InlineData("--copy-bytes", "256", "opanel: station 2: the handler cannot be generated: STL030")]
+    [InlineData("--copy-bytes", "256", "opanel: --copy-bytes is a protocol 2 option; a protocol 3 handler has no reply delay")]
+    [InlineData("--protocol", "4", "opanel: --protocol 4: the handler speaks protocol 3 (or the previous 2)")]
+    [InlineData("--compact", "--protocol=2", "opanel: --compact is a protocol 3 handler: leave out --protocol 2")]
     [InlineData("--writable", "I,Q", "opanel: station 2: the handler cannot be generated: STL011")]
     [InlineData("--writable", "X", "opanel: --writable: 'X' is not an area; use a comma-separated list of Q, M, V, SM")]
     [InlineData("--buffer", "MB10", "opanel: --buffer MB10: give the handler's first V byte, e.g. VB1000")]

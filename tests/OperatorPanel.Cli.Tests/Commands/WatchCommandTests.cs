@@ -102,7 +102,7 @@ public sealed class WatchCommandTests : IDisposable
     }
 
     [Fact]
-    public void Watch_Demo_IdentifiesTheStationAndThenPollsItsListWithReadChangesOfLists()
+    public void Watch_Demo_IdentifiesTheStationDefinesItsListAndThenPollsItWithReadList()
     {
         using var output = new StringWriter();
         using var error = new StringWriter();
@@ -111,10 +111,11 @@ public sealed class WatchCommandTests : IDisposable
         var exit = OpanelApp.Run(["watch", Sample, "--demo", "--cycles", "4", "--log-level", "Verbose", "--log-dir", logs, "--history-dir", Path.Combine(_folder, "history")], output, error);
 
         exit.Should().Be(0, error.ToString());
-        var trace = Directory.GetFiles(logs).SelectMany(File.ReadAllLines).Where(l => l.Contains("OperatorPanel.Core.Link.PlcLink", StringComparison.Ordinal)).ToList();
+        var trace = Directory.GetFiles(logs).SelectMany(File.ReadAllLines).Where(l => l.Contains("OperatorPanel.Core.Link.V3.V3Link", StringComparison.Ordinal)).ToList();
         // Real time: a loaded machine may cost the first IDENTIFY, so any SEQ will do.
-        trace.Should().Contain(l => l.Contains("\"Identify\" SEQ", StringComparison.Ordinal) && l.Contains("12 characters: IdentifyResponse", StringComparison.Ordinal), "the watch identifies first");
-        trace.Should().Contain(l => l.Contains("\"ReadChangesOfLists\"", StringComparison.Ordinal) && l.Contains("14 characters: ReadChangesOfListsResponse", StringComparison.Ordinal));
+        trace.Should().Contain(l => l.Contains("v3 \"Identify\" SEQ", StringComparison.Ordinal) && l.Contains("-> \"Ok\", 24 payload bytes", StringComparison.Ordinal), "the watch identifies first");
+        trace.Should().Contain(l => l.Contains("v3 \"DefineList\" SEQ", StringComparison.Ordinal) && l.Contains("-> \"Ok\", 0 payload bytes", StringComparison.Ordinal), "then defines the station's list");
+        trace.Should().Contain(l => l.Contains("v3 \"ReadList\" SEQ", StringComparison.Ordinal), "and reads it with one READ LIST a refresh");
     }
 
     [Fact]

@@ -29,7 +29,7 @@ public sealed class PlcLinkV1ProbeTests
 
         failure.Message.Should().Be("station 2 runs Operator Panel handler protocol v1: regenerate the PLC code (opanel generate) and download it");
         failure.Message.Should().Be(HandlerV1.Message(Station2));
-        failure.Kind.Should().Be(PlcErrorKind.HandlerProtocolV1);
+        failure.Kind.Should().Be(PlcErrorKind.HandlerOutdated);
         link.StatisticsFor(Station2).Should().BeEquivalentTo(new { Requests = 2, Replies = 1, Timeouts = 1 });
         transport.AssertComplete();
     }

@@ -2,6 +2,7 @@ using System.Diagnostics;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Line;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
@@ -14,7 +15,7 @@ namespace OperatorPanel.IntegrationTests.Polling;
 
 /// <summary>
 /// The USB-serial adapter pulled and plugged back, over socat: the pty pair is killed (both ends vanish) and a new
-/// pair is started on the same link paths, the simulated PLC serving the new end. Real time, every wait bounded and
+/// pair is started on the same link paths, the simulated protocol v3 PLC serving the new end. Real time, every wait bounded and
 /// polled in short steps.
 /// </summary>
 public sealed class PollingEngineSerialReconnectTests(ITestOutputHelper output)
@@ -27,23 +28,22 @@ public sealed class PollingEngineSerialReconnectTests(ITestOutputHelper output)
     [Fact]
     public async Task Watch_DeviceVanishesAndReturnsUnderTheSameName_StaleMeanwhileThenGoodWithTheNewValueWithinTwoSeconds()
     {
-        var plc = SerialLineRig.Plc(2);
-        var station = plc.Config.Station;
+        var plc = V3.V3Rig.Handler(2);
+        var station = plc.Setup.Station;
         plc.Memory.M[0] = 0x11;
-        var simulator = new BusSimulator();
-        simulator.Attach(plc);
         using var stop = new CancellationTokenSource();
         var first = await SocatPtyPair.StartAsync();
         var (panelPath, plcPath) = (first.PathA, first.PathB);
         var plcPort = new SerialPortTransport(new SerialSettings { PortName = plcPath, BaudRate = 19200 });
-        var host = new SimulatedPlcHost(plcPort, new ReferenceLine(simulator, []), TimeProvider.System);
+        var panelCharacter = new SerialSettings { PortName = panelPath, BaudRate = 19200 }.CharacterTime;
+        var host = new SimulatedPlcHost(plcPort, new V3ReferenceLine([plc]) { CharacterTime = panelCharacter }, TimeProvider.System);
         var panelSerial = new SerialSettings { PortName = panelPath, BaudRate = 19200 };
         var (log, sink) = CollectingSink.CreateLogger();
-        var link = new PlcLink(
-            new SerialPortTransport(panelSerial), LinkOptions.For(panelSerial) with { ScanAllowance = TimeSpan.FromMilliseconds(400) }, log: log);
-        var plan = PollPlanner.Build([new WatchedItem(station, Mb0)], new Dictionary<Station, Core.Cpu.CpuProfile> { [station] = plc.Config.Cpu });
+        var link = new V3Link(
+            new SerialPortTransport(panelSerial), V3LinkOptions.For(panelSerial) with { ScanAllowance = TimeSpan.FromMilliseconds(400) }, log: log);
+        var plan = PollPlanner.Build([new WatchedItem(station, Mb0)], new Dictionary<Station, Core.Cpu.CpuProfile> { [station] = plc.Setup.Cpu });
         var hostRun = Task.Run(() => host.RunAsync(stop.Token));
-        await using var bus = Bus.Start(link, plan, new BusSettings { Mode = RefreshMode.Continuous, MinimumPeriod = TimeSpan.FromMilliseconds(100) }, logger: log);
+        await using var bus = Bus.StartV3(link, plan, new BusSettings { Mode = RefreshMode.Continuous, MinimumPeriod = TimeSpan.FromMilliseconds(100) }, logger: log);
         SocatPtyPair? second = null;
         try
         {

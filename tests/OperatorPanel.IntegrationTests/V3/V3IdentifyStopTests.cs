@@ -40,7 +40,7 @@ public sealed class V3IdentifyStopTests
 
         var reply = await rig.Bus.IdentifyAsync(Two);
 
-        reply.Failure!.Kind.Should().Be(PlcErrorKind.HandlerProtocolV1);
+        reply.Failure!.Kind.Should().Be(PlcErrorKind.HandlerOutdated);
         reply.Failure.Message.Should().Contain("regenerate the PLC code").And.Contain("version 2");
     }
 
@@ -56,8 +56,8 @@ public sealed class V3IdentifyStopTests
 
         var reply = await panel.IdentifyAsync(Two);
 
-        reply.Failure!.Kind.Should().Be(PlcErrorKind.HandlerProtocolV1);
-        reply.Failure.Message.Should().Be("station 2 runs an Operator Panel handler of protocol v2, but this link speaks protocol v3: regenerate the PLC code (opanel generate) and download it");
+        reply.Failure!.Kind.Should().Be(PlcErrorKind.HandlerOutdated);
+        reply.Failure.Message.Should().Be("station 2 runs an Operator Panel handler of protocol v2, but the panel speaks protocol v3: regenerate the PLC code (opanel generate) and download it");
     }
 
     [Fact]

@@ -14,7 +14,7 @@ public sealed class SimulatedLineFactoryTests
     /// <summary>The embedded handlers were generated for 9600 8N1.</summary>
     private static readonly SerialSettings Serial = new() { PortName = "test", BaudRate = 9600 };
 
-    private static readonly HandlerConfig[] Stations = [new(new Station(2), Cpu224), new(new Station(3), Cpu224)];
+    private static readonly HandlerConfig[] Stations = [new(new Station(2), Cpu224) { Protocol = 2 }, new(new Station(3), Cpu224) { Protocol = 2 }];
 
     [Fact]
     public void TryCreate_StlModel_EachStationRunsTheTextTheSourceGives()
@@ -51,6 +51,31 @@ public sealed class SimulatedLineFactoryTests
 
         asked.Should().BeEmpty();
         line.Should().BeOfType<ReferenceLine>().Which.Bus.Ports.Should().HaveCount(2);
+    }
+
+    [Fact]
+    public void TryCreate_ReferenceModelProtocol3_BuildsV3StationsWithTheirSetupAndProcesses()
+    {
+        HandlerConfig[] v3 = [new(new Station(2), Cpu224, allowStop: true), new(new Station(3), Cpu224, charTimeoutMs: 9) { Compact = true, V3First = 8000 }];
+
+        SimulatedLineFactory.TryCreate(v3, SimulationModel.Reference, Serial, runProcess: true, Recording([]), out var line, out var error)
+            .Should().BeTrue(error);
+
+        var reference = line.Should().BeOfType<V3ReferenceLine>().Subject;
+        reference.RunsProcess.Should().BeTrue();
+        reference.Stations.Select(s => (s.Setup.Station.Address, s.Setup.Shape.HasList, s.Setup.AllowStop, s.Setup.EndTimeoutMs, s.Setup.WriteMask))
+            .Should().Equal((2, true, true, (byte)4, (byte)0x1C), (3, false, false, (byte)9, (byte)0x1C));
+        reference.Stations[1].Setup.VFirst.Should().Be(8000);
+    }
+
+    [Fact]
+    public void TryCreate_ReferenceModelMixedProtocols_FailsSayingOneProtocolPerLine()
+    {
+        SimulatedLineFactory.TryCreate([Stations[0], new(new Station(4), Cpu224)], SimulationModel.Reference, Serial, runProcess: false, Recording([]), out var line, out var error)
+            .Should().BeFalse();
+
+        line.Should().BeNull();
+        error.Should().Contain("one protocol per line");
     }
 
     [Fact]

@@ -17,8 +17,9 @@ public sealed class DiagnosticsViewModelTests : IAsyncDisposable
     public async Task Identify_AfterScans_ShowsCpuRunScanTimesAndStatistics()
     {
         await _panel.ConnectAsync();
-        _panel.Plc.CompleteScan(12);
-        _panel.Plc.CompleteScan(9);
+        var scans = new Simulator.Hosting.V3DemoStation(_panel.Plc);
+        scans.CompleteScan(12);
+        scans.CompleteScan(9);
 
         await _diagnostics.IdentifyCommand.ExecuteAsync(null).Guarded();
         await _panel.RefreshAsync();
@@ -29,7 +30,8 @@ public sealed class DiagnosticsViewModelTests : IAsyncDisposable
         station.PlcCpuText.Should().Be("CPU 224");
         station.CpuMismatch.Should().BeFalse();
         station.Smb6Text.Should().Be("16#" + _panel.Plc.Memory.SM[6].ToString("X2", System.Globalization.CultureInfo.InvariantCulture));
-        station.HandlerText.Should().Be($"protocol {HandlerIdentity.ProtocolVersion}, handler revision {HandlerIdentity.HandlerRevision}");
+        station.HandlerText.Should().Be("protocol 3, handler revision 1, full");
+        station.HandlerShapeText.Should().Be("FEATURES 16#02 (list); list of 32 items, 128 bytes; requests up to 136 bytes; END_TIMEOUT_MS 4; own V bytes VB7444-VB8190");
         station.RunStopText.Should().Be("RUN");
         station.ScanTimesText.Should().Be("last 9 ms, min 9 ms, max 12 ms");
         station.StatisticsText.Should().StartWith($"{_panel.Transport.FramesSent} requests, {_panel.Transport.FramesSent} replies, 0 retries");

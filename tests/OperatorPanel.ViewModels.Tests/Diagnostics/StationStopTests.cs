@@ -149,9 +149,9 @@ public sealed class StationStopTests : IAsyncDisposable
         await _panel.ConnectAsync();
         await _panel.RefreshAsync();
 
-        Status.Health.Should().Be(StationHealth.HandlerV1);
-        Status.HealthText.Should().Be("handler protocol v1: regenerate the PLC code (File > Generate PLC code) and download it");
-        Status.IdentifyError.Should().Be("IDENTIFY: HandlerProtocolV1: station 2 runs Operator Panel handler protocol v1: regenerate the PLC code (opanel generate) and download it");
+        Status.Health.Should().Be(StationHealth.HandlerOutdated);
+        Status.HealthText.Should().Be("handler of an older protocol (the panel speaks v3): regenerate the PLC code (File > Generate PLC code) and download it");
+        Status.IdentifyError.Should().Be("IDENTIFY: HandlerOutdated: station 2 runs an Operator Panel handler of protocol v1, but the panel speaks protocol v3: regenerate the PLC code (opanel generate) and download it");
     }
 
     public async ValueTask DisposeAsync() => await _panel.DisposeAsync();

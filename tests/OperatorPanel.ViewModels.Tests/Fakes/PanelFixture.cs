@@ -31,7 +31,7 @@ internal sealed class PanelFixture : IAsyncDisposable
         // No inter-frame gap: the simulated port answers at once and the manual clock moves only when a station is silent.
         Session = new PanelSession(project ?? Project(), new InlineDispatcher(), Clock, Logger)
         {
-            LinkOptionsFor = serial => LinkOptions.For(serial) with { InterFrameGap = TimeSpan.Zero },
+            LinkOptionsFor = serial => Core.Link.V3.V3LinkOptions.For(serial) with { InterFrameGap = TimeSpan.Zero },
         };
     }
 
@@ -54,7 +54,7 @@ internal sealed class PanelFixture : IAsyncDisposable
 
     public SimulatedTransport Transport => Connector.Transport(Port);
 
-    public ReferencePlc Plc => Connector.Plc(Filler.Address);
+    public Simulator.Reference.V3.ReferenceHandler Plc => Connector.Plc(Filler.Address);
 
     public static PanelProject Project(RefreshMode mode = RefreshMode.OnDemand, CpuProfile? cpu = null) =>
         new("Filler line", new RefreshSettings(mode, TimeSpan.FromMilliseconds(100)),

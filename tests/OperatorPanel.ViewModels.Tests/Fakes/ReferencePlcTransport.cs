@@ -1,10 +1,10 @@
 using OperatorPanel.Core.Transport;
-using OperatorPanel.Simulator.Reference;
+using OperatorPanel.Simulator.Reference.V3;
 
 namespace OperatorPanel.ViewModels.Tests.Fakes;
 
-/// <summary>A transport whose far end is a simulated PLC answering each frame at once (no reply delay, no clock).</summary>
-internal sealed class ReferencePlcTransport(ReferencePlc plc) : ITransport
+/// <summary>A transport whose far end is a simulated protocol v3 PLC answering each frame at once (no end time-out, no clock).</summary>
+internal sealed class ReferencePlcTransport(ReferenceHandler plc) : ITransport
 {
     private readonly Queue<byte> _replies = new();
 
@@ -20,7 +20,7 @@ internal sealed class ReferencePlcTransport(ReferencePlc plc) : ITransport
 
     public Task WriteAsync(ReadOnlyMemory<byte> data, CancellationToken cancellationToken)
     {
-        foreach (var b in plc.HandleFrame(data.Span) ?? [])
+        foreach (var b in plc.HandleMessage(data.Span) ?? [])
         {
             _replies.Enqueue(b);
         }

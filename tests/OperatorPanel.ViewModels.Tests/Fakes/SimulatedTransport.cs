@@ -1,18 +1,21 @@
+using System.Globalization;
 using System.Text;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol.V1;
 using OperatorPanel.Core.Transport;
-using OperatorPanel.Simulator.Reference;
+using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.TestKit;
+using V3Reader = OperatorPanel.Core.Protocol.V3.Reader;
 
 namespace OperatorPanel.ViewModels.Tests.Fakes;
 
 /// <summary>
-/// A port with simulated PLCs behind it that answer at once. Silence (a station in STOP, a wrong address) costs the
+/// A port with simulated protocol v3 PLCs behind it (<see cref="V3ReferenceLine"/>) that answer at once: the line's
+/// own clock runs past the end time-out as soon as a frame arrives. Silence (a station in STOP, a wrong address) costs the
 /// link's whole reply timeout on the manual clock, so nothing waits in real time. A test can pull the port
 /// (<see cref="Vanished"/>), hold the next reply, or rewrite replies, and counts every frame sent.
 /// </summary>
-internal sealed class SimulatedTransport(string name, BusSimulator bus, ManualTimeProvider clock) : ITransport
+internal sealed class SimulatedTransport(string name, V3ReferenceLine line, ManualTimeProvider clock) : ITransport
 {
     private readonly Lock _lock = new();
     private readonly Queue<byte> _received = new();
@@ -28,12 +31,12 @@ internal sealed class SimulatedTransport(string name, BusSimulator bus, ManualTi
     public bool Vanished { get; set; }
 
     /// <summary>
-    /// This station runs a protocol v1 handler instead of its simulated PLC: it ignores every v2 frame and answers only
-    /// the v1 IDENTIFY probe, with a v1 reply (PROTOCOL_VERSION 01).
+    /// This station runs a protocol v1 handler instead of its simulated PLC: it ignores every v3 and v2 frame and answers
+    /// only the v1 IDENTIFY probe, with a v1 reply (PROTOCOL_VERSION 01).
     /// </summary>
     public Station? V1Handler { get; set; }
 
-    /// <summary>Replaces a reply frame before the panel sees it (e.g. a read-back the PLC program changed).</summary>
+    /// <summary>Replaces a reply frame (a whole v3 frame, cut by LEN) before the panel sees it (e.g. a read-back the PLC program changed).</summary>
     public Func<byte[], byte[]>? RewriteReply { get; set; }
 
     public int FramesSent
@@ -71,7 +74,7 @@ internal sealed class SimulatedTransport(string name, BusSimulator bus, ManualTi
     public Task WriteAsync(ReadOnlyMemory<byte> data, CancellationToken cancellationToken)
     {
         ThrowIfVanished();
-        var replies = V1Handler is { } v1 && IsFor(data.Span, v1) ? V1Answer(data.Span, v1) : bus.Feed(data.Span);
+        var replies = V1Handler is { } v1 && IsFor(data.Span, v1) ? V1Answer(data.Span, v1) : Answer(data.Span);
         lock (_lock)
         {
             _sent.Add(data.ToArray());
@@ -137,13 +140,36 @@ internal sealed class SimulatedTransport(string name, BusSimulator bus, ManualTi
         return ValueTask.CompletedTask;
     }
 
+    /// <summary>The line's replies to <paramref name="frame"/>: its clock runs past every station's end time-out at once.</summary>
+    private List<byte[]> Answer(ReadOnlySpan<byte> frame)
+    {
+        line.Deliver(frame);
+        line.RunUntil(line.Now + TimeSpan.FromSeconds(1));
+        var reader = new V3Reader();
+        reader.Append(line.TakeTransmitted());
+        var replies = new List<byte[]>();
+        while (reader.TryTake(out var reply))
+        {
+            replies.Add(reply);
+        }
+
+        return replies;
+    }
+
+    /// <summary>A frame for <paramref name="station"/>: a v1/v2 frame names it in hex characters 1-2, a v3 frame in byte 2.</summary>
     private static bool IsFor(ReadOnlySpan<byte> frame, Station station) =>
-        frame.Length > 3 && Convert.ToByte(Encoding.ASCII.GetString(frame[1..3]), 16) == station.Address;
+        frame.Length > 3 && (byte.TryParse(Encoding.ASCII.GetString(frame[1..3]), NumberStyles.HexNumber, CultureInfo.InvariantCulture, out var hex)
+            ? hex == station.Address
+            : frame[2] == station.Address);
 
     /// <summary>The v1 reply to the v1 probe (its sequence echoed), nothing for any v2 frame: a v1 handler's check rejects them.</summary>
     private static IReadOnlyList<byte[]> V1Answer(ReadOnlySpan<byte> frame, Station station)
     {
-        var sequence = Convert.ToByte(Encoding.ASCII.GetString(frame[3..5]), 16);
+        if (!byte.TryParse(Encoding.ASCII.GetString(frame[3..5]), NumberStyles.HexNumber, CultureInfo.InvariantCulture, out var sequence))
+        {
+            return []; // a v3 frame: binary, not hex characters
+        }
+
         return frame.SequenceEqual(V1IdentifyProbe.Encode(station, sequence))
             ? [V1IdentifyProbe.Frame([(byte)station.Address, sequence, 0x81, 0x00, 0x01, 0x01, 0x03, 0x01, 0x0E, 0x77, 0x05, 0x20, 0x01, 0x00, 0x05, 0x00, 0x03, 0x00, 0x09])]
             : [];

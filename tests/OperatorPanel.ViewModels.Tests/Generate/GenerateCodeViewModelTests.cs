@@ -16,16 +16,16 @@ public sealed class GenerateCodeViewModelTests : IDisposable
     public void Dispose() => _folder.Dispose();
 
     [Theory]
-    [InlineData(CpuModel.Cpu222, "VB1620", "63", "125", new[] { 0 })]
-    [InlineData(CpuModel.Cpu224, "VB7764", "63", "125", new[] { 0 })]
-    [InlineData(CpuModel.Cpu226, "VB9812", "127", "125", new[] { 0, 1 })]
+    [InlineData(CpuModel.Cpu222, "VB1300", "63", "125", new[] { 0 })]
+    [InlineData(CpuModel.Cpu224, "VB7444", "63", "125", new[] { 0 })]
+    [InlineData(CpuModel.Cpu226, "VB9492", "127", "125", new[] { 0, 1 })]
     public void Defaults_PerCpu_TheGeneratorsDefaultsShown(CpuModel model, string buffer, string sbr, string firstInt, int[] ports)
     {
         var cpu = CpuProfiles.For(model);
         var generate = Create(cpu);
 
         generate.BufferStart.Should().Be(buffer);
-        generate.BufferStart.Should().Be($"VB{HandlerDefaults.BufferStart(cpu)}");
+        generate.BufferStart.Should().Be($"VB{HandlerDefaults.V3First(cpu, compact: false)}", "V_FIRST of the protocol 3 handler the panel speaks");
         generate.FirstSubroutine.Should().Be(sbr);
         generate.FirstSubroutine.Should().Be(HandlerDefaults.FirstSubroutine(cpu).ToString(System.Globalization.CultureInfo.InvariantCulture));
         generate.FirstInterrupt.Should().Be(firstInt);
@@ -84,7 +84,7 @@ public sealed class GenerateCodeViewModelTests : IDisposable
         var generate = Create(cpu);
         generate.WriteSm = false;
         generate.GenerateCommand.Execute(null);
-        var expected = HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu, Station = 2, WriteMask = 0x1C });
+        var expected = HandlerGenerator.Generate(new HandlerOptions { Protocol = 3, Cpu = cpu, Station = 2, WriteMask = 0x1C });
         _files.Folder = _folder.Path;
 
         generate.SaveCommand.CanExecute(null).Should().BeTrue();
@@ -94,7 +94,7 @@ public sealed class GenerateCodeViewModelTests : IDisposable
         generate.Diagnostics.Should().ContainSingle().Which.Should().Match<GenerateDiagnosticRow>(d => d.Id == "STL050" && d.IsWarning);
         generate.Diagnostics[0].Message.Should().Be(expected.Stats!.Size.Warning);
         generate.Preview.Should().Be(expected.AwlText);
-        generate.Stats.Should().Contain($"V memory: {expected.Stats!.VRange} (428 bytes)")
+        generate.Stats.Should().Contain($"V memory: {expected.Stats!.VRange} (747 bytes)")
             .And.Contain($"Program memory: 8192 bytes on the CPU 224 (with run mode edit; 12288 without)")
             .And.Contain($"Instructions: {expected.Stats.Instructions} in {expected.Stats.Size.Networks} networks");
         File.ReadAllText(_folder.File("Filler-handler.awl"), Encoding.ASCII).Should().Be(expected.AwlText);
@@ -115,8 +115,8 @@ public sealed class GenerateCodeViewModelTests : IDisposable
 
         generate.GenerateCommand.Execute(null);
 
-        generate.Preview.Should().Be(HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu, Station = 2, AllowStop = allowStop }).AwlText);
-        generate.Preview.Contains("command 07 STOP", StringComparison.Ordinal).Should().Be(allowStop);
+        generate.Preview.Should().Be(HandlerGenerator.Generate(new HandlerOptions { Protocol = 3, Cpu = cpu, Station = 2, AllowStop = allowStop }).AwlText);
+        generate.Preview.Contains("08 STOP", StringComparison.Ordinal).Should().Be(allowStop);
         generate.StopText.Should().StartWith(allowStop ? "included" : "not included");
     }
 

@@ -183,7 +183,7 @@ public sealed class MemoryViewModelTests : IAsyncDisposable
 
         _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("VW10"), out _).Should().BeFalse();
         _panel.Session.Values.TryGetValue(PanelFixture.Filler, PlcAddress.Parse("MB4"), out var recipe).Should().BeTrue();
-        recipe.Quality.Should().Be(Core.Polling.ValueQuality.Good);
+        recipe.Quality.Should().Be(Core.Polling.ValueQuality.Good, string.Join("\n", _panel.Log.Events.Select(e => e.RenderMessage(null) + " " + e.Exception)));
     }
 
     public async ValueTask DisposeAsync() => await _panel.DisposeAsync();

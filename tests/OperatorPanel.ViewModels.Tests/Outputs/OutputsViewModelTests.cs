@@ -133,11 +133,10 @@ public sealed class OutputsViewModelTests : IAsyncDisposable
     }
 
     /// <summary>The WRITE BIT reply as if the PLC program had reset QB0 before the read-back.</summary>
+    /// <summary>A one-byte read-back (WRITE BITS' reply: STATUS 80, REQCHECK kept) turned to 0, its check made good again.</summary>
     private static byte[] ReadBackZero(byte[] reply)
     {
-        FrameCodec.TryDecode(reply, out var frame, out _).Should().BeTrue();
-        return frame.Command == (byte)CommandCode.WriteBit + FreeportFrame.ReplyBit
-            ? FrameCodec.Encode(frame with { Payload = [.. frame.Payload[..3], 0x00] }) // STATUS and REQCHECK kept
-            : reply;
+        Core.Protocol.V3.Codec.TryDecodeReply(reply, out var decoded, out _).Should().BeTrue();
+        return decoded.Payload.Length == 1 ? Core.Protocol.V3.Codec.Encode(decoded with { Payload = [0x00] }) : reply;
     }
 }

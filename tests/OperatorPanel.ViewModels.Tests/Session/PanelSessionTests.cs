@@ -107,7 +107,7 @@ public sealed class PanelSessionTests : IAsyncDisposable
 
         var station = _panel.Session.Stations.Should().ContainSingle().Subject;
         station.Health.Should().Be(StationHealth.Online);
-        station.Identity.Should().Match<StationIdentity>(i => i.Model == CpuModel.Cpu224 && i.ProtocolVersion == HandlerIdentity.ProtocolVersion && i.ModeSwitchRun);
+        station.Identity.Should().Match<StationIdentity>(i => i.Model == CpuModel.Cpu224 && i.ProtocolVersion == 3 && i.V3 != null && i.ModeSwitchRun);
         station.CpuMismatch.Should().BeFalse();
         station.Statistics.Replies.Should().BeGreaterThanOrEqualTo(2, "IDENTIFY and the refresh were answered");
     }
@@ -166,18 +166,18 @@ public sealed class PanelSessionTests : IAsyncDisposable
     }
 
     [Fact]
-    public async Task Identify_OtherProtocolVersion_HandlerMismatch()
+    public async Task Identify_ReplyNotProtocolV3_ToldToRegenerateThePlcCode()
     {
         await _panel.ConnectAsync();
-        _panel.Transport.RewriteReply = reply => RewriteIdentifyVersion(reply, 0x03);
+        _panel.Transport.RewriteReply = reply => RewriteIdentifyVersion(reply, 0x02);
 
         await _panel.Session.IdentifyAsync().Guarded();
         _panel.Transport.RewriteReply = null;
         await _panel.RefreshAsync();
 
         var station = _panel.Session.Stations.Single();
-        station.Health.Should().Be(StationHealth.HandlerMismatch);
-        station.HealthText.Should().Contain("protocol version 3");
+        station.IdentifyError.Should().StartWith("IDENTIFY: HandlerOutdated: station 2 runs a handler whose IDENTIFY reply is not protocol v3's")
+            .And.EndWith("regenerate the PLC code (opanel generate) and download it");
     }
 
     [Fact]
@@ -195,15 +195,12 @@ public sealed class PanelSessionTests : IAsyncDisposable
 
     public async ValueTask DisposeAsync() => await _panel.DisposeAsync();
 
+    /// <summary>An IDENTIFY reply (STATUS 80 with the 24 identity bytes) with another PROTOCOL_VERSION, its check made good again.</summary>
     private static byte[] RewriteIdentifyVersion(byte[] reply, byte version)
     {
-        FrameCodec.TryDecode(reply, out var frame, out _).Should().BeTrue();
-        if (frame.Command != (byte)(CommandCode.Identify | (CommandCode)FreeportFrame.ReplyBit))
-        {
-            return reply;
-        }
-
-        var payload = frame.Payload.SetItem(3, version); // after STATUS and REQCHECK
-        return FrameCodec.Encode(frame with { Payload = payload });
+        Core.Protocol.V3.Codec.TryDecodeReply(reply, out var decoded, out _).Should().BeTrue();
+        return decoded.Payload.Length == Core.Protocol.V3.Identity.PayloadBytes
+            ? Core.Protocol.V3.Codec.Encode(decoded with { Payload = decoded.Payload.SetItem(0, version) })
+            : reply;
     }
 }

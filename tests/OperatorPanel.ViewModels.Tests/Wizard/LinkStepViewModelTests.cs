@@ -87,12 +87,12 @@ public sealed class LinkStepViewModelTests
     public async Task TestConnection_SimulatedPlc_IdentifiesItOverARealLink()
     {
         var clock = new ManualTimeProvider();
-        var plc = new ReferencePlc(new HandlerConfig(new Station(2), CpuProfiles.For(CpuModel.Cpu224)));
+        var plc = new Simulator.Reference.V3.ReferenceHandler(new Simulator.Reference.V3.HandlerSetup(new Station(2), CpuProfiles.For(CpuModel.Cpu224)));
         var link = Wizard(new LinkConnectionTester(_ => new ReferencePlcTransport(plc), clock)).LinkStep;
 
         await link.TestConnectionCommand.ExecuteAsync(null);
 
-        link.TestResult.Should().StartWith($"{Where} answered: handler for CPU 224, protocol 2").And.EndWith("Matches CPU 224.");
+        link.TestResult.Should().StartWith($"{Where} answered: handler for CPU 224, protocol 3").And.EndWith("Matches CPU 224.");
         link.TestSucceeded.Should().BeTrue();
     }
 
@@ -100,20 +100,24 @@ public sealed class LinkStepViewModelTests
     public async Task TestConnection_RealLinkTimesOut_ShowsNoAnswer()
     {
         var clock = new ManualTimeProvider();
-        var request = Encoding.ASCII.GetString(RequestCodec.Encode(new IdentifyRequest(new Station(2), 1)));
+        var (request, v2) = (V3Identify(), Encoding.ASCII.GetString(RequestCodec.Encode(new IdentifyRequest(new Station(2), 1))));
         var transport = new ScriptedTransport($"""
-            > "{request}"   // IDENTIFY station 2
+            > {request}   // IDENTIFY v3 station 2, SEQ 1
             < no response
-            > "{request}"   // the cable's one retry
+            > {request}   // the cable's one retry: the identical frame
             < no response
-            > "<02020101>"   // one v1 IDENTIFY (XOR check): is an old handler there?
+            > 3E          // a lone '>' ends a receive an older handler opened on our bytes
+            > "{v2}"      // one v2 IDENTIFY: is an older handler there?
+            < no response
+            > 3E
+            > "<02010102>"   // one v1 IDENTIFY (XOR check), SEQ 1
             < no response
             """, clock, "COM3");
         var link = Wizard(new LinkConnectionTester(_ => transport, clock)).LinkStep;
 
         await RunOnTheClockAsync(link.TestConnectionCommand.ExecuteAsync(null), clock);
         link.TestSucceeded.Should().BeFalse();
-        link.TestResult.Should().StartWith($"{Where}: no answer.").And.Contain("no valid reply to Identify after 2 attempts");
+        link.TestResult.Should().StartWith($"{Where}: no answer.").And.Contain("no valid reply to v3 Identify after 2 attempts");
         transport.AssertComplete();
     }
 
@@ -121,22 +125,26 @@ public sealed class LinkStepViewModelTests
     public async Task TestConnection_StationRunsAV1Handler_SaysRegenerateThePlcCode()
     {
         var clock = new ManualTimeProvider();
-        var request = Encoding.ASCII.GetString(RequestCodec.Encode(new IdentifyRequest(new Station(2), 1)));
+        var (request, v2) = (V3Identify(), Encoding.ASCII.GetString(RequestCodec.Encode(new IdentifyRequest(new Station(2), 1))));
         var v1Reply = Encoding.ASCII.GetString(Core.Protocol.V1.V1IdentifyProbe.Frame(
-            [0x02, 0x02, 0x81, 0x00, 0x01, 0x01, 0x03, 0x01, 0x0E, 0x77, 0x05, 0x20, 0x01, 0x00, 0x05, 0x00, 0x03, 0x00, 0x09]));
+            [0x02, 0x01, 0x81, 0x00, 0x01, 0x01, 0x03, 0x01, 0x0E, 0x77, 0x05, 0x20, 0x01, 0x00, 0x05, 0x00, 0x03, 0x00, 0x09]));
         var transport = new ScriptedTransport($"""
-            > "{request}"   // IDENTIFY station 2: a v1 handler ignores it
+            > {request}   // IDENTIFY v3 station 2: a v1 handler ignores it
             < no response
-            > "{request}"
+            > {request}
             < no response
-            > "<02020101>"   // the v1 IDENTIFY probe
+            > 3E
+            > "{v2}"      // a v2 IDENTIFY: a v1 handler ignores it too
+            < no response
+            > 3E
+            > "<02010102>"   // the v1 IDENTIFY probe, SEQ 1
             < "{v1Reply}"    // answered: PROTOCOL_VERSION 01
             """, clock, "COM3");
         var link = Wizard(new LinkConnectionTester(_ => transport, clock)).LinkStep;
 
         await RunOnTheClockAsync(link.TestConnectionCommand.ExecuteAsync(null), clock);
         link.TestSucceeded.Should().BeFalse();
-        link.TestResult.Should().Be($"{Where}: station 2 runs Operator Panel handler protocol v1: regenerate the PLC code (opanel generate) and download it.");
+        link.TestResult.Should().Be($"{Where}: station 2 runs an Operator Panel handler of protocol v1, but the panel speaks protocol v3: regenerate the PLC code (opanel generate) and download it.");
         transport.AssertComplete();
     }
 
@@ -244,4 +252,8 @@ public sealed class LinkStepViewModelTests
 
         await test.WaitAsync(TimeSpan.FromSeconds(5));
     }
+
+    /// <summary>IDENTIFY v3 to station 2 under the link's first SEQ (1), as hex pairs for the script.</summary>
+    private static string V3Identify() =>
+        string.Join(' ', Core.Protocol.V3.Codec.Encode(Core.Protocol.V3.Request.Identify(new Station(2), 1)).Select(b => b.ToString("X2", System.Globalization.CultureInfo.InvariantCulture)));
 }

@@ -141,6 +141,35 @@ public sealed class ProjectWizardViewModelTests
         again.Result!.Stations[0].AllowStop.Should().Be(!allowStop);
     }
 
+    [Theory]
+    [InlineData(CpuModel.Cpu221, true)]
+    [InlineData(CpuModel.Cpu222, true)]
+    [InlineData(CpuModel.Cpu224, false)]
+    [InlineData(CpuModel.Cpu226, false)]
+    public void ChooseCpu_SmallCpu_CompactHandlerOfferedAndSaved(CpuModel model, bool compact)
+    {
+        var wizard = new ProjectWizardViewModel(AlarmProject.Create(), 0, new FakeConnectionTester(), new FakePortCatalog());
+
+        wizard.CpuStep.Cpu = CpuProfiles.For(model);
+        wizard.FinishCommand.Execute(null);
+
+        wizard.LinkStep.Compact.Should().Be(compact, "the compact handler is the default offered for the CPUs with 4096 bytes of program");
+        LinkStepViewModel.CompactHint.Should().Contain("CPU 221 or 222");
+        wizard.Result!.Stations[0].Compact.Should().Be(compact);
+    }
+
+    [Fact]
+    public void Edit_CompactStation_KeptUnlessTheCpuChanges()
+    {
+        var original = AlarmProject.Create();
+        original = original with { Stations = [original.Stations[0] with { Compact = true }] };
+        var wizard = new ProjectWizardViewModel(original, 0, new FakeConnectionTester(), new FakePortCatalog());
+
+        wizard.FinishCommand.Execute(null);
+
+        wizard.Result!.Stations[0].Compact.Should().BeTrue("editing a project never drops its handler shape");
+    }
+
     [Fact]
     public void Finish_EarlierStepBrokenAfterLeavingIt_GoesBackThereWithAMessage()
     {

@@ -9,5 +9,5 @@ namespace OperatorPanel.Core.Link.V3;
 public static class HandlerBeforeV3
 {
     public static string Message(Station station, string found) =>
-        $"{station} runs {found}, but this link speaks protocol v3: regenerate the PLC code (opanel generate) and download it";
+        $"{station} runs {found}, but the panel speaks protocol v3: regenerate the PLC code (opanel generate) and download it";
 }

@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Protocol.V3;
 using OperatorPanel.Core.Transport;
@@ -38,7 +39,7 @@ public sealed partial class V3Link
             return new LinkReply.Answered(response with { RequestCheck = reply.RequestCheck });
         }
 
-        var kind = request is IdentifyRequest ? PlcErrorKind.HandlerProtocolV1 : PlcErrorKind.FrameCorrupt;
+        var kind = request is IdentifyRequest ? PlcErrorKind.HandlerOutdated : PlcErrorKind.FrameCorrupt;
         var message = request is IdentifyRequest
             ? HandlerBeforeV3.Message(request.Station, $"a handler whose IDENTIFY reply is not protocol v3's ({reply.Payload.Length} bytes, version {(reply.Payload.IsEmpty ? 0 : reply.Payload[0])})")
             : $"{request.Station}: the v3 reply to {request.Command} has status {reply.Status} and {reply.Payload.Length} payload bytes, which do not fit the request";
@@ -68,7 +69,8 @@ public sealed partial class V3Link
         {
             case IdentifyRequest when Identity.TryRead(p.AsSpan(), out var identity):
                 _identities[request.Station] = identity;
-                return AsIdentifyResponse(request, identity);
+                NoteEndTimeout(identity.EndTimeoutMs);
+                return AsIdentifyResponse(request.Station, identity);
             case ReadRequest read when p.Length == read.TotalLength:
                 return new ReadResponse(request.Station, 0, p);
             case WriteBlockRequest write when p.Length == write.Data.Length:
@@ -82,12 +84,24 @@ public sealed partial class V3Link
         }
     }
 
+    /// <summary>Keeps the longest END_TIMEOUT_MS reported on this link, for the gap and the reply time-out.</summary>
+    private void NoteEndTimeout(int endTimeoutMs)
+    {
+        lock (_endTimeoutLock)
+        {
+            _longestEndTimeoutMs = Math.Max(_longestEndTimeoutMs, endTimeoutMs);
+        }
+    }
+
     /// <summary>
     /// IDENTIFY v3 in the shape the bus keeps: version 3, MAX_DATA as the read limit, END_TIMEOUT_MS as the reply delay,
     /// FEATURES as they are (bit 0 STOP; bit 1 is v3's list, which the v2 readers never see: the v3 readers take the
     /// shape from <see cref="IdentityOf"/>), LIST_BYTES where v2 had its copy bytes.
     /// </summary>
-    private static IdentifyResponse AsIdentifyResponse(PlcRequest request, Identity i) => new(
-        request.Station, 0, Identity.ProtocolVersion, i.HandlerRevision, i.CpuModelCode, i.CpuRevisionCode, i.WriteMask, i.MaxData,
-        i.EndTimeoutMs, i.Smb6, i.StatusFlags, i.LastScanMs, i.MinScanMs, i.MaxScanMs, i.Port, i.VFirst, i.VBytes, i.Features, i.ListBytes);
+    public static IdentifyResponse AsIdentifyResponse(Station station, Identity i) => new(
+        station, 0, Identity.ProtocolVersion, i.HandlerRevision, i.CpuModelCode, i.CpuRevisionCode, i.WriteMask, i.MaxData,
+        i.EndTimeoutMs, i.Smb6, i.StatusFlags, i.LastScanMs, i.MinScanMs, i.MaxScanMs, i.Port, i.VFirst, i.VBytes, i.Features, i.ListBytes)
+    {
+        V3Identity = i,
+    };
 }

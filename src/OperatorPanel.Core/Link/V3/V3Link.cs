@@ -29,6 +29,8 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
     private readonly ConcurrentDictionary<Station, bool> _spokeV3 = new();
     private readonly PortReopener _port;
     private long? _lastExchangeEnd;
+    private readonly Lock _endTimeoutLock = new();
+    private int _longestEndTimeoutMs;
     private byte _sequence;
 
     public V3Link(ITransport transport, LinkOptions options, TimeProvider? time = null, ILogger? log = null)
@@ -124,6 +126,8 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
             if (outcome.Reply is { } reply)
             {
                 statistics.Reply(outcome.Elapsed);
+                _log.Verbose("{Station}: v3 {Command} SEQ {Sequence} -> {Status}, {PayloadBytes} payload bytes, {Milliseconds:0.0} ms",
+                    request.Station, request.Command, request.Sequence, reply.Status, reply.Payload.Length, outcome.Elapsed.TotalMilliseconds);
                 if (reply.Status.IsError())
                 {
                     statistics.NegativeReply();
@@ -152,7 +156,7 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
         if (kind == PlcErrorKind.NoAnswer && request.Command == Command.Identify && !_spokeV3.ContainsKey(request.Station)
             && await OlderHandlerAsync(request.Station, cancellationToken).ConfigureAwait(false) is { } found)
         {
-            return V3Exchange.Failed(new PlcCommunicationException(PlcErrorKind.HandlerProtocolV1, request.Station, HandlerBeforeV3.Message(request.Station, found)), sent: true);
+            return V3Exchange.Failed(new PlcCommunicationException(PlcErrorKind.HandlerOutdated, request.Station, HandlerBeforeV3.Message(request.Station, found)), sent: true);
         }
 
         _log.Debug("{Message}", message);
@@ -203,19 +207,25 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
     }
 
     /// <summary>
-    /// The reply-time budget: request and longest reply on the wire, the end time-out the receive waits (counted in
-    /// <see cref="LinkOptions.ReplyDelay"/>), one scan before the handler starts, the handler's scans (a list command
-    /// takes up to 16 on the full handler, any other 8: provisional, from branch v3's per-request table), what the
-    /// medium adds, and the margin.
+    /// The reply-time budget: request and longest reply on the wire, the end time-out the receive waits (the longer of
+    /// <see cref="LinkOptions.ReplyDelay"/> and the longest END_TIMEOUT_MS an IDENTIFY on this link reported), one scan
+    /// before the handler starts, the handler's scans for the command (<see cref="V3HandlerScans"/>), what the medium
+    /// adds, and the margin.
     /// </summary>
     private TimeSpan ReplyTimeoutFor(Command command, int requestBytes)
     {
         var replyBytes = Limits.MaxFrameBytes;
-        var scans = command is Command.DefineList or Command.ReadList or Command.ReadListFull ? 16 : 8;
-        return (_options.Serial.CharacterTime * (requestBytes + replyBytes)) + _options.ReplyDelay + _options.ScanAllowance
-            + (_options.HandlerScanAllowance * scans) + _options.Medium.ExtraFor(_options.Serial, requestBytes, replyBytes) + _options.Margin;
+        var endTimeout = TimeSpan.FromMilliseconds(Volatile.Read(ref _longestEndTimeoutMs));
+        return (_options.Serial.CharacterTime * (requestBytes + replyBytes)) + (endTimeout > _options.ReplyDelay ? endTimeout : _options.ReplyDelay)
+            + _options.ScanAllowance + (_options.HandlerScanAllowance * V3HandlerScans.For(command))
+            + _options.Medium.ExtraFor(_options.Serial, requestBytes, replyBytes) + _options.Margin;
     }
 
+    /// <summary>
+    /// The quiet time before a request: the options' gap, raised to END_TIMEOUT_MS + one character for the longest
+    /// END_TIMEOUT_MS a station on this link reported (a station generated with a longer one than the line's default
+    /// would otherwise merge our request into the message its RCV is still receiving). No gap when the options have none (tests).
+    /// </summary>
     private async Task WaitForGapAsync(CancellationToken cancellationToken)
     {
         if (_lastExchangeEnd is not { } end || _options.InterFrameGap <= TimeSpan.Zero)
@@ -223,7 +233,9 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
             return;
         }
 
-        var wait = _options.InterFrameGap - _time.GetElapsedTime(end);
+        var learned = V3LinkOptions.MinimumGap(_options.Serial, Volatile.Read(ref _longestEndTimeoutMs));
+        var gap = learned > _options.InterFrameGap ? learned : _options.InterFrameGap;
+        var wait = gap - _time.GetElapsedTime(end);
         if (wait > TimeSpan.Zero)
         {
             await Task.Delay(TimeSpan.FromMilliseconds(Math.Ceiling(wait.TotalMilliseconds)), _time, cancellationToken).ConfigureAwait(false);

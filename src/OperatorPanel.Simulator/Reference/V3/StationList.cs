@@ -34,7 +34,8 @@ public sealed class StationList
     /// <summary>The list from now on; the copy is not valid.</summary>
     public void Define(ReadItem[] items)
     {
-        (_items, DataBytes, CopyValid) = (items, items.Sum(i => i.Length), false);
+        // The old copy goes with the old list: a shorter list's first READ LIST must not compare against it.
+        (_items, DataBytes, CopyValid, _copy) = (items, items.Sum(i => i.Length), false, []);
     }
 
     /// <summary>07 READ LIST FULL: the copy is not valid (the next 06 answers the whole list).</summary>
