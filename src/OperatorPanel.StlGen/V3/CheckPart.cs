@@ -71,9 +71,9 @@ internal static class CheckPart
         yield return Label(Labels.ReplyInR, "phase Reply: a reply in R");
         yield return JumpIf(
             "Reply: head",
-            "LEN = 9 + P, STATUS, REQCHECK after '<'; END = the check's place, zeroed; COVERED its byte before; SENT = the count byte; the check walks from '<' from the next scan.",
-            Labels.Publish,
-            Op("LD", "SM0.0"), Op("MOVW", l.W(l.Temp), "AC0"), Op("+I", Dec(Limits.ReplyBytes(0)), "AC0"), Op("MOVB", "AC0", l.B(2)), Op("MOVB", l.B(l.Status), l.B(3)), Op("MOVW", l.W(l.Rx + 2), l.W(4)),
+            "LEN = 9 + P, STATUS, REQCHECK after '<'; END = the check's place, zeroed; COVERED its byte before; SENT = the count byte: head and payload leave now, in one chunk (a chunk's count byte overwrites the byte before it, so a second chunk may start only where the check has passed); the check walks from '<' from the next scan.",
+            Labels.Publish, Op("LD", "SM0.0"),
+            Op("MOVW", l.W(l.Temp), "AC0"), Op("+I", Dec(Limits.ReplyBytes(0)), "AC0"), Op("MOVB", "AC0", l.B(2)), Op("MOVB", l.B(l.Status), l.B(3)), Op("MOVW", l.W(l.Rx + 2), l.W(4)),
             Op("MOVD", l.Ptr(6), "AC2"), Op("ITD", l.W(l.Temp), "AC0"), Op("+D", "AC0", "AC2"), Op("MOVD", "0", "*AC2"), Op("MOVD", "AC2", l.Dw(l.End)),
             Op("MOVD", "AC2", l.Dw(l.Covered)), Op("DECD", l.Dw(l.Covered)),
             Op("MOVD", l.Ptr(0), l.Dw(l.Sent)), Op("MOVD", l.Ptr(1), l.Dw(l.Walk)), Op("MOVD", "0", l.Dw(l.SumA)), Op("MOVW", "0", l.W(l.SumB)),

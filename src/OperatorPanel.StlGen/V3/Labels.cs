@@ -23,7 +23,9 @@ internal static class Labels
     public const int DefineItem = 37;
     public const int DefineStore = 38;
     public const int ReadList = 40;
-    public const int Gather = 41;
+    public const int Copy = 41;
+    public const int CopyHigh = 42;
+    public const int Gather = 43;
     public const int WholeHead = 46;
     public const int Compare = 47;
     public const int CompareDone = 44;
@@ -33,7 +35,6 @@ internal static class Labels
     public const int Changes = 48;
     public const int ChangesLoop = 49;
     public const int ReplyInR = 50;
-    public const int ChangesNext = 54;
 
     /// <summary>OP_PANEL's phase groups (Builder.Resumes): the list's loops, the heavy steps.</summary>
     public const int LoopPhases = 70;
