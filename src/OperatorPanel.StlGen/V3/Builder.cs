@@ -64,7 +64,7 @@ internal static class Builder
     /// Where OP_PANEL goes on: STEP 0 (no request: the port is receiving or sending) ends the scan's part; then phase
     /// Check (most scans) by its bit; then the phases in groups, a group found by its bits ORed (contacts take 0.37 us,
     /// a jump's test 46 us), so that no phase waits behind more than four tests: the list's loops (Gather, Changes,
-    /// Compare, Copy, CopyHigh), the request's heavy steps (Dispatch, DEFINE LIST's slots), and the rest (Start, Reply, Move). A phase
+    /// Compare), the request's heavy steps (Dispatch, DEFINE LIST's slots), and the rest (Start, Reply, Move). A phase
     /// that is the last left needs no test (SM0.0).
     /// </summary>
     private static IEnumerable<StlNetwork> Resumes(Context c)
@@ -80,7 +80,7 @@ internal static class Builder
         }
 
         yield return JumpIf($"Phase {Phase.Check}", $"Go on at label {Labels.CheckLoop}.", Labels.CheckLoop, Op("LD", l.PhaseBit(Phase.Check)));
-        (Phase Phase, int Label)[] loops = c.HasList ? [(Phase.Changes, Labels.ChangesLoop), (Phase.Compare, Labels.Compare), (Phase.Copy, Labels.Copy), (Phase.CopyHigh, Labels.CopyHigh)] : [];
+        (Phase Phase, int Label)[] loops = c.HasList ? [(Phase.Changes, Labels.ChangesLoop), (Phase.Compare, Labels.Compare)] : [];
         (Phase Phase, int Label)[] heavy = c.HasList
             ? [(Phase.Dispatch, Labels.Dispatch), (Phase.DefineSlot, Labels.DefineItem), (Phase.DefineStore, Labels.DefineStore)]
             : [(Phase.Dispatch, Labels.Dispatch)];
@@ -113,7 +113,7 @@ internal static class Builder
         }
     }
 
-    private static readonly Phase[] ListPhases = [Phase.Gather, Phase.Changes, Phase.Compare, Phase.DefineSlot, Phase.DefineStore, Phase.Copy, Phase.CopyHigh];
+    private static readonly Phase[] ListPhases = [Phase.Gather, Phase.Changes, Phase.Compare, Phase.DefineSlot, Phase.DefineStore];
 
     /// <summary>One test per phase in order; the last one left jumps without a test.</summary>
     private static IEnumerable<StlNetwork> Chain(Layout l, (Phase Phase, int Label)[] phases) =>

@@ -23,9 +23,7 @@ internal static class Labels
     public const int DefineItem = 37;
     public const int DefineStore = 38;
     public const int ReadList = 40;
-    public const int Copy = 41;
-    public const int CopyHigh = 42;
-    public const int Gather = 43;
+    public const int Gather = 41;
     public const int WholeHead = 46;
     public const int Compare = 47;
     public const int CompareDone = 44;

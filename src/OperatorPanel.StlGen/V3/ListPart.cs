@@ -11,8 +11,10 @@ namespace OperatorPanel.StlGen.V3;
 /// with its copy (phase Compare, unrolled, an ORed group of 8 double word compares, two groups a scan); a group with a
 /// differing window goes through phase Changes, which copies each differing window into C and writes its CHANGES entry
 /// (slot, window) into R while the entries stay shorter than the list; then UNCHANGED or CHANGES from R. A whole list
-/// (07; 06 with the copy not valid, after its windows went into C in phase Copy; 06 whose entries would not be shorter)
-/// is gathered into R, one group of 8 items a scan (an unrolled BMB each), and answered from there.
+/// (07; 06 with the copy not valid, after phase Changes put its windows into C; 06 whose entries would not be shorter)
+/// is gathered into R, one group of 8 items a scan (an unrolled BMB each), and answered from there. While the copy is
+/// not valid (after DEFINE LIST or 07) every group goes through phase Changes, which fills the copy (20 scans for 32
+/// slots, once; an unrolled copy of every window would cost 44 more instructions).
 /// </summary>
 internal static class ListPart
 {
@@ -24,11 +26,10 @@ internal static class ListPart
         yield return JumpIf(
             "READ LIST FULL: the whole list", "The copy is not valid any more (the next 06 answers whole).", Labels.WholeHead,
             Op("LDB=", l.B(l.Cmd), Dec(Command.ReadListFull)), Op("R", l.FlagBit(Layout.CopyValid), "1"));
-        yield return ReturnIf("READ LIST, the copy not valid: copy every window", "Next scan; then the whole list.", Op("LDN", l.FlagBit(Layout.CopyValid)), l.Go(Phase.Copy));
         yield return ReturnIf(
-            "READ LIST: compare", "From group 0 (COUNT) next scan; entries from R byte 6 (TEMP) while below TAIL (R byte 6 + D: entries beyond would not be shorter).",
+            "READ LIST: compare", "From group 0 (COUNT) next scan; entries from R byte 6 (TEMP) while below TAIL (R byte 6 + D: entries beyond would not be shorter). The copy not valid: every group goes through phase Changes (its windows into the copy), then the whole list.",
             Op("LD", "SM0.0"), Op("MOVB", "0", l.B(l.Count)), Op("MOVD", l.Ptr(6), l.Dw(l.Temp)), Op("R", l.FlagBit(Layout.Differs), "1"), l.Go(Phase.Compare));
-        foreach (var network in Copy(c).Concat(Head(c)).Concat(Gather(c)).Concat(Compare(c)).Concat(Changes(c)))
+        foreach (var network in Head(c).Concat(Gather(c)).Concat(Compare(c)).Concat(Changes(c)))
         {
             yield return network;
         }
@@ -36,31 +37,6 @@ internal static class ListPart
 
     /// <summary>Source pointer of slot <paramref name="k"/>, as an indirect operand: its window.</summary>
     private static string Window(Layout l, int k) => "*" + l.Dw(l.Slot(k) + 4);
-
-    /// <summary>Phases Copy (groups 0, 1) and CopyHigh (groups 2, 3): each slot's window into its copy, a MOVD each (60 us).</summary>
-    private static IEnumerable<StlNetwork> Copy(Context c)
-    {
-        var l = c.Layout;
-        var groups = c.Shape.ListItems / HandlerShape.GroupSlots;
-        yield return Label(Labels.Copy, "phase Copy: every window into the copy");
-        for (var g = 0; g < groups; g++)
-        {
-            if (g == 2)
-            {
-                yield return ReturnIf("Copy: groups 2 and 3 next scan", string.Empty, Op("LD", l.Bit(l.Used, 2)), l.Go(Phase.CopyHigh));
-                yield return Label(Labels.CopyHigh, "phase CopyHigh");
-            }
-
-            var slots = Enumerable.Range(g * HandlerShape.GroupSlots, HandlerShape.GroupSlots).ToList();
-            yield return new NetworkBuilder(
-                    $"Copy: group {g}, slots {slots[0]}-{slots[^1]}",
-                    $"USED bit {g}: each slot's window into its copy. A group not in the list: its boxes without power flow take 1 us each.")
-                .Op("LD", l.Bit(l.Used, g)).Ops(slots.Select(k => Op("MOVD", Window(l, k), l.Dw(l.C + (4 * k))))).Build();
-        }
-
-        yield return JumpIf("Copy done: the whole list", "The copy is valid (it holds what this reply reports).", Labels.WholeHead,
-            Op("LD", "SM0.0"), Op("S", l.FlagBit(Layout.CopyValid), "1"));
-    }
 
     /// <summary>Label 46: a whole list: gathered into R from the next scan, one group a scan, then its reply.</summary>
     private static IEnumerable<StlNetwork> Head(Context c)
@@ -121,19 +97,21 @@ internal static class ListPart
                 yield return JumpIf($"Compare: group {q} in the list?", "USED's bit clear: the comparison is done.", Labels.CompareDone, Op("LDN", l.Bit(l.Used, q)));
             }
 
-            var net = new NetworkBuilder($"Compare: slots {8 * q}-{(8 * q) + 7}", "Any window differing from its copy: phase Changes over this group.");
+            var net = new NetworkBuilder($"Compare: slots {8 * q}-{(8 * q) + 7}", "Any window differing from its copy, or the copy not valid: phase Changes over this group.");
             for (var w = 0; w < HandlerShape.GroupSlots; w++)
             {
                 var k = (HandlerShape.GroupSlots * q) + w;
                 net.Op(w == 0 ? "LDD<>" : "OD<>", Window(l, k), l.Dw(l.C + (4 * k)));
             }
 
-            yield return net.Op("MOVB", Dec(q), l.B(l.Count)).Op("JMP", Dec(Labels.Changes)).Build();
+            yield return net.Op("ON", l.FlagBit(Layout.CopyValid)).Op("MOVB", Dec(q), l.B(l.Count)).Op("JMP", Dec(Labels.Changes)).Build();
         }
 
         yield return Label(Labels.CompareDone, "every group compared");
         yield return JumpIf("UNCHANGED", "No window differed (FLAGS bit 4): 81, no payload.", Labels.ErrorReply,
             Op("LDN", l.FlagBit(Layout.Differs)), Op("MOVB", Hex(ReplyStatus.Unchanged), l.B(l.Status)));
+        yield return JumpIf("Compare: the copy was not valid", "It is now (phase Changes put every window in it): the whole list.", Labels.WholeHead,
+            Op("LDN", l.FlagBit(Layout.CopyValid)), Op("S", l.FlagBit(Layout.CopyValid), "1"));
         yield return JumpIf("CHANGES: not shorter", "5 x entries (LAST's first word, set by phase Changes) >= D: the whole list (the copy holds every window already).", Labels.WholeHead,
             Op("LDB>=", l.B(l.Last + 1), l.B(l.D)));
         yield return DispatchPart.ToReply(c, "CHANGES: reply", "88, P entries' bytes in R.", Op("LD", "SM0.0"), Op("MOVW", l.W(l.Last), l.W(l.Temp)), Op("MOVB", Hex(ReplyStatus.Changes), l.B(l.Status)));

@@ -14,8 +14,8 @@ internal enum Phase
     /// <summary>With <see cref="Check"/>: the reply's check (the reply is sent meanwhile).</summary>
     ReplyFlag = 1,
 
-    /// <summary>READ LIST FULL, or READ LIST with the copy not valid: groups 0 and 1 of the slots' windows into the copy.</summary>
-    Copy = 2,
+    /// <summary>The next group of the list's items into R (a whole list's data).</summary>
+    Gather = 2,
 
     /// <summary>Set by the receive routine: a request of LEN bytes for this station waits.</summary>
     Start = 3,
@@ -30,10 +30,4 @@ internal enum Phase
 
     /// <summary>DEFINE LIST: the checked item's slot.</summary>
     DefineStore = 10,
-
-    /// <summary>After <see cref="Copy"/>: groups 2 and 3.</summary>
-    CopyHigh = 11,
-
-    /// <summary>The next group of the list's items into R (a whole list's data).</summary>
-    Gather = 12,
 }
