@@ -108,7 +108,8 @@ public sealed class BenchCommandTests
 
         exit.Should().Be(0);
         output.Should().Contain("each module forwards a frame once Core's Reader has it whole by its LEN")
-            .And.Contain("NOTE READ LIST (idle: UNCHANGED): the PLC module dropped the reply");
+            .And.Contain("NOTE READ LIST FULL (steady: the whole list): the PLC module dropped the reply")
+            .And.NotContain("NOTE READ LIST (idle: UNCHANGED)", "a reply without payload leaves in one XMT, without a pause");
     }
 
     [Fact]
