@@ -42,9 +42,10 @@ internal static class GenerateView
         }
 
         cli.Out.WriteLine($"V bytes reserved:       {stats.VRange} ({stats.VBytes} bytes)");
-        cli.Out.WriteLine(stats.Protocol == 3
-            ? $"list copy:              {(stats.CopyBytes == 0 ? "none (compact handler: no list)" : $"{stats.CopyRange} ({stats.CopyBytes} bytes, LIST_BYTES: what READ LIST compares against)")}"
-            : $"READ CHANGES copies:    {stats.CopyRange} ({stats.CopyBytes} bytes; READ CHANGES and STOP work bytes: {stats.ChangesWorkBytes})");
+        cli.Out.WriteLine(stats.Protocol != 3
+            ? $"READ CHANGES copies:    {stats.CopyRange} ({stats.CopyBytes} bytes; READ CHANGES and STOP work bytes: {stats.ChangesWorkBytes})"
+            : stats.Compact ? "list:                   none (compact handler: READ only)"
+            : $"list:                   up to {stats.CopyBytes} data bytes; the copy READ LIST compares with (every slot's 4-byte window) is inside the V bytes above");
         cli.Out.WriteLine($"STOP command:           {StopText(stats)}");
         WriteSize(cli, stats.Size);
         cli.Out.WriteLine($"interrupt events used:  {string.Join(", ", stats.InterruptEvents)}");

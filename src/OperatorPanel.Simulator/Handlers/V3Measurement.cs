@@ -53,7 +53,7 @@ public static class V3Measurement
         builder.Add(run.Idle(IdleName));
         byte sequence = 0;
         byte Next() => sequence = (byte)((sequence + 1) % Limits.SequenceCount);
-        foreach (var (name, request, poke) in Requests(station, shape, Next))
+        foreach (var (name, request, poke) in Requests(station, shape, ListPlan.AreaBytesOf(cpu), Next))
         {
             poke?.Invoke(plc.Memory);
             var served = run.Serve(name ?? string.Empty, Codec.Encode(request));
@@ -72,7 +72,7 @@ public static class V3Measurement
         return plc.Fault is null;
     }
 
-    private static IEnumerable<(string? Name, Request Request, Action<PlcMemory>? Poke)> Requests(Station s, HandlerShape shape, Func<byte> next)
+    private static IEnumerable<(string? Name, Request Request, Action<PlcMemory>? Poke)> Requests(Station s, HandlerShape shape, Func<ProtocolArea, int> areaBytes, Func<byte> next)
     {
         yield return ("IDENTIFY", Request.Identify(s, next()), null);
         yield return ($"READ {HandlerShape.MaxData} bytes", Request.Read(s, next(), new ReadItem(ProtocolArea.V, 0, HandlerShape.MaxData)), null);
@@ -88,7 +88,7 @@ public static class V3Measurement
         // The slowest item check (SM, the last area tried), then the longest list: every slot a 4-byte item.
         yield return ($"DEFINE LIST {shape.ListItems} SM items", Request.DefineList(s, next(), Enumerable.Repeat(new ReadItem(ProtocolArea.SM, 0, HandlerShape.ItemBytes), shape.ListItems)), null);
         var longest = Enumerable.Range(0, shape.ListItems).Select(i => new ReadItem(ProtocolArea.V, 200 + (i * 5), HandlerShape.ItemBytes)).ToArray();
-        ListPlan.TryMake(longest, shape, out var plan);
+        ListPlan.TryMake(longest, shape, areaBytes, out var plan);
         yield return ($"DEFINE LIST {plan.Items.Length} items", plan.Request(s, next()), null);
         yield return ($"READ LIST FULL {plan.DataBytes} bytes", Request.ReadListFull(s, next()), null);
         yield return ($"READ LIST {plan.Items.Length} slots, copy first", Request.ReadList(s, next()), null);
@@ -98,7 +98,7 @@ public static class V3Measurement
         yield return ("READ LIST 26 changed (whole)", Request.ReadList(s, next()), m => Change(m, longest.Take(26)));
 
         // The reference line's list (docs/bench.md).
-        ListPlan.TryMake(ReferenceLine, shape, out var line);
+        ListPlan.TryMake(ReferenceLine, shape, areaBytes, out var line);
         yield return (null, line.Request(s, next()), null);
         yield return (null, Request.ReadListFull(s, next()), null);
         yield return (SteadyName, Request.ReadListFull(s, next()), null);

@@ -61,11 +61,11 @@ internal static class Builder
     }
 
     /// <summary>
-    /// Where OP_PANEL goes on: STEP 0 (no request: the port is receiving or sending) ends the scan's part; then phase
-    /// Check (most scans) by its bit; then the phases in groups, a group found by its bits ORed (contacts take 0.37 us,
-    /// a jump's test 46 us), so that no phase waits behind more than four tests: the list's loops (Gather, Changes,
-    /// Compare), the request's heavy steps (Dispatch, DEFINE LIST's slots), and the rest (Start, Reply, Move). A phase
-    /// that is the last left needs no test (SM0.0).
+    /// Where OP_PANEL goes on: STEP 0 (no request: the port is receiving or sending) ends the scan's part; then one
+    /// test per phase or group of phases (a group found by its bits ORed: contacts take 0.37 us, a jump's test 46 us),
+    /// the phases of every request and of an idle READ LIST first, in an order that keeps each scan within its 2 ms:
+    /// Check, Start, the list's loops (Changes, Compare), the heavy steps (Dispatch, DEFINE LIST's two), Reply, Gather,
+    /// Move. A phase that is the last left needs no test (SM0.0).
     /// </summary>
     private static IEnumerable<StlNetwork> Resumes(Context c)
     {
@@ -74,36 +74,36 @@ internal static class Builder
         yield return ReturnIf(
             "No request waiting", "No phase bit in STEP: the port is receiving or sending; nothing to do in this scan (contacts: 0.37 us each, a word compare 46).",
             [.. used.Select((p, i) => Op(i == 0 ? "LDN" : "AN", l.PhaseBit(p)))]);
-        if (c.HasList)
-        {
-            yield return JumpIf($"Phase {Phase.Gather}", "The gather's scans are the fullest: first.", Labels.Gather, Op("LD", l.PhaseBit(Phase.Gather)));
-        }
-
-        yield return JumpIf($"Phase {Phase.Check}", $"Go on at label {Labels.CheckLoop}.", Labels.CheckLoop, Op("LD", l.PhaseBit(Phase.Check)));
         (Phase Phase, int Label)[] loops = c.HasList ? [(Phase.Changes, Labels.ChangesLoop), (Phase.Compare, Labels.Compare)] : [];
         (Phase Phase, int Label)[] heavy = c.HasList
             ? [(Phase.Dispatch, Labels.Dispatch), (Phase.DefineSlot, Labels.DefineItem), (Phase.DefineStore, Labels.DefineStore)]
             : [(Phase.Dispatch, Labels.Dispatch)];
-        (Phase Phase, int Label)[] rest = [(Phase.Start, Labels.RequestStart), (Phase.Reply, Labels.ReplyInR), (Phase.Move, Labels.Move)];
-        var groups = new List<((Phase Phase, int Label)[] Members, int Label)> { (loops, Labels.LoopPhases), (heavy, Labels.HeavyPhases) }.Where(g => g.Members.Length > 0).ToList();
-        foreach (var (members, label) in groups)
+        var order = new List<((Phase Phase, int Label)[] Members, int Label)>
         {
+            ([(Phase.Check, Labels.CheckLoop)], 0), ([(Phase.Start, Labels.RequestStart)], 0), (loops, Labels.LoopPhases), (heavy, Labels.HeavyPhases),
+            ([(Phase.Reply, Labels.ReplyInR)], 0),
+        };
+        if (c.HasList)
+        {
+            order.Add(([(Phase.Gather, Labels.Gather)], 0));
+        }
+
+        order.Add(([(Phase.Move, Labels.Move)], 0));
+        order = [.. order.Where(g => g.Members.Length > 0)];
+        for (var i = 0; i < order.Count; i++)
+        {
+            var (members, label) = order[i];
             if (members.Length == 1)
             {
-                yield return PhaseJump(l, members[0], last: false);
+                yield return PhaseJump(l, members[0], last: i == order.Count - 1);
                 continue;
             }
 
             yield return JumpIf($"Phases {string.Join(", ", members.Select(m => m.Phase))}", $"Any of their bits: label {label}.", label,
-                [.. members.Select((m, i) => Op(i == 0 ? "LD" : "O", l.PhaseBit(m.Phase)))]);
+                [.. members.Select((m, k) => Op(k == 0 ? "LD" : "O", l.PhaseBit(m.Phase)))]);
         }
 
-        foreach (var network in Chain(l, rest))
-        {
-            yield return network;
-        }
-
-        foreach (var (members, label) in groups.Where(g => g.Members.Length > 1))
+        foreach (var (members, label) in order.Where(g => g.Members.Length > 1))
         {
             yield return Label(label, $"phases {string.Join(", ", members.Select(m => m.Phase))}");
             foreach (var network in Chain(l, members))

@@ -69,15 +69,19 @@ internal static class CheckPart
         yield return Label(Labels.ErrorReply, "a reply without payload");
         yield return DispatchPart.ToReply(c, "No payload", "P = 0; the reply next scan.", Op("LD", "SM0.0"), Op("MOVW", "0", l.W(l.Temp)));
         yield return Label(Labels.ReplyInR, "phase Reply: a reply in R");
-        yield return JumpIf(
+        yield return Always(
             "Reply: head",
-            "LEN = 9 + P, STATUS, REQCHECK after '<'; END = the check's place, zeroed; COVERED its byte before; SENT = the count byte; the check walks from '<' from the next scan.",
-            Labels.Publish,
-            Op("LD", "SM0.0"), Op("MOVW", l.W(l.Temp), "AC0"), Op("+I", Dec(Limits.ReplyBytes(0)), "AC0"), Op("MOVB", "AC0", l.B(2)), Op("MOVB", l.B(l.Status), l.B(3)), Op("MOVW", l.W(l.Rx + 2), l.W(4)),
+            "LEN = 9 + P, STATUS, REQCHECK after '<'; END = the check's place, zeroed; COVERED its byte before; SENT = the count byte: head and payload leave now, in one chunk (a chunk's count byte overwrites the byte before it, so a second chunk may start only where the check has passed); the check walks from '<' from the next scan.",
+            Op("MOVW", l.W(l.Temp), "AC0"), Op("+I", Dec(Limits.ReplyBytes(0)), "AC0"), Op("MOVB", "AC0", l.B(2)), Op("MOVB", l.B(l.Status), l.B(3)), Op("MOVW", l.W(l.Rx + 2), l.W(4)),
             Op("MOVD", l.Ptr(6), "AC2"), Op("ITD", l.W(l.Temp), "AC0"), Op("+D", "AC0", "AC2"), Op("MOVD", "0", "*AC2"), Op("MOVD", "AC2", l.Dw(l.End)),
             Op("MOVD", "AC2", l.Dw(l.Covered)), Op("DECD", l.Dw(l.Covered)),
             Op("MOVD", l.Ptr(0), l.Dw(l.Sent)), Op("MOVD", l.Ptr(1), l.Dw(l.Walk)), Op("MOVD", "0", l.Dw(l.SumA)), Op("MOVW", "0", l.W(l.SumB)),
             l.GoReplyCheck());
+        yield return new NetworkBuilder(
+                "Reply: without payload, whole with its check",
+                "9 bytes: nothing ready now (COVERED = SENT), so they leave in one XMT with the check (one transmit interrupt less); the check's first double word in this scan (the head's scan has room, the check's has the XMT).")
+            .Op("LDW=", l.W(l.Temp), "0").Op("MOVD", l.Ptr(0), l.Dw(l.Covered)).Op("MOVD", l.Ptr(1), "AC1").Op("MOVD", l.Ptr(5), "AC2").Op("JMP", Dec(Labels.CheckNext)).Build();
+        yield return JumpIf("Reply: send what is ready", string.Empty, Labels.Publish, Op("LD", "SM0.0"));
     }
 
     /// <summary>Label 98, OP_PANEL's send: when no chunk is on the wire and bytes are ready, take the transmitter and send them.</summary>

@@ -7,10 +7,10 @@ namespace OperatorPanel.StlGen.V3;
 
 /// <summary>
 /// 05 DEFINE LIST (docs/protocol.md section 2): N items of 4 bytes from byte 5 (AREA, OFFSET, LENGTH 1-4), N a whole
-/// number of groups of 8 up to LIST_ITEMS. The old list is gone at once (N = 0). Each item is checked like a READ's
-/// and stored as a slot (destination in G, where the previous item's bytes end; source; length), one per scan (phase
-/// DefineSlot). The first failing item ends the request with its status and leaves no list. After the last: the
-/// destination pointer after it (the data's end), N, D, the groups and the whole list reply's LEN.
+/// number of groups of 8 up to LIST_ITEMS. The old list is gone at once (N = 0). Each item is checked like a READ of 4
+/// bytes (its slot's window must lie in the area) and stored as a slot (destination in R, where the previous item's
+/// bytes end; source; length), in two scans (phases DefineSlot, DefineStore). The first failing item ends the request
+/// with its status and leaves no list. After the last: N, D and the groups in use.
 /// </summary>
 internal static class DefinePart
 {
@@ -27,12 +27,13 @@ internal static class DefinePart
             ReplyStatus.BadLength, Op("LDW=", l.W(l.Temp), "0"), Op("OW<>", "AC0", "0"));
         yield return ReturnIf(
             "DEFINE LIST: from slot 0",
-            "Slots from slot 0, data from G (TAIL); items from byte 5 (WALK) to byte 5 + P (END), one per scan.", Op("LD", "SM0.0"), Op("MOVD", l.Ptr(l.Slots), l.Dw(l.NextSlot)), Op("MOVD", l.Ptr(l.G), l.Dw(l.Tail)), Op("MOVD", l.Ptr(5), l.Dw(l.Walk)),
-            Op("ITD", l.W(l.Temp), "AC0"), Op("MOVD", l.Ptr(5), l.Dw(l.End)), Op("+D", "AC0", l.Dw(l.End)), l.Go(Phase.DefineSlot));
+            "Slots from slot 0, data from R byte 6 (TAIL); items from byte 5 (WALK) to byte 5 + P (END), one per two scans; the item check for a 4-byte window.",
+            Op("LD", "SM0.0"), Op("MOVD", l.Ptr(l.Slots), l.Dw(l.NextSlot)), Op("MOVD", l.Ptr(6), l.Dw(l.Tail)), Op("MOVD", l.Ptr(5), l.Dw(l.Walk)),
+            Op("ITD", l.W(l.Temp), "AC0"), Op("MOVD", l.Ptr(5), l.Dw(l.End)), Op("+D", "AC0", l.Dw(l.End)), Op("MOVW", Dec(HandlerShape.ItemBytes), lenWord), l.Go(Phase.DefineSlot));
         yield return Label(Labels.DefineItem, "phase DefineSlot: the next item");
-        yield return Always("DEFINE LIST: the item", "AC2 = its AREA; LENGTH from its fourth byte.",
-            Op("MOVD", l.Dw(l.Walk), "AC2"), Op("MOVD", "AC2", "AC1"), Op("+D", "3", "AC1"), Op("BTI", "*AC1", lenWord));
-        yield return Refusal.If(l, "DEFINE LIST: LENGTH 1 to 4", "84.", ReplyStatus.BadLength, Op("LDW=", lenWord, "0"), Op("OW>", lenWord, Dec(HandlerShape.ItemBytes)));
+        yield return Always("DEFINE LIST: the item", "AC2 = its AREA; its LENGTH (fourth byte) kept in COUNT till its slot is stored.",
+            Op("MOVD", l.Dw(l.Walk), "AC2"), Op("MOVD", "AC2", "AC1"), Op("+D", "3", "AC1"), Op("MOVB", "*AC1", l.B(l.Count)));
+        yield return Refusal.If(l, "DEFINE LIST: LENGTH 1 to 4", "84.", ReplyStatus.BadLength, Op("LDB=", l.B(l.Count), "0"), Op("OB>", l.B(l.Count), Dec(HandlerShape.ItemBytes)));
         yield return JumpIf("DEFINE LIST: check the item", "Through label 20, back at label 35.", Labels.ItemCheck, Op("LD", "SM0.0"));
         yield return Label(Labels.DefineChecked, "DEFINE LIST: item checked");
         yield return ReturnIf("DEFINE LIST: stored next scan", "Its first byte (AC3) waits in LAST (free till the reply).", Op("LD", "SM0.0"), Op("MOVD", "AC3", l.Dw(l.Last)), l.Go(Phase.DefineStore));
@@ -40,14 +41,14 @@ internal static class DefinePart
         yield return Always(
             "DEFINE LIST: store the slot", "Destination (TAIL), source (LAST), length; TAIL on by the length; the next slot and item.",
             Op("MOVD", l.Dw(l.NextSlot), "AC1"), Op("MOVD", l.Dw(l.Tail), "*AC1"), Op("+D", "4", "AC1"), Op("MOVD", l.Dw(l.Last), "*AC1"), Op("+D", "4", "AC1"),
-            Op("MOVB", ItemPart.Length(l), "*AC1"), Op("INCD", "AC1"), Op("MOVD", "AC1", l.Dw(l.NextSlot)), Op("ITD", lenWord, "AC0"), Op("+D", "AC0", l.Dw(l.Tail)),
+            Op("MOVB", l.B(l.Count), "*AC1"), Op("INCD", "AC1"), Op("MOVD", "AC1", l.Dw(l.NextSlot)), Op("BTI", l.B(l.Count), "AC0"), Op("ITD", "AC0", "AC0"), Op("+D", "AC0", l.Dw(l.Tail)),
             Op("+D", "4", l.Dw(l.Walk)));
         yield return ReturnIf("DEFINE LIST: more items", "The next one in the next scan.", Op("LDD<", l.Dw(l.Walk), l.Dw(l.End)), l.Go(Phase.DefineSlot));
         yield return JumpIf(
             "DEFINE LIST: done",
-            "The data's end after the last slot; N = P / 4, GROUPS = 1 shifted left by N / 8; D = TAIL - G; the whole list reply's LEN = 9 + D. Reply 80, no payload.",
-            Labels.ErrorReply, Op("LD", "SM0.0"), Op("MOVD", l.Dw(l.Tail), "*AC1"), Op("MOVW", l.W(l.Temp), "AC0"), Op("SRW", "AC0", "2"), Op("MOVB", "AC0", l.B(l.N)),
-            Op("SRW", "AC0", "3"), Op("MOVB", "1", l.B(l.Groups)), Op("SLB", l.B(l.Groups), "AC0"), Op("MOVD", l.Dw(l.Tail), "AC0"), Op("MOVD", l.Ptr(l.G), "AC1"), Op("-D", "AC1", "AC0"),
-            Op("MOVB", "AC0", l.B(l.D)), Op("+D", Dec(Limits.ReplyBytes(0)), "AC0"), Op("MOVB", "AC0", l.B(l.L + 2)));
+            "N = P / 4; USED = 2 ^ (N / 8) - 1 (a bit per group); D = TAIL - R byte 6. Reply 80, no payload.",
+            Labels.ErrorReply, Op("LD", "SM0.0"), Op("MOVW", l.W(l.Temp), "AC0"), Op("SRW", "AC0", "2"), Op("MOVB", "AC0", l.B(l.N)),
+            Op("SRW", "AC0", "3"), Op("MOVB", "1", l.B(l.Used)), Op("SLB", l.B(l.Used), "AC0"), Op("DECB", l.B(l.Used)), Op("MOVD", l.Dw(l.Tail), "AC0"), Op("MOVD", l.Ptr(6), "AC1"), Op("-D", "AC1", "AC0"),
+            Op("MOVB", "AC0", l.B(l.D)));
     }
 }

@@ -28,12 +28,11 @@ internal static class Labels
     public const int Compare = 47;
     public const int CompareDone = 44;
 
-    /// <summary>60-63: the comparison's quarters 1-3.</summary>
+    /// <summary>60-63: the comparison's groups 0-3.</summary>
     public const int Quarter = 60;
     public const int Changes = 48;
     public const int ChangesLoop = 49;
     public const int ReplyInR = 50;
-    public const int ChangesNext = 54;
 
     /// <summary>OP_PANEL's phase groups (Builder.Resumes): the list's loops, the heavy steps.</summary>
     public const int LoopPhases = 70;

@@ -6,23 +6,23 @@ namespace OperatorPanel.StlGen.V3;
 /// <summary>
 /// Where the v3 handler keeps its bytes (docs/protocol.md section 6, "The handler's V bytes"), all inside Core's
 /// <see cref="HandlerShape.VBytes"/> from V_FIRST on: the request buffer R (byte 0 = RCV/XMT count), the work bytes,
-/// and in the full handler the list's work bytes, the list reply area L (count, 5 head bytes, the gathered data G and
-/// 4 bytes for the check), the copy C and the slots (destination pointer, source pointer, length; after the last
-/// slot's, the destination pointer where the data ends).
+/// and in the full handler the list's work bytes, the copy C (every slot's 4-byte window) and the slots (destination
+/// pointer in R, source pointer, length).
 /// </summary>
 internal sealed class Layout
 {
     /// <summary>FLAGS bit: the transmitter is owned (a chunk is on the wire).</summary>
     public const int Owned = 0;
 
-    /// <summary>FLAGS bit: the reply being built is a whole list in L, its head already there.</summary>
-    public const int Whole = 1;
 
     /// <summary>FLAGS bit: the reply to STOP is out; OP_PANEL executes STOP.</summary>
     public const int StopNow = 2;
 
     /// <summary>FLAGS bit: the copy holds what the last list reply reported (not after DEFINE LIST or 07).</summary>
     public const int CopyValid = 3;
+
+    /// <summary>FLAGS bit: a window differed from its copy in this READ LIST (a group went through phase Changes).</summary>
+    public const int Differs = 4;
 
     /// <summary>FLAGS bit: SM0.7 as the last scan saw it (the mode switch's edges).</summary>
     public const int RunSeen = 7;
@@ -32,11 +32,9 @@ internal sealed class Layout
         (First, Shape) = (vFirst, shape);
         Work = 1 + shape.RequestBytes;
         ListWork = Work + HandlerShape.WorkBytes;
-        L = ListWork + HandlerShape.ListWorkBytes;
-        G = L + 1 + Limits.ReplyHead;
-        C = G + shape.ListBytes + WordCheck.Bytes;
-        Slots = C + shape.ListBytes;
-        var end = shape.HasList ? Slots + (HandlerShape.SlotBytes * shape.ListItems) + 4 : ListWork;
+        C = ListWork + HandlerShape.ListWorkBytes;
+        Slots = C + shape.CopyBytes;
+        var end = shape.HasList ? Slots + (HandlerShape.SlotBytes * shape.ListItems) : ListWork;
         if (end != shape.VBytes)
         {
             throw new InvalidOperationException($"layout ends at {end}, Core's V_BYTES is {shape.VBytes}");
@@ -118,26 +116,22 @@ internal sealed class Layout
     /// <summary>D: the list data bytes.</summary>
     public int D => ListWork + 1;
 
-    /// <summary>1 shifted left by the list's groups (N / 8): the value of GROUP after the last group.</summary>
-    public int Groups => ListWork + 2;
+    /// <summary>USED: bit g set when group g (slots 8g to 8g + 7) is in the list.</summary>
+    public int Used => ListWork + 2;
 
-    /// <summary>The group the gather is at: one bit (group g = bit g); Groups is the bit after the last group's.</summary>
+    /// <summary>The group the gather is at: one bit (group g = bit g).</summary>
     public int Group => ListWork + 3;
 
-    /// <summary>A pointer to G + D: the 4 bytes after the data, where a whole list's check goes; zeroed before each gather.</summary>
+    /// <summary>TAIL: a pointer to R byte 6 + D, where a whole list's data ends (also the limit of CHANGES entries).</summary>
     public int Tail => ListWork + 4;
 
     /// <summary>A pointer to the slot DEFINE LIST stores next.</summary>
     public int NextSlot => ListWork + 8;
 
-    /// <summary>The list reply area: count byte (its XMT table), '&lt;' LEN STATUS REQCHECK, then G.</summary>
-    public int L { get; }
-
-    public int G { get; }
-
+    /// <summary>The copy: slot k's window at C + 4k, as the last READ LIST reported it.</summary>
     public int C { get; }
 
-    /// <summary>Slot k at Slots + 9k: its destination pointer (in G), its source pointer, its length.</summary>
+    /// <summary>Slot k at Slots + 9k: its destination pointer (in R), its source pointer, its length.</summary>
     public int Slots { get; }
 
     public int Slot(int k) => Slots + (HandlerShape.SlotBytes * k);

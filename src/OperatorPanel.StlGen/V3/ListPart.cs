@@ -6,172 +6,153 @@ using static OperatorPanel.StlGen.V3.Context;
 namespace OperatorPanel.StlGen.V3;
 
 /// <summary>
-/// 06 READ LIST and 07 READ LIST FULL (docs/protocol.md section 2), a phase per scan. 07: its head in L at once, then
-/// the gather, one group of 8 slots per scan (an unrolled BMB per slot), each group's bytes sent as soon as they are
-/// there; then the reply's check; the copy is not valid afterwards. 06: the gather; then G against the copy C, unrolled
-/// in quarters of 32 bytes: a quarter with a differing double word (every quarter when the copy is not valid) goes
-/// through phase Changes, which copies each differing double word into C and writes its CHANGES entry into R while the
-/// entries stay shorter than the list. Then UNCHANGED, CHANGES, or the whole list (C holds G already): when the entries
-/// are not shorter, or the copy was not valid.
+/// 06 READ LIST and 07 READ LIST FULL (docs/protocol.md section 2). Each slot's WINDOW (the 4 bytes from its item's
+/// first byte) has a copy in C, so an unchanged list is never gathered: 06 with a valid copy compares every window
+/// with its copy (phase Compare, unrolled, an ORed group of 8 double word compares, two groups a scan); a group with a
+/// differing window goes through phase Changes, which copies each differing window into C and writes its CHANGES entry
+/// (slot, window) into R while the entries stay shorter than the list; then UNCHANGED or CHANGES from R. A whole list
+/// (07; 06 with the copy not valid, after phase Changes put its windows into C; 06 whose entries would not be shorter)
+/// is gathered into R, one group of 8 items a scan (an unrolled BMB each), and answered from there. While the copy is
+/// not valid (after DEFINE LIST or 07) every group goes through phase Changes, which fills the copy (20 scans for 32
+/// slots, once; an unrolled copy of every window would cost 44 more instructions).
 /// </summary>
 internal static class ListPart
 {
-    /// <summary>Double words phase Changes takes per scan: about 0.3 ms each, 0.7 with an entry.</summary>
-    private const int ChangesPerScan = 2;
-
-    /// <summary>A pointer beyond every reply: SENT while a comparison's reply is unknown, so nothing is sent.</summary>
-    private const string Nowhere = "16#7FFFFFFF";
-
     public static IEnumerable<StlNetwork> Networks(Context c)
     {
         var l = c.Layout;
         yield return Label(Labels.ReadList, "06 READ LIST, 07 READ LIST FULL");
         yield return Refusal.If(l, "READ LIST: a list", "No list defined: 87.", ReplyStatus.ListNotDefined, Op("LDB=", l.B(l.N), "0"));
-        yield return Always("READ LIST: gather from group 0", "Zero the 4 bytes after the data (a reply's check may be there); not a whole list yet.",
-            Op("MOVD", "0", "*" + l.Dw(l.Tail)), Op("MOVB", "1", l.B(l.Group)), Op("R", l.FlagBit(Layout.Whole), "1"));
-        yield return JumpIf("READ LIST FULL: the whole list", "07: its head now; the copy is not valid any more (the next 06 answers whole).", Labels.WholeHead,
+        yield return JumpIf(
+            "READ LIST FULL: the whole list", "The copy is not valid any more (the next 06 answers whole).", Labels.WholeHead,
             Op("LDB=", l.B(l.Cmd), Dec(Command.ReadListFull)), Op("R", l.FlagBit(Layout.CopyValid), "1"));
         yield return ReturnIf(
-            "READ LIST: a comparison",
-            "Nothing is sent until the reply is known; the comparison from quarter 0 (COUNT); entries from R byte 6 (TEMP) while below R byte 6 + D (LAST: entries beyond would not be shorter); the gather next scan.", Op("LD", "SM0.0"), Op("MOVD", Nowhere, l.Dw(l.Sent)), Op("MOVB", "0", l.B(l.Count)), Op("MOVD", l.Ptr(6), l.Dw(l.Temp)), Op("BTI", l.B(l.D), "AC0"),
-            Op("ITD", "AC0", "AC0"), Op("MOVD", l.Ptr(6), l.Dw(l.Last)), Op("+D", "AC0", l.Dw(l.Last)), l.Go(Phase.Gather));
+            "READ LIST: compare", "From group 0 (COUNT) next scan; entries from R byte 6 (TEMP) while below TAIL (R byte 6 + D: entries beyond would not be shorter). The copy not valid: every group goes through phase Changes (its windows into the copy), then the whole list.",
+            Op("LD", "SM0.0"), Op("MOVB", "0", l.B(l.Count)), Op("MOVD", l.Ptr(6), l.Dw(l.Temp)), Op("R", l.FlagBit(Layout.Differs), "1"), l.Go(Phase.Compare));
         foreach (var network in Head(c).Concat(Gather(c)).Concat(Compare(c)).Concat(Changes(c)))
         {
             yield return network;
         }
     }
 
-    /// <summary>Label 46: the whole list's head in L; from the dispatch (then the gather) or after the comparison (then the data and the check).</summary>
+    /// <summary>Source pointer of slot <paramref name="k"/>, as an indirect operand: its window.</summary>
+    private static string Window(Layout l, int k) => "*" + l.Dw(l.Slot(k) + 4);
+
+    /// <summary>Label 46: a whole list: gathered into R from the next scan, one group a scan, then its reply.</summary>
     private static IEnumerable<StlNetwork> Head(Context c)
     {
         var l = c.Layout;
         yield return Label(Labels.WholeHead, "a whole list's reply");
-        yield return Always(
-            "Whole list: head",
-            "80 and REQCHECK after L's '<' and LEN (set by DEFINE LIST); SENT = L's count byte, COVERED = REQCHECK's last byte; the check walks from '<' to TAIL.",
-            Op("MOVB", Hex(ReplyStatus.Ok), l.B(l.L + 3)), Op("MOVW", l.W(l.Rx + 2), l.W(l.L + 4)), Op("MOVD", l.Ptr(l.L), l.Dw(l.Sent)),
-            Op("MOVD", l.Ptr(l.L + 5), l.Dw(l.Covered)), Op("MOVD", l.Dw(l.Tail), l.Dw(l.End)),
-            Op("MOVD", l.Ptr(l.L + 1), l.Dw(l.Walk)), Op("MOVD", "0", l.Dw(l.SumA)), Op("MOVW", "0", l.W(l.SumB)), Op("S", l.FlagBit(Layout.Whole), "1"));
-        yield return ReturnIf("Whole list: gather next", "From the dispatch: head and data leave when the last group is gathered.", Op("LDB<", l.B(l.Group), l.B(l.Groups)), l.Go(Phase.Gather));
-        yield return JumpIf("Whole list: all of it", "After the comparison, G gathered: head and data leave now, the check from the next scan.", Labels.Publish,
-            Op("LD", "SM0.0"), Op("MOVD", l.Dw(l.Tail), l.Dw(l.Covered)), Op("DECD", l.Dw(l.Covered)), l.GoReplyCheck());
+        yield return ReturnIf("Whole list: gather", "From group 0, next scan.", Op("LD", "SM0.0"), Op("MOVB", "1", l.B(l.Group)), l.Go(Phase.Gather));
     }
 
     private static IEnumerable<StlNetwork> Gather(Context c)
     {
         var l = c.Layout;
         var groups = c.Shape.ListItems / HandlerShape.GroupSlots;
-        yield return Label(Labels.Gather, "phase Gather: one group of slots");
+        yield return Label(Labels.Gather, "phase Gather: one group of items into R");
         for (var g = 0; g < groups; g++)
         {
             var slots = Enumerable.Range(g * HandlerShape.GroupSlots, HandlerShape.GroupSlots).ToList();
             yield return new NetworkBuilder(
                     $"Gather: group {g}, slots {slots[0]}-{slots[^1]}",
-                    $"GROUP bit {g}: each slot BMB its length from its source to its destination; COVERED = where the next slot's bytes go (the data's end after the last). No jump past the other groups: their boxes without power flow take 1 us each, a JMP 46 us taken or not.")
-                .Op("LD", l.Bit(l.Group, g)).Ops(slots.Select(k => Op("BMB", "*" + l.Dw(l.Slot(k) + 4), "*" + l.Dw(l.Slot(k)), l.B(l.Slot(k) + 8))))
-                .Op("MOVD", l.Dw(l.Slot(slots[^1] + 1)), l.Dw(l.Covered)).Build();
+                    $"GROUP bit {g}: each slot BMB its length from its source to its destination in R. No jump past the other groups: their boxes without power flow take 1 us each, a JMP 46 us taken or not.")
+                .Op("LD", l.Bit(l.Group, g)).Ops(slots.Select(k => Op("BMB", Window(l, k), "*" + l.Dw(l.Slot(k)), l.B(l.Slot(k) + 8)))).Build();
         }
 
-        yield return Always("Gather: on", "COVERED = the group's last byte; the next group.", Op("DECD", l.Dw(l.Covered)), Op("SLB", l.B(l.Group), "1"));
-        // Nothing leaves before the whole list is gathered: a second chunk's XMT count goes into the byte before it (the
-        // first chunk's last), which the check, walked only after the gather, would then read instead of the data.
-        yield return ReturnIf("Gather: more groups", "The next group in the next scan; nothing leaves yet: the next chunk's count would overwrite a byte the check has not read.",
-            Op("LDB<", l.B(l.Group), l.B(l.Groups)));
-        yield return JumpIf("Gather done: the whole list's check", "Head and data leave now in one chunk, the check from the next scan.", Labels.Publish,
-            Op("LD", l.FlagBit(Layout.Whole)), l.GoReplyCheck());
-        yield return ReturnIf("Gather done: compare", "In the next scan.", Op("LD", "SM0.0"), l.Go(Phase.Compare));
+        yield return ReturnIf("Gather: more groups", "The next group (GROUP's bit at most USED) in the next scan.", Op("LD", "SM0.0"), Op("SLB", l.B(l.Group), "1"), Op("AB<=", l.B(l.Group), l.B(l.Used)));
+        yield return DispatchPart.ToReply(c, "Gather done: the whole list", "80 with P = D bytes, in R; its head next scan.", Op("LD", "SM0.0"), Op("BTI", l.B(l.D), l.W(l.Temp)), Op("MOVB", Hex(ReplyStatus.Ok), l.B(l.Status)));
     }
 
     /// <summary>
-    /// Phase Compare: G against C from quarter COUNT on, two quarters of 32 bytes a scan at most, unrolled. A quarter with
-    /// a differing double word: phase Changes over it (COUNT = the quarter). After the last quarter: UNCHANGED when no
-    /// entry was written, CHANGES when the entries are shorter than the list, else the whole list.
+    /// Phase Compare: from group COUNT on, two groups a scan at most, unrolled: 8 ORed double word compares of a window
+    /// (through its source pointer, 60 us) with its copy. A group with a differing window: phase Changes over it (COUNT =
+    /// the group). After the last group: UNCHANGED when no entry was written, CHANGES when the entries are shorter than
+    /// the list, else the whole list.
     /// </summary>
     private static IEnumerable<StlNetwork> Compare(Context c)
     {
         var l = c.Layout;
-        var quarters = (c.Shape.ListBytes + 31) / 32;
-        yield return Label(Labels.Compare, "phase Compare: G against the copy");
-        for (var q = quarters; q >= 1; q--)
+        var groups = c.Shape.ListItems / HandlerShape.GroupSlots;
+        yield return Label(Labels.Compare, "phase Compare: each window against its copy");
+        // Where the comparison goes on (COUNT 0-4), the common cases first: a jump's test costs 46 us taken or not,
+        // contacts 0.37 us. An idle READ LIST starts at group 0 and goes on at group 2; phase Changes returns anywhere.
+        // Each test needs only the bits that tell its value from those not yet ruled out.
+        string C(int bit) => l.Bit(l.Count, bit);
+        (int Group, (string, string[])[] When)[] tests =
+        [
+            (0, [Op("LDN", C(0)), Op("AN", C(1)), Op("AN", C(2))]), (2, [Op("LDN", C(0)), Op("A", C(1))]), (groups, [Op("LD", C(2))]), (3, [Op("LD", C(1))]),
+            (1, [Op("LD", "SM0.0")]),
+        ];
+        foreach (var (q, when) in tests)
         {
-            yield return JumpIf(
-                q == quarters ? "Compare: every quarter done" : $"Compare: from quarter {q}?",
-                "COUNT's bits, the highest quarter first: COUNT has every bit of this quarter's number only when it is at least this one, and the higher ones went before (a contact takes 0.37 us, a byte compare 46).",
-                q == quarters ? Labels.CompareDone : Labels.Quarter + q,
-                [.. BitsOf(q).Select((bit, i) => Op(i == 0 ? "LD" : "A", l.Bit(l.Count, bit)))]);
+            yield return JumpIf(q == groups ? "Compare: every group done" : $"Compare: from group {q}", $"COUNT = {q}.", q == groups ? Labels.CompareDone : Labels.Quarter + q, when);
         }
 
-        for (var q = 0; q < quarters; q++)
+        for (var q = 0; q < groups; q++)
         {
-            if (q > 0)
+            if (q == 0)
+            {
+                yield return Label(Labels.Quarter, "group 0");
+            }
+            else
             {
                 if (q % 2 == 0)
                 {
-                    yield return ReturnIf($"Compare: quarter {q} next scan", string.Empty, Op("LD", "SM0.0"), Op("MOVB", Dec(q), l.B(l.Count)));
+                    yield return ReturnIf($"Compare: group {q} next scan", string.Empty, Op("LD", "SM0.0"), Op("MOVB", Dec(q), l.B(l.Count)));
                 }
 
-                yield return Label(Labels.Quarter + q, $"quarter {q}");
-                yield return JumpIf($"Compare: D within {32 * q}", "The rest is not data: the comparison is done.", Labels.CompareDone, Op("LDB<=", l.B(l.D), Dec(32 * q)));
+                yield return Label(Labels.Quarter + q, $"group {q}");
+                yield return JumpIf($"Compare: group {q} in the list?", "USED's bit clear: the comparison is done.", Labels.CompareDone, Op("LDN", l.Bit(l.Used, q)));
             }
 
-            var net = new NetworkBuilder($"Compare: bytes {32 * q}-{(32 * q) + 31}", "Any double word differing from the copy, or the copy not valid: phase Changes over this quarter.");
-            for (var w = 0; w < 8 && (32 * q) + (4 * w) < c.Shape.ListBytes; w++)
+            var net = new NetworkBuilder($"Compare: slots {8 * q}-{(8 * q) + 7}", "Any window differing from its copy, or the copy not valid: phase Changes over this group.");
+            for (var w = 0; w < HandlerShape.GroupSlots; w++)
             {
-                var at = (32 * q) + (4 * w);
-                net.Op(w == 0 ? "LDD<>" : "OD<>", l.Dw(l.G + at), l.Dw(l.C + at));
+                var k = (HandlerShape.GroupSlots * q) + w;
+                net.Op(w == 0 ? "LDD<>" : "OD<>", Window(l, k), l.Dw(l.C + (4 * k)));
             }
 
             yield return net.Op("ON", l.FlagBit(Layout.CopyValid)).Op("MOVB", Dec(q), l.B(l.Count)).Op("JMP", Dec(Labels.Changes)).Build();
         }
 
-        yield return Label(Labels.CompareDone, "every quarter compared");
-        yield return JumpIf("Compare: the copy was not valid", "It is now (phase Changes made it G): the whole list.", Labels.WholeHead,
+        yield return Label(Labels.CompareDone, "every group compared");
+        yield return JumpIf("UNCHANGED", "No window differed (FLAGS bit 4): 81, no payload.", Labels.ErrorReply,
+            Op("LDN", l.FlagBit(Layout.Differs)), Op("MOVB", Hex(ReplyStatus.Unchanged), l.B(l.Status)));
+        yield return JumpIf("Compare: the copy was not valid", "It is now (phase Changes put every window in it): the whole list.", Labels.WholeHead,
             Op("LDN", l.FlagBit(Layout.CopyValid)), Op("S", l.FlagBit(Layout.CopyValid), "1"));
-        yield return Always("CHANGES: P", "P = the entries' bytes (TEMP - R byte 6).",
-            Op("MOVD", l.Dw(l.Temp), "AC0"), Op("MOVD", l.Ptr(6), "AC1"), Op("-D", "AC1", "AC0"), Op("MOVW", "AC0", l.W(l.Temp)));
-        yield return JumpIf("UNCHANGED", "No entry written: 81, no payload.", Labels.ErrorReply,
-            Op("LDW=", l.W(l.Temp), "0"), Op("MOVB", Hex(ReplyStatus.Unchanged), l.B(l.Status)));
-        yield return JumpIf("CHANGES: not shorter", "5 x entries >= D: the whole list (the copy holds G already).", Labels.WholeHead,
-            Op("LDB>=", l.B(l.Temp + 1), l.B(l.D)));
-        yield return DispatchPart.ToReply(c, "CHANGES: reply", "88, the entries in R.", Op("LD", "SM0.0"), Op("MOVB", Hex(ReplyStatus.Changes), l.B(l.Status)));
-        yield return Label(Labels.Changes, "a quarter differs");
-        yield return Always(
-            "Changes: the quarter",
-            "WALK in G and COVERED in C at its first double word, END at its end (at most TAIL); INDEX (in STATUS) = 8 x COUNT.",
-            Op("BTI", l.B(l.Count), "AC0"), Op("ITD", "AC0", "AC0"), Op("SLD", "AC0", "3"), Op("MOVB", "AC0", l.B(l.Status)), Op("SLD", "AC0", "2"),
-            Op("MOVD", l.Ptr(l.G), l.Dw(l.Walk)), Op("+D", "AC0", l.Dw(l.Walk)), Op("MOVD", l.Ptr(l.C), l.Dw(l.Covered)), Op("+D", "AC0", l.Dw(l.Covered)),
-            Op("MOVD", l.Dw(l.Walk), l.Dw(l.End)), Op("+D", "32", l.Dw(l.End)));
-        yield return new NetworkBuilder("Changes: not past TAIL", string.Empty).Op("LDD>", l.Dw(l.End), l.Dw(l.Tail)).Op("MOVD", l.Dw(l.Tail), l.Dw(l.End)).Build();
-        yield return ReturnIf("Changes: next scan", string.Empty, Op("LD", "SM0.0"), l.Go(Phase.Changes));
+        yield return JumpIf("CHANGES: not shorter", "5 x entries (LAST's first word, set by phase Changes) >= D: the whole list (the copy holds every window already).", Labels.WholeHead,
+            Op("LDB>=", l.B(l.Last + 1), l.B(l.D)));
+        yield return DispatchPart.ToReply(c, "CHANGES: reply", "88, P entries' bytes in R.", Op("LD", "SM0.0"), Op("MOVW", l.W(l.Last), l.W(l.Temp)), Op("MOVB", Hex(ReplyStatus.Changes), l.B(l.Status)));
+        yield return Label(Labels.Changes, "a group differs");
+        yield return ReturnIf(
+            "Changes: the group",
+            "INDEX (in STATUS) = 8 x COUNT; WALK at its first slot's source pointer (Slots + 4 + 72 x COUNT), END 8 slots on; LAST at its first copy (C + 32 x COUNT); the slots from the next scan.",
+            Op("LD", "SM0.0"), Op("S", l.FlagBit(Layout.Differs), "1"), Op("BTI", l.B(l.Count), "AC0"), Op("ITD", "AC0", "AC0"), Op("SLD", "AC0", "3"), Op("MOVB", "AC0", l.B(l.Status)),
+            Op("MOVD", "AC0", "AC1"), Op("SLD", "AC1", "3"), Op("+D", "AC0", "AC1"), Op("MOVD", l.Ptr(l.Slots + 4), l.Dw(l.Walk)), Op("+D", "AC1", l.Dw(l.Walk)),
+            Op("MOVD", l.Dw(l.Walk), l.Dw(l.End)), Op("+D", Dec(HandlerShape.SlotBytes * HandlerShape.GroupSlots), l.Dw(l.End)),
+            Op("SLD", "AC0", "2"), Op("MOVD", l.Ptr(l.C), l.Dw(l.Last)), Op("+D", "AC0", l.Dw(l.Last)), l.Go(Phase.Changes));
     }
 
-    /// <summary>The set bits of <paramref name="value"/>, lowest first.</summary>
-    private static IEnumerable<int> BitsOf(int value) => Enumerable.Range(0, 8).Where(bit => (value & (1 << bit)) != 0);
-
-    /// <summary>Phase Changes: two double words of the quarter per scan, unrolled; at its end, phase Compare from the next quarter.</summary>
+    /// <summary>Phase Changes: two slots of the group per scan (a loop); at the group's end, phase Compare from the next group.</summary>
     private static IEnumerable<StlNetwork> Changes(Context c)
     {
         var l = c.Layout;
         var index = l.B(l.Status);
-        yield return Label(Labels.ChangesLoop, "phase Changes: two double words per scan");
-        yield return Always("Changes: pointers", "AC1 in G, AC2 in C, AC3 at the next entry.",
-            Op("MOVD", l.Dw(l.Walk), "AC1"), Op("MOVD", l.Dw(l.Covered), "AC2"), Op("MOVD", l.Dw(l.Temp), "AC3"));
-        for (var k = 0; k < ChangesPerScan; k++)
+        yield return Label(Labels.ChangesLoop, "phase Changes: two slots per scan");
+        yield return Always("Changes: pointers", "AC2 at the slot's copy (LAST), AC3 at the next entry (TEMP).", Op("MOVD", l.Dw(l.Last), "AC2"), Op("MOVD", l.Dw(l.Temp), "AC3"));
+        for (var k = 0; k < 2; k++)
         {
-            if (k > 0)
-            {
-                yield return JumpIf("Changes: the quarter's end", string.Empty, Labels.ChangesNext, Op("LDD>=", "AC1", l.Dw(l.End)));
-            }
-
-            yield return new NetworkBuilder("Changes: a differing double word", "Into the copy; its entry, INDEX and the 4 bytes, while below the limit (LAST).")
-                .Op("LDD<>", "*AC1", "*AC2").Op("MOVD", "*AC1", "*AC2").Op("AD<", "AC3", l.Dw(l.Last)).Op("MOVB", index, "*AC3").Op("INCD", "AC3")
-                .Op("MOVD", "*AC1", "*AC3").Op("+D", "4", "AC3").Build();
-            yield return Always("Changes: on", string.Empty, Op("+D", "4", "AC1"), Op("+D", "4", "AC2"), Op("INCB", index));
+            // Unrolled, no loop test: a group's 8 slots take exactly 4 scans (a jump's test costs 46 us taken or not).
+            yield return new NetworkBuilder("Changes: a slot's window", "AC1 = its source pointer; a window differing from its copy goes into the copy, and its entry, INDEX and the 4 bytes, while below TAIL.")
+                .Op("LD", "SM0.0").Op("MOVD", "*" + l.Dw(l.Walk), "AC1").Op("AD<>", "*AC1", "*AC2").Op("MOVD", "*AC1", "*AC2").Op("AD<", "AC3", l.Dw(l.Tail)).Op("MOVB", index, "*AC3")
+                .Op("INCD", "AC3").Op("MOVD", "*AC2", "*AC3").Op("+D", "4", "AC3").Build();
+            yield return Always("Changes: the next slot", string.Empty, Op("+D", Dec(HandlerShape.SlotBytes), l.Dw(l.Walk)), Op("+D", "4", "AC2"), Op("INCB", index));
         }
 
-        yield return Label(Labels.ChangesNext, "this scan's double words done");
-        yield return Always("Changes: keep the pointers", string.Empty, Op("MOVD", "AC1", l.Dw(l.Walk)), Op("MOVD", "AC2", l.Dw(l.Covered)), Op("MOVD", "AC3", l.Dw(l.Temp)));
-        yield return ReturnIf("Changes: more next scan", string.Empty, Op("LDD<", "AC1", l.Dw(l.End)));
-        yield return ReturnIf("Changes: the quarter done", "Phase Compare from the next quarter, next scan.", Op("LD", "SM0.0"), Op("INCB", l.B(l.Count)), l.Go(Phase.Compare));
+        yield return ReturnIf("Changes: more next scan", "Keep the pointers.", Op("LD", "SM0.0"), Op("MOVD", "AC3", l.Dw(l.Temp)), Op("MOVD", "AC2", l.Dw(l.Last)), Op("AD<", l.Dw(l.Walk), l.Dw(l.End)));
+        yield return ReturnIf(
+            "Changes: the group done", "The entries' bytes so far (TEMP - R byte 6) in LAST's first word; phase Compare from the next group, next scan.",
+            Op("LD", "SM0.0"), Op("MOVD", "AC3", "AC0"), Op("MOVD", l.Ptr(6), "AC1"), Op("-D", "AC1", "AC0"), Op("MOVW", "AC0", l.W(l.Last)), Op("INCB", l.B(l.Count)), l.Go(Phase.Compare));
     }
 }

@@ -14,7 +14,7 @@ internal enum Phase
     /// <summary>With <see cref="Check"/>: the reply's check (the reply is sent meanwhile).</summary>
     ReplyFlag = 1,
 
-    /// <summary>The next group of the list's slots.</summary>
+    /// <summary>The next group of the list's items into R (a whole list's data).</summary>
     Gather = 2,
 
     /// <summary>Set by the receive routine: a request of LEN bytes for this station waits.</summary>

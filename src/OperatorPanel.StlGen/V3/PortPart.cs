@@ -34,7 +34,7 @@ internal static class PortPart
             .Ops([l.Done()]).Op("ANDB", Hex(1 << Layout.RunSeen), l.B(l.Flags));
         if (c.HasList)
         {
-            on.Op("MOVB", "0", l.B(l.N)).Op("MOVB", "0", l.B(l.D)).Op("MOVB", "16#3C", l.B(l.L + 1));
+            on.Op("MOVB", "0", l.B(l.N));
         }
 
         yield return on.Op("ATCH", c.Names.Receive, Dec(c.ReceiveEvent)).Op("ATCH", c.Names.Transmit, Dec(c.TransmitEvent))
@@ -47,7 +47,7 @@ internal static class PortPart
             .Op("MOVB", "0", c.SmB(30)).Ops([l.Done()]).Op("ANDB", Hex(1 << Layout.RunSeen), l.B(l.Flags));
         if (c.HasList)
         {
-            off.Op("MOVB", "0", l.B(l.N)).Op("MOVB", "0", l.B(l.D));
+            off.Op("MOVB", "0", l.B(l.N));
         }
 
         yield return off.Build();

@@ -22,7 +22,7 @@ internal static class Symbols
         string Count(int n) => n.ToString(CultureInfo.InvariantCulture);
         yield return ("OP_BUF", l.B(0), $"Panel handler v3: request and reply buffer, {Count(l.Shape.RequestBytes + 1)} bytes (byte 0 = character count)");
         yield return ("OP_STEP", l.W(l.Step), "Panel handler: one bit per phase, where OP_PANEL goes on in the next scan (0 = no request)");
-        yield return ("OP_FLAGS", l.B(l.Flags), "Panel handler: bit 0 transmitter owned, 1 whole list, 2 STOP now, 3 copy valid, 7 SM0.7 last scan");
+        yield return ("OP_FLAGS", l.B(l.Flags), "Panel handler: bit 0 transmitter owned, 2 STOP now, 3 copy valid, 7 SM0.7 last scan");
         yield return ("OP_CMD", l.B(l.Cmd), "Panel handler: command of the request");
         yield return ("OP_STATUS", l.B(l.Status), "Panel handler: status of the reply (INDEX while CHANGES are counted)");
         yield return ("OP_SUM_A", l.Dw(l.SumA), "Panel handler: frame check, XOR sum");
@@ -42,12 +42,10 @@ internal static class Symbols
 
         yield return ("OP_N", l.B(l.N), "Panel handler: slots of the list (0 = no list)");
         yield return ("OP_D", l.B(l.D), "Panel handler: data bytes of the list");
-        yield return ("OP_GROUPS", l.B(l.Groups), "Panel handler: 1 shifted left by the groups of 8 slots in use");
-        yield return ("OP_GROUP", l.B(l.Group), "Panel handler: the group being gathered, as a bit");
-        yield return ("OP_TAIL", l.Dw(l.Tail), "Panel handler: pointer past the list data");
+        yield return ("OP_USED", l.B(l.Used), "Panel handler: bit g set when group g of 8 slots is in the list");
+        yield return ("OP_TAIL", l.Dw(l.Tail), "Panel handler: pointer past a whole list's data in the buffer");
         yield return ("OP_NEXT_SLOT", l.Dw(l.NextSlot), "Panel handler: pointer to the slot DEFINE LIST stores next");
-        yield return ("OP_LIST_REPLY", l.B(l.L), $"Panel handler: list reply area, {Count(l.Shape.ListReplyBytes)} bytes (G = the gathered data from byte 6, then 4 bytes for the check)");
-        yield return ("OP_COPY", l.B(l.C), $"Panel handler: the list's copy, {Count(l.Shape.ListBytes)} bytes");
-        yield return ("OP_SLOTS", l.B(l.Slots), $"Panel handler: {Count(l.Shape.ListItems)} slots of 9 bytes: destination pointer, source pointer, length; then the data's end");
+        yield return ("OP_COPY", l.B(l.C), $"Panel handler: the list's copy, {Count(l.Shape.CopyBytes)} bytes, slot k's 4-byte window at 4k");
+        yield return ("OP_SLOTS", l.B(l.Slots), $"Panel handler: {Count(l.Shape.ListItems)} slots of 9 bytes: destination pointer, source pointer, length");
     }
 }

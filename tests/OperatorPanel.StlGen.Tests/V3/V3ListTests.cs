@@ -81,8 +81,23 @@ public sealed class V3ListTests
             station.Poke(ProtocolArea.V, 1000 + (i * 6), (byte)i);
         }
 
-        pc.Read().Should().Be(ReplyStatus.Ok, "26 changed double words do not fit as entries: the whole list");
+        pc.Read().Should().Be(ReplyStatus.Ok, "26 changed slots do not fit as entries: the whole list");
         pc.Known.Should().Equal(Memory(station, pc));
+    }
+
+    [Fact]
+    public void ReadList_AWindowByteOutsideItsItemChanged_AnEntryThatLeavesTheItemsBytes()
+    {
+        var (station, pc) = Defined([new ReadItem(ProtocolArea.V, 300, 1), new ReadItem(ProtocolArea.M, 30, 2)]);
+        pc.Read();
+
+        station.Poke(ProtocolArea.V, 302, (byte)~station.Reference.Memory.V[302]);
+        var changes = pc.Read();
+
+        changes.Should().Be(ReplyStatus.Changes, "slot 0's window is VB300-VB303");
+        pc.Plan.Items[1].Should().Be(new ReadItem(ProtocolArea.M, 28, 4), "MB30-MB31 widened back so its window MB28-MB31 stays in M");
+        pc.Known.Should().Equal(Memory(station, pc));
+        pc.Read().Should().Be(ReplyStatus.Unchanged);
     }
 
     [Theory]
@@ -121,6 +136,8 @@ public sealed class V3ListTests
     [InlineData("0400000104000001040000010400000104000001040000010400000105022601")]
     [InlineData("0400000104000001040000010400000104000001040000010400000100000001")]
     [InlineData("0400000104000001040000010400000104000001040000010400000103001F02")]
+    [InlineData("0400000104000001040000010400000104000001040000010400000103001F01")]
+    [InlineData("0400000104000001040000010400000104000001040000010400000102000D03")]
     public void DefineList_Refusals_AnswerTheFirstFailingCheckLikeTheReference_AndLeaveNoList(string payload)
     {
         var station = Station();
@@ -157,24 +174,21 @@ public sealed class V3ListTests
 
     private static void Defined(V3Station station, ListPc pc, ReadItem[] ranges)
     {
-        ListPlan.TryMake(ranges, station.Reference.Setup.Shape, out var plan).Should().BeTrue();
+        ListPlan.TryMake(ranges, station.Reference.Setup.Shape, ListPlan.AreaBytesOf(station.Reference.Setup.Cpu), out var plan).Should().BeTrue();
         pc.Raw(plan.Request(station.Station, pc.NextSequence())).Should().Be(ReplyStatus.Ok);
-        pc.DataBytes = plan.DataBytes;
-        pc.Items = plan.Items;
+        pc.Plan = plan;
     }
 
     /// <summary>The list data as the memory holds it now: the plan's items' bytes (the ranges, then the SMB6 fillers).</summary>
     private static byte[] Memory(V3Station station, ListPc pc) =>
-        [.. pc.Items.SelectMany(r => station.Reference.Memory.Area(r.Area).AsSpan(r.Offset, r.Length).ToArray())];
+        [.. pc.Plan.Items.SelectMany(r => station.Reference.Memory.Area(r.Area).AsSpan(r.Offset, r.Length).ToArray())];
 
     /// <summary>The PC's side: every exchange compared with the reference; list replies applied to what it knows.</summary>
     private sealed class ListPc(V3Station station)
     {
         private byte _sequence;
 
-        public int DataBytes { get; set; }
-
-        public ImmutableArray<ReadItem> Items { get; set; } = [];
+        public ListPlan Plan { get; set; } = null!;
 
         public ImmutableArray<byte> Known { get; private set; } = [];
 
@@ -195,8 +209,8 @@ public sealed class V3ListTests
             var (stl, reference) = station.Exchange(sent);
             Convert.ToHexString(stl).Should().Be(Convert.ToHexString(reference));
             Codec.TryDecodeReplyTo(stl, sent, out var reply, out _).Should().BeTrue();
-            ListReply.TryRead(reply, DataBytes, out var list).Should().BeTrue($"{reply.Status} with {reply.Payload.Length} bytes is a list reply");
-            list.TryApply(Known.AsSpan(), DataBytes, out var now).Should().BeTrue();
+            ListReply.TryRead(reply, Plan, out var list).Should().BeTrue($"{reply.Status} with {reply.Payload.Length} bytes is a list reply");
+            list.TryApply(Known.AsSpan(), Plan, out var now).Should().BeTrue();
             Known = now;
             return reply.Status;
         }

@@ -86,7 +86,7 @@ internal sealed record V3LinkReport(
             }
         }
 
-        ListPlan.TryMake(V3Measurement.ReferenceLine, HandlerShape.Full, out var statsList);
+        ListPlan.TryMake(V3Measurement.ReferenceLine, HandlerShape.Full, ListPlan.AreaBytesOf(line.Cpu), out var statsList);
         // The same slots, maybe in another order (the planner orders the areas its own way): the same work per slot.
         static IEnumerable<string> Slots(ListPlan plan) => plan.Items.Select(i => $"{i.Area}{i.Offset}/{i.Length}").Order(StringComparer.Ordinal);
         if (!Slots(statsList).SequenceEqual(Slots(frames.List)))

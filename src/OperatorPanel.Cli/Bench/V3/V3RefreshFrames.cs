@@ -25,7 +25,7 @@ internal sealed record V3RefreshFrames(
         var leftOut = 0;
         foreach (var frame in line.Plan().Frames.Where(f => f.Station == line.Station && !f.Items.IsEmpty))
         {
-            if (ListPlan.TryMake([.. ranges, .. frame.Items], HandlerShape.Full, out var fitted))
+            if (ListPlan.TryMake([.. ranges, .. frame.Items], HandlerShape.Full, ListPlan.AreaBytesOf(line.Cpu), out var fitted))
             {
                 ranges.AddRange(frame.Items);
                 list = fitted;

@@ -9,7 +9,7 @@ namespace OperatorPanel.Core.Polling.Readers;
 /// <summary>
 /// A v3 full handler's list (docs/v3-panel-side.md): the station's frames that fit its list are defined once with 05
 /// DEFINE LIST (again after the station answers 87 "no list": a restart, STOP, the mode switch) and then read together
-/// in ONE 06 READ LIST per refresh: UNCHANGED keeps the values, CHANGES patches the double words it names, a whole list
+/// in ONE 06 READ LIST per refresh: UNCHANGED keeps the values, CHANGES patches the slots it names, a whole list
 /// replaces them. 06 is never repeated (the handler's copy moved on with a lost reply), so after a READ LIST without a
 /// good reply the next read is 07 READ LIST FULL, after which the next 06 answers the whole list again; 07 also comes
 /// every <see cref="PollingOptions.FullReadInterval"/>. A handler that refuses the DEFINE LIST itself (a compact one, or a
@@ -95,8 +95,8 @@ internal sealed class V3ListReader(PollingContext context, V3Link link, V3Reader
         }
 
         var known = _list.Copy == CopyState.InStep ? _list.Known.AsSpan() : [];
-        if (!ListReply.TryRead(reply, plan.DataBytes, out var answer) || (full && answer.Status != ReplyStatus.Ok)
-            || !answer.TryApply(known, plan.DataBytes, out var data))
+        if (!ListReply.TryRead(reply, plan, out var answer) || (full && answer.Status != ReplyStatus.Ok)
+            || !answer.TryApply(known, plan, out var data))
         {
             // Whatever it was, the handler's copy may have moved on: READ LIST FULL next.
             _list.Copy = CopyState.Unknown;

@@ -33,7 +33,7 @@ internal sealed class V3ReaderChoice(PollingContext context, V3Link link)
         {
             if (!_lists.TryGetValue(station, out var list) || list.Shape != shape)
             {
-                list = _lists[station] = new V3StationList(context.Plan, station, shape);
+                list = _lists[station] = new V3StationList(context.Plan, station, shape, identity.AreaBytes);
             }
 
             return list;

@@ -14,7 +14,7 @@ internal sealed class V3StationList
 {
     private readonly Dictionary<int, int> _places = [];
 
-    public V3StationList(PollPlan plan, Station station, HandlerShape shape)
+    public V3StationList(PollPlan plan, Station station, HandlerShape shape, Func<ProtocolArea, int>? areaBytes = null)
     {
         ArgumentNullException.ThrowIfNull(plan);
         (Station, Shape) = (station, shape);
@@ -29,7 +29,7 @@ internal sealed class V3StationList
                 continue;
             }
 
-            if (!ListPlan.TryMake([.. ranges, .. frame.Items], shape, out var plan2))
+            if (!ListPlan.TryMake([.. ranges, .. frame.Items], shape, areaBytes, out var plan2))
             {
                 continue;
             }

@@ -16,7 +16,7 @@ public enum Command : byte
     /// <summary>The list's changes since the handler's copy: UNCHANGED, CHANGES or the whole list (full handler only).</summary>
     ReadList = 0x6,
 
-    /// <summary>The whole list; renews the copy (full handler only).</summary>
+    /// <summary>The whole list; leaves the handler's copy not valid, so the next READ LIST answers whole too (full handler only).</summary>
     ReadListFull = 0x7,
 
     /// <summary>Puts the CPU into STOP (only in a handler generated with STOP).</summary>

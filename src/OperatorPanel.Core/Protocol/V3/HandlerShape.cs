@@ -11,23 +11,26 @@ public sealed record HandlerShape(int RequestBytes, int ListItems, int ListBytes
     /// <summary>Every handler's work bytes: step, flags, the check's sums, REQCHECK, pointers kept between scans.</summary>
     public const int WorkBytes = 40;
 
-    /// <summary>The list's own work bytes: N, D, the groups in use, the group being gathered, pointers past the data and to the next slot.</summary>
+    /// <summary>The list's own work bytes: N, D, the groups in use, a pointer past the data in R, the slot DEFINE LIST stores next.</summary>
     public const int ListWorkBytes = 12;
 
-    /// <summary>Slots are gathered in groups of this many, one group per scan; a list has a whole number of groups.</summary>
+    /// <summary>Slots are compared and gathered in groups of this many (one unrolled network each); a list has a whole number of groups.</summary>
     public const int GroupSlots = 8;
 
-    /// <summary>The most bytes one item (one slot) reads: a group of 8 slots then moves at most 32 bytes.</summary>
+    /// <summary>
+    /// The most bytes one item (one slot) reads, and the size of every slot's WINDOW (the bytes from its item's first
+    /// byte that the handler compares with its copy in one double word compare).
+    /// </summary>
     public const int ItemBytes = 4;
 
-    /// <summary>Per slot: its destination pointer, its source pointer, its length.</summary>
+    /// <summary>Per slot: its destination pointer (in the reply), its source pointer, its length.</summary>
     public const int SlotBytes = 9;
 
     /// <summary>
-    /// The full handler: a 136-byte request buffer (DEFINE LIST of 32 slots; a CHANGES reply of the largest list) and a
+    /// The full handler: a 137-byte buffer (a whole list reply of 128 data bytes; DEFINE LIST of 32 slots has 136) and a
     /// list of 32 slots, 128 data bytes.
     /// </summary>
-    public static HandlerShape Full { get; } = new(136, 32, 128);
+    public static HandlerShape Full { get; } = new(137, 32, 128);
 
     /// <summary>
     /// The compact handler: IDENTIFY, READ, WRITE and WRITE BITS, no list, with a 33-byte buffer: the longest reply,
@@ -43,19 +46,15 @@ public sealed record HandlerShape(int RequestBytes, int ListItems, int ListBytes
     /// </summary>
     public const int MaxData = 16;
 
-    /// <summary>
-    /// The list reply area: count byte, the 5 head bytes, the gathered data (LIST_BYTES), and 4 bytes where a whole
-    /// list's check goes (zeroed before each gather: the check reads whole double words).
-    /// </summary>
-    public int ListReplyBytes => HasList ? 1 + Limits.ReplyHead + ListBytes + WordCheck.Bytes : 0;
+    /// <summary>The copy: every slot's 4-byte window as the last READ LIST reported it.</summary>
+    public int CopyBytes => ItemBytes * ListItems;
 
     /// <summary>
-    /// V_BYTES: request buffer (with its count byte), work bytes, and with a list its reply area, copy, slots (and the
-    /// destination pointer after the last, where the data ends) and work bytes.
+    /// V_BYTES: the buffer (with its count byte), work bytes, and with a list its work bytes, the copy and the slots.
     /// </summary>
     public int VBytes =>
         1 + RequestBytes + WorkBytes
-        + (HasList ? ListReplyBytes + ListBytes + (SlotBytes * ListItems) + 4 + ListWorkBytes : 0);
+        + (HasList ? ListWorkBytes + CopyBytes + (SlotBytes * ListItems) : 0);
 
     /// <summary>Where the generator puts the handler by default: the top of V, starting on an even byte.</summary>
     public int DefaultVFirst(int vAreaBytes) => (vAreaBytes - VBytes) & ~1;

@@ -58,6 +58,14 @@ public sealed record Identity(
 
     public bool HasList => (Features & ListFeature) != 0;
 
+    /// <summary>The bytes of <paramref name="area"/> on the CPU this handler says it was generated for; 0 when CPU_MODEL is unknown.</summary>
+    public int AreaBytes(ProtocolArea area)
+    {
+        var model = Enum.GetValues<CpuModel>().Where(m => HandlerIdentity.CpuModelCode(m) == CpuModelCode).Select(m => (CpuModel?)m).FirstOrDefault();
+        var revision = CpuRevisionCode == HandlerIdentity.CpuRevisionCode(CpuRevision.Early) ? CpuRevision.Early : CpuRevision.Current;
+        return model is { } known && CpuProfiles.TryFor(known, revision, out var profile) ? ListPlan.AreaBytesOf(profile)(area) : 0;
+    }
+
     /// <summary>CPU_MODEL and CPU_REVISION of <paramref name="cpu"/>: 1 = 221 .. 5 = 226; 0 = Early, 1 = Current.</summary>
     public static (byte Model, byte Revision) CodesOf(CpuProfile cpu)
     {

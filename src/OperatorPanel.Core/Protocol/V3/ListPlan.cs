@@ -3,30 +3,51 @@ using System.Collections.Immutable;
 namespace OperatorPanel.Core.Protocol.V3;
 
 /// <summary>
-/// How the PC lays a station's list out (docs/protocol.md section 2, 05 DEFINE LIST): each range in order is cut into
-/// items of at most 4 bytes, whose bytes follow one another in the list data; the last group of 8 slots is filled
-/// with 1-byte items of SMB6 (the CPU's type, readable on every S7-200), which the data carries too. <see cref="Places"/>
-/// says where each range starts in the data. False from <see cref="TryMake"/> when the ranges need more slots than the
-/// handler has (or none).
+/// How the PC lays a station's list out (docs/protocol.md section 2, 05 DEFINE LIST). Each range in order is cut into
+/// items of at most 4 bytes whose bytes follow one another in the list data; the handler compares each slot's 4-byte
+/// WINDOW (from the item's first byte) with its copy, so every window must lie inside its area. The pieces of a range
+/// are cut from its end (4, 4, ... and the short piece first), so every window but a lone short range's lies inside the
+/// range; a short range whose window would pass its area's end (by the area sizes given; without them nothing is
+/// widened, and the handler refuses such an item with 82) is widened backward to a 4-byte item that ends at the range's end. The last group of 8 slots is filled with 1-byte
+/// items of SMB6 (the CPU's type, readable on every S7-200). <see cref="Places"/> says where each range's first byte
+/// lies in the data, <see cref="Starts"/> where each item's. False from TryMake when the ranges need more
+/// slots or bytes than the handler has (or none).
 /// </summary>
 public sealed record ListPlan(ImmutableArray<ReadItem> Items, int DataBytes, ImmutableArray<int> Places)
 {
-    /// <summary>The byte a filler item reads: SMB6.</summary>
+    /// <summary>The byte a filler item reads: SMB6 (its window SMB6-SMB9).</summary>
     public static readonly ReadItem Filler = new(ProtocolArea.SM, 6, 1);
 
-    public static bool TryMake(IEnumerable<ReadItem> ranges, HandlerShape shape, out ListPlan plan)
+    /// <summary>Where each item's bytes start in the list data.</summary>
+    public ImmutableArray<int> Starts { get; } = [.. Items.Select((item, k) => Items.Take(k).Sum(i => i.Length))];
+
+    public static bool TryMake(IEnumerable<ReadItem> ranges, HandlerShape shape, out ListPlan plan) => TryMake(ranges, shape, null, out plan);
+
+    /// <summary>The plan, widening a short range only when its window would pass the end of its area (<paramref name="areaBytes"/>'s bytes).</summary>
+    public static bool TryMake(IEnumerable<ReadItem> ranges, HandlerShape shape, Func<ProtocolArea, int>? areaBytes, out ListPlan plan)
     {
         ArgumentNullException.ThrowIfNull(ranges);
         ArgumentNullException.ThrowIfNull(shape);
+        const int window = HandlerShape.ItemBytes;
         var items = ImmutableArray.CreateBuilder<ReadItem>();
         var places = ImmutableArray.CreateBuilder<int>();
         var place = 0;
         foreach (var range in ranges)
         {
-            places.Add(place);
-            for (var at = 0; at < range.Length; at += HandlerShape.ItemBytes)
+            if (range.Length < window && areaBytes is not null && range.Offset + window > areaBytes(range.Area) && range.Offset + range.Length >= window)
             {
-                var length = Math.Min(HandlerShape.ItemBytes, range.Length - at);
+                var widened = range with { Offset = range.Offset + range.Length - window, Length = window };
+                places.Add(place + window - range.Length);
+                items.Add(widened);
+                place += window;
+                continue;
+            }
+
+            places.Add(place);
+            var first = range.Length % window == 0 ? window : range.Length % window;
+            for (var at = 0; at < range.Length; at += at == 0 ? first : window)
+            {
+                var length = at == 0 ? first : window;
                 items.Add(range with { Offset = range.Offset + at, Length = length });
                 place += length;
             }
@@ -40,6 +61,13 @@ public sealed record ListPlan(ImmutableArray<ReadItem> Items, int DataBytes, Imm
 
         plan = new ListPlan(items.ToImmutable(), place, places.ToImmutable());
         return items.Count > 0 && items.Count <= shape.ListItems && place <= shape.ListBytes;
+    }
+
+    /// <summary>The bytes of each area on <paramref name="cpu"/>, for <see cref="TryMake(IEnumerable{ReadItem}, HandlerShape, Func{ProtocolArea, int}?, out ListPlan)"/>.</summary>
+    public static Func<ProtocolArea, int> AreaBytesOf(Cpu.CpuProfile cpu)
+    {
+        ArgumentNullException.ThrowIfNull(cpu);
+        return area => cpu.TryGetArea(area.ToMemoryArea(), out var range) ? range.ByteCount : 0;
     }
 
     /// <summary>The one DEFINE LIST request for this plan.</summary>

@@ -2,20 +2,22 @@ using System.Collections.Immutable;
 
 namespace OperatorPanel.Core.Protocol.V3;
 
-/// <summary>One CHANGES entry: double word INDEX of the list data (bytes 4 x INDEX .. 4 x INDEX + 3) and its 4 bytes.</summary>
+/// <summary>One CHANGES entry: slot INDEX and its window's 4 bytes now (the item's LENGTH bytes first).</summary>
 public readonly record struct ChangeEntry(byte Index, uint Value);
 
 /// <summary>
-/// The answer to READ LIST or READ LIST FULL for a list of <c>D</c> data bytes (docs/protocol.md section 2): the whole
-/// data (STATUS OK), nothing changed (UNCHANGED), or the changed double words (CHANGES). <see cref="TryApply"/> turns it
-/// into the list's data, given the data of the last good reply.
+/// The answer to READ LIST or READ LIST FULL for a list planned as <see cref="ListPlan"/> (docs/protocol.md section 2):
+/// the whole data (STATUS OK), nothing changed (UNCHANGED), or the changed slots' windows (CHANGES). <see cref="TryApply"/>
+/// turns it into the list's data, given the data of the last good reply.
 /// </summary>
 public sealed record ListReply(ReplyStatus Status, ImmutableArray<byte> Data, ImmutableArray<ChangeEntry> Changes)
 {
-    /// <summary>False when <paramref name="reply"/> is not a well-formed answer for a list of <paramref name="listBytes"/>.</summary>
-    public static bool TryRead(Reply reply, int listBytes, out ListReply list)
+    /// <summary>False when <paramref name="reply"/> is not a well-formed answer for the list of <paramref name="plan"/>.</summary>
+    public static bool TryRead(Reply reply, ListPlan plan, out ListReply list)
     {
         ArgumentNullException.ThrowIfNull(reply);
+        ArgumentNullException.ThrowIfNull(plan);
+        var listBytes = plan.DataBytes;
         list = null!;
         var payload = reply.Payload;
         switch (reply.Status)
@@ -28,8 +30,7 @@ public sealed record ListReply(ReplyStatus Status, ImmutableArray<byte> Data, Im
                 return true;
             case ReplyStatus.Changes when payload.Length > 0 && payload.Length % Limits.ChangeEntryBytes == 0 && payload.Length < listBytes:
                 var entries = Entries(payload.AsSpan());
-                var words = (listBytes + 3) / 4;
-                if (entries.Select((e, i) => e.Index < words && (i == 0 || e.Index > entries[i - 1].Index)).All(ok => ok))
+                if (entries.Select((e, i) => e.Index < plan.Items.Length && (i == 0 || e.Index > entries[i - 1].Index)).All(ok => ok))
                 {
                     list = new ListReply(ReplyStatus.Changes, [], entries);
                     return true;
@@ -42,28 +43,31 @@ public sealed record ListReply(ReplyStatus Status, ImmutableArray<byte> Data, Im
     }
 
     /// <summary>The list's data after this reply, from <paramref name="known"/> (the data of the last good reply; ignored for a whole list).</summary>
-    public bool TryApply(ReadOnlySpan<byte> known, int listBytes, out ImmutableArray<byte> data)
+    public bool TryApply(ReadOnlySpan<byte> known, ListPlan plan, out ImmutableArray<byte> data)
     {
+        ArgumentNullException.ThrowIfNull(plan);
         data = Status switch
         {
             ReplyStatus.Ok => Data,
-            _ when known.Length != listBytes => default,
+            _ when known.Length != plan.DataBytes => default,
             ReplyStatus.Unchanged => [.. known],
-            _ => Patched(known, listBytes),
+            _ => Patched(known, plan),
         };
         return !data.IsDefault;
     }
 
-    private ImmutableArray<byte> Patched(ReadOnlySpan<byte> known, int listBytes)
+    /// <summary>Each entry's window: its first LENGTH bytes are the slot's item bytes (the rest of the window is not in the list).</summary>
+    private ImmutableArray<byte> Patched(ReadOnlySpan<byte> known, ListPlan plan)
     {
-        var padded = new byte[((listBytes + 3) / 4) * 4];
-        known.CopyTo(padded);
+        var patched = known.ToArray();
+        Span<byte> window = stackalloc byte[4];
         foreach (var change in Changes)
         {
-            System.Buffers.Binary.BinaryPrimitives.WriteUInt32BigEndian(padded.AsSpan(4 * change.Index), change.Value);
+            System.Buffers.Binary.BinaryPrimitives.WriteUInt32BigEndian(window, change.Value);
+            window[..plan.Items[change.Index].Length].CopyTo(patched.AsSpan(plan.Starts[change.Index]));
         }
 
-        return [.. padded.AsSpan(0, listBytes)];
+        return [.. patched];
     }
 
     private static ImmutableArray<ChangeEntry> Entries(ReadOnlySpan<byte> payload)

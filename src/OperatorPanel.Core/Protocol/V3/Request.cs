@@ -10,7 +10,7 @@ namespace OperatorPanel.Core.Protocol.V3;
 /// </summary>
 public sealed record Request(Station Station, byte Sequence, Command Command, ImmutableArray<byte> Payload)
 {
-    /// <summary>"STOP": 07 STOP's payload, so no corrupted frame of another command can stop a line.</summary>
+    /// <summary>"STOP": 08 STOP's payload, so no corrupted frame of another command can stop a line.</summary>
     public static readonly ImmutableArray<byte> StopWord = [0x53, 0x54, 0x4F, 0x50];
 
     /// <summary>The SEQCMD byte: SEQ in the high 4 bits, CMD in the low 4 bits.</summary>

@@ -6,8 +6,9 @@ namespace OperatorPanel.Core.Protocol.V3;
 /// The frame check of protocol v3 (docs/protocol.md section 1.2): 4 bytes after the covered bytes ('&lt;' through the
 /// last byte before the check). The covered bytes, padded with zero bytes to a multiple of 4, are read as big-endian
 /// 16-bit units u_0 .. u_n-1. B is a Horner sum over GF(2)[x]/P: for each unit B = (B XOR u) * x; A is the XOR of
-/// every unit. The check is A XOR B (2 bytes, high first) then B (2 bytes), so that the XOR of all units of the frame,
-/// check included, is zero. Chosen because the PLC computes it with a handful of word operations per double word and
+/// every unit. The check is A XOR B (2 bytes, high first) then B (2 bytes). (When the covered bytes are an even number,
+/// the check lies on unit boundaries and the XOR of all units of the frame, check included, is zero; for an odd number
+/// it is not, and nothing relies on it.) Chosen because the PLC computes it with a handful of word operations per double word and
 /// no table, and it detects every error of up to 3 bits and every burst of up to 16 bits (proof in the document).
 /// </summary>
 public static class WordCheck

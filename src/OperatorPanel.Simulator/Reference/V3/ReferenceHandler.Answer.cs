@@ -76,8 +76,8 @@ public sealed partial class ReferenceHandler
     }
 
     /// <summary>
-    /// N items of 4 bytes, N a whole number of groups up to LIST_ITEMS (84); each item: LENGTH 1-4 (84), area and
-    /// OFFSET (82). The old list is gone from the start: a refused DEFINE LIST leaves none.
+    /// N items of 4 bytes, N a whole number of groups up to LIST_ITEMS (84); each item: LENGTH 1-4 (84), then area and
+    /// its slot's WINDOW, the 4 bytes from OFFSET, inside the area (82). The old list is gone from the start: a refused DEFINE LIST leaves none.
     /// </summary>
     private (ReplyStatus, ImmutableArray<byte>) Define(ReadOnlySpan<byte> p)
     {
@@ -91,7 +91,7 @@ public sealed partial class ReferenceHandler
         for (var i = 0; i < items.Length; i++)
         {
             items[i] = ItemAt(p[(4 * i)..]);
-            var status = items[i].Length is 0 or > HandlerShape.ItemBytes ? ReplyStatus.BadLength : CheckItem(items[i]);
+            var status = items[i].Length is 0 or > HandlerShape.ItemBytes ? ReplyStatus.BadLength : CheckItem(items[i] with { Length = HandlerShape.ItemBytes });
             if (status != ReplyStatus.Ok)
             {
                 return Refuse(status);
@@ -103,10 +103,10 @@ public sealed partial class ReferenceHandler
     }
 
     /// <summary>
-    /// 07: the whole list; the copy is not valid afterwards. 06: the copy takes the list data (it is what the reply
-    /// reports); the whole list when the copy was not valid; else UNCHANGED when no double word of the data differed
-    /// from it, CHANGES when the 5-byte entries of the changed double words are fewer bytes than the data, else the
-    /// whole list.
+    /// 07: the whole list (each item's LENGTH bytes); the copy is not valid afterwards. 06: each slot's window (4 bytes
+    /// from OFFSET) against its copy; the copy takes every window (it is what the reply reports); the whole list when the
+    /// copy was not valid; else UNCHANGED when no window differed, CHANGES (slot, window) when the 5-byte entries of the
+    /// differing slots are fewer bytes than the data, else the whole list.
     /// </summary>
     private (ReplyStatus, ImmutableArray<byte>) ReadList(bool full)
     {
@@ -115,7 +115,6 @@ public sealed partial class ReferenceHandler
             return Refuse(ReplyStatus.ListNotDefined);
         }
 
-        var bytes = List.DataBytes;
         var data = Gather();
         if (full)
         {
@@ -124,13 +123,10 @@ public sealed partial class ReferenceHandler
         }
 
         var valid = List.CopyValid;
-        var words = (bytes + 3) / 4;
-        var padded = new byte[4 * words];
-        var copy = new byte[4 * words];
-        data.CopyTo(padded, 0);
-        List.Copy.CopyTo(copy);
-        var changed = Enumerable.Range(0, words).Where(w => !padded.AsSpan(4 * w, 4).SequenceEqual(copy.AsSpan(4 * w, 4))).ToList();
-        List.Renew(data);
+        var windows = Windows();
+        var copy = List.Copy.ToArray();
+        var changed = !valid ? [] : Enumerable.Range(0, List.Count).Where(k => !windows.AsSpan(4 * k, 4).SequenceEqual(copy.AsSpan(4 * k, 4))).ToList();
+        List.Renew(windows);
         if (!valid)
         {
             return (ReplyStatus.Ok, [.. data]);
@@ -141,13 +137,16 @@ public sealed partial class ReferenceHandler
             return (ReplyStatus.Unchanged, []);
         }
 
-        return Limits.ChangeEntryBytes * changed.Count < bytes
-            ? (ReplyStatus.Changes, [.. changed.SelectMany(w => new[] { (byte)w, padded[4 * w], padded[(4 * w) + 1], padded[(4 * w) + 2], padded[(4 * w) + 3] })])
+        return Limits.ChangeEntryBytes * changed.Count < List.DataBytes
+            ? (ReplyStatus.Changes, [.. changed.SelectMany(k => windows.AsSpan(4 * k, 4).ToArray().Prepend((byte)k))])
             : (ReplyStatus.Ok, [.. data]);
     }
 
     /// <summary>The list data: each item's bytes, one after the other.</summary>
     private byte[] Gather() => [.. List.Items.SelectMany(i => Memory.Area(i.Area).AsSpan(i.Offset, i.Length).ToArray())];
+
+    /// <summary>Each slot's window: the 4 bytes from its item's OFFSET.</summary>
+    private byte[] Windows() => [.. List.Items.SelectMany(i => Memory.Area(i.Area).AsSpan(i.Offset, HandlerShape.ItemBytes).ToArray())];
 
     /// <summary>Area known (82), then OFFSET + LENGTH within it (82); LENGTH (1 or more) checked before.</summary>
     private ReplyStatus CheckItem(ReadItem item)

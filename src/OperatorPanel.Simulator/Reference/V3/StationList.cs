@@ -4,8 +4,8 @@ namespace OperatorPanel.Simulator.Reference.V3;
 
 /// <summary>
 /// The station's one list (docs/protocol.md section 2, 05 DEFINE LIST): N items (a whole number of groups of 8), each
-/// of 1-4 bytes, whose bytes follow one another in the list data (D bytes); and the copy READ LIST compares with, valid
-/// once a reply reported the list.
+/// of 1-4 bytes, whose bytes follow one another in the list data (D bytes); and the copy of every slot's 4-byte window
+/// READ LIST compares with, valid once a reply reported the list.
 /// </summary>
 public sealed class StationList
 {
