@@ -1,4 +1,3 @@
-using OperatorPanel.Core.Protocol;
 using OperatorPanel.Simulator.Reference;
 using OperatorPanel.Simulator.Reference.V3;
 
@@ -12,9 +11,8 @@ namespace OperatorPanel.Simulator.Hosting;
 /// </summary>
 public sealed class V3DemoStation : IDemoPlc
 {
-    private const int Smw22 = 22;
     private readonly byte[] _panelOutputs;
-    private bool _scanned;
+    private readonly ScanTimes _scanTimes = new();
 
     public V3DemoStation(ReferenceHandler handler)
     {
@@ -43,15 +41,7 @@ public sealed class V3DemoStation : IDemoPlc
         return reply;
     }
 
-    public void CompleteScan(ushort milliseconds)
-    {
-        var min = Memory.ReadWord(ProtocolArea.SM, Smw22 + 2);
-        var max = Memory.ReadWord(ProtocolArea.SM, Smw22 + 4);
-        Memory.WriteWord(ProtocolArea.SM, Smw22, milliseconds);
-        Memory.WriteWord(ProtocolArea.SM, Smw22 + 2, _scanned ? Math.Min(min, milliseconds) : milliseconds);
-        Memory.WriteWord(ProtocolArea.SM, Smw22 + 4, _scanned ? Math.Max(max, milliseconds) : milliseconds);
-        _scanned = true;
-    }
+    public void CompleteScan(ushort milliseconds) => _scanTimes.Record(Memory, milliseconds);
 
     public bool IsOwnedByPanel(int offset, int bit) => (_panelOutputs[offset] & (1 << bit)) != 0;
 }

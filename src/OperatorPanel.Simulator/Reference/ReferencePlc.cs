@@ -19,7 +19,7 @@ public sealed partial class ReferencePlc : IRequestTarget, IDemoPlc
     private readonly ListStore _lists;
     private ModeSwitch _switch;
     private OperatingMode _mode = OperatingMode.Run;
-    private bool _scanned;
+    private readonly ScanTimes _scanTimes = new();
 
     public ReferencePlc(HandlerConfig config)
     {
@@ -112,15 +112,7 @@ public sealed partial class ReferencePlc : IRequestTarget, IDemoPlc
     }
 
     /// <summary>Records one finished scan of <paramref name="milliseconds"/> in SMW22/SMW24/SMW26.</summary>
-    public void CompleteScan(ushort milliseconds)
-    {
-        var min = Memory.ReadWord(ProtocolArea.SM, Smw22 + 2);
-        var max = Memory.ReadWord(ProtocolArea.SM, Smw22 + 4);
-        Memory.WriteWord(ProtocolArea.SM, Smw22, milliseconds);
-        Memory.WriteWord(ProtocolArea.SM, Smw22 + 2, _scanned ? Math.Min(min, milliseconds) : milliseconds);
-        Memory.WriteWord(ProtocolArea.SM, Smw22 + 4, _scanned ? Math.Max(max, milliseconds) : milliseconds);
-        _scanned = true;
-    }
+    public void CompleteScan(ushort milliseconds) => _scanTimes.Record(Memory, milliseconds);
 
     /// <summary>True when the panel has written output Qn.b; the demo program then leaves it alone.</summary>
     public bool IsOwnedByPanel(int offset, int bit) => (_panelOwnedOutputs[offset] & (1 << bit)) != 0;
