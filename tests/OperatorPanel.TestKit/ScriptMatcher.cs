@@ -74,7 +74,7 @@ internal static class ScriptMatcher
         return [.. bytes];
     }
 
-    /// <summary>Protocol BCC (docs/protocol.md): XOR of the characters after the last '&lt;', as two hex digits.</summary>
+    /// <summary>Protocol BCC (docs/protocol-v2.md): XOR of the characters after the last '&lt;', as two hex digits.</summary>
     private static byte[] BlockCheck(List<byte> sofar)
     {
         var start = sofar.LastIndexOf((byte)'<') + 1;

@@ -12,7 +12,7 @@ namespace OperatorPanel.Cli.Bench;
 /// </summary>
 internal sealed record HandlerCosts(ImmutableArray<HandlerCost> Steady, ImmutableArray<HandlerCost> Idle, ImmutableArray<string> Problems)
 {
-    /// <summary>The most one handler slice adds to a scan (docs/protocol.md section 7: "up to 10 ms of the handler").</summary>
+    /// <summary>The most one handler slice adds to a scan (docs/protocol-v2.md section 7: "up to 10 ms of the handler").</summary>
     public const double SliceBoundMs = 10;
 
     public static HandlerCosts Measure(RefreshCycles cycles, LinkTimeModel model, HandlerProbe? probe, string? probeError)

@@ -73,7 +73,7 @@ internal sealed class HandlerProbe
     }
 
     /// <summary>
-    /// The protocol 3 handler (full: with the list), whose reply ends after LEN bytes (docs/protocol-v3.md section 1.6),
+    /// The protocol 3 handler (full: with the list), whose reply ends after LEN bytes (docs/protocol.md section 1.6),
     /// never at a byte's value.
     /// </summary>
     public static bool TryCreateV3(CpuProfile cpu, Station station, LineSettings line, TimeSpan userProgram, out HandlerProbe? probe, out string error)

@@ -5,7 +5,7 @@ using OperatorPanel.Simulator.Stl.Freeport;
 namespace OperatorPanel.Cli.Bench;
 
 /// <summary>
-/// A baud rate and character format. Character time = (1 start + 8 data + parity + 1 stop) / baud (docs/protocol.md
+/// A baud rate and character format. Character time = (1 start + 8 data + parity + 1 stop) / baud (docs/protocol-v2.md
 /// §7; S7-200 Freeport always sends one stop bit): 10 bits for 8N1, 11 for 8E1.
 /// </summary>
 internal sealed record LineSetting(int Baud, string Format, int BitsPerCharacter)

@@ -20,7 +20,7 @@ namespace OperatorPanel.Cli.Bench;
 /// </param>
 /// <param name="LinkGapMs">
 /// The gap the PC's link keeps after a reply before the next request (LinkOptions); the model never lets it be shorter
-/// than the protocol's minimum: 5 ms and 3 character times (docs/protocol.md, "Minimum gap").
+/// than the protocol's minimum: 5 ms and 3 character times (docs/protocol-v2.md, "Minimum gap").
 /// </param>
 /// <param name="Radio">The radio module pair between the PC and the bus; null for the PC/PPI cable.</param>
 internal sealed record LinkTimeModel(LineSetting Line, double ReplyDelayMs, double ProgramScanMs, double LinkGapMs, RadioModuleTiming? Radio)

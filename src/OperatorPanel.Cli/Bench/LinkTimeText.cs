@@ -19,7 +19,7 @@ internal static class LinkTimeText
         o.WriteLine(Invariant($"  reply delay   {m.ReplyDelayMs:0.###} ms after the first pass of the reply's check (timed interrupt 0); the reply leaves in chunks"));
         o.WriteLine("                while the check goes on, so it may pause between characters");
         o.WriteLine(Invariant($"  turnaround    PC/PPI cable {m.TurnaroundMs:0.###} ms after the request (no primary source: the larger remembered figure, s7200-facts 7)"));
-        o.WriteLine(Invariant($"  link gap      {m.GapMs:0.###} ms after each reply (the link's gap, at least 5 ms and 3 characters: docs/protocol.md)"));
+        o.WriteLine(Invariant($"  link gap      {m.GapMs:0.###} ms after each reply (the link's gap, at least 5 ms and 3 characters: docs/protocol-v2.md)"));
         if (m.Radio is { } radio)
         {
             o.WriteLine($"  radio         {radio}");

@@ -10,7 +10,7 @@ namespace OperatorPanel.Cli.Bench;
 /// the handler's copy); <see cref="Steady"/> a refresh where every value is read in full (READ CHANGES FULL: the whole
 /// list, as when every byte changed); <see cref="Idle"/> a refresh where nothing changed: one 09 READ CHANGES OF LISTS
 /// per station over all its lists, answering K = 0 for each (the handler StlGen generates has FEATURES bit 2, so the
-/// panel reads its lists in step so: docs/protocol.md, 09, PC rules). Frames without a list are plain READs in every
+/// panel reads its lists in step so: docs/protocol-v2.md, 09, PC rules). Frames without a list are plain READs in every
 /// cycle. Served in this order, each request finds the PLC in the state the earlier ones left.
 /// </summary>
 internal sealed record RefreshCycles(ImmutableArray<PlannedExchange> Setup, ImmutableArray<PlannedExchange> Steady, ImmutableArray<PlannedExchange> Idle)

@@ -14,7 +14,7 @@ internal sealed class HandlerOptionSet
 {
     public Option<int> Protocol { get; } = new("--protocol")
     {
-        Description = "Protocol version of the handler: 3 (binary frames, docs/protocol-v3.md: what the panel speaks; default) or 2 "
+        Description = "Protocol version of the handler: 3 (binary frames, docs/protocol.md: what the panel speaks; default) or 2 "
             + "(the previous hex frames: the panel tells such a station to regenerate its PLC code)",
         DefaultValueFactory = _ => 3,
     };

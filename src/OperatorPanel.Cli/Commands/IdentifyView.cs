@@ -6,7 +6,7 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// An IDENTIFY reply decoded for people (docs/protocol-v3.md section 2, "01 IDENTIFY"); text and JSON share this shape.
+/// An IDENTIFY reply decoded for people (docs/protocol.md section 2, "01 IDENTIFY"); text and JSON share this shape.
 /// The v3 fields (LIST_ITEMS, LIST_BYTES, MAX_REQUEST, END_TIMEOUT_MS, FEATURES, V_FIRST/V_BYTES) come from the v3
 /// identity the link keeps with the reply.
 /// </summary>

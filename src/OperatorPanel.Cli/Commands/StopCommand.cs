@@ -6,7 +6,7 @@ using OperatorPanel.Core.Stop;
 namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
-/// <c>opanel stop --device DEV --station N --yes</c> (or <c>--project FILE</c>): puts the PLC into STOP over Freeport (docs/protocol.md, "07 STOP")
+/// <c>opanel stop --device DEV --station N --yes</c> (or <c>--project FILE</c>): puts the PLC into STOP over Freeport (docs/protocol-v2.md, "07 STOP")
 /// through <see cref="RemoteStop"/>: IDENTIFY first (FEATURES bit 0, else nothing is sent), 07 once, then IDENTIFY
 /// again, whose silence confirms it. Without --yes it only says what it would do.
 /// </summary>

@@ -5,7 +5,7 @@ namespace OperatorPanel.Cli.Watch;
 
 /// <summary>
 /// A station's IDENTIFY reply against its project entry, as watch shows it on the station's "handler" line: "ok: ..."
-/// or "MISMATCH with CPU 226: ..." (docs/protocol.md, "01 IDENTIFY"; the comparison is <see cref="IdentifyCheck"/>).
+/// or "MISMATCH with CPU 226: ..." (docs/protocol-v2.md, "01 IDENTIFY"; the comparison is <see cref="IdentifyCheck"/>).
 /// </summary>
 internal static class HandlerCheck
 {

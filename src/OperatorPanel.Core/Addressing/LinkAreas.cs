@@ -8,7 +8,7 @@ namespace OperatorPanel.Core.Addressing;
 /// planners, <c>opanel address</c>).
 /// <list type="bullet">
 /// <item>Freeport talks to the handler we generate, whose protocol has area codes for I, Q, M, V and SM only
-/// (docs/protocol.md, "Area codes"). The handler reaches memory through pointers (&amp;IB0, &amp;SMB0 ...); an S7-200
+/// (docs/protocol-v2.md, "Area codes"). The handler reaches memory through pointers (&amp;IB0, &amp;SMB0 ...); an S7-200
 /// pointer does not reach AI and AQ (docs/sources/s7200-facts.md section 13), and timers, counters and S bits, which a
 /// pointer would reach, the handler leaves out to stay small. The program copies them to V for it (MOVW AIW0, VW100).</item>
 /// <item>PPI talks to the CPU's own protocol, which has area codes for S, AI, AQ, T and C as well (docs/ppi.md section 6):

@@ -6,6 +6,6 @@ public enum AuditAction
     /// <summary>A value written to an output or memory cell.</summary>
     Write,
 
-    /// <summary>The PLC put into STOP (docs/protocol.md, "07 STOP").</summary>
+    /// <summary>The PLC put into STOP (docs/protocol-v2.md, "07 STOP").</summary>
     Stop,
 }

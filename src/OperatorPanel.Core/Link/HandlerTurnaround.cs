@@ -4,7 +4,7 @@ namespace OperatorPanel.Core.Link;
 
 /// <summary>
 /// How many scans the generated handler may take to serve a request, up to the slice that ends its reply's check; the
-/// reply's first chunks leave meanwhile, so its '&gt;' leaves no later than this bound allows (docs/protocol.md
+/// reply's first chunks leave meanwhile, so its '&gt;' leaves no later than this bound allows (docs/protocol-v2.md
 /// section 7). The handler does its work in bounded slices, one per scan (12 characters of the request's CRC frame
 /// check, 14 of the reply's, 4 items checked, or 3 items' reply data), so the scans grow with the request's and the
 /// reply's length. The bound is 5 + one scan per 6 request characters + one per 6 reply characters (the CRC alone

@@ -4,16 +4,16 @@ using OperatorPanel.Core.Transport;
 namespace OperatorPanel.Core.Link;
 
 /// <summary>
-/// Timing and retry rules of a <see cref="PlcLink"/>. The reply timeout follows docs/protocol.md, "Timing": request
+/// Timing and retry rules of a <see cref="PlcLink"/>. The reply timeout follows docs/protocol-v2.md, "Timing": request
 /// time + reply delay + scan allowance + the handler's scans (<see cref="HandlerTurnaround"/>) x handler scan allowance
 /// + reply time + what the medium adds (<see cref="RadioModuleProfile"/>) + margin.
 /// </summary>
 public sealed record LinkOptions
 {
-    /// <summary>The floor of the protocol's minimum gap (docs/protocol.md, "Minimum gap").</summary>
+    /// <summary>The floor of the protocol's minimum gap (docs/protocol-v2.md, "Minimum gap").</summary>
     public static readonly TimeSpan MinimumGapFloor = TimeSpan.FromMilliseconds(5);
 
-    /// <summary>The minimum gap in character times at the bus baud rate (docs/protocol.md, "Minimum gap").</summary>
+    /// <summary>The minimum gap in character times at the bus baud rate (docs/protocol-v2.md, "Minimum gap").</summary>
     public const int MinimumGapCharacters = 3;
 
     /// <summary>
@@ -59,7 +59,7 @@ public sealed record LinkOptions
 
     /// <summary>
     /// The protocol's minimum gap: after the '&gt;' of any frame on the bus, or a timeout, the PC sends the next '&lt;'
-    /// no sooner than 5 ms and 3 character times later (docs/protocol.md, "Minimum gap"). A station's receive interrupt
+    /// no sooner than 5 ms and 3 character times later (docs/protocol-v2.md, "Minimum gap"). A station's receive interrupt
     /// may be delayed by the user's own interrupt routines; until it re-arms RCV, a start character is lost, and with it
     /// the whole request. 3 character times matter below 6600 baud (1200 baud: 27.5 ms).
     /// </summary>

@@ -20,7 +20,7 @@ public sealed record LinkStatistics(
 
     /// <summary>
     /// Error replies whose REQCHECK was not the request's: the PLC refused a corrupted copy, so the link retried once
-    /// (docs/protocol.md, REQCHECK). Counted apart from <see cref="NegativeReplies"/>, which are real refusals.
+    /// (docs/protocol-v2.md, REQCHECK). Counted apart from <see cref="NegativeReplies"/>, which are real refusals.
     /// </summary>
     public long CorruptedRefusals { get; init; }
 }

@@ -5,7 +5,7 @@ using OperatorPanel.Core.Transport;
 namespace OperatorPanel.Core.Link;
 
 /// <summary>
-/// A station that answers no IDENTIFY v2 gets one v1 IDENTIFY (docs/protocol.md, "Version 1 handlers"): a v1 handler
+/// A station that answers no IDENTIFY v2 gets one v1 IDENTIFY (docs/protocol-v2.md, "Version 1 handlers"): a v1 handler
 /// answers it, and the IDENTIFY then fails with <see cref="HandlerV1.Message"/> instead of "no answer". Not a station
 /// that gave a valid v2 reply on this link before: its silence is a stopped or unplugged PLC (e.g. the IDENTIFY that
 /// confirms a STOP), and the probe would only add one more reply time.

@@ -64,7 +64,7 @@ public sealed partial class PlcLink : IPlcLink, IAsyncDisposable
 
     /// <summary>
     /// Identical-frame retries a request gets: none for one that acts on the process, and none for READ CHANGES without
-    /// FULL or READ CHANGES OF LISTS, whose handler copies moved on with the lost reply (docs/protocol.md, PC rule: the
+    /// FULL or READ CHANGES OF LISTS, whose handler copies moved on with the lost reply (docs/protocol-v2.md, PC rule: the
     /// next read of each list must be FULL).
     /// </summary>
     private int RetriesFor(PlcRequest request) =>

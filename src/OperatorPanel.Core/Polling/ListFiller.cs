@@ -5,7 +5,7 @@ namespace OperatorPanel.Core.Polling;
 
 /// <summary>
 /// Fills up to four stored lists of one station from its blocks, longest block first, within a bus-wide budget of
-/// tail bytes (docs/protocol.md, "Lists"): the blocks that do not fit stay for plain READs.
+/// tail bytes (docs/protocol-v2.md, "Lists"): the blocks that do not fit stay for plain READs.
 /// </summary>
 internal static class ListFiller
 {

@@ -4,7 +4,7 @@ namespace OperatorPanel.Core.Polling;
 
 /// <summary>
 /// What an exchange costs on the wire, in character times, so the planner can weigh "one more item" against "a few
-/// more data bytes" against "one more frame" against "a stored list". Frame sizes from docs/protocol.md v2
+/// more data bytes" against "one more frame" against "a stored list". Frame sizes from docs/protocol-v2.md v2
 /// (<see cref="ProtocolLimits.RequestChars"/>, <see cref="ProtocolLimits.ReplyChars"/>): a READ request is
 /// '&lt;' STATION SEQ CMD COUNT (AREA OFFSET LENGTH)×n check '&gt;' = 14 + 8n characters, its reply
 /// '&lt;' STATION SEQ CMD STATUS REQCHECK DATA×d check '&gt;' = 18 + 2d; a stored list is polled with READ CHANGES:
@@ -34,11 +34,11 @@ public sealed record PollCostModel
     /// </summary>
     public int TurnaroundChars { get; init; } = 20;
 
-    /// <summary>Items one READ may carry (docs/protocol.md: COUNT 1-20).</summary>
+    /// <summary>Items one READ may carry (docs/protocol-v2.md: COUNT 1-20).</summary>
     public int MaxItemsPerFrame { get; init; } = ProtocolLimits.MaxReadItems;
 
     /// <summary>
-    /// Data bytes one READ reply may carry at most, whatever its item count (docs/protocol.md: 116, a one-item READ).
+    /// Data bytes one READ reply may carry at most, whatever its item count (docs/protocol-v2.md: 116, a one-item READ).
     /// A frame's real capacity is <see cref="MaxDataFor"/> its item count.
     /// </summary>
     public int MaxDataPerFrame { get; init; } = ProtocolLimits.MaxReadData;

@@ -1,6 +1,6 @@
 namespace OperatorPanel.Core.Polling;
 
-/// <summary>How the polling engine reads stored lists (docs/protocol.md, READ CHANGES, "PC rules") and how often it tries an offline station.</summary>
+/// <summary>How the polling engine reads stored lists (docs/protocol-v2.md, READ CHANGES, "PC rules") and how often it tries an offline station.</summary>
 public sealed record PollingOptions
 {
     /// <summary>

@@ -2,7 +2,7 @@ using System.Collections.Immutable;
 
 namespace OperatorPanel.Core.Polling;
 
-/// <summary>Which frames of a <see cref="PollPlan"/> are polled as stored lists, and under which list id (docs/protocol.md, "Lists").</summary>
+/// <summary>Which frames of a <see cref="PollPlan"/> are polled as stored lists, and under which list id (docs/protocol-v2.md, "Lists").</summary>
 public static class ReadListAssignment
 {
     /// <summary>Frame index to list id (1-4), as the planner chose them (<see cref="PollFrame.List"/>).</summary>

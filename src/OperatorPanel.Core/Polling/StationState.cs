@@ -15,7 +15,7 @@ public enum StationState
     Offline,
 
     /// <summary>
-    /// It acknowledged a STOP from this panel and fell silent (docs/protocol.md, "07 STOP"): its port speaks PPI until
+    /// It acknowledged a STOP from this panel and fell silent (docs/protocol-v2.md, "07 STOP"): its port speaks PPI until
     /// someone sets RUN. Still tried once per cycle like an offline station, so RUN is noticed; its silence is logged
     /// at Debug only, and its first reply makes it <see cref="Online"/> again.
     /// </summary>

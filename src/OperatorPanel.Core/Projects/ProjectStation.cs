@@ -31,13 +31,13 @@ public sealed record ProjectStation(
 {
     /// <summary>
     /// The station's handler is generated with 07 STOP (HandlerOptions.AllowStop) and the panel offers Stop for it. Off
-    /// by default: a remote STOP halts the line (docs/protocol.md, "07 STOP").
+    /// by default: a remote STOP halts the line (docs/protocol-v2.md, "07 STOP").
     /// </summary>
     public bool AllowStop { get; init; }
 
     /// <summary>
     /// The station's handler is the compact protocol 3 handler (IDENTIFY, READ, WRITE, WRITE BITS; no list, no STOP:
-    /// 74 V bytes and about half the instructions, docs/protocol-v3.md section 6), the choice for a CPU 221 or 222 whose
+    /// 74 V bytes and about half the instructions, docs/protocol.md section 6), the choice for a CPU 221 or 222 whose
     /// 4096 bytes of program memory the full handler would crowd. The panel reads such a station with READ; opanel
     /// generate and Generate PLC code honour it. Off by default, and old project files (without "compact") load unchanged.
     /// </summary>

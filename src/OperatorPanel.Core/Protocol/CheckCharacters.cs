@@ -3,7 +3,7 @@ namespace OperatorPanel.Core.Protocol;
 /// <summary>
 /// The four characters that carry a 16-bit check after the body: 16#60 + nibble, least significant nibble first
 /// ("`abcdefghijklmno"). Never '&lt;', '&gt;' or a hex digit, and their low 4 bits are the CRC bits in wire order, so
-/// body and check form one CRC codeword on the line (docs/protocol.md, "Why").
+/// body and check form one CRC codeword on the line (docs/protocol-v2.md, "Why").
 /// </summary>
 public static class CheckCharacters
 {

@@ -1,6 +1,6 @@
 namespace OperatorPanel.Core.Protocol;
 
-/// <summary>Command codes on the wire; a reply carries the code with bit 7 set (docs/protocol.md).</summary>
+/// <summary>Command codes on the wire; a reply carries the code with bit 7 set (docs/protocol-v2.md).</summary>
 public enum CommandCode : byte
 {
     Identify = 0x01,

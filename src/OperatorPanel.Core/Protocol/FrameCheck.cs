@@ -1,7 +1,7 @@
 namespace OperatorPanel.Core.Protocol;
 
 /// <summary>
-/// The frame check of protocol v2 (docs/protocol.md, "Frame check"): CRC-16/MCRF4XX over the ASCII codes of the body
+/// The frame check of protocol v2 (docs/protocol-v2.md, "Frame check"): CRC-16/MCRF4XX over the ASCII codes of the body
 /// characters as sent. Polynomial 16#1021 reflected (16#8408), init 16#FFFF, input and output reflected, no final XOR;
 /// check("123456789") = 16#6F91 (Greg Cook's CRC catalogue). Computed over characters, not decoded bytes, so the PLC
 /// checks a frame before it converts anything. Detects every 1, 2 or 3 flipped bits and every burst of up to 16 bits

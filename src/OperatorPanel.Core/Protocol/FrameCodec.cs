@@ -4,7 +4,7 @@ namespace OperatorPanel.Core.Protocol;
 
 /// <summary>
 /// Frame = '&lt;' BODY CHECK '&gt;': BODY = uppercase hex pairs of STATION SEQ CMD PAYLOAD, CHECK = the body's
-/// <see cref="FrameCheck"/> as four <see cref="CheckCharacters"/> (docs/protocol.md, "Frame grammar").
+/// <see cref="FrameCheck"/> as four <see cref="CheckCharacters"/> (docs/protocol-v2.md, "Frame grammar").
 /// Pure functions: no state, no I/O.
 /// </summary>
 public static class FrameCodec

@@ -4,7 +4,7 @@ namespace OperatorPanel.Core.Protocol;
 
 /// <summary>
 /// One decoded frame body, its check characters aside: STATION SEQ CMD PAYLOAD. For a reply, CMD has bit 7 set and
-/// the payload starts with STATUS and REQCHECK (2 bytes) (docs/protocol.md, "Frame").
+/// the payload starts with STATUS and REQCHECK (2 bytes) (docs/protocol-v2.md, "Frame").
 /// </summary>
 public sealed record FreeportFrame(byte Station, byte Sequence, byte Command, ImmutableArray<byte> Payload)
 {

@@ -2,10 +2,10 @@ using OperatorPanel.Core.Cpu;
 
 namespace OperatorPanel.Core.Protocol;
 
-/// <summary>The fixed codes of the IDENTIFY reply (docs/protocol.md, "01 IDENTIFY").</summary>
+/// <summary>The fixed codes of the IDENTIFY reply (docs/protocol-v2.md, "01 IDENTIFY").</summary>
 public static class HandlerIdentity
 {
-    /// <summary>Version 2: CRC frame check, REQCHECK in every reply, STOP, READ CHANGES (docs/protocol.md).</summary>
+    /// <summary>Version 2: CRC frame check, REQCHECK in every reply, STOP, READ CHANGES (docs/protocol-v2.md).</summary>
     public const byte ProtocolVersion = 0x02;
 
     public const byte HandlerRevision = 0x01;

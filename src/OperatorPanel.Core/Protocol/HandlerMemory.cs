@@ -2,7 +2,7 @@ namespace OperatorPanel.Core.Protocol;
 
 /// <summary>
 /// The handler's own V bytes, one contiguous range that IDENTIFY reports (V_FIRST, V_BYTES): the 256-byte frame
-/// buffer, the work bytes, then the READ CHANGES copies (docs/protocol.md, "Work bytes"). StlGen's HandlerLayout and
+/// buffer, the work bytes, then the READ CHANGES copies (docs/protocol-v2.md, "Work bytes"). StlGen's HandlerLayout and
 /// the reference model both take the sizes from here.
 /// </summary>
 public static class HandlerMemory

@@ -4,7 +4,7 @@ using OperatorPanel.Core.Cpu;
 namespace OperatorPanel.Core.Protocol;
 
 /// <summary>
-/// Bytes the handler refuses to write although the CPU would take them (docs/protocol.md, error 03 "not writable"): its
+/// Bytes the handler refuses to write although the CPU would take them (docs/protocol-v2.md, error 03 "not writable"): its
 /// port's Freeport control byte (SMB30 for port 0, SMB130 for port 1), its port's receive message control
 /// (SMB86-SMB94, SMB186-SMB194), the timed interrupt 0 interval SMB34 (its reply delay), and its own V bytes, by default
 /// the last V_BYTES of V (<see cref="HandlerMemory"/>). The handler serves one port; which one, and where its V bytes

@@ -4,7 +4,7 @@ using OperatorPanel.Core.Cpu;
 namespace OperatorPanel.Core.Protocol;
 
 /// <summary>
-/// Reads an IDENTIFY reply against the CPU a project expects (docs/protocol.md, "01 IDENTIFY"). CPU 224 and 224XP share
+/// Reads an IDENTIFY reply against the CPU a project expects (docs/protocol-v2.md, "01 IDENTIFY"). CPU 224 and 224XP share
 /// SMB6 16#20 (docs/cpu-profiles.md), so SMB6 is compared by code only; the handler's own CPU code names the exact model
 /// it was generated for.
 /// </summary>

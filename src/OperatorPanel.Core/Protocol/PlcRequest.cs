@@ -65,7 +65,7 @@ public sealed record WriteBitRequest(Station Station, byte Sequence, ProtocolAre
 
 /// <summary>
 /// Store <see cref="Items"/> in the handler under <see cref="List"/> (1-4), so <see cref="ReadListRequest"/> can read
-/// them with a 12-character request. Checked like a READ, plus the tail capacity rule (docs/protocol.md, "Lists").
+/// them with a 12-character request. Checked like a READ, plus the tail capacity rule (docs/protocol-v2.md, "Lists").
 /// </summary>
 public sealed record DefineListRequest(Station Station, byte Sequence, int List, ImmutableArray<ReadItem> Items) : PlcRequest(Station, Sequence)
 {
@@ -106,7 +106,7 @@ public sealed record StopRequest(Station Station, byte Sequence) : PlcRequest(St
 
 /// <summary>
 /// Read list <see cref="List"/> as the bytes changed since the handler's copy, or whole when <see cref="Full"/>.
-/// PC rule (docs/protocol.md): after any READ CHANGES that did not bring a good reply, the next one of that list must
+/// PC rule (docs/protocol-v2.md): after any READ CHANGES that did not bring a good reply, the next one of that list must
 /// be <see cref="Full"/>, because the copy moved on with the reply that was lost.
 /// </summary>
 public sealed record ReadChangesRequest(Station Station, byte Sequence, int List, bool Full) : PlcRequest(Station, Sequence)
@@ -121,7 +121,7 @@ public sealed record ReadChangesRequest(Station Station, byte Sequence, int List
 
 /// <summary>
 /// Read the changes of the lists in <see cref="ListMask"/> (bit n-1 = list n) in one exchange. PC rule
-/// (docs/protocol.md): a list may be in the mask only when an 08 READ CHANGES of it without FULL would be allowed, and
+/// (docs/protocol-v2.md): a list may be in the mask only when an 08 READ CHANGES of it without FULL would be allowed, and
 /// after a 09 that did not bring a good reply every list of its mask is next read with 08 FULL.
 /// </summary>
 public sealed record ReadChangesOfListsRequest(Station Station, byte Sequence, byte ListMask) : PlcRequest(Station, Sequence)

@@ -2,7 +2,7 @@ using OperatorPanel.Core.Addressing;
 
 namespace OperatorPanel.Core.Protocol;
 
-/// <summary>Area codes on the wire (docs/protocol.md, "Areas").</summary>
+/// <summary>Area codes on the wire (docs/protocol-v2.md, "Areas").</summary>
 public enum ProtocolArea : byte
 {
     I = 0x01,

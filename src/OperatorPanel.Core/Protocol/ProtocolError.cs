@@ -1,6 +1,6 @@
 namespace OperatorPanel.Core.Protocol;
 
-/// <summary>Status byte of a reply (docs/protocol.md, "Error replies"). 00 is success.</summary>
+/// <summary>Status byte of a reply (docs/protocol-v2.md, "Error replies"). 00 is success.</summary>
 public enum ProtocolError : byte
 {
     None = 0x00,

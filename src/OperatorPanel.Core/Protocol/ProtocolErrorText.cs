@@ -2,7 +2,7 @@ using System.Collections.Frozen;
 
 namespace OperatorPanel.Core.Protocol;
 
-/// <summary>What an error reply means, in words for the operator (docs/protocol.md section 3).</summary>
+/// <summary>What an error reply means, in words for the operator (docs/protocol-v2.md section 3).</summary>
 public static class ProtocolErrorText
 {
     private static readonly FrozenDictionary<ProtocolError, string> Texts = new Dictionary<ProtocolError, string>

@@ -1,7 +1,7 @@
 namespace OperatorPanel.Core.Protocol;
 
 /// <summary>
-/// Sizes that follow from the S7-200's 255-character RCV/XMT buffers and the v2 frame (docs/protocol.md, "Limits").
+/// Sizes that follow from the S7-200's 255-character RCV/XMT buffers and the v2 frame (docs/protocol-v2.md, "Limits").
 /// The handler's buffer: byte 0 the character count, bytes 1-255 one frame; a request from byte 1 has '&lt;' at 1,
 /// STATION 2-3, SEQ 4-5, CMD 6-7 and its payload from byte 8; a reply is built over it from byte 1.
 /// </summary>
@@ -70,7 +70,7 @@ public static class ProtocolLimits
 
     /// <summary>
     /// Whether READ lists of (items, data bytes), defined in this order, can all be stored in one handler's buffer tail
-    /// together (docs/protocol.md, "Lists"): each list is a valid READ (2D + 4N &lt;= 237); its descriptors are
+    /// together (docs/protocol-v2.md, "Lists"): each list is a valid READ (2D + 4N &lt;= 237); its descriptors are
     /// converted by one ATH from request bytes 12 .. 11 + 8N to just below the current floor F, which must not overlap
     /// (11 + 8N &lt; F - 4N); and every list's longest reply (<see cref="ListReplyChars"/>, 20 + 2D characters from
     /// byte 1) must end before the final floor: sum of 4N + the largest 20 + 2D &lt;= 255.

@@ -2,7 +2,7 @@ using OperatorPanel.Core.Addressing;
 
 namespace OperatorPanel.Core.Protocol;
 
-/// <summary>The station side of DEFINE LIST, READ LIST, READ CHANGES and STOP (docs/protocol.md, "Processing order", step 6).</summary>
+/// <summary>The station side of DEFINE LIST, READ LIST, READ CHANGES and STOP (docs/protocol-v2.md, "Processing order", step 6).</summary>
 public static partial class RequestCodec
 {
     /// <summary>

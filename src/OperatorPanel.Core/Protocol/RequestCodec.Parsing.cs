@@ -3,7 +3,7 @@ using OperatorPanel.Core.Addressing;
 
 namespace OperatorPanel.Core.Protocol;
 
-/// <summary>The station side: processing order steps 5 and 6 (docs/protocol.md, "Processing order").</summary>
+/// <summary>The station side: processing order steps 5 and 6 (docs/protocol-v2.md, "Processing order").</summary>
 public static partial class RequestCodec
 {
     /// <summary>

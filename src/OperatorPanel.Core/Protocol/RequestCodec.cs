@@ -3,7 +3,7 @@ using System.Collections.Immutable;
 namespace OperatorPanel.Core.Protocol;
 
 /// <summary>
-/// Requests on the wire (docs/protocol.md, "Commands"): the panel encodes them; a station parses them with
+/// Requests on the wire (docs/protocol-v2.md, "Commands"): the panel encodes them; a station parses them with
 /// <see cref="TryParse"/>. Encoding a request the protocol forbids (21 items, more READ data than
 /// <see cref="ProtocolLimits.MaxReadDataFor"/> allows for the item count, 119 write bytes, bit 8, list 5) is a programming
 /// error and throws.

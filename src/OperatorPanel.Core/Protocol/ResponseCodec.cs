@@ -3,7 +3,7 @@ using System.Collections.Immutable;
 namespace OperatorPanel.Core.Protocol;
 
 /// <summary>
-/// Replies on the wire: STATION SEQ CMD|16#80 STATUS REQCHECK PAYLOAD (docs/protocol.md, "Commands" and "Error
+/// Replies on the wire: STATION SEQ CMD|16#80 STATUS REQCHECK PAYLOAD (docs/protocol-v2.md, "Commands" and "Error
 /// replies"). A station encodes them; the panel decodes one against the request it sent, REQCHECK included.
 /// </summary>
 public static class ResponseCodec

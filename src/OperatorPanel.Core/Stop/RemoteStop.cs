@@ -9,7 +9,7 @@ using Serilog.Core;
 namespace OperatorPanel.Core.Stop;
 
 /// <summary>
-/// Puts a station into STOP (docs/protocol.md, "07 STOP"), the way the CLI and the panel both do it: IDENTIFY first
+/// Puts a station into STOP (docs/protocol-v2.md, "07 STOP"), the way the CLI and the panel both do it: IDENTIFY first
 /// (nothing is sent unless FEATURES bit 0 says the handler carries STOP), then 07 once, never repeated, then IDENTIFY
 /// again. A CPU in STOP speaks PPI and answers no Freeport frame, so silence after STOP is the confirmation and an
 /// answer means it still runs; a lost reply is settled the same way, as a lost write reply is settled by reading back.

@@ -4,7 +4,7 @@ namespace OperatorPanel.Core.Stop;
 
 /// <summary>
 /// What became of a remote STOP (<see cref="RemoteStop"/>). A STOP is confirmed only by the station falling silent
-/// afterwards: in STOP the CPU's port speaks PPI and answers no Freeport frame (docs/protocol.md, "TERM and STOP").
+/// afterwards: in STOP the CPU's port speaks PPI and answers no Freeport frame (docs/protocol-v2.md, "TERM and STOP").
 /// </summary>
 public abstract record StopOutcome
 {

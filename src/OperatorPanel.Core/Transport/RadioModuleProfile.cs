@@ -2,7 +2,7 @@ namespace OperatorPanel.Core.Transport;
 
 /// <summary>
 /// Timing allowances of the way the PC reaches the bus, on top of the protocol's reply-time budget
-/// (docs/protocol.md: timeout = budget + scan allowance + margin; "radio modules add their own latency").
+/// (docs/protocol-v2.md: timeout = budget + scan allowance + margin; "radio modules add their own latency").
 /// <see cref="For"/> gives the cable baseline and the 433 MHz radio module pair of seed 000 §6.
 /// </summary>
 /// <param name="Kind">The link these numbers are for.</param>

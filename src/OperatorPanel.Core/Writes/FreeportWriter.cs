@@ -6,7 +6,7 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.Core.Writes;
 
 /// <summary>
-/// A write through the generated handler (docs/protocol.md, 03 WRITE and 04 WRITE BIT): built and checked for the
+/// A write through the generated handler (docs/protocol-v2.md, 03 WRITE and 04 WRITE BIT): built and checked for the
 /// station's CPU (<see cref="WriteCommand"/>), sent once (the link never repeats a request that acts on the process),
 /// confirmed by the reply's read-back or, when the reply was lost, by reading the target back
 /// (<see cref="LostReplyResolution"/>: ConfirmedByReadBack, NotApplied, Unknown). The station's state follows each reply.

@@ -7,7 +7,7 @@ using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Core.Writes;
 
-/// <summary>Builds the WRITE or WRITE BIT request of a <see cref="WriteRequest"/> and judges the reply (docs/protocol.md, commands 03 and 04).</summary>
+/// <summary>Builds the WRITE or WRITE BIT request of a <see cref="WriteRequest"/> and judges the reply (docs/protocol-v2.md, commands 03 and 04).</summary>
 internal static class WriteCommand
 {
     /// <summary>

@@ -6,6 +6,6 @@ public enum SimulationModel
     /// <summary>The handler StlGen generates for the station, executed by the STL interpreter (the default).</summary>
     Stl,
 
-    /// <summary>The reference model of docs/protocol.md (Simulator/Reference/ReferencePlc).</summary>
+    /// <summary>The reference model of docs/protocol-v2.md (Simulator/Reference/ReferencePlc).</summary>
     Reference,
 }

@@ -3,7 +3,7 @@ namespace OperatorPanel.Simulator.Reference;
 /// <summary>
 /// One RS-485 bus with several stations: every byte reaches every port, and only the addressed station answers
 /// (seed 003: 18 S7-200s on one bus). A reply is on the bus too, so it lands in every other station's buffer
-/// (docs/protocol.md 1.6, invalidation 1: a long reply of one station clears another's lists). Replies come back in the
+/// (docs/protocol-v2.md 1.6, invalidation 1: a long reply of one station clears another's lists). Replies come back in the
 /// order the stations were attached.
 /// </summary>
 public sealed class BusSimulator

@@ -3,7 +3,7 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.Simulator.Reference;
 
 /// <summary>
-/// The READ CHANGES copies (docs/protocol.md, "08 READ CHANGES"): COPY_BYTES V bytes after the work bytes, handed to
+/// The READ CHANGES copies (docs/protocol-v2.md, "08 READ CHANGES"): COPY_BYTES V bytes after the work bytes, handed to
 /// the lists in definition order. A list whose data does not fit in what is left gets no copy and is always answered
 /// FULL. A new copy is not valid until a FULL answer has filled it, and not after a 09 REREAD entry. Cleared with the lists.
 /// </summary>

@@ -5,7 +5,7 @@ namespace OperatorPanel.Simulator.Reference;
 
 /// <summary>
 /// The READ lists in the tail of the handler's one 256-byte buffer, kept as the STL handler keeps them
-/// (docs/protocol.md, "Lists"): binary descriptors (AREA, OFFSET high, OFFSET low, LENGTH) packed downward from byte
+/// (docs/protocol-v2.md, "Lists"): binary descriptors (AREA, OFFSET high, OFFSET low, LENGTH) packed downward from byte
 /// 255 in definition order, and in the work bytes a start and count per list id plus the tail floor, the lowest start
 /// (256 when no list is stored). Whatever reaches the floor has overwritten descriptors, so every list is cleared,
 /// and with the lists their READ CHANGES copies.

@@ -7,7 +7,7 @@ namespace OperatorPanel.Simulator.Reference;
 /// <summary>
 /// What RCV hands the handler: every character from the first '&lt;' to the '&gt;', a second '&lt;' included (RCV
 /// does not restart). The receive interrupt's early silence looks at the FIRST '&lt;'; the frame the handler checks
-/// starts at the LAST '&lt;' (docs/protocol.md, "Processing order", steps 1-2).
+/// starts at the LAST '&lt;' (docs/protocol-v2.md, "Processing order", steps 1-2).
 /// </summary>
 public static class ReceivedMessage
 {

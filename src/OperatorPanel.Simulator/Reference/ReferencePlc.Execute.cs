@@ -7,7 +7,7 @@ public sealed partial class ReferencePlc
 {
     /// <summary>
     /// Executes a parsed request. A request this model does not execute (a command added to the protocol and not yet
-    /// here) is refused with 05 unknown command, as docs/protocol.md section 3 says of a CMD the handler does not have;
+    /// here) is refused with 05 unknown command, as docs/protocol-v2.md section 3 says of a CMD the handler does not have;
     /// it is never answered as another command.
     /// </summary>
     internal ProtocolError TryExecute(PlcRequest request, out byte[] payload)

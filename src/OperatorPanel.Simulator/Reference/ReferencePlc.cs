@@ -5,7 +5,7 @@ namespace OperatorPanel.Simulator.Reference;
 
 /// <summary>
 /// A plain model of an S7-200 running the protocol v2 handler, following the normative processing order of
-/// docs/protocol.md step by step. The generated STL must answer every frame byte for byte as this does.
+/// docs/protocol-v2.md step by step. The generated STL must answer every frame byte for byte as this does.
 /// </summary>
 public sealed partial class ReferencePlc : IRequestTarget, IDemoPlc
 {

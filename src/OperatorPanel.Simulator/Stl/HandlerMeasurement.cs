@@ -8,7 +8,7 @@ namespace OperatorPanel.Simulator.Stl;
 
 /// <summary>
 /// Measures a handler by running it: loads the .awl text in the interpreter, serves the worst-case request of each
-/// kind (docs/protocol.md Limits: the largest READ reply, the most items, the longest WRITE, a full list) and counts
+/// kind (docs/protocol-v2.md Limits: the largest READ reply, the most items, the longest WRITE, a full list) and counts
 /// what its interrupt routines and its slices in OP_PANEL execute, at the StlTiming figures (manual where published, conservative elsewhere).
 /// </summary>
 public static class HandlerMeasurement

@@ -7,7 +7,7 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// 09 READ CHANGES OF LISTS (docs/protocol.md, "READ CHANGES OF LISTS"): binary payload MASK (buffer byte 8). One
+/// 09 READ CHANGES OF LISTS (docs/protocol-v2.md, "READ CHANGES OF LISTS"): binary payload MASK (buffer byte 8). One
 /// entry per list in MASK, ascending: K and K pairs, or K = 16#FE (REREAD) and the list's copy invalid. Each list goes
 /// through <see cref="ChangesPart"/>'s comparison, a chunk per scan; MASK in byte 8 loses each list's bit as the list
 /// is taken, and ENTRY holds the buffer byte where the next entry's K goes. The pairs are written only while they fit:

@@ -8,7 +8,7 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// 08 READ CHANGES (docs/protocol.md, "READ CHANGES"): binary payload LIST (buffer byte 8) and FLAGS (9). Reply K,
+/// 08 READ CHANGES (docs/protocol-v2.md, "READ CHANGES"): binary payload LIST (buffer byte 8) and FLAGS (9). Reply K,
 /// then K pairs INDEX VALUE, or K = 16#FF and the whole list. Every part runs in OP_PANEL's slices: the comparison
 /// chunks of at most <see cref="ChunkBytes"/> bytes while a budget of <see cref="CompareBudget"/> lasts in a scan, the whole list at most <see cref="SlicePart.ItemsPerScan"/>
 /// items per scan; nothing runs in an interrupt routine. Whatever a reply reports is what the copy holds afterwards:

@@ -6,7 +6,7 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// The reply leaves in chunks while OP_PANEL still computes its check (docs/protocol.md section 6, steps 6 and 7): the
+/// The reply leaves in chunks while OP_PANEL still computes its check (docs/protocol-v2.md section 6, steps 6 and 7): the
 /// characters a pass of the check has covered are final. After every pass OP_PANEL publishes COVERED in one MOVD, and
 /// only then reads OP_STOP bit 2 (<see cref="SendingBit"/>). The first pass attaches the reply delay, whose routine
 /// sends buffer bytes 1 .. COVERED (byte 0, the first SENT, takes the count); every later chunk's XMT table is SENT,

@@ -7,7 +7,7 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// The v2 frame check in STL (docs/protocol.md, "Frame check"): CRC-16/MCRF4XX over the body characters, one
+/// The v2 frame check in STL (docs/protocol-v2.md, "Frame check"): CRC-16/MCRF4XX over the body characters, one
 /// character at a time without a table (Core's <see cref="FrameCheck.Update"/>, avr-libc _crc_ccitt_update):
 /// d = c XOR low8(crc); d = d XOR (d &lt;&lt; 4) in 8 bits; crc = ((d &lt;&lt; 8) OR high8(crc)) XOR (d &gt;&gt; 4) XOR (d &lt;&lt; 3).
 /// In STL that is 10 byte and word instructions on the CRC word and a scratch word; a nibble table would take 14 per

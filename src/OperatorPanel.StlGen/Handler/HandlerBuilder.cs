@@ -43,7 +43,7 @@ internal static class HandlerBuilder
             new StlBlock(
                 StlBlockKind.Subroutine, c.Names.Panel, sbr, "Operator panel: port set-up and requests",
                 [$"Freeport on port {c.Port} at RUN, PPI at TERM; checks a received request and builds the reply, a bounded part",
-                    "per scan (docs/protocol.md section 4). Call from OB1 every scan."], panel.ToImmutable()),
+                    "per scan (docs/protocol-v2.md section 4). Call from OB1 every scan."], panel.ToImmutable()),
             new StlBlock(
                 StlBlockKind.Interrupt, c.Names.Receive, first, "Operator panel: request received",
                 [$"Event {c.ReceiveEvent}: a frame ended by '>' for this station waits for {c.Names.Panel}; anything else: receive again."], [.. ReceivePart.Interrupt(c)]),

@@ -86,7 +86,7 @@ internal sealed class HandlerContext
     /// <summary>Characters of a reply with <paramref name="payloadBytes"/> after STATUS and REQCHECK.</summary>
     public static string ReplyChars(int payloadBytes) => Dec(ProtocolLimits.ReplyChars(payloadBytes));
 
-    /// <summary>The longest reply of a list without its 2D data characters (docs/protocol.md, "Lists", capacity rule).</summary>
+    /// <summary>The longest reply of a list without its 2D data characters (docs/protocol-v2.md, "Lists", capacity rule).</summary>
     public static string ListReplyChars => Dec(ProtocolLimits.ListReplyChars(0));
 
     /// <summary>2D + 4N may be at most this: a READ reply of ReplyChars(D) ends before its descriptors at 256 - 4N.</summary>
@@ -95,6 +95,6 @@ internal sealed class HandlerContext
     /// <summary>A command code as the constant the handler compares CMD with, taken from Core's protocol by name.</summary>
     public static string Dec(CommandCode code) => Dec((byte)code);
 
-    /// <summary>An error code as the two digits docs/protocol.md and the handler's comments use ("04").</summary>
+    /// <summary>An error code as the two digits docs/protocol-v2.md and the handler's comments use ("04").</summary>
     public static string Digits(ProtocolError error) => ((byte)error).ToString("D2", CultureInfo.InvariantCulture);
 }

@@ -21,7 +21,7 @@ internal static class HandlerLabels
     public const int Stop = 18;
     public const int ReadChangesOfLists = 19;
 
-    /// <summary>22-27: reply with error code 02-07 (docs/protocol.md section 3).</summary>
+    /// <summary>22-27: reply with error code 02-07 (docs/protocol-v2.md section 3).</summary>
     public const int ErrorBase = 20;
     public const int CheckItems = 30;
     public const int ReadItemsChecked = 41;

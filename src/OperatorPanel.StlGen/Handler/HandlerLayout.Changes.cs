@@ -4,7 +4,7 @@ namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
 /// The work bytes of 08 READ CHANGES and 07 STOP (from <see cref="CommandsFirst"/>) and the copy area after the work
-/// bytes (docs/protocol.md, "READ CHANGES"). Per list id: CSTART, the copy's first byte in the copy area (255 = no
+/// bytes (docs/protocol-v2.md, "READ CHANGES"). Per list id: CSTART, the copy's first byte in the copy area (255 = no
 /// copy), and CD, the list's data length D (at most 124) with bit 7 set while the copy holds what the last reply
 /// reported. Copies are allocated upwards from copy byte 0 in definition order (CFREE = the next free copy byte); the
 /// lists are only ever cleared all together, so there are no holes. While a READ CHANGES is compared, the CRC word

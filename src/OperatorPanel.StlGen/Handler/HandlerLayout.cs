@@ -4,7 +4,7 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// Where the handler keeps its bytes in V memory (docs/protocol.md, "Work bytes"): the 256-byte buffer (byte 0 =
+/// Where the handler keeps its bytes in V memory (docs/protocol-v2.md, "Work bytes"): the 256-byte buffer (byte 0 =
 /// RCV/XMT count, bytes 1-255 the frame) and the work bytes after it. Pointers live in AC0-AC3 while OP_PANEL works on
 /// a request and in SAVE between its scans (a user's program may use the accumulators); nothing in L memory. The
 /// order of the work bytes matters: one ATH fills N, I, CMD from the header; one HTA writes CMD|80, STATUS (kept in
@@ -23,7 +23,7 @@ public sealed partial class HandlerLayout(int bufferStart, int copyBytes)
     /// <summary>Offsets from the buffer start.</summary>
     public const int N = 256, I = 257, Cmd = 258, List = 259, ReqCheck = 260, MaxD = 262, LastFree = 263, Start1 = 264, LCount1 = 268;
 
-    /// <summary>Offsets of the scan-slice state (docs/protocol.md, "Work bytes").</summary>
+    /// <summary>Offsets of the scan-slice state (docs/protocol-v2.md, "Work bytes").</summary>
     public const int Step = 272, Budget = 273, Chunk = 274, Save = 276;
 
     /// <summary>The CRC register (high byte first, as every S7-200 word) and the sum of the item lengths.</summary>

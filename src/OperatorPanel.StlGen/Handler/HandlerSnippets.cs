@@ -8,13 +8,13 @@ namespace OperatorPanel.StlGen.Handler;
 internal static class HandlerSnippets
 {
     /// <summary>
-    /// Protocol area codes 1-5 and the first byte of each area (docs/protocol.md, "Area codes"), tested in this order:
+    /// Protocol area codes 1-5 and the first byte of each area (docs/protocol-v2.md, "Area codes"), tested in this order:
     /// V and M hold most of a panel's values, and each test that matches ends the search with a jump.
     /// </summary>
     private static readonly (int Code, string Pointer, string Name)[] Areas =
         [(4, "&VB0", "V"), (3, "&MB0", "M"), (1, "&IB0", "I"), (2, "&QB0", "Q"), (5, "&SMB0", "SM")];
 
-    /// <summary>Every READ list is forgotten: no list stored, floor back at 256 (docs/protocol.md, "Lists", invalidation).</summary>
+    /// <summary>Every READ list is forgotten: no list stored, floor back at 256 (docs/protocol-v2.md, "Lists", invalidation).</summary>
     public static NetworkBuilder ClearLists(this NetworkBuilder net, HandlerLayout l) =>
         net.Op("MOVB", "16#FF", l.B(LastFree)).Op("MOVB", "0", l.B(MaxD)).Op("MOVD", "0", l.Dw(LCount1));
 

@@ -8,7 +8,7 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// 01 IDENTIFY: the 22-byte payload of docs/protocol.md section 2, written as 44 characters from buffer byte 14: v1's
+/// 01 IDENTIFY: the 22-byte payload of docs/protocol-v2.md section 2, written as 44 characters from buffer byte 14: v1's
 /// 15 bytes (protocol version 2), then PORT, V_FIRST, V_BYTES, FEATURES and COPY_BYTES, all fixed at generation.
 /// </summary>
 internal static class IdentifyPart

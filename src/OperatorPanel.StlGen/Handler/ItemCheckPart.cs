@@ -7,7 +7,7 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// The item checks shared by READ, DEFINE LIST, WRITE and WRITE BIT (docs/protocol.md section 4, step 6): per item
+/// The item checks shared by READ, DEFINE LIST, WRITE and WRITE BIT (docs/protocol-v2.md section 4, step 6): per item
 /// LENGTH 0 -> 04, unknown area -> 02, OFFSET + LENGTH past the area -> 02, the first failing item decides. In: AC2 at
 /// the first 4-byte descriptor (AREA, OFFSET high, OFFSET low, LENGTH), I = item count, AC1 = 0. Out: AC1 = sum of
 /// the lengths; then READ and DEFINE LIST check 2D + 4N &lt;= 237 (a reply of 18 + 2D characters ends before the

@@ -7,7 +7,7 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// 05 DEFINE LIST and 06 READ LIST (docs/protocol.md, "Lists"). Binary payload from buffer byte 8: LIST, then for
+/// 05 DEFINE LIST and 06 READ LIST (docs/protocol-v2.md, "Lists"). Binary payload from buffer byte 8: LIST, then for
 /// DEFINE LIST COUNT (9) and the descriptors from byte 10. Stored descriptors stay in the buffer's tail.
 /// </summary>
 internal static class ListPart

@@ -7,7 +7,7 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// 02 READ (docs/protocol.md sections 2, 4 and 6) and the reply loop READ LIST shares. After the in-place ATH the
+/// 02 READ (docs/protocol-v2.md sections 2, 4 and 6) and the reply loop READ LIST shares. After the in-place ATH the
 /// payload is binary from buffer byte 8: COUNT, then 4 bytes per item from byte 9.
 /// </summary>
 internal static class ReadPart

@@ -9,7 +9,7 @@ using static OperatorPanel.StlGen.Handler.HandlerSnippets;
 namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
-/// docs/protocol.md section 4, steps 1-5: the receive-complete routine only takes a frame ended by '&gt;' whose first
+/// docs/protocol-v2.md section 4, steps 1-5: the receive-complete routine only takes a frame ended by '&gt;' whose first
 /// '&lt;' is followed by this station's address and a request's CMD, and sets STEP = 1; anything else is received again
 /// at once. OP_PANEL checks the frame from the last '&lt;' in the next scans. Every failed check up to the dispatch
 /// means silence (label 1: receive again). The dispatch is one table: a command is a row.

@@ -8,7 +8,7 @@ namespace OperatorPanel.StlGen.Handler;
 
 /// <summary>
 /// The end of the request's work: error codes, the reply frame (header with REQCHECK, count, check characters, '&gt;')
-/// over the request, the reply delay by timed interrupt 0, and silence (docs/protocol.md section 6, steps 5-6).
+/// over the request, the reply delay by timed interrupt 0, and silence (docs/protocol-v2.md section 6, steps 5-6).
 /// </summary>
 internal static class ReplyPart
 {

@@ -77,7 +77,7 @@ internal static class WritePart
 
     /// <summary>
     /// Error 03: I; areas outside the write mask; the handler's own V bytes (a WRITE there could make the read-back
-    /// run past the buffer, and the CPU stop); SM bytes the panel must not touch (docs/protocol.md section 3).
+    /// run past the buffer, and the CPU stop); SM bytes the panel must not touch (docs/protocol-v2.md section 3).
     /// </summary>
     private static IEnumerable<StlNetwork> Writable(HandlerContext c)
     {

@@ -52,7 +52,7 @@ public sealed record HandlerOptions
     public HandlerBlockNames Names { get; init; } = new();
 
     /// <summary>
-    /// 0-255 V bytes after the work bytes for READ CHANGES copies (docs/protocol.md, "READ CHANGES"); 0 = none, every
+    /// 0-255 V bytes after the work bytes for READ CHANGES copies (docs/protocol-v2.md, "READ CHANGES"); 0 = none, every
     /// READ CHANGES then answers the whole list.
     /// </summary>
     public int CopyBytes { get; init; } = HandlerDefaults.CopyBytes;
@@ -61,7 +61,7 @@ public sealed record HandlerOptions
     public bool AllowStop { get; init; }
 
     /// <summary>
-    /// 3 (binary frames, docs/protocol-v3.md: what the panel speaks) or 2 (hex frames, the previous protocol). The
+    /// 3 (binary frames, docs/protocol.md: what the panel speaks) or 2 (hex frames, the previous protocol). The
     /// record's default stays 2 for the v2 generator's tests and benches; every product path (<see cref="For"/>,
     /// <see cref="ForLine"/>, opanel generate, the panel's Generate PLC code) asks for 3, and the panel tells a v2
     /// handler to regenerate.

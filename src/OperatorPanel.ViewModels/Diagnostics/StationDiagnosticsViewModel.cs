@@ -70,7 +70,7 @@ public sealed partial class StationDiagnosticsViewModel : ObservableObject
 
     /// <summary>
     /// The v3 IDENTIFY's shape fields: FEATURES, LIST_ITEMS and LIST_BYTES, MAX_REQUEST, END_TIMEOUT_MS, the handler's
-    /// V bytes (docs/protocol-v3.md section 2, 01 IDENTIFY); "-" before one answered.
+    /// V bytes (docs/protocol.md section 2, 01 IDENTIFY); "-" before one answered.
     /// </summary>
     public string HandlerShapeText => Status.Identity?.V3 is { } v3
         ? $"FEATURES 16#{v3.Features:X2} ({(v3.HasList ? "list" : "no list")}{(v3.HasStop ? ", STOP" : string.Empty)}); "

@@ -150,7 +150,7 @@ public sealed partial class GenerateCodeViewModel
         var interrupt = Number(FirstInterrupt, "first INT");
         var delay = Number(ReplyDelay, "reply delay");
         var charTimeout = Number(CharTimeout, "inter-character timeout");
-        // Protocol 3: the panel speaks it and tells an older handler to regenerate (docs/protocol-v3.md section 8).
+        // Protocol 3: the panel speaks it and tells an older handler to regenerate (docs/protocol.md section 8).
         options = new HandlerOptions
         {
             Protocol = 3,

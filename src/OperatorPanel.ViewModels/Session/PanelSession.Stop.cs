@@ -3,7 +3,7 @@ using OperatorPanel.Core.Stop;
 
 namespace OperatorPanel.ViewModels.Session;
 
-/// <summary>Remote STOP of one station (docs/protocol.md, "07 STOP"), refused in read-only mode like every write.</summary>
+/// <summary>Remote STOP of one station (docs/protocol-v2.md, "07 STOP"), refused in read-only mode like every write.</summary>
 public sealed partial class PanelSession
 {
     /// <summary>

@@ -24,7 +24,7 @@ public sealed record StationIdentity(
     ushort MinScanMs,
     ushort MaxScanMs)
 {
-    /// <summary>The protocol this panel speaks (docs/protocol-v3.md).</summary>
+    /// <summary>The protocol this panel speaks (docs/protocol.md).</summary>
     public const byte PanelProtocol = Core.Protocol.V3.Identity.ProtocolVersion;
 
     public bool ProtocolMatches => ProtocolVersion == PanelProtocol;
@@ -32,7 +32,7 @@ public sealed record StationIdentity(
     /// <summary>The whole v3 IDENTIFY (the handler's shape: list, STOP, MAX_REQUEST, END_TIMEOUT_MS, V bytes); null for an older reply.</summary>
     public Core.Protocol.V3.Identity? V3 { get; init; }
 
-    /// <summary>FEATURES bit 0: the handler was generated with 07 STOP (docs/protocol.md, "01 IDENTIFY").</summary>
+    /// <summary>FEATURES bit 0: the handler was generated with 08 STOP (docs/protocol.md, "01 IDENTIFY").</summary>
     public bool StopEnabled { get; init; }
 
     public string CpuText => Model is { } model

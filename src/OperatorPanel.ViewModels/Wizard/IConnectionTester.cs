@@ -7,7 +7,7 @@ using OperatorPanel.Core.Transport;
 namespace OperatorPanel.ViewModels.Wizard;
 
 /// <summary>
-/// Sends one IDENTIFY for the wizard's "test connection" (docs/protocol.md, "01 IDENTIFY"). The App passes a
+/// Sends one IDENTIFY for the wizard's "test connection" (docs/protocol-v2.md, "01 IDENTIFY"). The App passes a
 /// <see cref="LinkConnectionTester"/> over the serial port (or the demo line); tests pass a fake or the simulated PLC.
 /// </summary>
 public interface IConnectionTester

@@ -45,7 +45,7 @@ public sealed class WriteCommandTests
     [Fact]
     public void Write_ByteTheHandlerProtects_IsRefusedByThePlcWithExitOne()
     {
-        // SMB34 holds the handler's reply delay (docs/protocol.md, error 03): the PC lets it through, the PLC refuses it.
+        // SMB34 holds the handler's reply delay (docs/protocol-v2.md, error 03): the PC lets it through, the PLC refuses it.
         var run = CliRunner.Run("write", "SMB34=9", "--demo");
 
         run.ExitCode.Should().Be(1);

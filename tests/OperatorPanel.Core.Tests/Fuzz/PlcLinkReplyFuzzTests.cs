@@ -111,7 +111,7 @@ public sealed class PlcLinkReplyFuzzTests
     }
 
     /// <summary>
-    /// docs/protocol.md, REQCHECK: a refusal of a corrupted copy is retried once, and a refusal that comes again is taken
+    /// docs/protocol-v2.md, REQCHECK: a refusal of a corrupted copy is retried once, and a refusal that comes again is taken
     /// as real, whatever REQCHECK it carries.
     /// </summary>
     private static bool RepeatedCorruptedRefusal(PlcResponse response, List<ReplyMutation> replies) =>

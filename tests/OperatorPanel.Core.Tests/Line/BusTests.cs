@@ -41,7 +41,7 @@ public sealed class BusTests
         value.Raw.Should().Equal(0x2A);
     }
 
-    /// <summary>A CPU 224 handler without READ CHANGES copies (docs/protocol.md, IDENTIFY worked example, FEATURES 0).</summary>
+    /// <summary>A CPU 224 handler without READ CHANGES copies (docs/protocol-v2.md, IDENTIFY worked example, FEATURES 0).</summary>
     private static IdentifyResponse Identity(byte sequence) =>
         new(Station2, sequence, 2, 1, 3, 1, 0x3C, 116, 5, 0x20, 1, 3, 2, 9, 0, 7764, 428, 0, 0);
 

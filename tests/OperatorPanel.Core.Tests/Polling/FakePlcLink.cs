@@ -244,7 +244,7 @@ internal sealed class FakePlcLink(PollingTestClock clock) : IPlcLink
 
                 lock (_lock)
                 {
-                    // A redefinition clears every list of the station first, whatever the item checks say (docs/protocol.md).
+                    // A redefinition clears every list of the station first, whatever the item checks say (docs/protocol-v2.md).
                     if (_lists.ContainsKey((define.Station, define.List)))
                     {
                         ClearLists(define.Station);

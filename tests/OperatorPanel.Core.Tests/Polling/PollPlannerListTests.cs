@@ -6,7 +6,7 @@ using static OperatorPanel.Core.Tests.Polling.PollingSome;
 
 namespace OperatorPanel.Core.Tests.Polling;
 
-/// <summary>List-aware planning: stored lists for any tag count, within the buffer rules of docs/protocol.md v2.</summary>
+/// <summary>List-aware planning: stored lists for any tag count, within the buffer rules of docs/protocol-v2.md v2.</summary>
 public sealed class PollPlannerListTests
 {
     /// <summary>

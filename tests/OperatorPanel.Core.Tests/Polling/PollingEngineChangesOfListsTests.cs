@@ -7,7 +7,7 @@ using static OperatorPanel.Core.Tests.Polling.PollingSome;
 namespace OperatorPanel.Core.Tests.Polling;
 
 /// <summary>
-/// 09 READ CHANGES OF LISTS (docs/protocol.md section 2, its PC rules 1-5) on a station with two stored lists: 26 one-byte
+/// 09 READ CHANGES OF LISTS (docs/protocol-v2.md section 2, its PC rules 1-5) on a station with two stored lists: 26 one-byte
 /// items VB0, VB10 .. VB250, which one list cannot hold.
 /// </summary>
 public sealed class PollingEngineChangesOfListsTests
@@ -276,7 +276,7 @@ public sealed class PollingEngineChangesOfListsTests
 
         var idle = await CycleAsync(engine);
 
-        // docs/protocol.md 09 rule 5: 14 + 20 = 34 characters, 2 less than an idle 08.
+        // docs/protocol-v2.md 09 rule 5: 14 + 20 = 34 characters, 2 less than an idle 08.
         idle.Requests.Should().Equal("09 1");
     }
 

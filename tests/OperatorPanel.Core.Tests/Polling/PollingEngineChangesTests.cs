@@ -5,7 +5,7 @@ using static OperatorPanel.Core.Tests.Polling.PollingSome;
 
 namespace OperatorPanel.Core.Tests.Polling;
 
-/// <summary>READ CHANGES (docs/protocol.md, PC rules): FULL first, after a lost reply and every 10 s; pairs applied; READ LIST without copies.</summary>
+/// <summary>READ CHANGES (docs/protocol-v2.md, PC rules): FULL first, after a lost reply and every 10 s; pairs applied; READ LIST without copies.</summary>
 public sealed class PollingEngineChangesTests
 {
     private readonly PollingTestClock _clock = new();

@@ -4,7 +4,7 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.Core.Tests.Protocol;
 
 /// <summary>
-/// The detection claim of docs/protocol.md ("Frame check", "Why"): every error of 1, 2 or 3 flipped bits and every
+/// The detection claim of docs/protocol-v2.md ("Frame check", "Why"): every error of 1, 2 or 3 flipped bits and every
 /// burst of up to 16 bits in a frame of up to 255 characters is detected. First the algebra behind it, computed here
 /// over GF(2); then exhaustively, every 1-, 2- and 3-bit flip of short real frames, received the way the panel
 /// receives (<see cref="FrameReader"/>, then <see cref="FrameCodec"/>).

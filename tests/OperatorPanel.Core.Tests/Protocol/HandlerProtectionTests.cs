@@ -4,7 +4,7 @@ using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Core.Tests.Protocol;
 
-/// <summary>The bytes a handler refuses although the CPU would write them (docs/protocol.md, error 03).</summary>
+/// <summary>The bytes a handler refuses although the CPU would write them (docs/protocol-v2.md, error 03).</summary>
 public sealed class HandlerProtectionTests
 {
     [Theory]

@@ -8,7 +8,7 @@ using OperatorPanel.Core.Protocol.V1;
 namespace OperatorPanel.Core.Tests.Protocol;
 
 /// <summary>
-/// Every example block of docs/protocol.md ("example: name", then "PC  -> frame" and "PLC -> frame" or
+/// Every example block of docs/protocol-v2.md ("example: name", then "PC  -> frame" and "PLC -> frame" or
 /// "PLC -> (no reply)") must decode with a valid check and equal what the codecs encode for the stated message, every
 /// reply carrying the REQCHECK of its request.
 /// </summary>
@@ -127,7 +127,7 @@ public sealed partial class ProtocolDocExamplesTests
     [Fact]
     public void Doc_V1ReplyInSection9_IsWhatTheProbeRecognises()
     {
-        var text = File.ReadAllText(Path.Combine(RepositoryRoot(), "docs", "protocol.md"));
+        var text = File.ReadAllText(Path.Combine(RepositoryRoot(), "docs", "protocol-v2.md"));
         var reply = Regex.Match(text, "`(<0107810001[0-9A-F]+>)`").Groups[1].Value;
 
         V1IdentifyProbe.TryDecodeReply(Encoding.ASCII.GetBytes(reply), One, 0x07, out var version).Should().BeTrue(reply);
@@ -161,7 +161,7 @@ public sealed partial class ProtocolDocExamplesTests
 
     private static List<(string Name, string Pc, string Plc)> Examples()
     {
-        var text = File.ReadAllText(Path.Combine(RepositoryRoot(), "docs", "protocol.md"));
+        var text = File.ReadAllText(Path.Combine(RepositoryRoot(), "docs", "protocol-v2.md"));
         var examples = new List<(string, string, string)>();
         foreach (Match block in CodeBlock().Matches(text))
         {

@@ -3,7 +3,7 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.Core.Tests.Protocol;
 
 /// <summary>
-/// The limits of docs/protocol.md ("Limits", "Lists"): frame sizes, each list's ATH below the floor, tail plus the
+/// The limits of docs/protocol-v2.md ("Limits", "Lists"): frame sizes, each list's ATH below the floor, tail plus the
 /// longest list reply (READ CHANGES FULL, 20 + 2D) within 255, and plain READs and WRITEs that keep a tail.
 /// </summary>
 public sealed class ProtocolLimitsTests

@@ -5,7 +5,7 @@ using OperatorPanel.Core.Protocol.V1;
 
 namespace OperatorPanel.Core.Tests.Protocol;
 
-/// <summary>The v1 IDENTIFY probe (docs/protocol.md, "Version 1 handlers"), on the frames of the v1 document's example 5.1.</summary>
+/// <summary>The v1 IDENTIFY probe (docs/protocol-v2.md, "Version 1 handlers"), on the frames of the v1 document's example 5.1.</summary>
 public sealed class V1IdentifyProbeTests
 {
     private const string V1Request = "<01070107>";

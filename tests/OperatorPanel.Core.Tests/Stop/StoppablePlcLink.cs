@@ -70,7 +70,7 @@ internal sealed class StoppablePlcLink(Station station, byte features = HandlerI
         };
     }
 
-    /// <summary>A CPU 224 handler (docs/protocol.md worked example) with this link's FEATURES.</summary>
+    /// <summary>A CPU 224 handler (docs/protocol-v2.md worked example) with this link's FEATURES.</summary>
     private IdentifyResponse Identity(byte sequence) =>
         new(station, sequence, 2, 1, 3, 1, 0x3C, 116, 5, 0x20, 1, 3, 2, 9, 0, 7764, 428, features, 120);
 }

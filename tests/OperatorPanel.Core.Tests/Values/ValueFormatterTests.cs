@@ -23,7 +23,7 @@ public sealed class ValueFormatterTests
     [InlineData("0A3F", AccessWidth.Word, DisplayFormat.Hex, "16#0A3F")]
     [InlineData("0A3F", AccessWidth.Word, DisplayFormat.Binary, "2#0000_1010_0011_1111")]
     [InlineData("4F4B", AccessWidth.Word, DisplayFormat.Ascii, "OK")]
-    [InlineData("00000457", AccessWidth.DoubleWord, DisplayFormat.Unsigned, "1111")] // docs/protocol.md 5.2: VD100 = 1111
+    [InlineData("00000457", AccessWidth.DoubleWord, DisplayFormat.Unsigned, "1111")] // docs/protocol-v2.md 5.2: VD100 = 1111
     [InlineData("FFFFFFFF", AccessWidth.DoubleWord, DisplayFormat.Unsigned, "4294967295")]
     [InlineData("FFFFFFFF", AccessWidth.DoubleWord, DisplayFormat.Signed, "-1")]
     [InlineData("80000000", AccessWidth.DoubleWord, DisplayFormat.Signed, "-2147483648")]

@@ -26,7 +26,7 @@ public sealed class ValueParserTests
     [InlineData("VB110", "1010", DisplayFormat.Binary, "0A")]
     [InlineData("VB110", "16#2A", DisplayFormat.Unsigned, "2A")] //        STL constants are read in any integer format
     [InlineData("VB110", "A", DisplayFormat.Ascii, "41")]
-    [InlineData("VW104", "60", DisplayFormat.Unsigned, "003C")] //         docs/protocol.md 5.3: VW104 := 60
+    [InlineData("VW104", "60", DisplayFormat.Unsigned, "003C")] //         docs/protocol-v2.md 5.3: VW104 := 60
     [InlineData("VW104", "65535", DisplayFormat.Unsigned, "FFFF")]
     [InlineData("VW104", "-32768", DisplayFormat.Signed, "8000")]
     [InlineData("VW104", "32767", DisplayFormat.Signed, "7FFF")]

@@ -8,7 +8,7 @@ using OperatorPanel.Simulator.Reference;
 namespace OperatorPanel.Simulator.Tests.Reference;
 
 /// <summary>
-/// The reference model answers the worked examples of docs/protocol.md section 5, in order on one station, exactly as
+/// The reference model answers the worked examples of docs/protocol-v2.md section 5, in order on one station, exactly as
 /// documented: the station and memory the section states (CPU 224, STOP enabled, 120 copy bytes, VD100 = 1111,
 /// IB0-IB1 = A5 03, MB2 = 05, QB0 = 01, scans 3/2/9 ms).
 /// </summary>
@@ -48,7 +48,7 @@ public sealed partial class ReferencePlcDocExamplesTests
             dir = dir.Parent;
         }
 
-        var text = File.ReadAllText(Path.Combine(dir!.FullName, "docs", "protocol.md"));
+        var text = File.ReadAllText(Path.Combine(dir!.FullName, "docs", "protocol-v2.md"));
         return [.. CodeBlock().Matches(text).Select(block => block.Groups[1].Value)
             .Where(body => ExampleName().IsMatch(body))
             .Select(body => (ExampleName().Match(body).Groups[1].Value, Line(body, "PC  -> "), Line(body, "PLC -> ")))];

@@ -7,7 +7,7 @@ using static OperatorPanel.Simulator.Tests.Reference.Exchange;
 
 namespace OperatorPanel.Simulator.Tests.Reference;
 
-/// <summary>DEFINE LIST and READ LIST on the reference model: the tail store, its capacity rule and every invalidation (docs/protocol.md, "Lists").</summary>
+/// <summary>DEFINE LIST and READ LIST on the reference model: the tail store, its capacity rule and every invalidation (docs/protocol-v2.md, "Lists").</summary>
 public sealed class ReferencePlcListTests
 {
     /// <summary>VD100 (4 bytes) and MB2: the list of the doc's examples 5.6.</summary>

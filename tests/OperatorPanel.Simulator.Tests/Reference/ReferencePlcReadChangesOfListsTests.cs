@@ -7,7 +7,7 @@ using static OperatorPanel.Simulator.Tests.Reference.Exchange;
 namespace OperatorPanel.Simulator.Tests.Reference;
 
 /// <summary>
-/// 09 READ CHANGES OF LISTS on the reference model (docs/protocol.md, "09 READ CHANGES OF LISTS"): one entry per list
+/// 09 READ CHANGES OF LISTS on the reference model (docs/protocol-v2.md, "09 READ CHANGES OF LISTS"): one entry per list
 /// of MASK, K pairs or REREAD, each REREAD reason, the copy invalid after it, the checks 04, 06, 07 in order, FEATURES.
 /// </summary>
 public sealed class ReferencePlcReadChangesOfListsTests

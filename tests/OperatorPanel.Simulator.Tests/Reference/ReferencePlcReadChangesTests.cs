@@ -6,7 +6,7 @@ using static OperatorPanel.Simulator.Tests.Reference.Exchange;
 
 namespace OperatorPanel.Simulator.Tests.Reference;
 
-/// <summary>08 READ CHANGES on the reference model: copies, pairs, FULL and its fallbacks (docs/protocol.md, "08 READ CHANGES").</summary>
+/// <summary>08 READ CHANGES on the reference model: copies, pairs, FULL and its fallbacks (docs/protocol-v2.md, "08 READ CHANGES").</summary>
 public sealed class ReferencePlcReadChangesTests
 {
     /// <summary>VD100 (4 bytes) and MB2: D = 5.</summary>

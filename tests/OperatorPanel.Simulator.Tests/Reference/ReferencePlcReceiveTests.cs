@@ -8,7 +8,7 @@ using static OperatorPanel.Simulator.Tests.Reference.Exchange;
 namespace OperatorPanel.Simulator.Tests.Reference;
 
 /// <summary>
-/// What RCV hands the handler and what the handler makes of it (docs/protocol.md, "Processing order", steps 1-2): the
+/// What RCV hands the handler and what the handler makes of it (docs/protocol-v2.md, "Processing order", steps 1-2): the
 /// last '&lt;' restarts the frame, the receive interrupt's early silence looks at the first '&lt;', and invalidation 1
 /// counts every received character.
 /// </summary>

@@ -6,7 +6,7 @@ using static OperatorPanel.Simulator.Tests.Reference.Exchange;
 
 namespace OperatorPanel.Simulator.Tests.Reference;
 
-/// <summary>07 STOP on the reference model (docs/protocol.md, "07 STOP").</summary>
+/// <summary>07 STOP on the reference model (docs/protocol-v2.md, "07 STOP").</summary>
 public sealed class ReferencePlcStopTests
 {
     private const string Stop = "53544F50";

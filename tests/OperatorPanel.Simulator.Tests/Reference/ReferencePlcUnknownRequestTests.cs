@@ -5,7 +5,7 @@ using OperatorPanel.Simulator.Reference;
 
 namespace OperatorPanel.Simulator.Tests.Reference;
 
-/// <summary>A request the reference model does not execute is refused with 05 (docs/protocol.md section 3), never answered as IDENTIFY.</summary>
+/// <summary>A request the reference model does not execute is refused with 05 (docs/protocol-v2.md section 3), never answered as IDENTIFY.</summary>
 public sealed class ReferencePlcUnknownRequestTests
 {
     /// <summary>A command the protocol might gain later: parsed by Core, not (yet) executed by the model.</summary>

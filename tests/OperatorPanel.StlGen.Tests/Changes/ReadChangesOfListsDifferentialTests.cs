@@ -152,7 +152,7 @@ public sealed class ReadChangesOfListsDifferentialTests
     }
 
     /// <summary>
-    /// Issue 23: docs/protocol.md section 2's example of copies (COPY_BYTES 120, lists of D = 100, 30 and 20): the third
+    /// Issue 23: docs/protocol-v2.md section 2's example of copies (COPY_BYTES 120, lists of D = 100, 30 and 20): the third
     /// list's copy ends at the last copy byte, the last byte of V, where the comparison's double-word compare of a short
     /// chunk read past V and the station went silent for good. It answers K = 00 on every CPU.
     /// </summary>

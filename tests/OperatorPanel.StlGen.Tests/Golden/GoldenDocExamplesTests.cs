@@ -7,7 +7,7 @@ using OperatorPanel.StlGen.Tests.Differential;
 namespace OperatorPanel.StlGen.Tests.Golden;
 
 /// <summary>
-/// Every golden configuration, executed in the interpreter, answers the worked examples of docs/protocol.md section 5
+/// Every golden configuration, executed in the interpreter, answers the worked examples of docs/protocol-v2.md section 5
 /// in order, exactly as documented, with the frames re-addressed to the configuration's station. The examples assume
 /// VD100 = 16#00000457, IB0-IB1 = 16#A5 16#03, MB2 = 16#05 and QB0 = 16#01. IDENTIFY describes the documented CPU 224
 /// on port 0 with example scan times, so its reply is compared with the reference model instead (the differential
@@ -92,7 +92,7 @@ public sealed partial class GoldenDocExamplesTests
             dir = dir.Parent;
         }
 
-        var text = File.ReadAllText(Path.Combine(dir!.FullName, "docs", "protocol.md"));
+        var text = File.ReadAllText(Path.Combine(dir!.FullName, "docs", "protocol-v2.md"));
         var examples = new List<(string, string, string)>();
         foreach (Match block in CodeBlock().Matches(text))
         {

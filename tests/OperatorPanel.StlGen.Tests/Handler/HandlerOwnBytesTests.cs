@@ -12,7 +12,7 @@ using OperatorPanel.StlGen.Tests.Differential;
 namespace OperatorPanel.StlGen.Tests.Handler;
 
 /// <summary>
-/// The handler's own V bytes (buffer and work bytes, docs/protocol.md "Work bytes") are refused to WRITE and WRITE
+/// The handler's own V bytes (buffer and work bytes, docs/protocol-v2.md "Work bytes") are refused to WRITE and WRITE
 /// BIT with error 03 by the generated STL and by the reference model alike, and the station keeps answering.
 /// </summary>
 public sealed class HandlerOwnBytesTests

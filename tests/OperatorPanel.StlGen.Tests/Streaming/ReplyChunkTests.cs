@@ -6,7 +6,7 @@ using OperatorPanel.StlGen.Options;
 namespace OperatorPanel.StlGen.Tests.Streaming;
 
 /// <summary>
-/// The reply leaves in chunks while the handler computes its check (docs/protocol.md section 6, steps 6 and 7): the
+/// The reply leaves in chunks while the handler computes its check (docs/protocol-v2.md section 6, steps 6 and 7): the
 /// generated handler in the interpreter at the published instruction times, its characters and their times taken from
 /// the simulated port, against the reference model's reply.
 /// </summary>

@@ -3,7 +3,7 @@ using OperatorPanel.Core.Protocol.V3;
 namespace OperatorPanel.Cli.Bench.V3;
 
 /// <summary>
-/// A radio module's receiving side for v3 (docs/protocol-v3.md section 1.6): it cuts frames with Core's
+/// A radio module's receiving side for v3 (docs/protocol.md section 1.6): it cuts frames with Core's
 /// <see cref="Reader"/> (the LEN rule: '&lt;', LEN, then LEN bytes in all, whatever their values) and forgets a partial
 /// frame after an idle line longer than <see cref="PartialFrameDropMs"/>. Fed the bytes with the time each one's stop
 /// bit ended, it says when the frame came out whole (the module may then send it on) or that a pause inside the frame

@@ -67,7 +67,7 @@ internal sealed record V3LinkReport(
                 problems.Add($"{planned.Name}: the handler answered {replyBytes} bytes, Codec sizes the reply at {planned.ReplyBytes}");
             }
 
-            // Timed only as what it is: a reply the PC would not take (docs/protocol-v3.md section 8, rule 2) is a problem.
+            // Timed only as what it is: a reply the PC would not take (docs/protocol.md section 8, rule 2) is a problem.
             if (!Codec.TryDecodeReplyTo([.. probe.LastReply.Select(r => r.Value)], planned.Request, out _, out var decode))
             {
                 problems.Add($"{planned.Name}: the PC would not take the handler's reply ({decode})");

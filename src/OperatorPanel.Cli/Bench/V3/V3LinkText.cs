@@ -12,7 +12,7 @@ internal static class V3LinkText
         ArgumentNullException.ThrowIfNull(report);
         var m = report.Model;
         var list = report.Frames.List;
-        o.WriteLine("Reference line, protocol 3 (docs/protocol-v3.md), MODELLED: the generated v3 handler run in the STL interpreter");
+        o.WriteLine("Reference line, protocol 3 (docs/protocol.md), MODELLED: the generated v3 handler run in the STL interpreter");
         o.WriteLine(Invariant($"  list          one DEFINE LIST of {list.Items.Length} slots, {list.DataBytes} data bytes ({report.BinaryBoundBytes} distinct data bytes, SMB6 fillers to a whole group); {report.Frames.FramesLeftOut} plan frames left out"));
         o.WriteLine(Invariant($"  medium        {report.Medium}, {m.Line}, byte {m.Line.CharacterMs:0.###} ms"));
         o.WriteLine(Invariant($"  user program  {m.ProgramScanMs:0.###} ms per scan (assumed; --scan-ms), run in the interpreter after the handler's call"));
@@ -22,7 +22,7 @@ internal static class V3LinkText
         if (m.Radio is { } radio)
         {
             o.WriteLine($"  radio         {radio}");
-            o.WriteLine("                each module forwards a frame once Core's Reader has it whole by its LEN (docs/protocol-v3.md 1.6),");
+            o.WriteLine("                each module forwards a frame once Core's Reader has it whole by its LEN (docs/protocol.md 1.6),");
             o.WriteLine(Invariant($"                and drops a partial frame after an idle line over {LenRuleForwarder.PartialFrameDropMs} ms (longer than any chunk pause of a scan up to that)"));
         }
         else

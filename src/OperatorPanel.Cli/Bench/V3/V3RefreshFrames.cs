@@ -8,7 +8,7 @@ namespace OperatorPanel.Cli.Bench.V3;
 internal sealed record V3PlannedExchange(string Name, byte[] Request, int ReplyBytes);
 
 /// <summary>
-/// The v3 frames the panel sends for a line (docs/protocol-v3.md section 2): the station's plan frames fitted into one
+/// The v3 frames the panel sends for a line (docs/protocol.md section 2): the station's plan frames fitted into one
 /// list as the panel's V3StationList fits them (in plan order, each taken while the list still fits the full handler's
 /// 32 slots and 128 bytes, ListPlan), defined once with DEFINE LIST, then one READ LIST per refresh. Steady = 07 READ
 /// LIST FULL (every value read in full: the reply carries the whole list); idle = 06 READ LIST answered 81 UNCHANGED

@@ -4,7 +4,7 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.Core.Polling.Readers;
 
 /// <summary>
-/// 09 READ CHANGES OF LISTS (docs/protocol.md section 2, its PC rules 1-5), chosen for a station whose IDENTIFY has
+/// 09 READ CHANGES OF LISTS (docs/protocol-v2.md section 2, its PC rules 1-5), chosen for a station whose IDENTIFY has
 /// FEATURES bit 2: every list in step (an 08 without FULL would be allowed) is read with ONE 09 before the station's other
 /// frames. The lists due a FULL, and every list of the mask the 09 did not bring (a REREAD entry, a 09 without a good
 /// reply, a reply whose INDEX lies past a list's data), are left to <see cref="ListReader"/>, which reads them with 08

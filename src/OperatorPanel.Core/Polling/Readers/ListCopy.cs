@@ -25,13 +25,13 @@ internal sealed class ListCopy
     /// <summary>
     /// Whether the FULL answer after a REREAD brought exactly the data held before it: then no byte changed, so the
     /// REREAD was not for too many changes (2K &gt;= D needs K &gt; 0; the K bytes alone always fit) but because the
-    /// handler keeps no copy of the list (docs/protocol.md, 09, case 1), and 09 would answer REREAD every cycle.
+    /// handler keeps no copy of the list (docs/protocol-v2.md, 09, case 1), and 09 would answer REREAD every cycle.
     /// </summary>
     public bool RereadWithoutChanges(ImmutableArray<byte> full) =>
         !BeforeReread.IsDefault && BeforeReread.AsSpan().SequenceEqual(full.AsSpan());
 
     /// <summary>
-    /// Whether the list is "in step": an 08 READ CHANGES of it without FULL is allowed (docs/protocol.md, 08 PC rules 1-3),
+    /// Whether the list is "in step": an 08 READ CHANGES of it without FULL is allowed (docs/protocol-v2.md, 08 PC rules 1-3),
     /// so it may also go in a 09 MASK (09 PC rule 1): its last READ CHANGES brought a good answer and no FULL is due.
     /// </summary>
     public bool InStep(DateTimeOffset now, TimeSpan fullReadInterval) => !Data.IsDefault && now - LastFull < fullReadInterval;

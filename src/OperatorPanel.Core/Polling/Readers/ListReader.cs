@@ -5,7 +5,7 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.Core.Polling.Readers;
 
 /// <summary>
-/// Stored lists (docs/protocol.md, "Lists" and READ CHANGES): the plan's list frames are the same every cycle, so each is
+/// Stored lists (docs/protocol-v2.md, "Lists" and READ CHANGES): the plan's list frames are the same every cycle, so each is
 /// stored in its station once with DEFINE LIST, all of a station's lists in id order (the order the planner fitted them
 /// in), and then polled with READ CHANGES, which answers only the bytes that changed. FULL is asked the first time, after
 /// any READ CHANGES that brought no good reply (the PLC's copy moved on with the reply we lost), and every
@@ -142,7 +142,7 @@ internal sealed class ListReader(PollingContext context, StoredLists lists, bool
     /// Defines every not yet defined list of the station, in id order. Once the station has been sent a DEFINE, it may
     /// hold any of its lists (a DEFINE whose reply was lost and that the link sent again cleared the others), and a list
     /// defined below those may not fit: such a round clears the tail first and defines all of the station's lists again,
-    /// in id order from an empty tail (docs/protocol.md, Lists, "The PC's part"). A refused DEFINE (logged once) sends
+    /// in id order from an empty tail (docs/protocol-v2.md, Lists, "The PC's part"). A refused DEFINE (logged once) sends
     /// that frame back to plain READ. Returns the link failure that stopped the round, or null.
     /// </summary>
     private async Task<LinkReply.Failed?> DefineAsync(CancellationToken cancellationToken)

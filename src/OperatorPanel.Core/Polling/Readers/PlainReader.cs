@@ -4,7 +4,7 @@ using OperatorPanel.Core.Protocol;
 namespace OperatorPanel.Core.Polling.Readers;
 
 /// <summary>
-/// 03 READ (docs/protocol.md): one exchange per frame, its blocks listed in every request. Takes any frame, so it is the
+/// 03 READ (docs/protocol-v2.md): one exchange per frame, its blocks listed in every request. Takes any frame, so it is the
 /// last reader of every station: what no other reader takes (a frame without a list, a list whose DEFINE was refused,
 /// every frame when read lists are off) is read here.
 /// </summary>

@@ -4,7 +4,7 @@ using OperatorPanel.Core.Addressing;
 namespace OperatorPanel.Core.Polling.Readers;
 
 /// <summary>
-/// One station's stored lists as the PC knows them (docs/protocol.md, "Lists"): which frames of the plan are stored under
+/// One station's stored lists as the PC knows them (docs/protocol-v2.md, "Lists"): which frames of the plan are stored under
 /// which list id (the planner's order, <see cref="ReadListAssignment"/>), which are defined in the PLC now, which went
 /// back to plain READ because their DEFINE was refused, whether the station was sent a DEFINE since polling started, and
 /// the PC's copy of each list (<see cref="ListCopy"/>). Read and changed by <see cref="ListReader"/> and

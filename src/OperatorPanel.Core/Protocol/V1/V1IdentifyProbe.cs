@@ -6,7 +6,7 @@ namespace OperatorPanel.Core.Protocol.V1;
 /// <summary>
 /// The one protocol-v1 exchange the panel still speaks: IDENTIFY with v1's XOR block check, sent only when a station
 /// does not answer IDENTIFY v2, to tell a v1 handler ("regenerate the PLC code") from a silent station
-/// (docs/protocol.md, "Version 1 handlers"). v1 frame: '&lt;' STATION SEQ CMD PAYLOAD BCC '&gt;' as hex pairs, BCC = XOR of
+/// (docs/protocol-v2.md, "Version 1 handlers"). v1 frame: '&lt;' STATION SEQ CMD PAYLOAD BCC '&gt;' as hex pairs, BCC = XOR of
 /// the ASCII codes of the body characters before it. A v2 handler never answers this probe (its last four characters
 /// are hex digits, not check characters), and a v1 handler never answers a v2 frame (check characters are not hex).
 /// </summary>

@@ -10,10 +10,10 @@ namespace OperatorPanel.Simulator.Stl.Freeport;
 /// </summary>
 public readonly record struct LineSettings(int Baud, Parity Parity, int DataBits)
 {
-    /// <summary>The handler's usual setting, SMB30 = 16#09 (docs/protocol.md section 6).</summary>
+    /// <summary>The handler's usual setting, SMB30 = 16#09 (docs/protocol-v2.md section 6).</summary>
     public static LineSettings Default { get; } = new(9600, Parity.None, 8);
 
-    /// <summary>1 start + data + parity + 1 stop: 10 for 8N1, 11 for 8E1 (docs/protocol.md section 7).</summary>
+    /// <summary>1 start + data + parity + 1 stop: 10 for 8N1, 11 for 8E1 (docs/protocol-v2.md section 7).</summary>
     public int BitsPerCharacter => 1 + DataBits + (Parity == Parity.None ? 0 : 1) + 1;
 
     public TimeSpan CharacterTime => Bits(BitsPerCharacter);
