@@ -17,9 +17,8 @@ internal static class LenRuleForwarder
     /// so the pause before the check can last several scans of the CPU (section 7; the bench's handler runs show 11
     /// scans of check for a whole list of 76 bytes, less the payload's own time on the wire). One second covers that
     /// for machine programs of up to about 90 ms a scan. The drop is only for a byte lost on a module's wired side
-    /// (the air carries whole frames as packets); the panel waits as long after a failed exchange on a radio link, so
-    /// a partial frame is gone before the next one comes. Dropping after END_TIMEOUT_MS (the first rule) lost every
-    /// whole-list reply once a scan took 10 ms.
+    /// (the air carries whole frames as packets). Dropping after END_TIMEOUT_MS (the first rule) lost every whole-list
+    /// reply once a scan took 10 ms.
     /// </summary>
     public const int PartialFrameDropMs = 1000;
 
