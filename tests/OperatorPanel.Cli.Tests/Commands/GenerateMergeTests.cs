@@ -33,7 +33,7 @@ public sealed class GenerateMergeTests : IDisposable
         var run = CliRunner.Run("generate", NewProject(), "-o", Out, "--merge", UserFile(user));
 
         run.ExitCode.Should().Be(2);
-        run.Error.Should().Contain("user.awl:5: STL022 VW8000 (VB8000-VB8001) overlaps the handler's VB7444-VB8190; move the handler with --buffer VBn", "the protocol 3 handler's 747 V bytes at the top of V");
+        run.Error.Should().Contain("user.awl:5: STL022 VW8000 (VB8000-VB8001) overlaps the handler's VB7586-VB8191; move the handler with --buffer VBn", "the protocol 3 handler's 606 V bytes at the top of V");
         Directory.Exists(Out).Should().BeFalse();
     }
 

@@ -19,9 +19,9 @@ public sealed class IdentifyCommandTests
             .And.Contain("write mask    16#1C: Q M V")
             .And.Contain("FEATURES      16#03: list, STOP")
             .And.Contain("list          32 items, 128 bytes (LIST_ITEMS, LIST_BYTES): one READ LIST a refresh")
-            .And.Contain("requests      at most 136 bytes (MAX_REQUEST)")
+            .And.Contain("requests      at most 137 bytes (MAX_REQUEST)")
             .And.Contain("end time-out  4 ms (END_TIMEOUT_MS")
-            .And.Contain("handler V     VB7444-VB8190 (747 bytes, V_FIRST/V_BYTES: never written by the panel)")
+            .And.Contain("handler V     VB7586-VB8191 (606 bytes, V_FIRST/V_BYTES: never written by the panel)")
             .And.Contain("STOP          in the handler (FEATURES bit 0): opanel stop can put it into STOP")
             .And.Contain("cpu check     ok: matches CPU 224");
         run.Out.Should().MatchRegex(@"scan          last \d ms, min \d ms, max \d ms");
@@ -57,7 +57,7 @@ public sealed class IdentifyCommandTests
         json.RootElement.GetProperty("writableAreas").EnumerateArray().Select(a => a.GetString()).Should().Equal(["Q", "M", "V"], "protocol 3 never writes I or SM");
         json.RootElement.GetProperty("protocolVersion").GetInt32().Should().Be(3);
         (json.RootElement.GetProperty("listItems").GetInt32(), json.RootElement.GetProperty("listBytes").GetInt32(), json.RootElement.GetProperty("maxRequest").GetInt32())
-            .Should().Be((32, 128, 136));
+            .Should().Be((32, 128, 137));
         json.RootElement.GetProperty("endTimeoutMs").GetInt32().Should().Be(4, "one character at 9600 baud + 2 ms, at least the cable's 4 ms turnaround");
         json.RootElement.GetProperty("cpuMismatch").ValueKind.Should().Be(JsonValueKind.Null);
     }

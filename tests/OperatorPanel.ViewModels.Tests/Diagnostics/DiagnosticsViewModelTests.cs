@@ -31,7 +31,7 @@ public sealed class DiagnosticsViewModelTests : IAsyncDisposable
         station.CpuMismatch.Should().BeFalse();
         station.Smb6Text.Should().Be("16#" + _panel.Plc.Memory.SM[6].ToString("X2", System.Globalization.CultureInfo.InvariantCulture));
         station.HandlerText.Should().Be("protocol 3, handler revision 1, full");
-        station.HandlerShapeText.Should().Be("FEATURES 16#02 (list); list of 32 items, 128 bytes; requests up to 136 bytes; END_TIMEOUT_MS 4; own V bytes VB7444-VB8190");
+        station.HandlerShapeText.Should().Be("FEATURES 16#02 (list); list of 32 items, 128 bytes; requests up to 137 bytes; END_TIMEOUT_MS 4; own V bytes VB7586-VB8191");
         station.RunStopText.Should().Be("RUN");
         station.ScanTimesText.Should().Be("last 9 ms, min 9 ms, max 12 ms");
         station.StatisticsText.Should().StartWith($"{_panel.Transport.FramesSent} requests, {_panel.Transport.FramesSent} replies, 0 retries");

@@ -16,9 +16,9 @@ public sealed class GenerateCodeViewModelTests : IDisposable
     public void Dispose() => _folder.Dispose();
 
     [Theory]
-    [InlineData(CpuModel.Cpu222, "VB1300", "63", "125", new[] { 0 })]
-    [InlineData(CpuModel.Cpu224, "VB7444", "63", "125", new[] { 0 })]
-    [InlineData(CpuModel.Cpu226, "VB9492", "127", "125", new[] { 0, 1 })]
+    [InlineData(CpuModel.Cpu222, "VB1442", "63", "125", new[] { 0 })]
+    [InlineData(CpuModel.Cpu224, "VB7586", "63", "125", new[] { 0 })]
+    [InlineData(CpuModel.Cpu226, "VB9634", "127", "125", new[] { 0, 1 })]
     public void Defaults_PerCpu_TheGeneratorsDefaultsShown(CpuModel model, string buffer, string sbr, string firstInt, int[] ports)
     {
         var cpu = CpuProfiles.For(model);
@@ -94,7 +94,7 @@ public sealed class GenerateCodeViewModelTests : IDisposable
         generate.Diagnostics.Should().ContainSingle().Which.Should().Match<GenerateDiagnosticRow>(d => d.Id == "STL050" && d.IsWarning);
         generate.Diagnostics[0].Message.Should().Be(expected.Stats!.Size.Warning);
         generate.Preview.Should().Be(expected.AwlText);
-        generate.Stats.Should().Contain($"V memory: {expected.Stats!.VRange} (747 bytes)")
+        generate.Stats.Should().Contain($"V memory: {expected.Stats!.VRange} ({expected.Stats.VBytes} bytes)")
             .And.Contain($"Program memory: 8192 bytes on the CPU 224 (with run mode edit; 12288 without)")
             .And.Contain($"Instructions: {expected.Stats.Instructions} in {expected.Stats.Size.Networks} networks");
         File.ReadAllText(_folder.File("Filler-handler.awl"), Encoding.ASCII).Should().Be(expected.AwlText);
