@@ -54,7 +54,8 @@ internal static class GenerateView
         cli.Out.WriteLine("handler executed for the request; scans: from the request to the slice that ends the reply's check (the reply");
         cli.Out.WriteLine("leaves in chunks meanwhile, from the first pass of its check on):");
         var width = measured.Max(m => m.Name.Length);
-        cli.Out.WriteLine($"  {"request".PadRight(width)}  chars in -> out  instructions  total ms  worst interrupt ms  worst scan ms  scans");
+        var unit = stats.Protocol == 3 ? "bytes" : "chars";
+        cli.Out.WriteLine($"  {"request".PadRight(width)}  {unit} in -> out  instructions  total ms  worst interrupt ms  worst scan ms  scans");
         foreach (var m in measured)
         {
             cli.Out.WriteLine(FormattableString.Invariant(

@@ -6,9 +6,9 @@ namespace OperatorPanel.StlGen.Merge;
 
 /// <summary>
 /// What the handler for checked <see cref="HandlerOptions"/> reserves, in the terms a user's program could collide with:
-/// block numbers and names, interrupt events, the port and its special memory bytes, the V bytes. For protocol 3 the
-/// events, blocks and SM bytes are v2's superset (v3 has no timed interrupt, SMB34 stays the user's: reported anyway,
-/// the conservative side), the V bytes its own.
+/// block numbers and names, interrupt events, the port and its special memory bytes, the V bytes. Protocol 3 has no
+/// timed interrupt (docs/protocol.md section 0: the end timer is the reply's earliest start), so event 10 and SMB34 stay
+/// the user's there; its blocks are v2's superset (three interrupt numbers kept), its V bytes its own.
 /// </summary>
 internal sealed class HandlerFootprint
 {
@@ -19,6 +19,7 @@ internal sealed class HandlerFootprint
         Subroutine = options.EffectiveFirstSubroutine;
         FirstInterrupt = options.EffectiveFirstInterrupt;
         Names = [.. options.Names.All];
+        UsesTimedInterrupt = options.Protocol != 3;
         ReceiveEvent = context.ReceiveEvent;
         TransmitEvent = context.TransmitEvent;
         var layout = context.Layout;
@@ -48,7 +49,10 @@ internal sealed class HandlerFootprint
     /// <summary>Receive character, event 8 (port 0) / 25 (port 1): attached by a user means Freeport on this port.</summary>
     public int ReceiveCharacterEvent => Port == 0 ? 8 : 25;
 
-    public ImmutableArray<int> Events => [ReceiveEvent, HandlerContext.DelayEvent, TransmitEvent];
+    /// <summary>Timed interrupt 0 (event 10, SMB34) makes v2's reply delay; a v3 handler leaves both to the user.</summary>
+    public bool UsesTimedInterrupt { get; }
+
+    public ImmutableArray<int> Events => UsesTimedInterrupt ? [ReceiveEvent, HandlerContext.DelayEvent, TransmitEvent] : [ReceiveEvent, TransmitEvent];
 
     public int FirstVByte { get; }
 

@@ -135,7 +135,7 @@ internal sealed class InstructionCollisions(AwlProgram user, HandlerFootprint ha
             Error(StlDiagnostics.PortControlWritten, use.Line, $"{use.Instruction.Mnemonic} writes {use.Describe("SMB")}, port {handler.Port}'s mode or receive set-up (SMB{handler.PortControlByte}, SMB{handler.FirstReceiveByte}-SMB{handler.LastReceiveByte}), which the handler owns; remove the write or {OtherPort("the panel needs the port to itself")}");
         }
 
-        if (Covers(HandlerFootprint.ReplyDelayByte, HandlerFootprint.ReplyDelayByte))
+        if (handler.UsesTimedInterrupt && Covers(HandlerFootprint.ReplyDelayByte, HandlerFootprint.ReplyDelayByte))
         {
             Error(StlDiagnostics.ReplyDelayIntervalWritten, use.Line, $"{use.Instruction.Mnemonic} writes {use.Describe("SMB")}: SMB34 is the handler's reply delay (timed interrupt 0); use timed interrupt 1 (SMB35, event 11) in the user's program");
         }

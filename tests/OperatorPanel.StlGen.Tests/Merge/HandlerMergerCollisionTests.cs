@@ -148,6 +148,17 @@ public sealed class HandlerMergerCollisionTests
         result.Errors.Should().ContainSingle().Which.Should().Match<MergeDiagnostic>(d => d.Id == StlDiagnostics.ReplyDelayIntervalWritten && d.Line == Line + 1);
     }
 
+    [Theory]
+    [InlineData("MOVB   50, SMB34")]
+    [InlineData("ATCH   MY_TICK, 10")]
+    public void Merge_Protocol3Handler_LeavesTimedInterrupt0AndSmb34ToTheUser(string instruction)
+    {
+        var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.1", instruction), UserProgram.Cpu224 with { Protocol = 3 });
+
+        result.Diagnostics.Should().BeEmpty("a v3 handler has no reply-delay interrupt (docs/protocol.md section 0)");
+        result.MergedText.Should().Contain(instruction);
+    }
+
     [Fact]
     public void Merge_BlockNumbersAndNamesInUse_ReportsEachAtItsBlockLine()
     {
