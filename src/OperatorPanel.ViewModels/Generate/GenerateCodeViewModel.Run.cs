@@ -148,8 +148,7 @@ public sealed partial class GenerateCodeViewModel
 
         var sbr = Number(FirstSubroutine, "first SBR");
         var interrupt = Number(FirstInterrupt, "first INT");
-        var delay = Number(ReplyDelay, "reply delay");
-        var charTimeout = Number(CharTimeout, "inter-character timeout");
+        var charTimeout = Number(CharTimeout, "end timer");
         // Protocol 3: the panel speaks it and tells an older handler to regenerate (docs/protocol.md section 8).
         options = new HandlerOptions
         {
@@ -164,9 +163,9 @@ public sealed partial class GenerateCodeViewModel
             BufferStart = buffer,
             FirstSubroutine = sbr,
             FirstInterrupt = interrupt,
-            ReplyDelayMs = delay ?? 0,
             CharTimeoutMs = charTimeout ?? 0,
-            WriteMask = (WriteQ ? 1 << 2 : 0) | (WriteM ? 1 << 3 : 0) | (WriteV ? 1 << 4 : 0) | (WriteSm ? 1 << 5 : 0),
+            // Protocol 3 never writes I or SM (docs/protocol.md section 0): the mask has Q, M and V only.
+            WriteMask = (WriteQ ? 1 << 2 : 0) | (WriteM ? 1 << 3 : 0) | (WriteV ? 1 << 4 : 0),
             AllowStop = station.AllowStop,
             Compact = station.Compact,
         };

@@ -22,12 +22,10 @@ public sealed partial class GenerateCodeViewModel : ObservableObject
     private string _bufferStart = string.Empty;
     private string _firstSubroutine = string.Empty;
     private string _firstInterrupt = string.Empty;
-    private string _replyDelay = string.Empty;
     private string _charTimeout = string.Empty;
     private bool _writeQ;
     private bool _writeM;
     private bool _writeV;
-    private bool _writeSm;
 
     public GenerateCodeViewModel(PanelProject project, int stationIndex, IFileDialogService files)
     {
@@ -71,10 +69,7 @@ public sealed partial class GenerateCodeViewModel : ObservableObject
     /// <summary>The first of the three interrupt routines.</summary>
     public string FirstInterrupt { get => _firstInterrupt; set => Change(ref _firstInterrupt, value); }
 
-    /// <summary>Milliseconds between request and reply, 1-255 (SMB34).</summary>
-    public string ReplyDelay { get => _replyDelay; set => Change(ref _replyDelay, value); }
-
-    /// <summary>Inter-character timeout in ms; 0 = off.</summary>
+    /// <summary>END_TIMEOUT_MS: the receive ends this long after a request's last character (SMW92); 0 = the default for the baud rate.</summary>
     public string CharTimeout { get => _charTimeout; set => Change(ref _charTimeout, value); }
 
     public bool WriteQ { get => _writeQ; set => Change(ref _writeQ, value); }
@@ -83,9 +78,7 @@ public sealed partial class GenerateCodeViewModel : ObservableObject
 
     public bool WriteV { get => _writeV; set => Change(ref _writeV, value); }
 
-    public bool WriteSm { get => _writeSm; set => Change(ref _writeSm, value); }
-
-    /// <summary>Whether the handler gets 07 STOP: the station's "allowStop" in the project decides (File > Edit project).</summary>
+    /// <summary>Whether the handler gets 08 STOP: the station's "allowStop" in the project decides (File > Edit project).</summary>
     public string StopText => Station.AllowStop
         ? "included: the project allows the panel to put this CPU into STOP"
         : "not included (allow remote STOP for the station in File > Edit project)";
@@ -102,9 +95,8 @@ public sealed partial class GenerateCodeViewModel : ObservableObject
         _firstSubroutine = HandlerDefaults.FirstSubroutine(cpu).ToString(CultureInfo.InvariantCulture);
         _firstInterrupt = HandlerDefaults.FirstInterrupt(cpu).ToString(CultureInfo.InvariantCulture);
         var defaults = new HandlerOptions { Cpu = cpu };
-        _replyDelay = defaults.ReplyDelayMs.ToString(CultureInfo.InvariantCulture);
         _charTimeout = defaults.CharTimeoutMs.ToString(CultureInfo.InvariantCulture);
-        (_writeQ, _writeM, _writeV, _writeSm) = (Writable(2), Writable(3), Writable(4), Writable(5));
+        (_writeQ, _writeM, _writeV) = (Writable(2), Writable(3), Writable(4));
         OnPropertyChanged(string.Empty);
         ClearResult();
 

@@ -31,9 +31,8 @@ public sealed class GenerateCodeViewModelTests : IDisposable
         generate.FirstInterrupt.Should().Be(firstInt);
         generate.Ports.Should().Equal(ports);
         generate.Port.Should().Be(0);
-        generate.ReplyDelay.Should().Be("5");
         generate.CharTimeout.Should().Be("0");
-        (generate.WriteQ, generate.WriteM, generate.WriteV, generate.WriteSm).Should().Be((true, true, true, true));
+        (generate.WriteQ, generate.WriteM, generate.WriteV).Should().Be((true, true, true));
         generate.LineText.Should().Be("9600 8N1");
         generate.CanSave.Should().BeFalse();
     }
@@ -82,7 +81,6 @@ public sealed class GenerateCodeViewModelTests : IDisposable
     {
         var cpu = CpuProfiles.For(CpuModel.Cpu224);
         var generate = Create(cpu);
-        generate.WriteSm = false;
         generate.GenerateCommand.Execute(null);
         var expected = HandlerGenerator.Generate(new HandlerOptions { Protocol = 3, Cpu = cpu, Station = 2, WriteMask = 0x1C });
         _files.Folder = _folder.Path;
@@ -127,7 +125,7 @@ public sealed class GenerateCodeViewModelTests : IDisposable
         generate.GenerateCommand.Execute(null);
         generate.SaveCommand.CanExecute(null).Should().BeTrue();
 
-        generate.ReplyDelay = "10";
+        generate.CharTimeout = "10";
 
         generate.SaveCommand.CanExecute(null).Should().BeFalse();
         generate.Preview.Should().BeEmpty();
