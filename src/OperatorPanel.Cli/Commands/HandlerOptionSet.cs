@@ -58,8 +58,8 @@ internal sealed class HandlerOptionSet
 
     public Option<bool> AllowStop { get; } = new("--allow-stop")
     {
-        Description = "Include 07 STOP: the panel may put the CPU in STOP (default: the station's \"allowStop\" in the project, off unless set; "
-            + "off = no STOP code, the command is refused with error 05)",
+        Description = "Include STOP (08 in protocol 3, 07 in 2): the panel may put the CPU in STOP (default: the station's \"allowStop\" in the "
+            + "project, off unless set; off = no STOP code, the command is refused: 85 in protocol 3, error 05 in 2)",
     };
 
     private Option[] All => [Protocol, Compact, PlcPort, Buffer, ReplyDelay, Writable, CharTimeout, Subroutine, Interrupt, CopyBytes, AllowStop];

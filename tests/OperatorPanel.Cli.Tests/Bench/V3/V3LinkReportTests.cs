@@ -19,7 +19,10 @@ public sealed class V3LinkReportTests
         (report.Idle.RequestChars, report.Idle.ReplyChars).Should().Be((8, 9));
         report.BinaryBoundMs.Should().BeApproximately(77.08, 0.01);
         report.Problems.Should().BeEmpty();
-        report.Stats.Steady.Should().NotBeNull();
+        // The handler's own figures beside the link's: the steady READ LIST FULL as generate --stats measures it.
+        report.Stats.Steady!.Instructions.Should().BeGreaterThan(1000);
+        report.Stats.Steady.ExecutionTime.TotalMilliseconds.Should().BeInRange(20, 30, "the steady refresh's PLC-time goal is 30 ms");
+        report.Stats.Idle!.ExecutionTime.TotalMilliseconds.Should().BeInRange(5, 10, "the idle refresh's PLC-time goal is 10 ms");
         report.Steady.TotalMs.Should().BeApproximately(report.Steady.Parts.Sum(p => p.Ms), 1e-9);
         report.Steady.TotalMs.Should().BeGreaterThanOrEqualTo(report.Floors.Steady.TotalMs);
         report.Idle.TotalMs.Should().BeGreaterThanOrEqualTo(report.Floors.Idle.TotalMs);
