@@ -52,7 +52,9 @@ internal static class GenerateView
         cli.Out.WriteLine($"blocks used:            {string.Join(", ", stats.Blocks.Select(b => $"{b.Name} ({b.NumberText})"))}");
         cli.Out.WriteLine("measured in the interpreter at the manual's execution times (conservative where it has none); total ms: all the");
         cli.Out.WriteLine("handler executed for the request; scans: from the request to the slice that ends the reply's check (the reply");
-        cli.Out.WriteLine("leaves in chunks meanwhile, from the first pass of its check on):");
+        cli.Out.WriteLine(stats.Compact
+            ? "leaves whole, in one XMT, when its check is done):"
+            : "leaves in chunks meanwhile, from the first pass of its check on):");
         var width = measured.Max(m => m.Name.Length);
         var unit = stats.Protocol == 3 ? "bytes" : "chars";
         cli.Out.WriteLine($"  {"request".PadRight(width)}  {unit} in -> out  instructions  total ms  worst interrupt ms  worst scan ms  scans");

@@ -24,6 +24,7 @@ internal static class Builder
         panel.AddRange(DispatchPart.Networks(c));
         panel.AddRange(DispatchPart.Identify(c, fixedPart));
         panel.AddRange(ItemPart.Commands(c));
+        panel.AddRange(ItemPart.Check(c));
         if (c.HasList)
         {
             panel.AddRange(DefinePart.Networks(c));
@@ -35,13 +36,16 @@ internal static class Builder
             panel.AddRange(DispatchPart.Stop(c));
         }
 
-        panel.AddRange(ItemPart.Check(c));
         panel.AddRange(ItemPart.Move(c));
         panel.AddRange(CheckPart.ReplyHead(c));
         panel.Add(Label(Labels.Silence, "silence"));
         panel.Add(ReturnIf("Silence", "No reply: receive the next request.", Op("LD", "SM0.0"), l.Done(), Op("RCV", l.B(0), c.PortOperand)));
-        panel.Add(Label(Labels.Publish, "send what is ready"));
-        panel.Add(CheckPart.Publish(c));
+        if (c.SendsInChunks)
+        {
+            panel.Add(Label(Labels.Publish, "send what is ready"));
+            panel.Add(CheckPart.Publish(c));
+        }
+
         var first = options.EffectiveFirstInterrupt;
         return new StlProgram(
         [
@@ -55,8 +59,8 @@ internal static class Builder
                 [$"Event {c.ReceiveEvent}: a message of LEN bytes for this station waits for {c.Names.Panel}; anything else: receive again."],
                 [.. InterruptPart.Receive(c)]),
             new StlBlock(
-                StlBlockKind.Interrupt, c.Names.Transmit, first + 1, "Operator panel: reply chunk sent",
-                [$"Event {c.TransmitEvent}: the next chunk of the reply, or after its last one receive the next request."], [.. InterruptPart.Transmit(c)]),
+                StlBlockKind.Interrupt, c.Names.Transmit, first + 1, c.SendsInChunks ? "Operator panel: reply chunk sent" : "Operator panel: reply sent",
+                [c.SendsInChunks ? $"Event {c.TransmitEvent}: the next chunk of the reply, or after its last one receive the next request." : $"Event {c.TransmitEvent}: the reply is out; receive the next request."], [.. InterruptPart.Transmit(c)]),
         ]);
     }
 

@@ -44,10 +44,21 @@ internal static class CheckPart
         yield return ReturnIf("Check: more in the next scan", "Keep AC1.", Op("LDD<", "AC1", l.Dw(l.End)), Op("MOVD", "AC1", l.Dw(l.Walk)));
         yield return Always("Check: the A field", "Every double word is in: A's low word ^= its high word and B, so the double word from A's low word on is the check (A field, then B).",
             Op("XORW", l.W(l.SumA), l.W(l.SumA + 2)), Op("XORW", b, l.W(l.SumA + 2)));
-        yield return JumpIf(
-            "Check: the reply's", "The reply's check (STEP's reply bit) into its place (END) in one double word; the whole reply is ready (COVERED = END + 3); the request is done.",
-            Labels.Publish, Op("LD", l.PhaseBit(Phase.ReplyFlag)), Op("MOVD", l.Dw(l.End), "AC1"), Op("MOVD", l.Dw(l.Check), "*AC1"), Op("+D", "3", "AC1"),
-            Op("MOVD", "AC1", l.Dw(l.Covered)), l.Done());
+        if (c.SendsInChunks)
+        {
+            yield return JumpIf(
+                "Check: the reply's", "The reply's check (STEP's reply bit) into its place (END) in one double word; the whole reply is ready (COVERED = END + 3); the request is done.",
+                Labels.Publish, Op("LD", l.PhaseBit(Phase.ReplyFlag)), Op("MOVD", l.Dw(l.End), "AC1"), Op("MOVD", l.Dw(l.Check), "*AC1"), Op("+D", "3", "AC1"),
+                Op("MOVD", "AC1", l.Dw(l.Covered)), l.Done());
+        }
+        else
+        {
+            yield return ReturnIf(
+                "Check: the reply's", "The reply's check (STEP's reply bit) into its place (END) in one double word; the whole reply leaves in one XMT from R's count byte (= LEN); the request is done.",
+                Op("LD", l.PhaseBit(Phase.ReplyFlag)), Op("MOVD", l.Dw(l.End), "AC1"), Op("MOVD", l.Dw(l.Check), "*AC1"), Op("MOVB", l.B(2), l.B(0)),
+                Op("XMT", l.B(0), c.PortOperand), l.Done());
+        }
+
         yield return JumpIf("Request: check differs", "A frame whose check differs gets no reply (its STATION cannot be trusted).", Labels.Silence,
             Op("LDD<>", l.Dw(l.Check), l.Dw(l.Rx)));
         yield return ReturnIf("Request: checked", "The command in the next scan.", Op("LD", "SM0.0"), l.Go(Phase.Dispatch));
@@ -69,20 +80,34 @@ internal static class CheckPart
         yield return Label(Labels.ErrorReply, "a reply without payload");
         yield return DispatchPart.ToReply(c, "No payload", "P = 0; the reply next scan.", Op("LD", "SM0.0"), Op("MOVW", "0", l.W(l.Temp)));
         yield return Label(Labels.ReplyInR, "phase Reply: a reply in R");
+        if (!c.SendsInChunks)
+        {
+            yield return ReturnIf(
+                "Reply: head",
+                "LEN = 9 + P, STATUS, REQCHECK after '<'; END = the check's place, zeroed; the check walks from '<' from the next scan, and the reply leaves whole when it is done.",
+                [Op("LD", "SM0.0"), .. Head(l), Op("MOVD", l.Ptr(1), l.Dw(l.Walk)), Op("MOVD", "0", l.Dw(l.SumA)), Op("MOVW", "0", l.W(l.SumB)), l.GoReplyCheck()]);
+            yield break;
+        }
+
         yield return Always(
             "Reply: head",
             "LEN = 9 + P, STATUS, REQCHECK after '<'; END = the check's place, zeroed; COVERED its byte before; SENT = the count byte: head and payload leave now, in one chunk (a chunk's count byte overwrites the byte before it, so a second chunk may start only where the check has passed); the check walks from '<' from the next scan.",
-            Op("MOVW", l.W(l.Temp), "AC0"), Op("+I", Dec(Limits.ReplyBytes(0)), "AC0"), Op("MOVB", "AC0", l.B(2)), Op("MOVB", l.B(l.Status), l.B(3)), Op("MOVW", l.W(l.Rx + 2), l.W(4)),
-            Op("MOVD", l.Ptr(6), "AC2"), Op("ITD", l.W(l.Temp), "AC0"), Op("+D", "AC0", "AC2"), Op("MOVD", "0", "*AC2"), Op("MOVD", "AC2", l.Dw(l.End)),
-            Op("MOVD", "AC2", l.Dw(l.Covered)), Op("DECD", l.Dw(l.Covered)),
+            [.. Head(l), Op("MOVD", "AC2", l.Dw(l.Covered)), Op("DECD", l.Dw(l.Covered)),
             Op("MOVD", l.Ptr(0), l.Dw(l.Sent)), Op("MOVD", l.Ptr(1), l.Dw(l.Walk)), Op("MOVD", "0", l.Dw(l.SumA)), Op("MOVW", "0", l.W(l.SumB)),
-            l.GoReplyCheck());
+            l.GoReplyCheck()]);
         yield return new NetworkBuilder(
                 "Reply: without payload, whole with its check",
                 "9 bytes: nothing ready now (COVERED = SENT), so they leave in one XMT with the check (one transmit interrupt less); the check's first double word in this scan (the head's scan has room, the check's has the XMT).")
             .Op("LDW=", l.W(l.Temp), "0").Op("MOVD", l.Ptr(0), l.Dw(l.Covered)).Op("MOVD", l.Ptr(1), "AC1").Op("MOVD", l.Ptr(5), "AC2").Op("JMP", Dec(Labels.CheckNext)).Build();
         yield return JumpIf("Reply: send what is ready", string.Empty, Labels.Publish, Op("LD", "SM0.0"));
     }
+
+    /// <summary>LEN, STATUS and REQCHECK after '&lt;'; AC2 and END at the check's place (R byte 6 + P), zeroed.</summary>
+    private static (string, string[])[] Head(Layout l) =>
+    [
+        Op("MOVW", l.W(l.Temp), "AC0"), Op("+I", Dec(Limits.ReplyBytes(0)), "AC0"), Op("MOVB", "AC0", l.B(2)), Op("MOVB", l.B(l.Status), l.B(3)), Op("MOVW", l.W(l.Rx + 2), l.W(4)),
+        Op("MOVD", l.Ptr(6), "AC2"), Op("ITD", l.W(l.Temp), "AC0"), Op("+D", "AC0", "AC2"), Op("MOVD", "0", "*AC2"), Op("MOVD", "AC2", l.Dw(l.End)),
+    ];
 
     /// <summary>Label 98, OP_PANEL's send: when no chunk is on the wire and bytes are ready, take the transmitter and send them.</summary>
     public static StlNetwork Publish(Context c)

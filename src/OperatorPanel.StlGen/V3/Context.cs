@@ -34,6 +34,14 @@ internal sealed class Context
 
     public bool HasList => Shape.HasList;
 
+    /// <summary>
+    /// The full handler sends a reply in chunks while its check is computed (a whole list's 137 bytes leave while the
+    /// check walks them); the compact handler's replies are at most 33 bytes, so it sends each whole, in one XMT, once
+    /// its check is in place: 34 instructions less (no chunk bookkeeping in OP_PANEL or OP_TX), a reply's first byte a
+    /// scan or two later (docs/protocol.md section 6).
+    /// </summary>
+    public bool SendsInChunks => HasList;
+
     /// <summary>STOP is a full-handler command: the compact handler refuses 08 as unknown (85) whatever the project allows.</summary>
     public bool HasStop => Options.AllowStop && !Options.Compact;
 

@@ -18,9 +18,9 @@ internal static class DispatchPart
         var l = c.Layout;
         yield return Label(Labels.Dispatch, "the request's command");
         yield return Always(
-            "Request: CMD and P", "CMD = SEQCMD's low 4 bits; STATUS = 80 for now; P = count - 8.",
+            "Request: CMD and P", "CMD = SEQCMD's low 4 bits; STATUS = 80 for now; P = count - 8; AC2 at byte 5, where an item command's item starts.",
             Op("MOVB", l.B(4), l.B(l.Cmd)), Op("ANDB", "16#0F", l.B(l.Cmd)), Op("MOVB", Hex(ReplyStatus.Ok), l.B(l.Status)),
-            Op("BTI", l.B(0), l.W(l.Temp)), Op("-I", "8", l.W(l.Temp)));
+            Op("BTI", l.B(0), l.W(l.Temp)), Op("-I", "8", l.W(l.Temp)), Op("MOVD", l.Ptr(5), "AC2"));
         if (c.HasList)
         {
             yield return JumpIf(

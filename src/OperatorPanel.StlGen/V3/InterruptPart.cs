@@ -5,8 +5,9 @@ using static OperatorPanel.StlGen.V3.Context;
 namespace OperatorPanel.StlGen.V3;
 
 /// <summary>
-/// The two interrupt routines. The receive routine only takes a message of LEN bytes for this station. The reply
-/// leaves in chunks: OP_PANEL moves COVERED to the last byte ready; when the transmitter is free it takes it (FLAGS
+/// The two interrupt routines. The receive routine only takes a message of LEN bytes for this station. The compact
+/// handler's reply leaves whole (<see cref="Context.SendsInChunks"/>): its transmit routine only receives again. The full
+/// handler's reply leaves in chunks: OP_PANEL moves COVERED to the last byte ready; when the transmitter is free it takes it (FLAGS
 /// bit 0) and sends COVERED - SENT bytes with XMT from the byte at SENT (the count byte, then the last byte already
 /// sent); at the chunk's transmit complete the routine below sends what became ready meanwhile, or frees the
 /// transmitter. It is free only when no XMT is running, so no interrupt can act between OP_PANEL's test and its XMT
@@ -33,6 +34,12 @@ internal static class InterruptPart
     public static IEnumerable<StlNetwork> Transmit(Context c)
     {
         var l = c.Layout;
+        if (!c.SendsInChunks)
+        {
+            yield return Always("The reply is out", "It left whole in one XMT: receive the next request.", Op("RCV", l.B(0), c.PortOperand));
+            yield break;
+        }
+
         yield return Send(c, "The next chunk", "Bytes ready since the last chunk: send them, keep the transmitter.", Op("LDD>", l.Dw(l.Covered), l.Dw(l.Sent)))
             .Op("CRETI").Build();
         yield return Always("Nothing ready", $"Release the transmitter: {c.Names.Panel} sends the next chunk when it is ready.", Op("R", l.FlagBit(Layout.Owned), "1"));

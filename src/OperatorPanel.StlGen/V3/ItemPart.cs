@@ -8,7 +8,7 @@ namespace OperatorPanel.StlGen.V3;
 /// <summary>
 /// 02 READ, 03 WRITE, 04 WRITE BITS and the item check they share with DEFINE LIST (docs/protocol.md section 4): the
 /// request's item AREA OFFSET LENGTH sits at byte 5; LENGTH 0 -&gt; 84, unknown AREA -&gt; 82, OFFSET + LENGTH past the
-/// area -&gt; 82. In: AC2 at AREA, the length in TEMP's second word. Out: AC3 = the item's first byte; on by CMD. The
+/// area -&gt; 82. <see cref="Commands"/> ends in <see cref="Check"/> (WRITE BITS falls through). In: AC2 at AREA, the length in TEMP's second word. Out: AC3 = the item's first byte; on by CMD. The
 /// checks run in the dispatch's scan; the data moves in the next (phase Move), the reply in the one after.
 /// </summary>
 internal static class ItemPart
@@ -51,16 +51,16 @@ internal static class ItemPart
     {
         var l = c.Layout;
         yield return Label(Labels.Read, "02 READ");
-        yield return Always("READ: LENGTH", "From byte 8; AC2 at the item.", Op("BTI", l.B(8), LengthWord(l)), Op("MOVD", l.Ptr(5), "AC2"));
+        yield return Always("READ: LENGTH", "From byte 8 (AC2 is at the item since the dispatch).", Op("BTI", l.B(8), LengthWord(l)));
         yield return Refusal.If(l, "READ: LENGTH 1 to MAX_DATA", $"84.", ReplyStatus.BadLength, Op("LDB=", l.B(8), "0"), Op("OB>", l.B(8), Dec(HandlerShape.MaxData)));
         yield return JumpIf("READ: check the item", string.Empty, Labels.ItemCheck, Op("LD", "SM0.0"));
         yield return Label(Labels.Write, "03 WRITE");
         yield return Always("WRITE: its length", "AC0 = 4 + LENGTH.", Op("BTI", l.B(8), LengthWord(l)), Op("MOVW", LengthWord(l), "AC0"), Op("+I", "4", "AC0"));
         yield return Refusal.If(l, "WRITE: P = 4 + LENGTH, LENGTH 1 to MAX_DATA", "84.", ReplyStatus.BadLength,
             Op("LDW<>", "AC0", l.W(l.Temp)), Op("OW<", l.W(l.Temp), "5"), Op("OB>", l.B(8), Dec(HandlerShape.MaxData)));
-        yield return JumpIf("WRITE: check the item", string.Empty, Labels.ItemCheck, Op("LD", "SM0.0"), Op("MOVD", l.Ptr(5), "AC2"));
+        yield return JumpIf("WRITE: check the item", string.Empty, Labels.ItemCheck, Op("LD", "SM0.0"));
         yield return Label(Labels.WriteBits, "04 WRITE BITS");
-        yield return JumpIf("WRITE BITS: check the byte", "A one-byte item.", Labels.ItemCheck, Op("LD", "SM0.0"), Op("MOVW", "1", LengthWord(l)), Op("MOVD", l.Ptr(5), "AC2"));
+        yield return Always("WRITE BITS: check the byte", "A one-byte item; the item check follows.", Op("MOVW", "1", LengthWord(l)));
     }
 
     /// <summary>Phase Move for WRITE and WRITE BITS, first: 83 for I, SM, areas outside the mask, the handler's V bytes.</summary>

@@ -31,8 +31,13 @@ internal static class Symbols
         yield return ("OP_COUNT", l.B(l.Count), "Panel handler: the quarter of the list the comparison goes on from");
         yield return ("OP_WALK", l.Dw(l.Walk), "Panel handler: pointer of the loop in progress");
         yield return ("OP_END", l.Dw(l.End), "Panel handler: where that loop ends");
-        yield return ("OP_COVERED", l.Dw(l.Covered), "Panel handler: pointer to the last reply byte ready to send");
-        yield return ("OP_SENT", l.Dw(l.Sent), "Panel handler: pointer to the last reply byte handed to XMT");
+        if (l.Shape.HasList)
+        {
+            // Only the full handler sends in chunks (Context.SendsInChunks); the compact handler leaves these 8 bytes unused.
+            yield return ("OP_COVERED", l.Dw(l.Covered), "Panel handler: pointer to the last reply byte ready to send");
+            yield return ("OP_SENT", l.Dw(l.Sent), "Panel handler: pointer to the last reply byte handed to XMT");
+        }
+
         yield return ("OP_LAST", l.Dw(l.Last), "Panel handler: pointer to the reply's last byte");
         yield return ("OP_TEMP", l.Dw(l.Temp), "Panel handler: payload length and item length");
         if (!l.Shape.HasList)

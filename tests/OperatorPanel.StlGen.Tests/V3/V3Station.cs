@@ -79,11 +79,12 @@ internal sealed class V3Station
         var at = _now + (Line.CharacterTime * message.Length);
         var deadline = at + TimeSpan.FromMilliseconds(Options.EffectiveEndTimeoutMs) + Margin + (Line.CharacterTime * expected.Length);
         var got = new List<byte>();
+        var times = new List<TimeSpan>();
         var t = at;
         _plc.RunUntil(t);
         while (_plc.Fault is null && _plc.Mode == Simulator.Reference.OperatingMode.Run)
         {
-            got.AddRange(_port.TakeTransmitted().Select(c => c.Value));
+            Take(got, times);
             var settled = !_port.IsTransmitting && _port.IsReceiving;
             if (settled && (t >= deadline || (expected.Length > 0 && got.Count >= expected.Length)))
             {
@@ -99,7 +100,8 @@ internal sealed class V3Station
             _plc.RunUntil(t);
         }
 
-        got.AddRange(_port.TakeTransmitted().Select(c => c.Value));
+        Take(got, times);
+        LongestPause = times.Count < 2 ? TimeSpan.Zero : times.Zip(times.Skip(1), (a, b) => b - a - Line.CharacterTime).Max();
         if (_plc.Fault is { } fault && fault.Code != "Stop")
         {
             throw new InvalidOperationException($"the handler faulted: {fault}");
@@ -108,6 +110,18 @@ internal sealed class V3Station
         _now = t + TimeSpan.FromMilliseconds(Options.EffectiveEndTimeoutMs + 5);
         _plc.RunUntil(_now);
         return (Masked([.. got], message), Masked(expected, message));
+    }
+
+    /// <summary>The longest pause between two characters of the last exchange's reply (zero when they left back to back).</summary>
+    public TimeSpan LongestPause { get; private set; }
+
+    private void Take(List<byte> got, List<TimeSpan> times)
+    {
+        foreach (var c in _port.TakeTransmitted())
+        {
+            got.Add(c.Value);
+            times.Add(c.At);
+        }
     }
 
     /// <summary>IDENTIFY's scan times (payload bytes 18-23) and its check.</summary>
