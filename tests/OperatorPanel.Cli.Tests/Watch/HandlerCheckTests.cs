@@ -1,6 +1,7 @@
 using OperatorPanel.Cli.Watch;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Protocol;
 
@@ -28,6 +29,17 @@ public sealed class HandlerCheckTests
         var text = HandlerCheck.Describe(StationOf(CpuModel.Cpu224), Identify(CpuModel.Cpu224, smb6: 0x20, modeSwitchRun: true));
 
         text.Should().Be("ok: generated for CPU 224, protocol 2, mode switch RUN");
+    }
+
+    [Fact]
+    public void Describe_V3Handlers_NameTheirShape()
+    {
+        var station = StationOf(CpuModel.Cpu224);
+        var full = new Core.Protocol.V3.Identity(1, HandlerIdentity.CpuModelCode(CpuModel.Cpu224), 1, 0x1C, 0x03, 4, 0, 137, 16, 32, 128, 7586, 606, 0x20, 1, 3, 2, 9);
+        var compact = full with { Features = 0, MaxRequestBytes = 33, ListItems = 0, ListBytes = 0, VFirst = 8118, VBytes = 74, StatusFlags = 0 };
+
+        HandlerCheck.Describe(station, V3Link.AsIdentifyResponse(Two, full)).Should().Be("ok: generated for CPU 224, protocol 3, full handler (list of 32 items, 128 bytes, STOP), mode switch RUN");
+        HandlerCheck.Describe(station, V3Link.AsIdentifyResponse(Two, compact)).Should().Be("ok: generated for CPU 224, protocol 3, compact handler (no list: READs of 16 bytes), mode switch TERM");
     }
 
     [Fact]

@@ -125,7 +125,7 @@ internal sealed class V3Station
     }
 
     /// <summary>IDENTIFY's scan times (payload bytes 18-23) and its check.</summary>
-    private static byte[] Masked(byte[] reply, byte[] request)
+    public static byte[] Masked(byte[] reply, byte[] request)
     {
         if (reply.Length == Limits.ReplyBytes(Identity.PayloadBytes) && request.Length > 3 && (request[3] & 0x0F) == (byte)Command.Identify && reply[2] == (byte)ReplyStatus.Ok)
         {

@@ -36,7 +36,7 @@ internal static class V3ExchangeTimes
         parts.Add(new("request on the bus", requestBytes * c));
         var first = Math.Max(handler.UntilFirstReply.TotalMilliseconds, model.TurnaroundMs);
         parts.Add(new(
-            Invariant($"until the first reply byte: RCV's end timer {endTimeoutMs} ms, the receive interrupt, {handler.Scans} handler scans with {model.ProgramScanMs:0.###} ms user program each (or the cable's turnaround if later)"),
+            Invariant($"until the first reply byte: RCV's end timer {endTimeoutMs} ms, the receive interrupt, the handler's scans until it sends (of its {handler.Scans} for the request) with {model.ProgramScanMs:0.###} ms user program each (or the cable's turnaround if later)"),
             first));
         var onBus = handler.ReplyOnBus.TotalMilliseconds;
         var pauses = handler.Pauses(reply.Count, character).TotalMilliseconds;
