@@ -144,7 +144,7 @@ public static class TechnicianNotes
             : $"  A request cut off mid-way is dropped after {options.CharTimeoutMs} ms without a character (SMW{(options.Port == 0 ? 92 : 192)}).");
     }
 
-    /// <summary>Protocol 3 (docs/protocol.md sections 1.5, 4 and 7): the end timer, the slices, the chunked reply.</summary>
+    /// <summary>Protocol 3 (docs/protocol.md sections 1.5, 4, 6 and 7): the end timer, the slices, the reply (chunked, or whole from a compact handler).</summary>
     private static void WriteTimingV3(LineWriter w, HandlerOptions options)
     {
         var end = options.EffectiveEndTimeoutMs;
@@ -156,8 +156,16 @@ public static class TechnicianNotes
         w.Line("  bytes) and builds the reply a part per scan, each part sized to add at most 2 ms to a scan; a scan without");
         w.Line("  a request costs it about 0.1 ms. opanel generate --stats prints the measured figures per request.");
         w.Line($"  The reply starts no earlier than the end timer ({end} ms), so a PC/PPI cable or converter can turn the line");
-        w.Line("  around, and leaves in parts while its check is computed: it may pause a few scans of your program");
-        w.Line("  between two characters. A long scan of your program slows the panel.");
+        if (options.Compact)
+        {
+            w.Line("  around, and leaves whole, without pauses, once its check is computed (compact handler). A long scan of");
+            w.Line("  your program slows the panel.");
+        }
+        else
+        {
+            w.Line("  around, and leaves in parts while its check is computed: it may pause a few scans of your program");
+            w.Line("  between two characters. A long scan of your program slows the panel.");
+        }
     }
 
     /// <summary>The handler's size beside the CPU's program memory, and the warning when it may leave too little room.</summary>

@@ -37,7 +37,7 @@ internal sealed class Context
     /// <summary>
     /// The full handler sends a reply in chunks while its check is computed (a whole list's 137 bytes leave while the
     /// check walks them); the compact handler's replies are at most 33 bytes, so it sends each whole, in one XMT, once
-    /// its check is in place: 34 instructions less (no chunk bookkeeping in OP_PANEL or OP_TX), a reply's first byte a
+    /// its check is in place: 31 instructions less (no chunk bookkeeping in OP_PANEL or OP_TX), a reply's first byte a
     /// scan or two later (docs/protocol.md section 6).
     /// </summary>
     public bool SendsInChunks => HasList;

@@ -42,6 +42,16 @@ public sealed class TechnicianNotesTests
         notes.Should().Contain("  It answers IDENTIFY, READ, WRITE and WRITE BITS only, to fit a small CPU. It leaves out the list (DEFINE");
         notes.Should().Contain("  STOP from the panel is not in the compact handler.");
         notes.Should().NotContain(l => l.Contains("list's slots", StringComparison.Ordinal));
+        notes.Should().Contain("  around, and leaves whole, without pauses, once its check is computed (compact handler). A long scan of");
+        notes.Should().NotContain(l => l.Contains("leaves in parts", StringComparison.Ordinal));
+    }
+
+    [Fact]
+    public void Write_FullV3_SaysTheReplyMayPauseBetweenCharacters()
+    {
+        var notes = Lines(HandlerGoldenTests.Cpu224Port0Station2 with { Protocol = 3 });
+
+        notes.Should().Contain("  around, and leaves in parts while its check is computed: it may pause a few scans of your program");
     }
 
     [Theory]
