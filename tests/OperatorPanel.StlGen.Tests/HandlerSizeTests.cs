@@ -55,7 +55,7 @@ public sealed class HandlerSizeTests
     [Fact]
     public void Generate_Stats_CountsTheProgramsInstructionsAndNetworks()
     {
-        var result = HandlerGenerator.Generate(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 });
+        var result = HandlerGenerator.Generate(new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 });
 
         var size = result.Stats!.Size;
         size.Instructions.Should().Be(result.Program!.InstructionCount).And.Be(result.Stats.Instructions);

@@ -68,7 +68,7 @@ internal sealed class HandlerProbe
     public static bool TryCreate(CpuProfile cpu, Station station, LineSettings line, int replyDelayMs, TimeSpan userProgram, out HandlerProbe? probe, out string error)
     {
         ArgumentNullException.ThrowIfNull(cpu);
-        var options = Options(cpu, station, line) with { ReplyDelayMs = replyDelayMs };
+        var options = Options(cpu, station, line) with { Protocol = 2, ReplyDelayMs = replyDelayMs };
         return TryCreate(options, line, userProgram, reply => reply[^1] == (byte)'>', out probe, out error);
     }
 

@@ -23,7 +23,7 @@ internal static class StlBench
     {
         results = [];
         var cpu = CpuProfiles.For(CpuModel.Cpu224);
-        var generated = HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu, Station = Station.Address, BaudRate = baud });
+        var generated = HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu, Station = Station.Address, BaudRate = baud, Protocol = 2 });
         if (!generated.Ok)
         {
             error = $"the handler cannot be generated: {string.Join("; ", generated.Diagnostics)}";

@@ -61,12 +61,11 @@ public sealed record HandlerOptions
     public bool AllowStop { get; init; }
 
     /// <summary>
-    /// 3 (binary frames, docs/protocol.md: what the panel speaks) or 2 (hex frames, the previous protocol). The
-    /// record's default stays 2 for the v2 generator's tests and benches; every product path (<see cref="For"/>,
-    /// <see cref="ForLine"/>, opanel generate, the panel's Generate PLC code) asks for 3, and the panel tells a v2
-    /// handler to regenerate.
+    /// 3 (binary frames, docs/protocol.md: what the panel speaks; the default) or 2 (hex frames, the previous protocol,
+    /// docs/protocol-v2.md: kept for `opanel generate --protocol 2`, `bench link --protocol 2` and the v2 generator's
+    /// tests, which ask for it by name). The panel tells a v2 handler to regenerate.
     /// </summary>
-    public int Protocol { get; init; } = 2;
+    public int Protocol { get; init; } = 3;
 
     /// <summary>Version 3 only: the compact handler (IDENTIFY, READ, WRITE, WRITE BIT; no list, no STOP).</summary>
     public bool Compact { get; init; }

@@ -31,10 +31,11 @@ internal static class PortPart
             .Op("LD", "SM0.7").Op("AN", l.FlagBit(Layout.RunSeen)).Op("LD", "SM0.1").Op("A", "SM0.7").Op("OLD")
             .Op("MOVB", Hex(c.FreeportControl), c.SmB(30)).Op("MOVB", Hex(ReceiveControl), c.SmB(87)).Op("MOVB", "16#3C", c.SmB(88))
             .Op("MOVW", Dec(c.EndTimeoutMs), c.SmW(92)).Op("MOVB", Dec(c.Shape.RequestBytes), c.SmB(94))
-            .Ops([l.Done()]).Op("ANDB", Hex(1 << Layout.RunSeen), l.B(l.Flags));
+            .Ops([l.Done()]);
         if (c.HasList)
         {
-            on.Op("MOVB", "0", l.B(l.N));
+            // FLAGS but SM0.7's bit: a chunk's transmitter, STOP now, the copy's bits (the compact handler has none of them).
+            on.Op("ANDB", Hex(1 << Layout.RunSeen), l.B(l.Flags)).Op("MOVB", "0", l.B(l.N));
         }
 
         yield return on.Op("ATCH", c.Names.Receive, Dec(c.ReceiveEvent)).Op("ATCH", c.Names.Transmit, Dec(c.TransmitEvent))
@@ -44,10 +45,10 @@ internal static class PortPart
                 $"{c.SmB(30)} = 0 gives port {c.Port} back to PPI, so a programming device can connect without stopping the CPU.",
                 "A request being served and the list are forgotten (the events stay attached: in PPI no Freeport event comes).")
             .Op("LDN", "SM0.7").Op("A", l.FlagBit(Layout.RunSeen)).Op("LD", "SM0.1").Op("AN", "SM0.7").Op("OLD")
-            .Op("MOVB", "0", c.SmB(30)).Ops([l.Done()]).Op("ANDB", Hex(1 << Layout.RunSeen), l.B(l.Flags));
+            .Op("MOVB", "0", c.SmB(30)).Ops([l.Done()]);
         if (c.HasList)
         {
-            off.Op("MOVB", "0", l.B(l.N));
+            off.Op("ANDB", Hex(1 << Layout.RunSeen), l.B(l.Flags)).Op("MOVB", "0", l.B(l.N));
         }
 
         yield return off.Build();

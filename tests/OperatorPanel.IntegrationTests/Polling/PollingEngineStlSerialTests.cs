@@ -94,7 +94,7 @@ public sealed class PollingEngineStlSerialTests
         var line = new StlLine(settings);
         foreach (var address in stations)
         {
-            var generated = HandlerGenerator.Generate(new HandlerOptions { Cpu = Cpu, Station = address, BaudRate = Baud });
+            var generated = HandlerGenerator.Generate(new HandlerOptions { Protocol = 2, Cpu = Cpu, Station = address, BaudRate = Baud });
             generated.Ok.Should().BeTrue(string.Join("; ", generated.Diagnostics));
             StlStation.TryCreate(generated.AwlText, Cpu, 0, settings, out var station, out var error).Should().BeTrue(error);
             line.Attach(station!, runProcess: false);

@@ -73,7 +73,7 @@ public sealed class PpiSerialTests
     public async Task Read_HandlerStationInStopAnswersOverPpi_WhileInRunItIsSilent()
     {
         var line = new StlLine(PpiLine);
-        var generated = HandlerGenerator.Generate(new HandlerOptions { Cpu = Cpu, Station = 3, BaudRate = Baud });
+        var generated = HandlerGenerator.Generate(new HandlerOptions { Protocol = 2, Cpu = Cpu, Station = 3, BaudRate = Baud });
         generated.Ok.Should().BeTrue(string.Join("; ", generated.Diagnostics));
         var station = Station(line, generated.AwlText, 3);
         station.Memory.M[0] = 0x99;

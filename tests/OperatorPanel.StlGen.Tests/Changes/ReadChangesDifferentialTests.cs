@@ -206,7 +206,7 @@ public sealed class ReadChangesDifferentialTests
 
     private static (DifferentialHarness Harness, ChangesExchange Panel) Station(int copyBytes = HandlerDefaults.CopyBytes)
     {
-        var options = new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2, CopyBytes = copyBytes };
+        var options = new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2, CopyBytes = copyBytes };
         var harness = new DifferentialHarness(options, new Random(11));
         return (harness, new ChangesExchange(harness, 2));
     }

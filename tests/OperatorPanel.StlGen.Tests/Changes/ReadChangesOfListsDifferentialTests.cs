@@ -164,7 +164,7 @@ public sealed class ReadChangesOfListsDifferentialTests
     [InlineData(CpuModel.Cpu226)]
     public void ReadChangesOfLists_CopyEndingAtTheLastVByte_AnswersKZeroAndKeepsAnswering(CpuModel cpu)
     {
-        var options = new HandlerOptions { Cpu = CpuProfiles.For(cpu), Station = 2 };
+        var options = new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(cpu), Station = 2 };
         var harness = new DifferentialHarness(options, new Random(17));
         var panel = new ChangesExchange(harness, 2);
         panel.Define(1, new ReadItem(ProtocolArea.V, 100, 100));
@@ -204,7 +204,7 @@ public sealed class ReadChangesOfListsDifferentialTests
 
     private static (DifferentialHarness Harness, ChangesExchange Panel) Station(int copyBytes = HandlerDefaults.CopyBytes)
     {
-        var options = new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2, CopyBytes = copyBytes };
+        var options = new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2, CopyBytes = copyBytes };
         var harness = new DifferentialHarness(options, new Random(13));
         return (harness, new ChangesExchange(harness, 2));
     }

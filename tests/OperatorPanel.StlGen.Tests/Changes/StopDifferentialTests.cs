@@ -63,7 +63,7 @@ public sealed class StopDifferentialTests
 
     private static (DifferentialHarness Harness, ChangesExchange Panel) Station(bool allowStop)
     {
-        var options = new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu226), Station = 2, AllowStop = allowStop };
+        var options = new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu226), Station = 2, AllowStop = allowStop };
         var harness = new DifferentialHarness(options, new Random(7));
         return (harness, new ChangesExchange(harness, 2));
     }

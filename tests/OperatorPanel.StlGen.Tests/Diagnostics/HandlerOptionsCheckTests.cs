@@ -11,20 +11,20 @@ public sealed class HandlerOptionsCheckTests
 
     public static TheoryData<string, HandlerOptions, string> BadSettings => new()
     {
-        { StlDiagnostics.PortNotOnCpu, new HandlerOptions { Cpu = Cpu224, Port = 1 }, "port 1" },
-        { StlDiagnostics.BaudNotAllowed, new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224, CpuRevision.Early), BaudRate = 115200 }, "115200" },
-        { StlDiagnostics.DataBitsNotAllowed, new HandlerOptions { Cpu = Cpu224, DataBits = 6 }, "6 data bits" },
-        { StlDiagnostics.StopBitsNotAllowed, new HandlerOptions { Cpu = Cpu224, StopBits = 2 }, "2 stop bits" },
-        { StlDiagnostics.BufferOutsideV, new HandlerOptions { Cpu = Cpu224, BufferStart = 8000 }, "VB8000-VB8427" },
-        { StlDiagnostics.StationOutOfRange, new HandlerOptions { Cpu = Cpu224, Station = 127 }, "127" },
-        { StlDiagnostics.ReplyDelayOutOfRange, new HandlerOptions { Cpu = Cpu224, ReplyDelayMs = 0 }, "reply delay 0 ms" },
-        { StlDiagnostics.CharTimeoutOutOfRange, new HandlerOptions { Cpu = Cpu224, CharTimeoutMs = -1 }, "-1 ms" },
-        { StlDiagnostics.SubroutineOutOfRange, new HandlerOptions { Cpu = Cpu224, FirstSubroutine = 64 }, "SBR64" },
-        { StlDiagnostics.InterruptOutOfRange, new HandlerOptions { Cpu = Cpu224, FirstInterrupt = 126 }, "INT126-INT128" },
-        { StlDiagnostics.WriteMaskNotAllowed, new HandlerOptions { Cpu = Cpu224, WriteMask = 0x3E }, "16#3E" },
-        { StlDiagnostics.BlockNameInvalid, new HandlerOptions { Cpu = Cpu224, Names = new HandlerBlockNames { Receive = "1RX" } }, "'1RX'" },
-        { StlDiagnostics.BlockNamesOverlap, new HandlerOptions { Cpu = Cpu224, Names = new HandlerBlockNames { Delay = "OP_RX" } }, "'OP_RX'" },
-        { StlDiagnostics.ParityNotAllowed, new HandlerOptions { Cpu = Cpu224, Parity = (Parity)7 }, "parity 7" },
+        { StlDiagnostics.PortNotOnCpu, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Port = 1 }, "port 1" },
+        { StlDiagnostics.BaudNotAllowed, new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224, CpuRevision.Early), BaudRate = 115200 }, "115200" },
+        { StlDiagnostics.DataBitsNotAllowed, new HandlerOptions { Protocol = 2, Cpu = Cpu224, DataBits = 6 }, "6 data bits" },
+        { StlDiagnostics.StopBitsNotAllowed, new HandlerOptions { Protocol = 2, Cpu = Cpu224, StopBits = 2 }, "2 stop bits" },
+        { StlDiagnostics.BufferOutsideV, new HandlerOptions { Protocol = 2, Cpu = Cpu224, BufferStart = 8000 }, "VB8000-VB8427" },
+        { StlDiagnostics.StationOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Station = 127 }, "127" },
+        { StlDiagnostics.ReplyDelayOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, ReplyDelayMs = 0 }, "reply delay 0 ms" },
+        { StlDiagnostics.CharTimeoutOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, CharTimeoutMs = -1 }, "-1 ms" },
+        { StlDiagnostics.SubroutineOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, FirstSubroutine = 64 }, "SBR64" },
+        { StlDiagnostics.InterruptOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, FirstInterrupt = 126 }, "INT126-INT128" },
+        { StlDiagnostics.WriteMaskNotAllowed, new HandlerOptions { Protocol = 2, Cpu = Cpu224, WriteMask = 0x3E }, "16#3E" },
+        { StlDiagnostics.BlockNameInvalid, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Names = new HandlerBlockNames { Receive = "1RX" } }, "'1RX'" },
+        { StlDiagnostics.BlockNamesOverlap, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Names = new HandlerBlockNames { Delay = "OP_RX" } }, "'OP_RX'" },
+        { StlDiagnostics.ParityNotAllowed, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Parity = (Parity)7 }, "parity 7" },
     };
 
     [Theory]
@@ -63,7 +63,7 @@ public sealed class HandlerOptionsCheckTests
     public void Defaults_BufferStart_EndsAtTheLastVByteEvenAligned(CpuModel model, CpuRevision revision, int start)
     {
         var cpu = CpuProfiles.For(model, revision);
-        var options = new HandlerOptions { Cpu = cpu };
+        var options = new HandlerOptions { Protocol = 2, Cpu = cpu };
 
         options.EffectiveBufferStart.Should().Be(start);
         HandlerOptionsCheck.Check(options).Should().BeEmpty();
@@ -74,7 +74,7 @@ public sealed class HandlerOptionsCheckTests
     [InlineData(CpuModel.Cpu226, 127)]
     public void Defaults_Blocks_AreAtTheTopOfTheRanges(CpuModel model, int sbr)
     {
-        var options = new HandlerOptions { Cpu = CpuProfiles.For(model) };
+        var options = new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(model) };
 
         options.EffectiveFirstSubroutine.Should().Be(sbr);
         options.EffectiveFirstInterrupt.Should().Be(125);

@@ -30,6 +30,7 @@ internal static class DifferentialConfigurations
                 {
                     list.Add(new HandlerOptions
                     {
+                        Protocol = 2,
                         Cpu = cpu,
                         Port = port,
                         BaudRate = Baud(cpu, i),

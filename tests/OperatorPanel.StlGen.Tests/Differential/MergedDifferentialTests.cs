@@ -26,10 +26,10 @@ public sealed class MergedDifferentialTests
         UserProgram.Cpu224,
         new()
         {
-            Cpu = CpuProfiles.For(CpuModel.Cpu226), Port = 1, BaudRate = 19200, Parity = Parity.Even, Station = 17,
+            Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu226), Port = 1, BaudRate = 19200, Parity = Parity.Even, Station = 17,
             BufferStart = 1001, CharTimeoutMs = 100, FirstSubroutine = 20, FirstInterrupt = 1, ReplyDelayMs = 1,
         },
-        new() { Cpu = CpuProfiles.For(CpuModel.Cpu224XP), Station = 126, BaudRate = 115200, WriteMask = 0x10, ReplyDelayMs = 255 },
+        new() { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224XP), Station = 126, BaudRate = 115200, WriteMask = 0x10, ReplyDelayMs = 255 },
     ];
 
     [Theory]

@@ -6,10 +6,11 @@ namespace OperatorPanel.StlGen.Tests.Golden;
 
 public sealed class HandlerGoldenTests
 {
-    internal static HandlerOptions Cpu224Port0Station2 => new() { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 };
+    internal static HandlerOptions Cpu224Port0Station2 => new() { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 };
 
     internal static HandlerOptions Cpu226Port1Station17 => new()
     {
+        Protocol = 2,
         Cpu = CpuProfiles.For(CpuModel.Cpu226),
         Port = 1,
         BaudRate = 19200,
@@ -19,7 +20,7 @@ public sealed class HandlerGoldenTests
         CharTimeoutMs = 100,
     };
 
-    internal static HandlerOptions Cpu221EarlyStation1 => new() { Cpu = CpuProfiles.For(CpuModel.Cpu221, CpuRevision.Early), Station = 1 };
+    internal static HandlerOptions Cpu221EarlyStation1 => new() { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu221, CpuRevision.Early), Station = 1 };
 
     public static TheoryData<string> Cases => ["Cpu224_Port0_9600_2", "Cpu226_Port1_19200_17", "Cpu221Early_Port0_9600_1"];
 

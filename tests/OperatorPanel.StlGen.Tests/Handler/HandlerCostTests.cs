@@ -92,7 +92,7 @@ public sealed class HandlerCostTests
     private static ImmutableArray<MeasuredRequest> Measure(string name)
     {
         var options = name == "Cpu226AllWritable_115200"
-            ? new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu226), Port = 1, BaudRate = 115200, Station = 5, WriteMask = 0x3C }
+            ? new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu226), Port = 1, BaudRate = 115200, Station = 5, WriteMask = 0x3C }
             : HandlerGoldenTests.OptionsFor(name);
         var generated = HandlerGenerator.Generate(options);
         var stats = generated.Stats!;

@@ -29,7 +29,7 @@ public sealed class HandlerCoverageTests
     {
         var cpu = CpuProfiles.For(model, revision);
 
-        var result = HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu, Port = port, BaudRate = baud, Station = 126 });
+        var result = HandlerGenerator.Generate(new HandlerOptions { Protocol = 2, Cpu = cpu, Port = port, BaudRate = baud, Station = 126 });
 
         result.Diagnostics.Should().BeEmpty();
         cpu.TryGetArea(MemoryArea.V, out var v).Should().BeTrue();

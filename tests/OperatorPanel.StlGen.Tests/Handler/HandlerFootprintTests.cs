@@ -99,6 +99,7 @@ public sealed class HandlerFootprintTests
                         n++;
                         yield return new HandlerOptions
                         {
+                            Protocol = 2,
                             Cpu = cpu,
                             Port = port,
                             BaudRate = rates[n % rates.Length].Baud,

@@ -15,7 +15,7 @@ public sealed class HandlerFragmentTests
     [InlineData(115200, Parity.None, 8, "16#19")]
     public void Subroutine_FreeportNetwork_SetsSmb30FromTheLineSettings(int baud, Parity parity, int dataBits, string smb30)
     {
-        var program = HandlerGenerator.Generate(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), BaudRate = baud, Parity = parity, DataBits = dataBits }).Program!;
+        var program = HandlerGenerator.Generate(new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224), BaudRate = baud, Parity = parity, DataBits = dataBits }).Program!;
 
         Instructions(program, StlBlockKind.Subroutine, 0).Should().Contain($"MOVB {smb30}, SMB30");
     }
@@ -74,7 +74,7 @@ public sealed class HandlerFragmentTests
     [Fact]
     public void Writable_MaskWithoutSm_RefusesSmAndSkipsTheSmByteChecks()
     {
-        var program = HandlerGenerator.Generate(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), WriteMask = 0x1C }).Program!;
+        var program = HandlerGenerator.Generate(new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224), WriteMask = 0x1C }).Program!;
         var all = program.Blocks[1].Networks.SelectMany(n => n.Instructions).Select(AwlText).ToList();
 
         all.Should().Contain("LDB= VB7772, 5").And.NotContain(i => i.StartsWith("AW< ", StringComparison.Ordinal));

@@ -17,7 +17,7 @@ namespace OperatorPanel.StlGen.Tests.Handler;
 /// </summary>
 public sealed class HandlerOwnBytesTests
 {
-    private static readonly HandlerOptions Options = new() { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 };
+    private static readonly HandlerOptions Options = new() { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 };
 
     /// <summary>
     /// Buffer byte 0 (count) and 1 ('&lt;'); byte 11, the WRITE's own LENGTH: before the check, writing FF there made the
@@ -81,7 +81,7 @@ public sealed class HandlerOwnBytesTests
     {
         var cpu = CpuProfiles.For(model);
         var config = new HandlerConfig(new Station(1), cpu);
-        var stats = HandlerGenerator.Generate(new HandlerOptions { Cpu = cpu }).Stats!;
+        var stats = HandlerGenerator.Generate(new HandlerOptions { Protocol = 2, Cpu = cpu }).Stats!;
 
         (config.BufferStart, config.BufferStart + config.HandlerVBytes - 1).Should().Be((stats.FirstVByte, stats.LastVByte));
     }

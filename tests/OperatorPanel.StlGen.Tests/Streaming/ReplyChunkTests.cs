@@ -13,7 +13,7 @@ namespace OperatorPanel.StlGen.Tests.Streaming;
 public sealed class ReplyChunkTests
 {
     private static readonly Station Two = new(2);
-    private static readonly HandlerOptions Cpu224 = new() { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 };
+    private static readonly HandlerOptions Cpu224 = new() { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 };
 
     private static ReadItem[] TwentyItems => [.. Enumerable.Range(0, 20).Select(i => new ReadItem(ProtocolArea.V, i * 5, i == 19 ? 1 : 4))];
 

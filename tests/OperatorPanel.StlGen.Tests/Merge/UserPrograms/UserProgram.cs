@@ -10,9 +10,9 @@ internal static class UserProgram
     /// <summary>Instruction lines of <see cref="Ob1"/> start at this line.</summary>
     public const int FirstInstructionLine = 4;
 
-    public static HandlerOptions Cpu224 => new() { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 };
+    public static HandlerOptions Cpu224 => new() { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 };
 
-    public static HandlerOptions Cpu226 => new() { Cpu = CpuProfiles.For(CpuModel.Cpu226), Station = 2 };
+    public static HandlerOptions Cpu226 => new() { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu226), Station = 2 };
 
     /// <summary>A file beside this source file (the folder of UserProgram.cs, whoever calls).</summary>
     public static string Read(string name) => File.ReadAllText(Path.Combine(Folder(), name));
