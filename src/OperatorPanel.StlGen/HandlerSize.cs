@@ -13,7 +13,9 @@ namespace OperatorPanel.StlGen;
 /// <param name="Instructions">The handler's STL instructions, all blocks.</param>
 /// <param name="Networks">The networks of all its blocks (OB1's call included).</param>
 /// <param name="Cpu">The CPU it is generated for.</param>
-public sealed record HandlerSize(int Instructions, int Networks, CpuProfile Cpu)
+/// <param name="CompactInstructions">A full protocol 3 handler: the compact one's instructions for the same options, the
+/// first way out the warning offers; null for a compact or a protocol 2 handler.</param>
+public sealed record HandlerSize(int Instructions, int Networks, CpuProfile Cpu, int? CompactInstructions = null)
 {
     /// <summary>The low end of the estimate: an operation and one short operand.</summary>
     public const int LowBytesPerInstruction = 4;
@@ -80,8 +82,20 @@ public sealed record HandlerSize(int Instructions, int Networks, CpuProfile Cpu)
         }
     }
 
-    /// <summary>What to do: compile in Micro/WIN, a CPU with more program memory where there is one, or PPI. Null when the size is fine.</summary>
-    public string? WarningAdvice
+    /// <summary>The first thing to do about the warning, before <see cref="WarningWays"/>.</summary>
+    public const string CompileFirstText = "Compile it with your program in Micro/WIN to see the real size; where they do not fit together";
+
+    /// <summary>
+    /// What to do: compile in Micro/WIN (<see cref="CompileFirstText"/>), then <see cref="WarningWays"/>. Null when the
+    /// size is fine.
+    /// </summary>
+    public string? WarningAdvice => WarningWays is { } ways ? $"{CompileFirstText}, {ways}" : null;
+
+    /// <summary>
+    /// The ways out: the compact handler where this is a full one, a CPU with more program memory where there is one, or
+    /// PPI. Null when the size is fine.
+    /// </summary>
+    public string? WarningWays
     {
         get
         {
@@ -93,8 +107,10 @@ public sealed record HandlerSize(int Instructions, int Networks, CpuProfile Cpu)
             var larger = CpuProfiles.All.Where(p => p.Revision == CpuRevision.Current && p.ProgramBytes > ProgramMemoryBytes)
                 .Select(p => Text($"{p.Name} {p.ProgramBytes} bytes")).ToList();
             var largerCpu = larger.Count == 0 ? string.Empty : $"use a CPU with more program memory ({string.Join(", ", larger)}), or ";
-            return "Compile it with your program in Micro/WIN to see the real size; where they do not fit together, "
-                + largerCpu + "reach this PLC over PPI (\"protocol\": \"ppi\" in the project), which needs no program in the PLC";
+            var compact = CompactInstructions is { } n
+                ? Text($"use the compact handler (--compact, or \"compact\": true in the project: IDENTIFY, READ, WRITE, WRITE BITS; {n} instructions, estimated {n * LowBytesPerInstruction}-{n * HighBytesPerInstruction} bytes), ")
+                : string.Empty;
+            return compact + largerCpu + "reach this PLC over PPI (\"protocol\": \"ppi\" in the project), which needs no program in the PLC";
         }
     }
 

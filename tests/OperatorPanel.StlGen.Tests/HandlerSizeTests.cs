@@ -53,6 +53,21 @@ public sealed class HandlerSizeTests
     }
 
     [Fact]
+    public void Warning_FullV3HandlerOnACpu221_OffersTheCompactHandlerFirstWithItsSize()
+    {
+        var full = HandlerGenerator.Generate(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu221), Station = 2 }).Stats!.Size;
+        var compact = HandlerGenerator.Generate(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu221), Station = 2, Compact = true }).Stats!.Size;
+
+        full.CompactInstructions.Should().Be(compact.Instructions);
+        full.WarningAdvice.Should().Contain(
+            $"where they do not fit together, use the compact handler (--compact, or \"compact\": true in the project: "
+            + $"IDENTIFY, READ, WRITE, WRITE BITS; {compact.Instructions} instructions, estimated {compact.LowBytes}-{compact.HighBytes} bytes), "
+            + "use a CPU with more program memory");
+        compact.Warning.Should().BeNull("the compact handler fits a CPU 221's half");
+        compact.CompactInstructions.Should().BeNull();
+    }
+
+    [Fact]
     public void Generate_Stats_CountsTheProgramsInstructionsAndNetworks()
     {
         var result = HandlerGenerator.Generate(new HandlerOptions { Protocol = 2, Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 2 });

@@ -84,9 +84,10 @@ internal static class GenerateView
 
         if (!cli.Json)
         {
-            // Two lines: a terminal reads them whole, and no line of ours passes 400 characters.
+            // Three lines: a terminal reads them whole, and no line of ours passes 400 characters.
             cli.Error.WriteLine($"opanel: warning {StlDiagnostics.ProgramMemoryTight} {size.WarningVerdict}.");
-            cli.Error.WriteLine($"opanel: {size.WarningAdvice}.");
+            cli.Error.WriteLine($"opanel: {HandlerSize.CompileFirstText}:");
+            cli.Error.WriteLine($"opanel: {size.WarningWays}.");
         }
 
         return [new { id = StlDiagnostics.ProgramMemoryTight, severity = "warning", message = warning }];

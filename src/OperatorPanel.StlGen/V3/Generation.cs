@@ -27,6 +27,10 @@ internal static class Generation
             (ushort)c.Shape.VBytes, 0, 0, 0, 0, 0);
     }
 
+    /// <summary>A full handler: what the compact one for the same options would take, for the size warning's advice.</summary>
+    private static int? CompactInstructions(Context c) =>
+        c.HasList ? Builder.Build(c.Options with { Compact = true }, FixedIdentity(new Context(c.Options with { Compact = true }))).InstructionCount : null;
+
     private static HandlerStats Stats(Context c, StlProgram program)
     {
         var options = c.Options;
@@ -44,7 +48,7 @@ internal static class Generation
             StopEnabled = c.HasStop,
             Protocol = 3,
             Compact = !c.HasList,
-            Size = new HandlerSize(program.InstructionCount, program.Blocks.Sum(b => b.Networks.Length), options.Cpu),
+            Size = new HandlerSize(program.InstructionCount, program.Blocks.Sum(b => b.Networks.Length), options.Cpu, CompactInstructions(c)),
         };
     }
 }

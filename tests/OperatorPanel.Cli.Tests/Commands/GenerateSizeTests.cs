@@ -30,6 +30,19 @@ public sealed class GenerateSizeTests : IDisposable
     }
 
     [Fact]
+    public void Generate_FullV3HandlerOnACpu221_OffersTheCompactHandlerFirstInLinesOfAtMost400Characters()
+    {
+        var run = CliRunner.Run("generate", NewProject("221"), "-o", Out);
+
+        run.ExitCode.Should().Be(0);
+        var lines = run.Error.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries);
+        lines.Should().HaveCount(3);
+        lines[0].Should().StartWith("opanel: warning STL050 the handler may leave too little room on the CPU 221: its ");
+        lines[2].Should().MatchRegex(@"^opanel: use the compact handler \(--compact, or ""compact"": true in the project: IDENTIFY, READ, WRITE, WRITE BITS; 2\d\d instructions, estimated \d+-\d+ bytes\), use a CPU");
+        lines.Should().OnlyContain(l => l.Length <= 400);
+    }
+
+    [Fact]
     public void Generate_Cpu221WithoutStats_WarnsThatTheHandlerDoesNotFitAndStillWritesIt()
     {
         var run = CliRunner.Run("generate", NewProject("221"), "--protocol", "2", "-o", Out);
@@ -38,8 +51,8 @@ public sealed class GenerateSizeTests : IDisposable
         run.Error.Should().Be(
             "opanel: warning STL050 the handler does not fit the CPU 221: its 1177 instructions take an estimated 4708-8239 bytes, "
             + "more than the CPU's 4096 bytes of program memory (with run mode edit) even at the lower figure." + Environment.NewLine
-            + "opanel: Compile it with your program in Micro/WIN to see the real size; where they do not fit together, use a CPU with "
-            + "more program memory (CPU 224 8192 bytes, CPU 224XP 12288 bytes, CPU 226 16384 bytes), or reach this PLC over PPI "
+            + "opanel: Compile it with your program in Micro/WIN to see the real size; where they do not fit together:" + Environment.NewLine
+            + "opanel: use a CPU with more program memory (CPU 224 8192 bytes, CPU 224XP 12288 bytes, CPU 226 16384 bytes), or reach this PLC over PPI "
             + "(\"protocol\": \"ppi\" in the project), which needs no program in the PLC." + Environment.NewLine);
         run.Out.Should().NotContain("STL050");
         File.ReadAllText(Path.Combine(Out, "PLC_2-README.txt")).Should()
