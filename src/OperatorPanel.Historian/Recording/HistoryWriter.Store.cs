@@ -14,10 +14,14 @@ internal sealed partial class HistoryWriter
     private long? _session;
     private DateTimeOffset _lastMark;
 
-    /// <summary>Stores the batch's rows; returns the connection to keep (null after a failure, so the next try reopens).</summary>
+    /// <summary>
+    /// Stores the batch's rows and moves the session's end to now; returns the connection to keep (null after a failure,
+    /// so the next try reopens). A batch without rows is skipped while the last mark is recent, unless a flush asked for
+    /// it: a flush leaves the session's end at the flush's time, whenever the loop last woke before it.
+    /// </summary>
     private SqliteConnection? Store(SqliteConnection? connection, Batch batch, bool stopping)
     {
-        if (batch.Rows.Count == 0 && !stopping && _session is not null && _time.GetUtcNow() - _lastMark < IdleMark)
+        if (batch.Rows.Count == 0 && batch.Markers.Count == 0 && !stopping && _session is not null && _time.GetUtcNow() - _lastMark < IdleMark)
         {
             return connection;
         }

@@ -71,6 +71,24 @@ public sealed class HistoryReaderTests
     }
 
     [Fact]
+    public async Task Sessions_FlushLessThanAMinuteAfterTheLastMark_EndsTheSpanAtTheFlush()
+    {
+        // The writer's loop may wake on its own during a clock jump and mark the session then (08:04:17 here); a flush
+        // 43 s later must still move the end to its own time, though the idle mark (once a minute) is not due.
+        await using var history = new HistoryFixture();
+        using var recording = history.Record();
+        var start = history.Time.GetUtcNow();
+        history.Time.Advance(TimeSpan.FromSeconds(257));
+        await history.Historian.FlushAsync();
+        history.Time.Advance(TimeSpan.FromSeconds(43));
+        await history.Historian.FlushAsync();
+
+        var spans = history.Historian.Reader.Sessions(start.AddHours(-1), start.AddHours(1));
+
+        spans.Should().ContainSingle().Which.To.Should().Be(start.AddMinutes(5));
+    }
+
+    [Fact]
     public async Task Audit_WriteAndStop_ReadBackAsRecorded()
     {
         await using var history = new HistoryFixture();
