@@ -20,8 +20,8 @@ internal static class DefinePart
         var lenWord = ItemPart.LengthWord(l);
         var groupBytes = 4 * HandlerShape.GroupSlots;
         yield return Label(Labels.DefineList, "05 DEFINE LIST");
-        yield return Always("DEFINE LIST: the old list is gone", $"N = 0, the copy not valid, whatever follows. AC0 = P MOD {groupBytes}.",
-            Op("MOVB", "0", l.B(l.N)), Op("R", l.FlagBit(Layout.CopyValid), "1"), Op("MOVW", l.W(l.Temp), "AC0"),
+        yield return Always("DEFINE LIST: the old list is gone", $"N = 0, the copy not valid, whatever follows. P = count - 8 in TEMP; AC0 = P MOD {groupBytes}.",
+            Op("MOVB", "0", l.B(l.N)), Op("R", l.FlagBit(Layout.CopyValid), "1"), Op("BTI", l.B(0), l.W(l.Temp)), Op("-I", Dec(Limits.RequestBytes(0)), l.W(l.Temp)), Op("MOVW", l.W(l.Temp), "AC0"),
             Op("ANDW", Dec(groupBytes - 1), "AC0"));
         yield return Refusal.If(l, "DEFINE LIST: whole groups", $"P 0 or not a multiple of {groupBytes}: 84 (P <= 4 x LIST_ITEMS as MAX_REQUEST = 4 x LIST_ITEMS + 8).",
             ReplyStatus.BadLength, Op("LDW=", l.W(l.Temp), "0"), Op("OW<>", "AC0", "0"));
@@ -34,9 +34,7 @@ internal static class DefinePart
         yield return Always("DEFINE LIST: the item", "AC2 = its AREA; its LENGTH (fourth byte) kept in COUNT till its slot is stored.",
             Op("MOVD", l.Dw(l.Walk), "AC2"), Op("MOVD", "AC2", "AC1"), Op("+D", "3", "AC1"), Op("MOVB", "*AC1", l.B(l.Count)));
         yield return Refusal.If(l, "DEFINE LIST: LENGTH 1 to 4", "84.", ReplyStatus.BadLength, Op("LDB=", l.B(l.Count), "0"), Op("OB>", l.B(l.Count), Dec(HandlerShape.ItemBytes)));
-        yield return JumpIf("DEFINE LIST: check the item", "Through label 20, back at label 35.", Labels.ItemCheck, Op("LD", "SM0.0"));
-        yield return Label(Labels.DefineChecked, "DEFINE LIST: item checked");
-        yield return ReturnIf("DEFINE LIST: stored next scan", "Its first byte (AC3) waits in LAST (free till the reply).", Op("LD", "SM0.0"), Op("MOVD", "AC3", l.Dw(l.Last)), l.Go(Phase.DefineStore));
+        yield return JumpIf("DEFINE LIST: check the item", "Through label 20, which leaves its first byte in LAST (free till the reply) and goes on in phase DefineStore.", Labels.ItemCheck, Op("LD", "SM0.0"));
         yield return Label(Labels.DefineStore, "phase DefineStore: the slot");
         yield return Always(
             "DEFINE LIST: store the slot", "Destination (TAIL), source (LAST), length; TAIL on by the length; the next slot and item.",

@@ -7,7 +7,7 @@ namespace OperatorPanel.StlGen.V3;
 
 /// <summary>
 /// Phase Dispatch, the scan after the request's check passed (docs/protocol.md section 4, steps 3-4): CMD, the payload
-/// length P, then one test per command, the fullest dispatch first (the item commands), with P checked there when the command has one
+/// length P, then one test per command, the fullest dispatch first (WRITE, then the other item commands), with P checked there when the command has one
 /// length (85 otherwise, like an unknown command). A refused request sets STATUS 82-87 and replies without payload
 /// (label 2). A command that has its payload ready hands over to phase Reply for the next scan.
 /// </summary>
@@ -18,20 +18,20 @@ internal static class DispatchPart
         var l = c.Layout;
         yield return Label(Labels.Dispatch, "the request's command");
         yield return Always(
-            "Request: CMD and P", "CMD = SEQCMD's low 4 bits; STATUS = 80 for now; P = count - 8; AC2 at byte 5, where an item command's item starts.",
+            "Request: CMD", "CMD = SEQCMD's low 4 bits; STATUS = 80 for now; AC2 at byte 5, where an item command's item starts. The payload length P = count - 8 is tested as the count (R byte 0 = LEN, P + 8): this is the fullest scan, and only DEFINE LIST needs P as a number.",
             Op("MOVB", l.B(4), l.B(l.Cmd)), Op("ANDB", "16#0F", l.B(l.Cmd)), Op("MOVB", Hex(ReplyStatus.Ok), l.B(l.Status)),
-            Op("BTI", l.B(0), l.W(l.Temp)), Op("-I", "8", l.W(l.Temp)), Op("MOVD", l.Ptr(5), "AC2"));
+            Op("MOVD", l.Ptr(5), "AC2"));
         if (c.HasList)
         {
             yield return JumpIf(
                 $"Commands {(byte)Command.ReadList:D2} {Command.ReadList}, {(byte)Command.ReadListFull:D2} {Command.ReadListFull}",
-                $"The polling's commands first. CMD 6 or 7 (0110, 0111: bit 3 clear, bits 2 and 1 set; CMD is 4 bits) by contacts (0.37 us each, a byte compare 46) and P = 0: label {Labels.ReadList}.",
-                Labels.ReadList, Op("LDN", l.Bit(l.Cmd, 3)), Op("A", l.Bit(l.Cmd, 2)), Op("A", l.Bit(l.Cmd, 1)), Op("AW=", l.W(l.Temp), "0"));
+                $"The polling's commands first. CMD 6 or 7 (0110, 0111: bit 3 clear, bits 2 and 1 set; CMD is 4 bits) by contacts (0.37 us each, a byte compare 46) and P = 0 (count 8): label {Labels.ReadList}.",
+                Labels.ReadList, Op("LDN", l.Bit(l.Cmd, 3)), Op("A", l.Bit(l.Cmd, 2)), Op("A", l.Bit(l.Cmd, 1)), Op("AB=", l.B(0), Dec(Limits.RequestBytes(0))));
         }
 
         var commands = new List<(Command Code, int Label, int? Payload)>
         {
-            (Command.Read, Labels.Read, 4), (Command.Write, Labels.Write, null), (Command.WriteBits, Labels.WriteBits, 5), (Command.Identify, Labels.Identify, 0),
+            (Command.Write, Labels.Write, null), (Command.Read, Labels.Read, 4), (Command.WriteBits, Labels.WriteBits, 5), (Command.Identify, Labels.Identify, 0),
         };
         if (c.HasList)
         {
@@ -49,7 +49,7 @@ internal static class DispatchPart
                 .Op("LDB=", l.B(l.Cmd), Dec(code));
             if (payload is { } length)
             {
-                net.Op("AW=", l.W(l.Temp), Dec(length));
+                net.Op("AB=", l.B(0), Dec(Limits.RequestBytes(length)));
             }
 
             yield return net.Op("JMP", Dec(label)).Build();
