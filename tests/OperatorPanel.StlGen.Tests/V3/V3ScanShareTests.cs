@@ -1,5 +1,5 @@
-using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Protocol.V3;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Handlers;
