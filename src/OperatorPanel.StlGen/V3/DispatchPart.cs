@@ -86,7 +86,9 @@ internal static class DispatchPart
     {
         var l = c.Layout;
         yield return Label(Labels.Stop, "08 STOP");
-        yield return Refusal.If(l, "STOP: \"STOP\"", "Any other 4 bytes: 86.", ReplyStatus.BadParameter, Op("LDD<>", l.Dw(5), "16#53544F50"));
-        yield return JumpIf("STOP: reply", $"80, no payload; the CPU goes to STOP when the reply is out ({c.Names.Transmit}).", Labels.ErrorReply, Op("LD", "SM0.0"));
+        // The reply without payload (label 2) follows these networks (Builder): refused or not, STOP goes on there
+        // without a jump.
+        yield return new NetworkBuilder("STOP: \"STOP\"", $"Any other 4 bytes: 86. Either way a reply without payload, label 2 next; after 80 the CPU goes to STOP when the reply is out ({c.Names.Transmit}).")
+            .Op("LDD<>", l.Dw(5), "16#53544F50").Op("MOVB", Hex(ReplyStatus.BadParameter), l.B(l.Status)).Build();
     }
 }

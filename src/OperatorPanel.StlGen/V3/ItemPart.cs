@@ -96,12 +96,11 @@ internal static class ItemPart
         yield return Label(Labels.MoveData, "the data");
     }
 
-    /// <summary>Phase Move: the write checks; WRITE's data, READ's data or WRITE's read-back, or WRITE BITS' AND/OR; then phase Reply.</summary>
+    /// <summary>Phase Move (its networks follow OP_PANEL's phase tests, no label): the write checks; WRITE's data, READ's data or WRITE's read-back, or WRITE BITS' AND/OR; then phase Reply.</summary>
     public static IEnumerable<StlNetwork> Move(Context c)
     {
         var l = c.Layout;
         var target = "*" + l.Dw(l.Last);
-        yield return Label(Labels.Move, "phase Move: the data");
         foreach (var network in Writable(c))
         {
             yield return network;

@@ -16,7 +16,6 @@ internal static class Labels
     public const int DefineList = 15;
     public const int Stop = 18;
     public const int ItemCheck = 20;
-    public const int Move = 34;
     public const int MoveData = 33;
     public const int DefineItem = 37;
     public const int DefineStore = 38;
