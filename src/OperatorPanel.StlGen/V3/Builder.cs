@@ -31,14 +31,17 @@ internal static class Builder
             panel.AddRange(ListPart.Networks(c));
         }
 
+        panel.Add(Label(Labels.Silence, "silence"));
+        panel.Add(ReturnIf("Silence", "No reply: receive the next request.", Op("LD", "SM0.0"), l.Done(), Op("RCV", l.B(0), c.PortOperand)));
+
+        // From here on each part falls on into the next without a jump: STOP into the reply without payload (label 2),
+        // the reply's head into the send of what is ready (label 98), the last network of OP_PANEL.
         if (c.HasStop)
         {
-            panel.AddRange(DispatchPart.Stop(c)); // falls on into ReplyHead's label 2
+            panel.AddRange(DispatchPart.Stop(c));
         }
 
         panel.AddRange(CheckPart.ReplyHead(c));
-        panel.Add(Label(Labels.Silence, "silence"));
-        panel.Add(ReturnIf("Silence", "No reply: receive the next request.", Op("LD", "SM0.0"), l.Done(), Op("RCV", l.B(0), c.PortOperand)));
         if (c.SendsInChunks)
         {
             panel.Add(Label(Labels.Publish, "send what is ready"));

@@ -99,7 +99,7 @@ internal static class CheckPart
                 "Reply: without payload, whole with its check",
                 "9 bytes: nothing ready now (COVERED = SENT), so they leave in one XMT with the check (one transmit interrupt less); the check's first double word in this scan (the head's scan has room, the check's has the XMT).")
             .Op("LDW=", l.W(l.Temp), "0").Op("MOVD", l.Ptr(0), l.Dw(l.Covered)).Op("MOVD", l.Ptr(1), "AC1").Op("MOVD", l.Ptr(5), "AC2").Op("JMP", Dec(Labels.CheckNext)).Build();
-        yield return JumpIf("Reply: send what is ready", string.Empty, Labels.Publish, Op("LD", "SM0.0"));
+        // Then label 98, the send of what is ready, which follows (Builder).
     }
 
     /// <summary>LEN, STATUS and REQCHECK after '&lt;'; AC2 and END at the check's place (R byte 6 + P), zeroed.</summary>
