@@ -55,6 +55,11 @@ internal static class GenerateView
         cli.Out.WriteLine(stats.Compact
             ? "leaves whole, in one XMT, when its check is done):"
             : "leaves in chunks meanwhile, from the first pass of its check on):");
+        if (stats.Protocol == 3)
+        {
+            cli.Out.WriteLine("READ, WRITE and WRITE BITS are run on an item in each of I, Q, M, V and SM; their rows show the slowest, named.");
+        }
+
         var width = measured.Max(m => m.Name.Length);
         var unit = stats.Protocol == 3 ? "bytes" : "chars";
         cli.Out.WriteLine($"  {"request".PadRight(width)}  {unit} in -> out  instructions  total ms  worst interrupt ms  worst scan ms  scans");
