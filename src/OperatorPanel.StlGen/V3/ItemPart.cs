@@ -52,7 +52,7 @@ internal static class ItemPart
         // taken or not, a box without power flow 1 us).
         yield return Always("Item: the rest next scan", "LAST = the item's first byte; READ's data, or the write checks and the write (phase Move).", Op("MOVD", "AC3", l.Dw(l.Last)), l.Go(Phase.Move));
         yield return new NetworkBuilder("Item: DEFINE LIST", "Its slot is stored next scan (phase DefineStore), from LAST.")
-            .Op("LDB=", l.B(l.Cmd), Dec(Command.DefineList)).Op(l.Go(Phase.DefineStore).Item1, l.Go(Phase.DefineStore).Item2).Build();
+            .Op("LDB=", l.B(l.Cmd), Dec(Command.DefineList)).Ops([l.Go(Phase.DefineStore)]).Build();
         yield return ReturnIf("Item: checked", string.Empty, Op("LD", "SM0.0"));
     }
 
@@ -76,7 +76,7 @@ internal static class ItemPart
     private static IEnumerable<StlNetwork> Writable(Context c)
     {
         var l = c.Layout;
-        yield return JumpIf("Move: READ", "No write checks.", Labels.MoveData, Op("LDB=", l.B(l.Cmd), Dec(Command.Read)));
+        yield return JumpIf("Phase Move: READ", "Phase Move, the only one left after the tests above, starts here (no test, no label). READ needs no write checks.", Labels.MoveData, Op("LDB=", l.B(l.Cmd), Dec(Command.Read)));
         var area = l.B(5);
         var locked = new[] { (1, "I"), (2, "Q"), (3, "M"), (4, "V"), (5, "SM") }.Where(a => !c.MayWrite(a.Item1)).ToList();
         var net = new NetworkBuilder($"Writable: not {string.Join(", ", locked.Select(a => a.Item2))}", "I and SM never, the rest as the write mask says: 83.");
