@@ -108,7 +108,7 @@ public sealed record HandlerSize(int Instructions, int Networks, CpuProfile Cpu,
                 .Select(p => Text($"{p.Name} {p.ProgramBytes} bytes")).ToList();
             var largerCpu = larger.Count == 0 ? string.Empty : $"use a CPU with more program memory ({string.Join(", ", larger)}), or ";
             var compact = CompactInstructions is { } n
-                ? Text($"use the compact handler (--compact, or \"compact\": true in the project: IDENTIFY, READ, WRITE, WRITE BITS; {n} instructions, estimated {n * LowBytesPerInstruction}-{n * HighBytesPerInstruction} bytes), ")
+                ? Text($"use the compact handler (the wizard's \"Compact handler\", \"compact\": true in the project or --compact: IDENTIFY, READ, WRITE, WRITE BITS; {n} instructions, estimated {n * LowBytesPerInstruction}-{n * HighBytesPerInstruction} bytes), ")
                 : string.Empty;
             return compact + largerCpu + "reach this PLC over PPI (\"protocol\": \"ppi\" in the project), which needs no program in the PLC";
         }

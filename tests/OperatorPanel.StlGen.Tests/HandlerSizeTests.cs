@@ -60,7 +60,7 @@ public sealed class HandlerSizeTests
 
         full.CompactInstructions.Should().Be(compact.Instructions);
         full.WarningAdvice.Should().Contain(
-            $"where they do not fit together, use the compact handler (--compact, or \"compact\": true in the project: "
+            $"where they do not fit together, use the compact handler (the wizard's \"Compact handler\", \"compact\": true in the project or --compact: "
             + $"IDENTIFY, READ, WRITE, WRITE BITS; {compact.Instructions} instructions, estimated {compact.LowBytes}-{compact.HighBytes} bytes), "
             + "use a CPU with more program memory");
         compact.Warning.Should().BeNull("the compact handler fits a CPU 221's half");

@@ -38,7 +38,7 @@ public sealed class GenerateSizeTests : IDisposable
         var lines = run.Error.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries);
         lines.Should().HaveCount(3);
         lines[0].Should().StartWith("opanel: warning STL050 the handler may leave too little room on the CPU 221: its ");
-        lines[2].Should().MatchRegex(@"^opanel: use the compact handler \(--compact, or ""compact"": true in the project: IDENTIFY, READ, WRITE, WRITE BITS; 2\d\d instructions, estimated \d+-\d+ bytes\), use a CPU");
+        lines[2].Should().MatchRegex(@"^opanel: use the compact handler \(the wizard's ""Compact handler"", ""compact"": true in the project or --compact: IDENTIFY, READ, WRITE, WRITE BITS; 2\d\d instructions, estimated \d+-\d+ bytes\), use a CPU");
         lines.Should().OnlyContain(l => l.Length <= 400);
     }
 

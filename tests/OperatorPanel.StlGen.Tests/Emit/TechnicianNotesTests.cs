@@ -31,7 +31,7 @@ public sealed class TechnicianNotesTests
         notes.Should().Contain("               the panel cannot write there either (refused, 83). --merge checks an exported program for these");
         notes.Should().Contain("  A request ends 4 ms after its last character (the receive's inter-character timer, SMW92); the receive");
         notes.Should().NotContain(l => l.Contains("READ CHANGES", StringComparison.Ordinal) || l.Contains("CRC", StringComparison.Ordinal) || l.Contains("The compact handler", StringComparison.Ordinal));
-        notes.Should().Contain(l => l.Contains("use the compact handler (--compact", StringComparison.Ordinal), "the size warning offers it first");
+        notes.Should().Contain(l => l.Contains("use the compact handler (the wizard", StringComparison.Ordinal), "the size warning offers it first");
     }
 
     [Fact]
