@@ -16,13 +16,19 @@ public sealed record HandlerSetup
     /// <summary>Q, M and V writable (bits 2-4).</summary>
     public const byte DefaultWriteMask = 0x1C;
 
+    /// <summary>
+    /// END_TIMEOUT_MS a generated handler has at 9600 8N1 by default (docs/protocol.md section 1.5: the cable's 4 ms
+    /// turnaround over one character + 2 ms), so the reference answers IDENTIFY like one.
+    /// </summary>
+    public const byte DefaultEndTimeoutMs = 4;
+
     public HandlerSetup(
         Station station,
         CpuProfile cpu,
         HandlerShape? shape = null,
         int port = 0,
         byte writeMask = DefaultWriteMask,
-        byte endTimeoutMs = 3,
+        byte endTimeoutMs = DefaultEndTimeoutMs,
         bool allowStop = false,
         int? vFirst = null)
     {
