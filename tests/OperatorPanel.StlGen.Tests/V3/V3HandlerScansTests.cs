@@ -1,10 +1,7 @@
-using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Protocol.V3;
-using OperatorPanel.Core.Transport;
 using OperatorPanel.Simulator.Handlers;
-using OperatorPanel.Simulator.Stl.Freeport;
 using OperatorPanel.StlGen.Options;
 
 namespace OperatorPanel.StlGen.Tests.V3;
@@ -23,12 +20,7 @@ public sealed class V3HandlerScansTests
     public void GeneratedFullHandler_EveryMeasuredRequest_TakesNoMoreScansThanThePanelAllows(CpuModel model)
     {
         var options = new HandlerOptions { Cpu = CpuProfiles.For(model), Station = 2, AllowStop = true, Protocol = 3 };
-        var generated = HandlerGenerator.Generate(options);
-        generated.Ok.Should().BeTrue(string.Join("; ", generated.Diagnostics));
-
-        V3Measurement.TryMeasure(
-            generated.AwlText, options.Cpu, 0, new Station(2), new LineSettings(options.BaudRate, Parity.None, 8), HandlerShape.Full,
-            out var requests, out var error).Should().BeTrue(error);
+        var requests = V3Measured.Requests(options);
 
         var measured = requests.Where(r => r.Name != V3Measurement.IdleName).ToList();
         measured.Select(r => CommandOf(r.Name)).Should().Contain([Command.Identify, Command.Read, Command.Write, Command.WriteBits,

@@ -1,9 +1,4 @@
-using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
-using OperatorPanel.Core.Protocol.V3;
-using OperatorPanel.Core.Transport;
-using OperatorPanel.Simulator.Handlers;
-using OperatorPanel.Simulator.Stl.Freeport;
 using OperatorPanel.StlGen.Options;
 
 namespace OperatorPanel.StlGen.Tests.V3;
@@ -27,12 +22,7 @@ public sealed class V3ScanShareTests
     public void EveryMeasuredRequest_InItsSlowestArea_AddsAtMostTwoMillisecondsToAScan(CpuModel model, bool compact)
     {
         var options = new HandlerOptions { Cpu = CpuProfiles.For(model), Station = 2, AllowStop = true, Protocol = 3, Compact = compact };
-        var generated = HandlerGenerator.Generate(options);
-        generated.Ok.Should().BeTrue(string.Join("; ", generated.Diagnostics));
-
-        V3Measurement.TryMeasure(
-            generated.AwlText, options.Cpu, 0, new Station(2), new LineSettings(options.BaudRate, Parity.None, 8), compact ? HandlerShape.Compact : HandlerShape.Full,
-            out var requests, out var error).Should().BeTrue(error);
+        var requests = V3Measured.Requests(options);
 
         requests.Where(r => r.Name.StartsWith("READ 16", StringComparison.Ordinal) || r.Name.StartsWith("WRITE", StringComparison.Ordinal))
             .Select(r => r.Name).Should().HaveCount(3).And.OnlyContain(n => System.Text.RegularExpressions.Regex.IsMatch(n, @", (I|Q|M|V|SM)B\d+$"), "each item row names the area it was slowest in");
