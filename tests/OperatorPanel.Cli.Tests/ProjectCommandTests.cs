@@ -1,6 +1,7 @@
 using System.Text.Json;
 using OperatorPanel.Cli;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.Cli.Tests;
 
@@ -55,7 +56,23 @@ public sealed class ProjectCommandTests : IDisposable
         var run = Run("project", "new", "--cpu", "226", "--station", "7", "--port", "/dev/ttyUSB0", "--name", "Palletiser", "-o", file);
 
         run.Code.Should().Be(0);
-        run.Out.Should().Contain("project   \"Palletiser\", 1 station").And.Contain("station   7 \"PLC 7\": CPU 226 on /dev/ttyUSB0 9600 8N1 cable; 24 inputs, 16 outputs");
+        run.Out.Should().Contain("project   \"Palletiser\", 1 station").And.Contain("station   7 \"PLC 7\": CPU 226 on /dev/ttyUSB0 9600 8N1 cable, full handler; 24 inputs, 16 outputs");
+    }
+
+    [Theory]
+    [InlineData("221", true)]
+    [InlineData("222", true)]
+    [InlineData("224", false)]
+    [InlineData("226", false)]
+    public void New_Cpu221And222_StartWithTheCompactHandler(string cpu, bool compact)
+    {
+        var file = FileIn("line.opproj");
+
+        var run = Run("project", "new", "--cpu", cpu, "-o", file);
+
+        run.Code.Should().Be(0, run.Error);
+        run.Out.Should().Contain(compact ? "cable, compact handler;" : "cable, full handler;");
+        ProjectFile.Load(file).Project!.Stations[0].Compact.Should().Be(compact);
     }
 
     [Fact]

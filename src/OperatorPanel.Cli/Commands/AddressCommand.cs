@@ -17,13 +17,12 @@ internal static class AddressCommand
         var text = new Argument<string>("address") { Description = "An S7-200 address such as I0.3, VB100, VW200, VD300, SMB30, AIW0, T37 (a timer's current value)" };
         var cpu = CpuOptions.Model();
         var revision = CpuOptions.Revision();
-        var plcPort = new Option<int>("--plc-port") { Description = "The PLC port the handler serves, 0 or 1 (its port's SMB bytes are the handler's); default 0" };
         var command = new Command(
             "address",
             "Check an address against a CPU: canonical form, area, byte, bit, width, what the Freeport and the PPI link do with it, and whether the "
-            + "panel may write it (the CPU's read-only bytes, and the bytes a handler generated with the default settings keeps for itself)")
+            + "panel may write it (the CPU's read-only bytes, SM, which the handler never writes, and the V bytes a handler generated with the default settings keeps for itself)")
         {
-            text, cpu, revision, plcPort,
+            text, cpu, revision,
         };
         command.SetAction(parse =>
         {
@@ -33,18 +32,12 @@ internal static class AddressCommand
                 return cli.Fail(ExitCodes.BadInput, cpuError);
             }
 
-            var port = parse.GetValue(plcPort);
-            if (port is not (0 or 1) || port >= profile.CommunicationPorts)
-            {
-                return cli.Fail(ExitCodes.BadInput, $"--plc-port {port}: {profile.Name} has port{(profile.CommunicationPorts == 1 ? " 0 only" : "s 0 and 1")}");
-            }
-
-            return Describe(cli, parse.GetValue(text), profile, port);
+            return Describe(cli, parse.GetValue(text), profile);
         });
         return command;
     }
 
-    private static int Describe(CliContext cli, string? text, CpuProfile cpu, int port)
+    private static int Describe(CliContext cli, string? text, CpuProfile cpu)
     {
         if (!PlcAddress.TryParse(text, out var address, out var parseError))
         {
@@ -57,7 +50,7 @@ internal static class AddressCommand
         }
 
         var writeError = LinkAreas.Refusal(address, LinkProtocol.Freeport, cpu, AddressUse.Write)
-            ?? HandlerProtection.Refusal(address, cpu, port);
+            ?? HandlerProtection.Refusal(address, cpu);
         var ppiWriteError = LinkAreas.Refusal(address, LinkProtocol.Ppi, cpu, AddressUse.Write);
         var view = new AddressView(
             address.ToString(),

@@ -22,7 +22,8 @@ internal sealed class HandlerOptionSet
     public Option<bool> Compact { get; } = new("--compact")
     {
         Description = "The compact handler of protocol 3 (IDENTIFY, READ, WRITE, WRITE BITS; no list, no STOP): the choice for a CPU 221 or 222 "
-            + "(default: the station's \"compact\" in the project, off unless set)",
+            + "(default: the station's \"compact\" in the project, which opanel project new and the wizard set for those CPUs; "
+            + "--compact false gives such a station the full handler, as does --protocol 2)",
     };
 
     public Option<int> PlcPort { get; } = new("--plc-port") { Description = "The PLC's port 0 or 1 (port 1 on CPU 224XP and 226)" };
@@ -77,16 +78,20 @@ internal sealed class HandlerOptionSet
 
     /// <summary>
     /// <paramref name="station"/> (CPU, address, line settings, "allowStop" and "compact" from the project or --cpu/--station)
-    /// with the options given; --allow-stop adds STOP and --compact the compact shape, neither removes a project's.
-    /// --compact implies protocol 3; the options only protocol 2 has are refused with protocol 3.
+    /// with the options given; --allow-stop adds STOP and does not remove a project's. --compact (true or false) wins over
+    /// the project's "compact", which a CPU 221 or 222 gets by default; --compact implies protocol 3, and an explicit
+    /// --protocol 2 leaves the project's "compact" aside (protocol 2 has one shape). The options only protocol 2 has are
+    /// refused with protocol 3.
     /// </summary>
     public bool TryApply(ParseResult parse, HandlerOptions station, [NotNullWhen(true)] out HandlerOptions? options, [NotNullWhen(false)] out string? error)
     {
         ArgumentNullException.ThrowIfNull(parse);
         ArgumentNullException.ThrowIfNull(station);
         options = null;
-        var compact = station.Compact || parse.GetValue(Compact);
         var given = parse.GetResult(Protocol) is { Implicit: false };
+        var compact = parse.GetResult(Compact) is { Implicit: false }
+            ? parse.GetValue(Compact)
+            : station.Compact && !(given && parse.GetValue(Protocol) == 2);
         var protocol = compact && !given ? 3 : parse.GetValue(Protocol);
         if (protocol is not (2 or 3))
         {
@@ -96,7 +101,7 @@ internal sealed class HandlerOptionSet
 
         if (protocol == 2 && compact)
         {
-            error = "--compact is a protocol 3 handler: leave out --protocol 2 (or \"compact\" in the project)";
+            error = "--compact is a protocol 3 handler: leave out --protocol 2 (or --compact)";
             return false;
         }
 

@@ -19,7 +19,7 @@ internal sealed record ProjectSummaryView(string Name, string Refresh, int Minim
         o.WriteLine($"project   \"{Name}\", {Count(Stations.Count, "station")}, {refresh}");
         foreach (var s in Stations)
         {
-            o.WriteLine($"station   {s.Address} \"{s.Name}\": {s.Cpu} on {s.Port} {s.Line}; "
+            o.WriteLine($"station   {s.Address} \"{s.Name}\": {s.Cpu} on {s.Port} {s.Line}{(s.Handler == "none" ? "" : $", {s.Handler} handler")}; "
                 + $"{Count(s.Inputs, "input")}, {Count(s.Outputs, "output")}, {Count(s.Tags, "tag")}, {Count(s.Alarms, "alarm")}");
         }
     }
@@ -27,7 +27,8 @@ internal sealed record ProjectSummaryView(string Name, string Refresh, int Minim
     private static string Count(int n, string noun) => n == 1 ? $"1 {noun}" : $"{n} {noun}s";
 }
 
-internal sealed record StationSummaryView(string Name, int Address, string Cpu, string Port, string Line, int Inputs, int Outputs, int Tags, int Alarms)
+/// <summary>One station of the summary; <see cref="Handler"/> is the handler <c>opanel generate</c> writes for it: "full", "compact" or "none" (PPI).</summary>
+internal sealed record StationSummaryView(string Name, int Address, string Cpu, string Port, string Line, string Handler, int Inputs, int Outputs, int Tags, int Alarms)
 {
     public static StationSummaryView From(ProjectStation s) => new(
         s.Name,
@@ -35,6 +36,7 @@ internal sealed record StationSummaryView(string Name, int Address, string Cpu, 
         s.Cpu.DisplayName,
         s.Link.PortName,
         Describe(s.Link),
+        s.Link.Protocol == LinkProtocol.Ppi ? "none" : s.Compact ? "compact" : "full",
         s.Inputs.Length,
         s.Outputs.Length,
         s.Tags.Length,
@@ -43,4 +45,5 @@ internal sealed record StationSummaryView(string Name, int Address, string Cpu, 
     /// <summary>"9600 8N1 cable", as technicians write line settings.</summary>
     private static string Describe(SerialSettings link) =>
         $"{link.LineText} {(link.Kind == LinkKind.Cable ? "cable" : "radio module")}{(link.Protocol == LinkProtocol.Ppi ? ", PPI (no handler)" : "")}";
+
 }

@@ -54,7 +54,8 @@ internal sealed class LinkOptionSet
 
     public Option<int> ScanMs { get; } = new("--scan-ms")
     {
-        Description = "Longest PLC scan time in ms the reply timeout allows for (default 100); raise it for long programs",
+        Description = "Longest PLC scan time in ms the reply timeout allows for (default 100); raise it for long programs: above 100 ms every scan the handler takes "
+            + "for the request is allowed that long (a READ takes about 10 scans; an IDENTIFY's longest scan raises it too)",
         DefaultValueFactory = _ => 100,
     };
 

@@ -62,6 +62,14 @@ internal sealed class LinkSession : IAsyncDisposable
     {
         var options = V3LinkOptions.For(serial);
         options = scanAllowance is { } scan ? options with { ScanAllowance = scan } : options;
+
+        // Raised above the default for a long program: each of the handler's scans for a request may take that long too
+        // (docs/protocol.md section 7).
+        if (scanAllowance is { } slow && slow > V3LinkOptions.For(serial).ScanAllowance && slow > options.HandlerScanAllowance)
+        {
+            options = options with { HandlerScanAllowance = slow };
+        }
+
         return demo ? options with { ScanAllowance = options.ScanAllowance + DemoLine.HostAllowance } : options;
     }
 

@@ -78,7 +78,7 @@ internal sealed class WatchSession : IAsyncDisposable
     /// <summary>
     /// Waits for one full cycle of every bus: in continuous mode the next regular one, on demand one asked for now.
     /// </summary>
-    public Task RefreshAsync(CancellationToken cancellationToken) => Line.RefreshAsync(cancellationToken);
+    public Task RefreshAsync(CancellationToken cancellationToken) => Line.NextCycleAsync(cancellationToken);
 
     public async ValueTask DisposeAsync()
     {

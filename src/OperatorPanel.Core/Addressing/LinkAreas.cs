@@ -21,8 +21,11 @@ public static class LinkAreas
     /// <summary>The areas the Freeport link reads, as messages name them.</summary>
     public const string FreeportServed = "I, Q, M, V and SM";
 
-    /// <summary>The areas the Freeport link writes (the handler's WRITE_MASK never has I), as messages name them.</summary>
-    public const string FreeportWritten = "Q, M, V and SM";
+    /// <summary>
+    /// The areas the Freeport link writes, as messages name them: the protocol 3 handler writes Q, M and V as its write
+    /// mask allows and never I or SM (docs/protocol.md section 2, WRITE: 83).
+    /// </summary>
+    public const string FreeportWritten = "Q, M and V";
 
     /// <summary>The areas the PPI link reads, as messages name them.</summary>
     public const string PpiServed = "I, Q, M, V, SM, S, AIW, AQW, T and C";
@@ -43,8 +46,8 @@ public static class LinkAreas
 
     /// <summary>True when <paramref name="link"/> writes the area (the CPU's own read-only bytes aside: <see cref="AddressRules"/>).</summary>
     public static bool Writes(LinkProtocol link, MemoryArea area) =>
-        area is MemoryArea.Q or MemoryArea.M or MemoryArea.V or MemoryArea.SM
-        || (link == LinkProtocol.Ppi && area is MemoryArea.S or MemoryArea.AQ);
+        area is MemoryArea.Q or MemoryArea.M or MemoryArea.V
+        || (link == LinkProtocol.Ppi && area is MemoryArea.SM or MemoryArea.S or MemoryArea.AQ);
 
     /// <summary>Null when <paramref name="link"/> reads <paramref name="address"/>; otherwise why not and what to do instead.</summary>
     public static string? ReadRefusal(PlcAddress address, LinkProtocol link) =>
@@ -77,6 +80,9 @@ public static class LinkAreas
         MemoryArea.T or MemoryArea.C =>
             $"{address}: the panel reads {(address.Area == MemoryArea.T ? "timer" : "counter")} current values but never writes them: no source says how a CPU takes that write over PPI, and the Freeport handler does not reach them",
         _ when Writes(link, address.Area) => null,
+        MemoryArea.SM when link == LinkProtocol.Freeport =>
+            $"{address}: the Freeport handler never writes SM (it refuses with 83: the CPU's system bytes and the port's receive set-up are there); "
+            + "write a V byte and let the PLC program copy it, or reach the station over PPI (\"protocol\": \"ppi\")",
         _ => $"{address}: the {Name(link)} link writes only {Written(link).Replace("SM", sm, StringComparison.Ordinal)}",
     };
 

@@ -32,6 +32,13 @@ public sealed record CpuProfile
     /// </summary>
     public required int ProgramBytes { get; init; }
 
+    /// <summary>
+    /// The compact protocol 3 handler is the default offered for this CPU: the CPUs with 4096 bytes of program memory
+    /// (CPU 221, 222), where the full handler's upper size estimate is more than half of it (STL050). The project
+    /// wizard's Link step and <c>opanel project new</c> start from it; the user may choose the full handler.
+    /// </summary>
+    public bool OffersCompactHandler => ProgramBytes <= 4096;
+
     /// <summary>Program memory in bytes without run mode edit (the same as <see cref="ProgramBytes"/> on CPU 221/222 and Early CPUs).</summary>
     public required int ProgramBytesWithoutRunModeEdit { get; init; }
 

@@ -128,6 +128,10 @@ public sealed class Bus : IAsyncDisposable
     public Task<PollResult> RefreshAsync(CancellationToken cancellationToken = default) =>
         Volatile.Read(ref _engine).RequestRefreshAsync(cancellationToken);
 
+    /// <summary>The next cycle without asking for one (<see cref="PollingEngine.NextCycleAsync"/>): the minimum period holds.</summary>
+    public Task<PollResult> NextCycleAsync(CancellationToken cancellationToken = default) =>
+        Volatile.Read(ref _engine).NextCycleAsync(cancellationToken);
+
     /// <summary>A write through the queue, ahead of the next exchange; the outcome is the PLC's read-back, never the request.</summary>
     public Task<WriteOutcome> WriteAsync(WriteRequest request, CancellationToken cancellationToken = default) =>
         Volatile.Read(ref _engine).WriteAsync(request, cancellationToken);

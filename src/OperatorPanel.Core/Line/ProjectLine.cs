@@ -182,9 +182,16 @@ public sealed partial class ProjectLine : IAsyncDisposable
         PushAll();
     }
 
-    /// <summary>One full cycle of every bus: on demand the only way values change; in continuous mode the next regular cycle.</summary>
+    /// <summary>One full cycle of every bus now ("Refresh now"): on demand the only way values change; in continuous mode it does not wait out the minimum period.</summary>
     public Task RefreshAsync(CancellationToken cancellationToken = default) =>
         Task.WhenAll(_buses.Select(b => b.Bus.RefreshAsync(cancellationToken)));
+
+    /// <summary>
+    /// Waits for the next cycle of every bus without asking for one: in continuous mode the next regular cycle (the
+    /// project's minimum period holds), in triggered mode one asked for now.
+    /// </summary>
+    public Task NextCycleAsync(CancellationToken cancellationToken = default) =>
+        Task.WhenAll(_buses.Select(b => b.Bus.NextCycleAsync(cancellationToken)));
 
     /// <summary>
     /// Writes through the station's bus; the outcome is the PLC's read-back, never the request. The write's record names

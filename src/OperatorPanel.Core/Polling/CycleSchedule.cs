@@ -9,6 +9,9 @@ internal sealed class CycleSchedule(WakeSignal wake, TimeProvider time)
 {
     private readonly Lock _gate = new();
     private readonly List<TaskCompletionSource<PollResult>> _waiters = [];
+
+    // Waiting for the next cycle without making it due (a live view following continuous polling).
+    private readonly List<TaskCompletionSource<PollResult>> _followers = [];
     private RefreshMode _mode = RefreshMode.Continuous;
     private TimeSpan _minimumPeriod = TimeSpan.FromMilliseconds(100);
     private DateTimeOffset? _lastStart;
@@ -40,13 +43,31 @@ internal sealed class CycleSchedule(WakeSignal wake, TimeProvider time)
         return waiter.Task;
     }
 
-    /// <summary>A cycle starts now: it serves every refresh request made so far.</summary>
+    /// <summary>
+    /// The next cycle, without asking for it: in continuous mode the next regular one (the minimum period still holds),
+    /// in triggered mode, where no cycle comes unasked, a refresh request. Cancelled when polling stops first.
+    /// </summary>
+    public Task<PollResult> NextCycle(CancellationToken cancellationToken)
+    {
+        var follower = new TaskCompletionSource<PollResult>(TaskCreationOptions.RunContinuationsAsynchronously);
+        cancellationToken.Register(() => follower.TrySetCanceled(cancellationToken));
+        lock (_gate)
+        {
+            (_mode == RefreshMode.OnDemand ? _waiters : _followers).Add(follower);
+        }
+
+        wake.Set();
+        return follower.Task;
+    }
+
+    /// <summary>A cycle starts now: it serves every refresh request and every wait for the next cycle made so far.</summary>
     public List<TaskCompletionSource<PollResult>> Start(DateTimeOffset now)
     {
         lock (_gate)
         {
-            List<TaskCompletionSource<PollResult>> waiters = [.. _waiters];
+            List<TaskCompletionSource<PollResult>> waiters = [.. _waiters, .. _followers];
             _waiters.Clear();
+            _followers.Clear();
             _lastStart = now;
             return waiters;
         }
@@ -58,6 +79,7 @@ internal sealed class CycleSchedule(WakeSignal wake, TimeProvider time)
         lock (_gate)
         {
             _waiters.RemoveAll(w => w.Task.IsCompleted);
+            _followers.RemoveAll(w => w.Task.IsCompleted);
 
             // "Refresh now" means now in either mode; in continuous mode it does not wait out the minimum period.
             if (_waiters.Count > 0)
@@ -103,6 +125,8 @@ internal sealed class CycleSchedule(WakeSignal wake, TimeProvider time)
         {
             _waiters.ForEach(w => w.TrySetCanceled());
             _waiters.Clear();
+            _followers.ForEach(w => w.TrySetCanceled());
+            _followers.Clear();
         }
     }
 }

@@ -114,10 +114,17 @@ internal sealed partial class PollingEngine
     public void NoteIdentity(IdentifyResponse identity) => _readers.NoteIdentity(identity);
 
     /// <summary>
-    /// Asks for one full cycle and returns its result. In <see cref="RefreshMode.OnDemand"/> this is what makes the
-    /// engine poll; in continuous mode it completes with the next regular cycle. Cancelled when polling stops first.
+    /// Asks for one full cycle now and returns its result ("Refresh now"): in <see cref="RefreshMode.OnDemand"/> this is
+    /// what makes the engine poll; in continuous mode the cycle runs at once, without waiting out the minimum period.
+    /// Cancelled when polling stops first.
     /// </summary>
     public Task<PollResult> RequestRefreshAsync(CancellationToken cancellationToken = default) => _schedule.RequestRefresh(cancellationToken);
+
+    /// <summary>
+    /// The result of the next cycle without asking for one: in continuous mode the next regular cycle (the minimum
+    /// period holds, as for a live view following the polling), in triggered mode a refresh request.
+    /// </summary>
+    public Task<PollResult> NextCycleAsync(CancellationToken cancellationToken = default) => _schedule.NextCycle(cancellationToken);
 
     /// <summary>
     /// Queues a write on the bus's queue and returns its outcome once sent and read back; it goes ahead of the next

@@ -8,7 +8,8 @@ namespace OperatorPanel.Core.Projects;
 
 /// <summary>
 /// A new project for one station: every local digital input and output of the CPU with a placeholder symbol,
-/// no tags and no alarms, 9600 8N1 over a cable, continuous refresh. Valid as it stands; the user renames from there.
+/// no tags and no alarms, 9600 8N1 over a cable, continuous refresh, the compact handler on a CPU 221 or 222 (the
+/// default offered there, <see cref="CpuProfile.OffersCompactHandler"/>). Valid as it stands; the user renames from there.
 /// </summary>
 public static class StarterProject
 {
@@ -25,7 +26,10 @@ public static class StarterProject
             Inputs: LocalBits(MemoryArea.I, cpu.LocalDigitalInputs, "Input", "Local input"),
             Outputs: LocalBits(MemoryArea.Q, cpu.LocalDigitalOutputs, "Output", "Local output"),
             Tags: [],
-            Alarms: []);
+            Alarms: [])
+        {
+            Compact = cpu.OffersCompactHandler,
+        };
         return new PanelProject(name, RefreshSettings.Default, [plc]);
     }
 

@@ -11,8 +11,8 @@ namespace OperatorPanel.Core.Writes;
 internal static class WriteCommand
 {
     /// <summary>
-    /// Checks what can be checked on the PC: the area must be one the link writes, I is never written (the handler's
-    /// WRITE_MASK never has bit 1 set), and with a known CPU the address must pass <see cref="AddressRules.Check"/>.
+    /// Checks what can be checked on the PC: the area must be one the link writes (Q, M and V: the handler never writes
+    /// I or SM, docs/protocol.md section 3, 83), and with a known CPU the address must pass <see cref="AddressRules.Check"/>.
     /// Otherwise the PLC's own NotWritable and AddressOutOfRange replies decide.
     /// </summary>
     public static bool TryBuild(
@@ -25,9 +25,9 @@ internal static class WriteCommand
         plcRequest = null;
         var address = request.Address;
         var error = cpu is null ? null : AddressRules.Check(address, cpu, AddressUse.Write);
-        if (ProtocolAreaExtensions.FromMemoryArea(address.Area) is not { } area || area == ProtocolArea.I)
+        if (LinkAreas.WriteRefusal(address, Transport.LinkProtocol.Freeport, "SM") is { } notWritten)
         {
-            error ??= new AddressError(AddressErrorKind.NotWritable, $"{address}: the Freeport link writes only {LinkAreas.FreeportWritten}");
+            error ??= new AddressError(AddressErrorKind.NotWritable, notWritten);
         }
 
         if (error is not null)

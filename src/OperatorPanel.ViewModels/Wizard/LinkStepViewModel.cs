@@ -33,8 +33,7 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
             if (e.PropertyName == nameof(CpuStepViewModel.Cpu))
             {
                 OnPropertyChanged(nameof(BaudRates));
-                // The compact handler is the default offered for the CPUs with 4096 bytes of program memory.
-                Compact = IsSmallCpu(_cpuStep.Cpu);
+                Compact = _cpuStep.Cpu.OffersCompactHandler;
             }
         };
         RefreshPorts();
@@ -97,8 +96,6 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
 
     /// <summary>A handler only runs on a Freeport bus.</summary>
     public bool CanBeCompact => Protocol == LinkProtocol.Freeport;
-
-    private static bool IsSmallCpu(Core.Cpu.CpuProfile cpu) => cpu.Model is Core.Cpu.CpuModel.Cpu221 or Core.Cpu.CpuModel.Cpu222;
 
     public IReadOnlyList<Parity> Parities { get; } = Enum.GetValues<Parity>();
 

@@ -32,7 +32,7 @@ public sealed class GenerateSizeTests : IDisposable
     [Fact]
     public void Generate_FullV3HandlerOnACpu221_OffersTheCompactHandlerFirstInLinesOfAtMost400Characters()
     {
-        var run = CliRunner.Run("generate", NewProject("221"), "-o", Out);
+        var run = CliRunner.Run("generate", NewProject("221"), "--compact", "false", "-o", Out);
 
         run.ExitCode.Should().Be(0);
         var lines = run.Error.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries);
@@ -92,6 +92,29 @@ public sealed class GenerateSizeTests : IDisposable
         run.Error.Should().StartWith("opanel: warning STL050 the handler may leave too little room on the CPU 226: its 1177 instructions take "
             + "an estimated 4708-8239 bytes, and the upper figure is more than half of the CPU's 16384 bytes of program memory (with run mode edit).")
             .And.NotContain("more program memory");
+    }
+
+    [Theory]
+    [InlineData("221", new string[0], "compact")]
+    [InlineData("222", new string[0], "compact")]
+    [InlineData("221", new[] { "--compact", "false" }, "full")]
+    [InlineData("224", new string[0], "full")]
+    [InlineData("224", new[] { "--compact" }, "compact")]
+    public void GenerateStats_NewProject_GivesTheHandlerItsCpuIsOfferedUnlessCompactSaysOtherwise(string cpu, string[] options, string shape)
+    {
+        var run = CliRunner.Run(["generate", NewProject(cpu), "-o", Out, "--stats", .. options]);
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Should().Contain(shape == "compact" ? "list:                   none (compact handler: READ only)" : "list:                   up to 128 data bytes");
+    }
+
+    [Fact]
+    public void Generate_Protocol2ForACompactProject_WritesTheOnlyShapeProtocol2Has()
+    {
+        var run = CliRunner.Run("generate", NewProject("221"), "--protocol", "2", "-o", Out, "--stats");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Should().Contain("instructions generated: 1177");
     }
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);

@@ -36,7 +36,7 @@ public sealed class SimulateHandlerOptionsTests
     }
 
     [Fact]
-    public async Task Simulate_WritableQ_RefusesAnMWriteWithTheHandlersError03AndConfirmsAQWrite()
+    public async Task Simulate_WritableQ_RefusesAnMWriteWithTheHandlers83AndConfirmsAQWrite()
     {
         using var pty = await SocatPtyPair.StartAsync();
         var simulator = await StartAsync(pty, "--cpu", "224", "--writable", "Q");
@@ -46,7 +46,7 @@ public sealed class SimulateHandlerOptionsTests
         var confirmed = CliRunner.Run(["write", "QB0=7", .. line]);
 
         refused.ExitCode.Should().Be(1);
-        refused.Out.Should().StartWith("MB5      0 -> 7  failed: station 2 refused the write: error 03");
+        refused.Out.Should().StartWith("MB5      0 -> 7  failed: station 2 refused the write: 83");
         confirmed.ExitCode.Should().Be(0, confirmed.Error);
         confirmed.Out.Should().StartWith("QB0      0 -> 7  confirmed");
         (await simulator.Exit).Should().Be(0);

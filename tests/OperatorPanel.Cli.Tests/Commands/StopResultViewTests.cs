@@ -21,7 +21,7 @@ public sealed class StopResultViewTests
             "station 2 not stopped: the reply to STOP was lost (no reply within 120 ms) and the station still answers; send STOP again if still wanted", 2
         },
         { new StopOutcome.NotSent(Two, "COM9 is gone"), "notSent", "station 2: STOP not sent: COM9 is gone", 2 },
-        { new StopOutcome.Refused(Two, "error 06: bad parameter"), "refused", "station 2 refused STOP: error 06: bad parameter", 1 },
+        { new StopOutcome.Refused(Two, "86: bad parameter"), "refused", "station 2 refused STOP: 86: bad parameter", 1 },
         {
             new StopOutcome.Unknown(Two, "no reply within 120 ms", "COM9 is gone"), "unknown",
             "station 2: unknown whether stopped: the reply to STOP was lost (no reply within 120 ms) and the check failed too (COM9 is gone); "

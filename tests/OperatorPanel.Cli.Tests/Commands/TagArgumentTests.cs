@@ -68,8 +68,11 @@ public sealed class TagArgumentTests
     }
 
     [Theory]
-    [InlineData("SMB30", "224", "writable  no: SMB30 is port 0's Freeport control byte, which the handler sets")]
-    [InlineData("VB9900", "226", "writable  no: VB9900 is in the handler's own V bytes VB9812-VB10239")]
+    [InlineData("SMB30", "224", "writable  no: SMB30: the Freeport handler never writes SM (it refuses with 83")]
+    [InlineData("SMB40", "224", "writable  no: SMB40: the Freeport handler never writes SM (it refuses with 83")]
+    [InlineData("VB9634", "226", "writable  no: VB9634 is in the handler's own V bytes VB9634-VB10239 (where generate puts the full handler's")]
+    [InlineData("VW9633", "226", "writable  no: VW9633 is in the handler's own V bytes VB9634-VB10239")]
+    [InlineData("VB9633", "226", "writable  yes")]
     [InlineData("VB100", "226", "writable  yes")]
     public void Address_BytesTheHandlerKeeps_AreNotWritable(string address, string cpu, string line)
     {

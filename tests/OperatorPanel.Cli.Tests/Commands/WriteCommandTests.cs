@@ -43,13 +43,24 @@ public sealed class WriteCommandTests
     }
 
     [Fact]
-    public void Write_ByteTheHandlerProtects_IsRefusedByThePlcWithExitOne()
+    public void Write_SmOverFreeport_IsRefusedBeforeAnythingIsSent()
     {
-        // SMB34 holds the handler's reply delay (docs/protocol-v2.md, error 03): the PC lets it through, the PLC refuses it.
+        // The protocol 3 handler never writes SM (docs/protocol.md section 3, 83): the panel says so without asking it.
         var run = CliRunner.Run("write", "SMB34=9", "--demo");
 
         run.ExitCode.Should().Be(1);
-        run.Out.Should().Contain("SMB34    0 -> 9  failed: station 2 refused the write: error 03: the PLC refuses writes there (inputs, an area without write access, protected SM bytes, or the handler's own V bytes: its buffer and work bytes)");
+        run.Out.Should().BeEmpty();
+        run.Error.Should().Contain("SMB34: the Freeport handler never writes SM (it refuses with 83").And.Contain("nothing written");
+    }
+
+    [Fact]
+    public void Write_TheHandlersOwnVBytes_AreRefusedByThePlcWithExitOne()
+    {
+        // VB8000 is inside the demo CPU 224's full handler (VB7586-VB8191): the PLC refuses it, 83.
+        var run = CliRunner.Run("write", "VB8000=9", "--demo");
+
+        run.ExitCode.Should().Be(1);
+        run.Out.Should().Contain("VB8000   0 -> 9  failed: station 2 refused the write: 83: the PLC refuses writes there (inputs, SM, an area the handler's write mask leaves out, or the handler's own V bytes)");
     }
 
     [Theory]

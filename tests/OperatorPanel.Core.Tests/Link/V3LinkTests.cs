@@ -84,6 +84,23 @@ public sealed class V3LinkTests
         station.Received.Should().HaveCount(1);
     }
 
+    [Theory]
+    [InlineData(10, 0)] // scans shorter than the options' 30 ms allowance change nothing
+    [InlineData(100, 125)] // a 100 ms scan is allowed 125 ms: READ's 9 scans and the one before it
+    public async Task ReplyTimeout_AfterIdentifyReportsItsLongestScan_AllowsEveryScanThatLong(int maxScanMs, int perScanMs)
+    {
+        var identity = new Identity(1, 0x20, 0, 0x0E, 1, 4, 0, 137, 16, 32, 128, 7586, 606, 0x20, 1, 5, 2, (ushort)maxScanMs);
+        var (link, _) = Create(request => [Codec.Encode(new Reply(ReplyStatus.Ok, Codec.RequestCheckOf(request), identity.ToPayload()))]);
+        var before = link.ReplyTimeoutFor(Command.Read, 12);
+
+        (await link.ExchangeAsync(new IdentifyRequest(Two), default)).Response.Should().BeOfType<IdentifyResponse>();
+
+        var after = link.ReplyTimeoutFor(Command.Read, 12);
+        var expected = perScanMs == 0 ? TimeSpan.Zero
+            : (TimeSpan.FromMilliseconds(perScanMs - 30) * V3HandlerScans.For(Command.Read)) + TimeSpan.FromMilliseconds(perScanMs - 100);
+        (after - before).Should().Be(expected);
+    }
+
     [Fact]
     public async Task Exchange_Refusal_IsAnErrorResponseWithV2sCode()
     {

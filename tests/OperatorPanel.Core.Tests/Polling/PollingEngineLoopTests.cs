@@ -53,6 +53,35 @@ public sealed class PollingEngineLoopTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task NextCycle_ContinuousMidPeriod_CompletesWithTheNextRegularCycleAndAsksForNone()
+    {
+        Start();
+        await _clock.WhenTimerScheduledAsync().Guarded();
+
+        var next = _engine.NextCycleAsync();
+        await _clock.WhenTimerScheduledAsync().Guarded();
+
+        next.IsCompleted.Should().BeFalse("the minimum period holds: a live view following the polling must not speed it up");
+        _link.RequestTimes.Should().Equal(PollingTestClock.Start);
+        _clock.Advance(70 * Ms);
+        var result = await next.Guarded();
+        result.Cycle.Should().Be(2);
+        _link.RequestTimes.Should().Equal(PollingTestClock.Start, PollingTestClock.Start.AddMilliseconds(100));
+    }
+
+    [Fact]
+    public async Task NextCycle_OnDemand_AsksForTheCycle()
+    {
+        _engine.Mode = RefreshMode.OnDemand;
+        Start();
+
+        var result = await _engine.NextCycleAsync().Guarded();
+
+        result.Cycle.Should().Be(1, "in triggered mode no cycle comes unasked");
+        _link.RequestTimes.Should().ContainSingle();
+    }
+
+    [Fact]
     public async Task Run_CycleLongerThanMinimumPeriod_NextCycleStartsAtOnce()
     {
         _engine.MinimumPeriod = 20 * Ms;

@@ -3,6 +3,7 @@ using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Polling.Readers;
+using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Protocol.V3;
 
 namespace OperatorPanel.Core.Tests.Polling;
@@ -26,9 +27,26 @@ public sealed class V3StationListTests
         foreach (var index in list.Frames)
         {
             var bytes = plan.Frames[index].DataBytes;
-            list.Slice(data, index, bytes).Should().Equal(data.Skip(offset).Take(bytes), "frame {0}'s bytes follow the frames before it", index);
+            list.Slice(data, index).Should().Equal(data.Skip(offset).Take(bytes), "frame {0}'s bytes follow the frames before it", index);
             offset += bytes;
         }
+    }
+
+    [Fact]
+    public void Layout_RangesWidenedBackwardAtTheirAreasEnd_EachTakesItsOwnBytesFromItsItem()
+    {
+        // QW14 and MW30 end their areas on a CPU 224 (16 Q bytes, 32 M bytes): each is widened to the 4-byte item that
+        // ends with it (Q12/4, M28/4), so its bytes are the last 2 of its item, not the 2 after the range before it.
+        var plan = Plan("QW14", "MW30");
+        var cpu = CpuProfiles.For(CpuModel.Cpu224);
+
+        var list = new V3StationList(plan, Two, HandlerShape.Full, ListPlan.AreaBytesOf(cpu));
+
+        list.Plan!.Items.Take(2).Select(i => (i.Area, i.Offset, i.Length)).Should().Equal((ProtocolArea.Q, 12, 4), (ProtocolArea.M, 28, 4));
+        byte[] q = [0x12, 0x13, 0x14, 0x15], m = [0x28, 0x29, 0x30, 0x31];
+        var data = q.Concat(m).Concat(Enumerable.Repeat((byte)0x20, list.Plan.DataBytes - 8)).ToImmutableArray();
+        var slices = list.Frames.SelectMany(index => list.Slice(data, index)).ToArray();
+        slices.Should().Equal(new byte[] { 0x14, 0x15, 0x30, 0x31 }, "QW14 = QB14-QB15 and MW30 = MB30-MB31, whether in one frame or two");
     }
 
     [Fact]

@@ -39,4 +39,18 @@ public sealed class StarterProjectTests
         station.Address.Address.Should().Be(5);
         station.Link.PortName.Should().Be("/dev/ttyUSB0");
     }
+
+    [Theory]
+    [InlineData(CpuModel.Cpu221, true)]
+    [InlineData(CpuModel.Cpu222, true)]
+    [InlineData(CpuModel.Cpu224, false)]
+    [InlineData(CpuModel.Cpu224XP, false)]
+    [InlineData(CpuModel.Cpu226, false)]
+    public void Create_TheCpusWith4096ProgramBytes_GetTheCompactHandler(CpuModel model, bool compact)
+    {
+        foreach (var revision in CpuProfiles.RevisionsOf(model))
+        {
+            StarterProject.Create("Line", CpuProfiles.For(model, revision), new Station(2), "COM1").Stations[0].Compact.Should().Be(compact, revision.ToString());
+        }
+    }
 }

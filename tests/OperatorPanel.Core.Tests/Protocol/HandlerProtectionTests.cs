@@ -4,32 +4,24 @@ using OperatorPanel.Core.Protocol;
 
 namespace OperatorPanel.Core.Tests.Protocol;
 
-/// <summary>The bytes a handler refuses although the CPU would write them (docs/protocol-v2.md, error 03).</summary>
+/// <summary>The V bytes a protocol 3 handler with the default settings refuses although the CPU would write them (docs/protocol.md, 83).</summary>
 public sealed class HandlerProtectionTests
 {
     [Theory]
-    [InlineData("SMB30", 0, "SMB30 is port 0's Freeport control byte, which the handler sets")]
-    [InlineData("SMW29", 0, "SMW29 touches SMB30, which is port 0's Freeport control byte, which the handler sets")]
-    [InlineData("SMB130", 1, "SMB130 is port 1's Freeport control byte, which the handler sets")]
-    [InlineData("SMB90", 0, "SMB90 is in port 0's receive message control SMB86-SMB94, which the handler's RCV uses")]
-    [InlineData("SMB34", 0, "SMB34 is the timed interrupt 0 interval, the handler's reply delay")]
-    public void Refusal_HandlersOwnSmBytes_SaysWhose(string address, int port, string message)
+    [InlineData(CpuModel.Cpu221, "VB1442", "VB1442-VB2047", "VB1974-VB2047")] // 2048 V bytes: full 606 from 1442, compact 74 from 1974
+    [InlineData(CpuModel.Cpu224, "VD8188", "VB7586-VB8191", "VB8118-VB8191")]
+    [InlineData(CpuModel.Cpu226, "VW9633", "VB9634-VB10239", "VB10166-VB10239")] // touches the first byte only
+    public void Refusal_HandlersOwnVBytesAtTheTopOfV_NamesTheFullAndTheCompactRange(CpuModel model, string address, string full, string compact)
     {
-        HandlerProtection.Refusal(PlcAddress.Parse(address), CpuProfiles.For(CpuModel.Cpu226), port).Should().Be(message);
-    }
-
-    [Fact]
-    public void Refusal_HandlersOwnVBytesAtTheEndOfV_NamesTheRange()
-    {
-        // CPU 226: 10240 V bytes; the default handler keeps the last 256 + 52 + 120 = 428.
-        HandlerProtection.Refusal(PlcAddress.Parse("VB9900"), CpuProfiles.For(CpuModel.Cpu226)).Should()
-            .Be("VB9900 is in the handler's own V bytes VB9812-VB10239 (frame buffer, work bytes, READ CHANGES copies; where generate puts them by default)");
+        HandlerProtection.Refusal(PlcAddress.Parse(address), CpuProfiles.For(model)).Should().Be(
+            $"{address} is in the handler's own V bytes {full} (where generate puts the full handler's buffer, work bytes and list by default; "
+            + $"the compact handler's are {compact}; IDENTIFY says where a station's are)");
     }
 
     [Theory]
     [InlineData("VB100")]
-    [InlineData("VB9811")]
-    [InlineData("SMB130")] // port 1's byte, with the handler on port 0
+    [InlineData("VB9633")]
+    [InlineData("SMB30")] // SM is refused by the link's rule (LinkAreas), not here
     [InlineData("QB0")]
     public void Refusal_BytesTheHandlerLeavesAlone_IsNull(string address)
     {

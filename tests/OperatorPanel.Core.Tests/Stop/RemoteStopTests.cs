@@ -118,7 +118,7 @@ public sealed class RemoteStopTests
 
         var outcome = await Stop(plc);
 
-        outcome.Text.Should().Be("station 2 refused STOP: error 05: unknown command (or STOP in a handler generated without it)");
+        outcome.Text.Should().Be("station 2 refused STOP: 85: unknown command (STOP in a handler generated without it, or a list command in a compact handler)");
         plc.Sent.Select(r => r.Command).Should().Equal(CommandCode.Identify, CommandCode.Stop);
     }
 

@@ -125,21 +125,23 @@ public sealed class PollingEngineWritesTests
         var engine = Engine(Items(One, "VB0"));
         _link.Refuse(One, ProtocolError.NotWritable);
 
-        var outcome = await WriteThroughCycle(engine, WriteRequest.Bytes(One, PlcAddress.Parse("SMB34"), [0x05]));
+        var outcome = await WriteThroughCycle(engine, WriteRequest.Bytes(One, PlcAddress.Parse("VB8000"), [0x05]));
 
-        outcome.Should().BeEquivalentTo(new WriteOutcome.Failed("station 1 refused the write: error 03: the PLC refuses writes there (inputs, an area without write access, protected SM bytes, or the handler's own V bytes: its buffer and work bytes)", WriteFailureKind.RefusedByPlc));
+        outcome.Should().BeEquivalentTo(new WriteOutcome.Failed("station 1 refused the write: 83: the PLC refuses writes there (inputs, SM, an area the handler's write mask leaves out, or the handler's own V bytes)", WriteFailureKind.RefusedByPlc));
     }
 
     [Theory]
-    [InlineData("IB0", "IB0: the Freeport link writes only Q, M, V and SM")]
-    [InlineData("SB0", "SB0: the Freeport link writes only Q, M, V and SM")]
+    [InlineData("IB0", "IB0: inputs are read from the field; the panel never writes them")]
+    [InlineData("SB0", "SB0: the Freeport link writes only Q, M and V")]
+    [InlineData("SMB34", "SMB34: the Freeport handler never writes SM (it refuses with 83")]
     public async Task Write_AreaTheLinkNeverWrites_FailsWithoutSending(string address, string reason)
     {
         var engine = Engine(Items(One, "VB0"));
 
         var outcome = await WriteThroughCycle(engine, WriteRequest.Bytes(One, PlcAddress.Parse(address), [0x01]));
 
-        outcome.Should().BeEquivalentTo(new WriteOutcome.Failed(reason, WriteFailureKind.InvalidRequest));
+        outcome.Should().BeOfType<WriteOutcome.Failed>().Which.Kind.Should().Be(WriteFailureKind.InvalidRequest);
+        ((WriteOutcome.Failed)outcome).Reason.Should().StartWith(reason);
         _link.Requests.Should().NotContain(r => r is WriteBlockRequest || r is WriteBitRequest);
     }
 

@@ -48,9 +48,9 @@ public sealed class OutputsViewModelTests : IAsyncDisposable
         await Conveyor.SwitchCommand.ExecuteAsync(null).Guarded();
 
         Conveyor.State.Should().Be(LampState.Off);
-        Conveyor.WriteError.Should().Be("station 2 refused the write: error 03: the PLC refuses writes there (inputs, an area without write access, protected SM bytes, or the handler's own V bytes: its buffer and work bytes)");
+        Conveyor.WriteError.Should().Be("station 2 refused the write: 83: the PLC refuses writes there (inputs, SM, an area the handler's write mask leaves out, or the handler's own V bytes)");
         _panel.Session.StatusLine.IsError.Should().BeTrue();
-        _panel.Session.StatusLine.Text.Should().Be("Q0.0 (Conveyor): write of 1 not confirmed: station 2 refused the write: error 03: the PLC refuses writes there (inputs, an area without write access, protected SM bytes, or the handler's own V bytes: its buffer and work bytes)");
+        _panel.Session.StatusLine.Text.Should().Be("Q0.0 (Conveyor): write of 1 not confirmed: station 2 refused the write: 83: the PLC refuses writes there (inputs, SM, an area the handler's write mask leaves out, or the handler's own V bytes)");
     }
 
     [Fact]

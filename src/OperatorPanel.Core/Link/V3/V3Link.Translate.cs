@@ -70,6 +70,7 @@ public sealed partial class V3Link
             case IdentifyRequest when Identity.TryRead(p.AsSpan(), out var identity):
                 _identities[request.Station] = identity;
                 NoteEndTimeout(identity.EndTimeoutMs);
+                NoteScan(identity.MaxScanMs);
                 return AsIdentifyResponse(request.Station, identity);
             case ReadRequest read when p.Length == read.TotalLength:
                 return new ReadResponse(request.Station, 0, p);
@@ -90,6 +91,18 @@ public sealed partial class V3Link
         lock (_endTimeoutLock)
         {
             _longestEndTimeoutMs = Math.Max(_longestEndTimeoutMs, endTimeoutMs);
+        }
+    }
+
+    /// <summary>
+    /// Keeps the longest scan an IDENTIFY on this link reported (SMW26, the longest since RUN): the reply time-out allows
+    /// each of the handler's scans that long, with a quarter more, when that is more than the options' allowance.
+    /// </summary>
+    private void NoteScan(int maxScanMs)
+    {
+        lock (_endTimeoutLock)
+        {
+            _longestScanMs = Math.Max(_longestScanMs, maxScanMs);
         }
     }
 

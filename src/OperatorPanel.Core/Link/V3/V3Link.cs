@@ -31,6 +31,7 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
     private long? _lastExchangeEnd;
     private readonly Lock _endTimeoutLock = new();
     private int _longestEndTimeoutMs;
+    private int _longestScanMs;
     private byte _sequence;
 
     public V3Link(ITransport transport, LinkOptions options, TimeProvider? time = null, ILogger? log = null)
@@ -210,14 +211,18 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
     /// The reply-time budget: request and longest reply on the wire, the end time-out the receive waits (the longer of
     /// <see cref="LinkOptions.ReplyDelay"/> and the longest END_TIMEOUT_MS an IDENTIFY on this link reported), one scan
     /// before the handler starts, the handler's scans for the command (<see cref="V3HandlerScans"/>), what the medium
-    /// adds, and the margin.
+    /// adds, and the margin. A scan is allowed the options' figures or, when an IDENTIFY reported a longer longest scan
+    /// (SMW26), that scan and a quarter more: a CPU scanning in 100 ms takes about a second for a READ.
     /// </summary>
-    private TimeSpan ReplyTimeoutFor(Command command, int requestBytes)
+    internal TimeSpan ReplyTimeoutFor(Command command, int requestBytes)
     {
         var replyBytes = Limits.MaxFrameBytes;
         var endTimeout = TimeSpan.FromMilliseconds(Volatile.Read(ref _longestEndTimeoutMs));
+        var reported = TimeSpan.FromMilliseconds(Volatile.Read(ref _longestScanMs) * 1.25);
+        var perScan = reported > _options.HandlerScanAllowance ? reported : _options.HandlerScanAllowance;
+        var first = reported > _options.ScanAllowance ? reported : _options.ScanAllowance;
         return (_options.Serial.CharacterTime * (requestBytes + replyBytes)) + (endTimeout > _options.ReplyDelay ? endTimeout : _options.ReplyDelay)
-            + _options.ScanAllowance + (_options.HandlerScanAllowance * V3HandlerScans.For(command))
+            + first + (perScan * V3HandlerScans.For(command))
             + _options.Medium.ExtraFor(_options.Serial, requestBytes, replyBytes) + _options.Margin;
     }
 

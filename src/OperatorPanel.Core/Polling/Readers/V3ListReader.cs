@@ -111,7 +111,7 @@ internal sealed class V3ListReader(PollingContext context, V3Link link, V3Reader
             _list.LastWhole = context.Time.GetUtcNow();
         }
 
-        return [.. taken.Select(i => (i, context.Judge.Data(_list.Station, _list.Slice(data, i, context.Plan.Frames[i].DataBytes))))];
+        return [.. taken.Select(i => (i, context.Judge.Data(_list.Station, _list.Slice(data, i))))];
     }
 
     /// <summary>DEFINE LIST (retried by the link: it defines the same list again). The failure when no reply came; else null.</summary>

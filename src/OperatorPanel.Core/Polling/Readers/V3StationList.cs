@@ -12,7 +12,8 @@ namespace OperatorPanel.Core.Polling.Readers;
 /// </summary>
 internal sealed class V3StationList
 {
-    private readonly Dictionary<int, int> _places = [];
+    /// <summary>Per frame, where each of its ranges starts in the list data (a widened range's bytes end its item, so ranges need not follow one another).</summary>
+    private readonly Dictionary<int, ImmutableArray<(int Place, int Length)>> _places = [];
 
     public V3StationList(PollPlan plan, Station station, HandlerShape shape, Func<ProtocolArea, int>? areaBytes = null)
     {
@@ -34,7 +35,7 @@ internal sealed class V3StationList
                 continue;
             }
 
-            _places[index] = plan2.Places[ranges.Count];
+            _places[index] = [.. frame.Items.Select((item, k) => (plan2.Places[ranges.Count + k], item.Length))];
             ranges.AddRange(frame.Items);
             frames.Add(index);
             fitted = plan2;
@@ -67,8 +68,8 @@ internal sealed class V3StationList
     /// <summary>When the last whole list came (READ LIST FULL or a whole READ LIST answer).</summary>
     public DateTimeOffset LastWhole { get; set; }
 
-    /// <summary>Frame <paramref name="index"/>'s bytes in <paramref name="data"/>.</summary>
-    public ImmutableArray<byte> Slice(ImmutableArray<byte> data, int index, int length) => data.Slice(_places[index], length);
+    /// <summary>Frame <paramref name="index"/>'s bytes in <paramref name="data"/>: each of its ranges' bytes from that range's place, in order.</summary>
+    public ImmutableArray<byte> Slice(ImmutableArray<byte> data, int index) => [.. _places[index].SelectMany(r => data.Slice(r.Place, r.Length))];
 
     /// <summary>What the PC knows of the handler's copy, which READ LIST compares with and renews.</summary>
     public enum CopyState
