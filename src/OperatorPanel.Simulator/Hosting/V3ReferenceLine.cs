@@ -9,7 +9,8 @@ namespace OperatorPanel.Simulator.Hosting;
 /// side: every byte reaches every station's RCV, which starts on '&lt;' and ends the message when the station's end
 /// time-out (SMW92, END_TIMEOUT_MS) passes without a character or its request buffer is full; the message is handed to
 /// the model then, and its reply leaves at that moment (after any reply still going out) and also reaches the other
-/// stations' RCV, as on a real bus. Characters take <see cref="CharacterTime"/> each (zero: no time). <see cref="Tamper"/>
+/// stations' RCV, as on a real bus. A station that answers is deaf until its reply's last byte has left (docs/protocol.md
+/// section 4: its RCV is armed again only then), as the generated handler is. Characters take <see cref="CharacterTime"/> each (zero: no time). <see cref="Tamper"/>
 /// lets a test drop or change a reply on its way to the PC (a lost or corrupted reply). With demo processes
 /// (<c>opanel simulate</c>, the demo line) the bottle filler drives each station's memory as time passes.
 /// </summary>
@@ -120,6 +121,7 @@ public sealed class V3ReferenceLine : ISimulatedLine
         Replies++;
         var due = Max(receiver.EndsAt, _lastDue);
         _lastDue = due + (CharacterTime * reply.Length);
+        receiver.DeafUntil = _lastDue;
         foreach (var other in _receivers.Where(r => r != receiver))
         {
             foreach (var b in reply)
@@ -156,9 +158,12 @@ public sealed class V3ReferenceLine : ISimulatedLine
 
         public TimeSpan EndsAt => _lastAt + TimeSpan.FromMilliseconds(Station.Setup.EndTimeoutMs);
 
+        /// <summary>Until its reply's last byte has left, the station's RCV is not armed: what arrives meanwhile is lost.</summary>
+        public TimeSpan DeafUntil { get; set; }
+
         public void Take(byte b, TimeSpan at)
         {
-            if (_message.Count == 0 && b != Limits.Start)
+            if (at < DeafUntil || (_message.Count == 0 && b != Limits.Start))
             {
                 return;
             }

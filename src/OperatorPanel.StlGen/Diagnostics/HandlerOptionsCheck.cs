@@ -28,6 +28,11 @@ public static partial class HandlerOptionsCheck
         {
             Add(StlDiagnostics.DataBitsNotAllowed, $"{options.DataBits} data bits: SMB30 selects 7 or 8");
         }
+        else if (options.DataBits == 7 && options.Protocol == 3)
+        {
+            // Protocol 3 frames carry binary bytes (and STATUS has bit 7 set): a 7-bit character loses their top bit.
+            Add(StlDiagnostics.DataBitsNotAllowed, "7 data bits: protocol 3 frames are binary bytes and need 8 data bits (protocol 2's hex frames took 7)");
+        }
 
         if (options.StopBits != 1)
         {
@@ -82,9 +87,15 @@ public static partial class HandlerOptionsCheck
             : HandlerDefaults.FootprintBytes(options.CopyBytes);
         start = options.Protocol == 3 ? options.EffectiveV3First : start;
         var end = start + bytes - 1;
-        if (start < 0 || end >= vBytes)
+
+        // The protocol 3 check walks from a pointer 3 bytes before the buffer (&VB(V_FIRST - 3) + the byte count), and
+        // an S7-200 address has no negative byte.
+        var lowest = options.Protocol == 3 ? 3 : 0;
+        if (start < lowest || end >= vBytes)
         {
-            add(StlDiagnostics.BufferOutsideV, $"the handler needs VB{start}-VB{end} ({bytes} bytes) but the {options.Cpu.DisplayName} has VB0-VB{vBytes - 1}; allowed buffer start: VB0-VB{vBytes - bytes}");
+            add(StlDiagnostics.BufferOutsideV, $"the handler needs VB{start}-VB{end} ({bytes} bytes) but the {options.Cpu.DisplayName} has VB0-VB{vBytes - 1}"
+                + $"{(start >= 0 && start < lowest ? " and a protocol 3 handler starts at VB3 or later (its frame check points 3 bytes before its V bytes)" : string.Empty)}; "
+                + $"allowed buffer start: VB{lowest}-VB{vBytes - bytes}");
         }
     }
 

@@ -16,6 +16,8 @@ public sealed class HandlerOptionsCheckTests
         { StlDiagnostics.DataBitsNotAllowed, new HandlerOptions { Protocol = 2, Cpu = Cpu224, DataBits = 6 }, "6 data bits" },
         { StlDiagnostics.StopBitsNotAllowed, new HandlerOptions { Protocol = 2, Cpu = Cpu224, StopBits = 2 }, "2 stop bits" },
         { StlDiagnostics.BufferOutsideV, new HandlerOptions { Protocol = 2, Cpu = Cpu224, BufferStart = 8000 }, "VB8000-VB8427" },
+        { StlDiagnostics.BufferOutsideV, new HandlerOptions { Protocol = 3, Cpu = Cpu224, BufferStart = 2 }, "a protocol 3 handler starts at VB3 or later (its frame check points 3 bytes before its V bytes); allowed buffer start: VB3-VB7586" },
+        { StlDiagnostics.DataBitsNotAllowed, new HandlerOptions { Protocol = 3, Cpu = Cpu224, DataBits = 7 }, "7 data bits: protocol 3 frames are binary bytes and need 8 data bits" },
         { StlDiagnostics.StationOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Station = 127 }, "127" },
         { StlDiagnostics.ReplyDelayOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, ReplyDelayMs = 0 }, "reply delay 0 ms" },
         { StlDiagnostics.CharTimeoutOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, CharTimeoutMs = -1 }, "-1 ms" },

@@ -1,5 +1,6 @@
 using System.Globalization;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Transport;
 using OperatorPanel.Stl;
 using OperatorPanel.Stl.Checks;
 using OperatorPanel.StlGen.Handler;
@@ -158,7 +159,9 @@ internal sealed class HandlerFootprintAudit
         }
 
         var lastAddress = PlcAddress.ForBytes(operand.Area, last, AccessWidth.Byte);
-        var refusal = AddressRules.Check(address, _options.Cpu, access) ?? AddressRules.Check(lastAddress, _options.Cpu, access);
+        // What the CPU lets a program write (SMB30 and up, ...) is PPI's rule, which mirrors the CPU's own; the Freeport
+        // link's (Q, M, V) is what the panel writes through the handler, not what the handler may write itself.
+        var refusal = AddressRules.Check(address, _options.Cpu, access, LinkProtocol.Ppi) ?? AddressRules.Check(lastAddress, _options.Cpu, access, LinkProtocol.Ppi);
         Expect(refusal is null, $"{at}: {refusal?.Message}");
 
         if (operand.Area == MemoryArea.V)
