@@ -49,6 +49,49 @@ public sealed class V3StationListTests
         slices.Should().Equal(new byte[] { 0x14, 0x15, 0x30, 0x31 }, "QW14 = QB14-QB15 and MW30 = MB30-MB31, whether in one frame or two");
     }
 
+    /// <summary>
+    /// Any watched set, ends of areas included: the list data the handler sends (each item's bytes from memory, in item
+    /// order) sliced per frame gives exactly the bytes of that frame's ranges.
+    /// </summary>
+    [Theory]
+    [InlineData(CpuModel.Cpu221)]
+    [InlineData(CpuModel.Cpu224)]
+    [InlineData(CpuModel.Cpu226)]
+    public void Slice_RandomWatchedSetsNearTheEndsOfEveryArea_EveryFrameGetsItsOwnBytes(CpuModel model)
+    {
+        var cpu = CpuProfiles.For(model);
+        var areaBytes = ListPlan.AreaBytesOf(cpu);
+        ProtocolArea[] areas = [ProtocolArea.I, ProtocolArea.Q, ProtocolArea.M, ProtocolArea.V, ProtocolArea.SM];
+        string[] prefixes = ["I", "Q", "M", "V", "SM"];
+        var checkedFrames = 0;
+        for (var seed = 0; seed < 150; seed++)
+        {
+            var random = new Random(seed);
+            var memory = areas.ToDictionary(a => a, a => Enumerable.Range(0, areaBytes(a)).Select(_ => (byte)random.Next(256)).ToArray());
+            var addresses = Enumerable.Range(0, random.Next(1, 12)).Select(_ =>
+            {
+                var k = random.Next(areas.Length);
+                var (width, letter) = random.Next(3) switch { 0 => (1, "B"), 1 => (2, "W"), _ => (4, "D") };
+                var size = areaBytes(areas[k]) - (areas[k] == ProtocolArea.V ? HandlerShape.Full.VBytes : 0);
+                var offset = random.Next(2) == 0 ? size - width - random.Next(3) : random.Next(size - width);
+                return $"{prefixes[k]}{letter}{Math.Max(offset, 0)}";
+            }).Distinct().ToArray();
+            var plan = PollPlanner.Build(addresses.Select(a => new WatchedItem(Two, PlcAddress.Parse(a))), new Dictionary<Station, CpuProfile> { [Two] = cpu });
+
+            var list = new V3StationList(plan, Two, HandlerShape.Full, areaBytes);
+
+            var data = list.Plan!.Items.SelectMany(i => memory[i.Area].Skip(i.Offset).Take(i.Length)).ToImmutableArray();
+            foreach (var index in list.Frames)
+            {
+                var frame = plan.Frames[index];
+                list.Slice(data, index).Should().Equal(frame.Items.SelectMany(i => memory[i.Area].Skip(i.Offset).Take(i.Length)), "seed {0}, {1}, frame {2}", seed, string.Join(" ", addresses), index);
+                checkedFrames++;
+            }
+        }
+
+        checkedFrames.Should().BeGreaterThanOrEqualTo(150, "every seed's list holds at least one frame");
+    }
+
     [Fact]
     public void Layout_FrameTooBigForTheHandlersList_LeftOutForRead()
     {
