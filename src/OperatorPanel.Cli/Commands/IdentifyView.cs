@@ -40,12 +40,10 @@ internal sealed record IdentifyView(
 {
     public static IdentifyView From(LinkTarget target, IdentifyResponse r)
     {
-        var model = Enum.GetValues<CpuModel>().Where(m => HandlerIdentity.CpuModelCode(m) == r.CpuModelCode).Select(m => (CpuModel?)m).FirstOrDefault();
+        var model = IdentityCpuCheck.GeneratedFor(r);
         var revision = r.CpuRevisionCode == HandlerIdentity.CpuRevisionCode(CpuRevision.Early) ? CpuRevision.Early : CpuRevision.Current;
         var generatedFor = model is { } m2 ? $"{CpuModelNames.Format(m2)} ({revision})" : $"unknown CPU code {r.CpuModelCode}";
-        var cpuId = (byte)(r.Smb6 & 0xF0);
-        var smb6Models = CpuProfiles.All.Where(p => p.CpuIdCode == cpuId).Select(p => CpuModelNames.Format(p.Model)).Distinct().ToList();
-        var smb6Means = smb6Models.Count == 0 ? "unknown CPU type" : string.Join(" or ", smb6Models);
+        var smb6Means = IdentityCpuCheck.Smb6Means(r.Smb6);
         var areas = Enum.GetValues<ProtocolArea>().Where(a => (r.WriteMask & (1 << (int)a)) != 0).Select(a => a.ToString()).ToList();
         var v3 = r.V3Identity;
         var features = new[] { (v3?.HasList ?? false) ? "list" : null, r.StopEnabled ? "STOP" : null }.OfType<string>().ToList();
@@ -75,29 +73,9 @@ internal sealed record IdentifyView(
             r.MaxReadData,
             r.StopEnabled,
             target.Cpu?.DisplayName,
-            target.Cpu is null ? null : Mismatch(target.Cpu, model, cpuId, smb6Means));
+            target.Cpu is null ? null : IdentityCpuCheck.Mismatch(target.Cpu, r));
     }
 
-    /// <summary>
-    /// CPU 224 and 224XP share SMB6 16#20 (docs/cpu-profiles.md), so SMB6 is compared by code only; the handler's own CPU
-    /// code names the exact model it was generated for.
-    /// </summary>
-    private static string? Mismatch(CpuProfile expected, CpuModel? generatedFor, byte cpuId, string smb6Means)
-    {
-        var problems = new List<string>();
-        if (cpuId != expected.CpuIdCode)
-        {
-            problems.Add($"the PLC reports SMB6 {Hex(cpuId)} ({smb6Means}), {expected.Name} has {Hex(expected.CpuIdCode)}");
-        }
-
-        if (generatedFor != expected.Model)
-        {
-            var name = generatedFor is { } m ? CpuModelNames.Format(m) : "an unknown CPU";
-            problems.Add($"the handler was generated for {name}, not {expected.Name}: regenerate it");
-        }
-
-        return problems.Count == 0 ? null : string.Join("; ", problems);
-    }
 
     private static string Hex(byte value) => "16#" + value.ToString("X2", CultureInfo.InvariantCulture);
 

@@ -16,10 +16,11 @@ internal static class StopCommand
         "Put a PLC into STOP: the line stops and the port returns to PPI until someone sets RUN (mode switch or Micro/WIN). "
         + "Needs --yes; without it nothing is sent. With --project the station (--station ADDRESS or NAME, or the only one) must have \"allowStop\": true, "
         + "and its port, line settings and CPU come from the project unless --device, --demo or --cpu say otherwise. The station's handler must be generated with STOP (\"allowStop\": true in the "
-        + "project, or opanel generate --allow-stop): IDENTIFY is asked first, and without FEATURES bit 0 nothing is sent. "
+        + "project, or opanel generate --allow-stop): IDENTIFY is asked first, and without FEATURES bit 0 nothing is sent; nor when the CPU it reports (SMB6, and the CPU "
+        + "the handler was generated for) is not the project's or --cpu's. "
         + "STOP is sent once, never repeated, and logged (\"station N RUN -> STOP by operator\"); an IDENTIFY afterwards must get no "
         + "answer to confirm it. A lost reply is settled the same way: no answer = stopped (reply lost, station silent), an answer = not stopped. "
-        + "Exit codes: 0 stopped; 1 bad input, or nothing sent because the project does not allow STOP, the handler has no STOP or the PLC refused it; 2 not stopped "
+        + "Exit codes: 0 stopped; 1 bad input, or nothing sent because the project does not allow STOP, the handler has no STOP, the CPU is not the expected one or the PLC refused it; 2 not stopped "
         + "(nothing sent on a link failure, the station still answers after STOP); 3 unknown whether stopped; 4 not confirmed with --yes, nothing sent";
 
     public static Command Create(Func<ParseResult, CliContext> context)
@@ -59,7 +60,7 @@ internal static class StopCommand
 
             await using var session = opened;
             await session.ResolveCutShortAsync(cli, cancellationToken);
-            var outcome = await session.Bus.StopAsync(target.Station, cancellationToken);
+            var outcome = await session.Bus.StopAsync(target.Station, target.Cpu, cancellationToken);
             var view = StopResultView.From(target, outcome);
             if (cli.Json)
             {

@@ -20,7 +20,7 @@ internal sealed record StopResultView(int Station, string Port, string Outcome, 
         {
             StopVerdict.Stopped or StopVerdict.StoppedReplyLost => ExitCodes.Ok,
             StopVerdict.NotExecuted or StopVerdict.NotStopped or StopVerdict.NotSent => ExitCodes.LinkFailure,
-            StopVerdict.NotInHandler or StopVerdict.Refused => ExitCodes.BadInput,
+            StopVerdict.NotInHandler or StopVerdict.Refused or StopVerdict.WrongCpu => ExitCodes.BadInput,
             StopVerdict.Unknown => ExitCodes.WriteUnknown,
         };
         var name = JsonNamingPolicy.CamelCase.ConvertName(outcome.Verdict.ToString());

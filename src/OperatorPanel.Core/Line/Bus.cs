@@ -1,6 +1,7 @@
 using System.Collections.Concurrent;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
+using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Link.V3;
 using OperatorPanel.Core.Polling;
@@ -147,9 +148,15 @@ public sealed class Bus : IAsyncDisposable
     /// STOP through the queue, as one job (<see cref="RemoteStop"/>: IDENTIFY, 07 once, IDENTIFY), so no poll comes
     /// between. A STOP that left the station silent shows it as stopped by the panel instead of offline.
     /// </summary>
-    public Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default) => _ppi is not null
+    public Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default) => StopAsync(station, null, cancellationToken);
+
+    /// <summary>
+    /// STOP, sent only when the station's IDENTIFY fits <paramref name="expectedCpu"/> (null: the CPU the plan has for
+    /// the station, when it has one).
+    /// </summary>
+    public Task<StopOutcome> StopAsync(Station station, CpuProfile? expectedCpu, CancellationToken cancellationToken = default) => _ppi is not null
         ? Task.FromResult<StopOutcome>(new StopOutcome.NotSent(station, $"{PortName} is a PPI bus: the panel stops a CPU only through its own handler"))
-        : _queue.Enqueue($"STOP of {station}", ct => StopNowAsync(station, ct), () => new StopOutcome.NotSent(station, "disconnected before STOP was sent"), cancellationToken);
+        : _queue.Enqueue($"STOP of {station}", ct => StopNowAsync(station, expectedCpu, ct), () => new StopOutcome.NotSent(station, "disconnected before STOP was sent"), cancellationToken);
 
     /// <summary>
     /// Settles, through the queue, the writes and STOPs that earlier programs on this port left cut short in
@@ -270,9 +277,10 @@ public sealed class Bus : IAsyncDisposable
         return reply;
     }
 
-    private async Task<StopOutcome> StopNowAsync(Station station, CancellationToken cancellationToken)
+    private async Task<StopOutcome> StopNowAsync(Station station, CpuProfile? expectedCpu, CancellationToken cancellationToken)
     {
-        var outcome = await new RemoteStop(_link, _logger, _audit, _time).StopAsync(station, cancellationToken).ConfigureAwait(false);
+        var cpu = expectedCpu ?? Volatile.Read(ref _engine).Plan.Cpus.GetValueOrDefault(station);
+        var outcome = await new RemoteStop(_link, _logger, _audit, _time).StopAsync(station, cpu, cancellationToken).ConfigureAwait(false);
         if (outcome.IsStopped)
         {
             Volatile.Read(ref _engine).NoteStoppedByPanel(station);

@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Audit;
+using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Link;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Transport;
@@ -22,9 +23,15 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null, AuditConte
     private readonly ILogger _log = (logger ?? Logger.None).ForContext<RemoteStop>();
     private readonly TimeProvider _time = time ?? TimeProvider.System;
 
-    public async Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default)
+    public Task<StopOutcome> StopAsync(Station station, CancellationToken cancellationToken = default) => StopAsync(station, null, cancellationToken);
+
+    /// <summary>
+    /// As <see cref="StopAsync(Station, CancellationToken)"/>, and nothing is sent when the IDENTIFY does not fit
+    /// <paramref name="expectedCpu"/> (the project's CPU, or --cpu): a STOP meant for one CPU must not stop another.
+    /// </summary>
+    public async Task<StopOutcome> StopAsync(Station station, CpuProfile? expectedCpu, CancellationToken cancellationToken = default)
     {
-        var outcome = await CheckAsync(station, cancellationToken).ConfigureAwait(false);
+        var outcome = await CheckAsync(station, expectedCpu, cancellationToken).ConfigureAwait(false);
         if (outcome is null)
         {
             var intent = audit is null ? null : new AuditEntry(
@@ -64,12 +71,14 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null, AuditConte
     }
 
     /// <summary>Null when the station answers IDENTIFY and its handler carries STOP; else why nothing may be sent.</summary>
-    private async Task<StopOutcome?> CheckAsync(Station station, CancellationToken cancellationToken)
+    private async Task<StopOutcome?> CheckAsync(Station station, CpuProfile? expectedCpu, CancellationToken cancellationToken)
     {
         var reply = await _link.ExchangeAsync(new IdentifyRequest(station), cancellationToken).ConfigureAwait(false);
         return reply.Response switch
         {
             null => new StopOutcome.NotSent(station, reply.Failure!.Message),
+            IdentifyResponse identity when expectedCpu is not null && IdentityCpuCheck.Mismatch(expectedCpu, identity) is { } mismatch =>
+                new StopOutcome.WrongCpu(station, expectedCpu.Name, mismatch),
             IdentifyResponse { StopEnabled: true } => null,
             IdentifyResponse => new StopOutcome.NotInHandler(station),
             ErrorResponse refused => new StopOutcome.NotSent(station, $"IDENTIFY refused: {ProtocolErrorText.Describe(refused.Error)}"),

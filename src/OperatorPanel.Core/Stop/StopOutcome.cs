@@ -72,6 +72,14 @@ public abstract record StopOutcome
             + "for the station in the project (or opanel generate --allow-stop), generate the PLC code again and download it";
     }
 
+    /// <summary>The station's IDENTIFY does not fit the CPU expected there (the project's, or --cpu): nothing was sent.</summary>
+    public sealed record WrongCpu(Station Station, string Expected, string Mismatch) : StopOutcome
+    {
+        public override StopVerdict Verdict => StopVerdict.WrongCpu;
+
+        public override string Text => $"{Station}: STOP not sent: it is not the {Expected} expected there ({Mismatch}); check the station address and the CPU";
+    }
+
     /// <summary>The station answered STOP with an error status: it did not stop.</summary>
     public sealed record Refused(Station Station, string Error) : StopOutcome
     {

@@ -9,6 +9,7 @@ public enum StopVerdict
     NotStopped,
     NotSent,
     NotInHandler,
+    WrongCpu,
     Refused,
     Unknown,
 }

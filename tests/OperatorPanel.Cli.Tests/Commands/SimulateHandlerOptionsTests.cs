@@ -102,6 +102,36 @@ public sealed class SimulateHandlerOptionsTests
         run.Error.Should().Be("opanel: --ppi runs no handler: leave out --copy-bytes" + Environment.NewLine);
     }
 
+    [Fact]
+    public async Task Stop_CpuOtherThanTheStationReports_NothingSentAndExitOne()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        var simulator = await StartAsync(pty, "--cpu", "224", "--allow-stop");
+        string[] line = ["--station", "2", "--device", pty.PathB, "--scan-ms", "1000"];
+
+        var wrong = CliRunner.Run(["stop", "--yes", "--cpu", "226", .. line]);
+        var still = CliRunner.Run(["read", "SM0.7", .. line]);
+
+        wrong.ExitCode.Should().Be(1, wrong.Error);
+        wrong.Out.Should().StartWith("station 2: STOP not sent: it is not the CPU 226 expected there (the PLC reports SMB6 16#20 (CPU 224 or CPU 224XP), CPU 226 has 16#90; the handler was generated for CPU 224, not CPU 226: regenerate it)");
+        still.ExitCode.Should().Be(0, "the station still runs and answers: {0}", still.Error);
+        (await simulator.Exit).Should().Be(0);
+    }
+
+    [Fact]
+    public async Task Read_StationRunsAProtocol2Handler_SaysRegenerate()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        var simulator = await StartAsync(pty, "--cpu", "224", "--protocol", "2");
+
+        // The default scan allowance: the READ's tries and the probe after them end well within the simulator's 4 s.
+        var read = CliRunner.Run(["read", "VB100", "--station", "2", "--device", pty.PathB]);
+
+        read.ExitCode.Should().Be(2);
+        read.Error.Should().Contain("station 2 runs an Operator Panel handler of protocol v2, but the panel speaks protocol v3: regenerate the PLC code");
+        (await simulator.Exit).Should().Be(0);
+    }
+
     private static async Task<Simulation> StartAsync(SocatPtyPair pty, params string[] options)
     {
         var output = new StringWriter();

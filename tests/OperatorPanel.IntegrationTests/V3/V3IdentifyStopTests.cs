@@ -61,6 +61,23 @@ public sealed class V3IdentifyStopTests
     }
 
     [Fact]
+    public async Task Read_StationRunsAV2Handler_SaysRegenerateThePlcCodeOnce()
+    {
+        var bus = new BusSimulator();
+        bus.Attach(new ReferencePlc(new HandlerConfig(Two, CpuProfiles.For(CpuModel.Cpu224))));
+        var transport = new SimulatedLineTransport(new ReferenceLine(bus, []));
+        var options = LinkOptions.For(new SerialSettings { PortName = "simulated", BaudRate = 9600 }) with { InterFrameGap = TimeSpan.Zero };
+        var link = new V3Link(transport, options, transport.Clock);
+
+        var first = await link.ExchangeAsync(new ReadRequest(Two, [new ReadItem(ProtocolArea.V, 100, 1)]), default);
+        var second = await link.ExchangeAsync(new ReadRequest(Two, [new ReadItem(ProtocolArea.V, 100, 1)]), default);
+
+        first.Failure!.Kind.Should().Be(PlcErrorKind.HandlerOutdated, "opanel read and write start with a READ: a v2 station is told to regenerate, not \"no answer\"");
+        first.Failure.Message.Should().Be("station 2 runs an Operator Panel handler of protocol v2, but the panel speaks protocol v3: regenerate the PLC code (opanel generate) and download it");
+        second.Failure!.Kind.Should().Be(PlcErrorKind.NoAnswer, "the probe runs once per station and link, so an offline station costs its time once");
+    }
+
+    [Fact]
     public async Task Stop_FullHandlerWithStop_StationStopsAfterOneStopRequest()
     {
         var station = V3Rig.Handler(2, allowStop: true);

@@ -27,6 +27,10 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
     private readonly ConcurrentDictionary<Station, StationStatistics> _statistics = new();
     private readonly ConcurrentDictionary<Station, Identity> _identities = new();
     private readonly ConcurrentDictionary<Station, bool> _spokeV3 = new();
+
+    // Stations asked once whether an older handler answers, after a READ got no answer (opanel read and write start
+    // with a READ, not an IDENTIFY): once per link, so an offline station costs the probe's time only once.
+    private readonly ConcurrentDictionary<Station, bool> _probedAfterRead = new();
     private readonly PortReopener _port;
     private long? _lastExchangeEnd;
     private readonly Lock _endTimeoutLock = new();
@@ -154,7 +158,8 @@ public sealed partial class V3Link : IPlcLink, IAsyncDisposable
         var kind = last!.Kind == PlcErrorKind.Timeout && !corruptedCopy ? PlcErrorKind.NoAnswer : PlcErrorKind.FrameCorrupt;
         var attempts = retries == 0 ? "sent once, never repeated" : $"after {retries + 1} attempts";
         var message = $"{request.Station} on {_transport.Name}: no valid reply to v3 {request.Command} {attempts} ({last.Message})";
-        if (kind == PlcErrorKind.NoAnswer && request.Command == Command.Identify && !_spokeV3.ContainsKey(request.Station)
+        if (kind == PlcErrorKind.NoAnswer && !_spokeV3.ContainsKey(request.Station)
+            && (request.Command == Command.Identify || (request.Command == Command.Read && _probedAfterRead.TryAdd(request.Station, true)))
             && await OlderHandlerAsync(request.Station, cancellationToken).ConfigureAwait(false) is { } found)
         {
             return V3Exchange.Failed(new PlcCommunicationException(PlcErrorKind.HandlerOutdated, request.Station, HandlerBeforeV3.Message(request.Station, found)), sent: true);
