@@ -128,6 +128,13 @@ public sealed record HandlerPackage
             return false;
         }
 
+        // A file name taken by a folder fails its save after the files before it were replaced: refuse before writing any.
+        if (Files.Select(f => Path.Combine(folder, f.Name)).FirstOrDefault(Directory.Exists) is { } taken)
+        {
+            error = $"{taken} is a folder, not a file: move or rename it; nothing was written";
+            return false;
+        }
+
         var paths = new List<string>();
         foreach (var (name, content) in Files)
         {

@@ -101,7 +101,8 @@ internal static class GenerateCommand
     {
         if (!package.TryWrite(folder, out var written, out var error))
         {
-            return cli.Fail(ExitCodes.BadInput, error);
+            // The files saved before the one that failed are new (each save is atomic and keeps a .bak): name them.
+            return cli.Fail(ExitCodes.BadInput, written.IsEmpty ? error : $"{error}; written before it: {string.Join(", ", written)}");
         }
 
         var (stem, result) = (package.Stem, package.Handler);

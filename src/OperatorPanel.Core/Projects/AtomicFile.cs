@@ -63,6 +63,12 @@ public static class AtomicFile
                 return false;
             }
 
+            if (Directory.Exists(target))
+            {
+                error = $"cannot save the file: {target} is a folder";
+                return false;
+            }
+
             temporary = WriteTemporary(folder, target, content);
             RemoveLeftovers(folder, target, temporary);
 

@@ -208,6 +208,21 @@ public sealed class GenerateCommandTests : IDisposable
     }
 
     [Fact]
+    public void Generate_AFileNameTakenByAFolder_WritesNothingAndSaysWhich()
+    {
+        var project = NewProject("224", "2");
+        Directory.CreateDirectory(Path.Combine(Out, "PLC_2-README.txt"));
+        File.WriteAllText(Path.Combine(Out, "PLC_2-handler.awl"), "the previous handler");
+
+        var run = CliRunner.Run("generate", project, "-o", Out);
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be($"opanel: {Path.Combine(Out, "PLC_2-README.txt")} is a folder, not a file: move or rename it; nothing was written{Environment.NewLine}");
+        File.ReadAllText(Path.Combine(Out, "PLC_2-handler.awl")).Should().Be("the previous handler");
+        File.Exists(Path.Combine(Out, "PLC_2-symbols.txt")).Should().BeFalse();
+    }
+
+    [Fact]
     public void Generate_SeveralStations_NeedsStation()
     {
         var project = TwoStationProject();
