@@ -33,7 +33,8 @@ internal static class TrendCommand
             "trend",
             "Draw a live chart of tags in the terminal, from the project's history over the last --span (the line is opened and recorded as watch does). "
             + "Redraws in place on a terminal; elsewhere prints the last chart at the end; --json prints one line a second with each tag's value. "
-            + "A '·' marks a gap: not recorded, stale or bad. Exit codes: 0 done, 1 bad input or project problems, 2 every station offline at the end")
+            + "A '·' marks a gap: not recorded, stale or bad; a station not online is named with its last error above the charts. "
+            + "Exit codes: 0 done, 1 bad input or project problems, 2 every station offline at the end, or the history could not be read or recorded")
         {
             tags, project, demo, model, span, duration, width, height,
         };
@@ -67,27 +68,73 @@ internal static class TrendCommand
             }
 
             var plan = new TrendPlan(named, window, columns, rows);
-            bool allOffline;
+            string? unreadable;
+            List<string> offline;
             await using (var session = opened)
             {
                 using var stop = new StopSignals(seconds is { } s ? TimeSpan.FromSeconds(s) : null);
-                await RunAsync(cli, session, historian, plan, stop.Token);
-                allOffline = session.Project.Stations.All(s => session.Line.StatusOf(s.Address)?.State != Core.Polling.StationState.Online);
+                unreadable = await RunAsync(cli, session, historian, plan, stop.Token);
+                var states = session.Project.Stations.Select(s => (Station: s, Status: session.Line.StatusOf(s.Address))).ToList();
+                offline = states.All(s => s.Status?.State != Core.Polling.StationState.Online)
+                    ? [.. states.Select(s => Offline(s.Station, s.Status))]
+                    : [];
             }
 
-            return historian.Problem is { } problem ? cli.Fail(ExitCodes.LinkFailure, $"history not recorded: {problem}")
-                : allOffline ? ExitCodes.LinkFailure : ExitCodes.Ok;
+            await historian.FlushAsync();
+            List<string> problems = [.. offline];
+            var notRecorded = historian.Problem;
+            if (unreadable is not null)
+            {
+                // A damaged file usually fails the writer with the same words: said once.
+                problems.Add(unreadable == notRecorded ? $"no trend drawn, history not recorded: {unreadable}" : $"no trend drawn: {unreadable}");
+            }
+
+            if (notRecorded is not null && notRecorded != unreadable)
+            {
+                problems.Add($"history not recorded: {notRecorded}");
+            }
+
+            return problems.Count == 0 ? ExitCodes.Ok : End(cli, problems);
         });
         return command;
     }
 
-    private static async Task RunAsync(CliContext cli, WatchSession session, Historian.Historian historian, TrendPlan plan, CancellationToken stop)
+    /// <summary>"Filler offline, last error: station 2: serial port COM3: open failed ...", as the chart's station line says it.</summary>
+    private static string Offline(ProjectStation station, Core.Polling.StationStatus? status)
+    {
+        var state = (status?.State ?? Core.Polling.StationState.Unknown).ToString().ToLowerInvariant();
+        return new TrendStation(station.Name, station.Address.Address, state, LinkFailure.WithoutKind(status?.LastError, status?.LastErrorKind)).Problem!;
+    }
+
+    /// <summary>
+    /// Why trend ends with exit 2: each reason on stderr, or with --json one more JSON line (the stream stays one object
+    /// per line) with all of them.
+    /// </summary>
+    private static int End(CliContext cli, IReadOnlyList<string> problems)
+    {
+        if (cli.Json)
+        {
+            cli.WriteJsonLine(new { ok = false, error = string.Join("; ", problems), errors = problems });
+        }
+        else
+        {
+            foreach (var problem in problems)
+            {
+                cli.Error.WriteLine($"opanel: {problem}");
+            }
+        }
+
+        return ExitCodes.LinkFailure;
+    }
+
+    /// <summary>Draws until <paramref name="stop"/>; the history database's error when it cannot be read (then nothing more is drawn), else null.</summary>
+    private static async Task<string?> RunAsync(CliContext cli, WatchSession session, Historian.Historian historian, TrendPlan plan, CancellationToken stop)
     {
         var console = TrendRenderer.ConsoleFor(cli.Out, cli.IsTerminal && !cli.Json, plan.Width);
         async Task<TrendFrame> NextAsync()
         {
             await historian.FlushAsync();
-            return TrendFrame.Build(historian.Reader, plan.Tags, session.Line, TimeProvider.System.GetUtcNow(), plan.Span, plan.Width, plan.Height);
+            return TrendFrame.Build(historian.Reader, plan.Tags, session.Line, session.Line.StatusOf, TimeProvider.System.GetUtcNow(), plan.Span, plan.Width, plan.Height);
         }
 
         try
@@ -110,7 +157,12 @@ internal static class TrendCommand
                 if (cli.Json)
                 {
                     var frame = await NextAsync();
-                    cli.WriteJsonLine(new { time = frame.To, tags = frame.Panels.Select(p => new { name = p.Name, value = p.Value, quality = p.Quality, min = p.Min, max = p.Max, gaps = p.Gaps }) });
+                    cli.WriteJsonLine(new
+                    {
+                        time = frame.To,
+                        stations = frame.Stations.Select(s => new { name = s.Name, station = s.Station, state = s.State, lastError = s.LastError }),
+                        tags = frame.Panels.Select(p => new { name = p.Name, value = p.Value, quality = p.Quality, min = p.Min, max = p.Max, gaps = p.Gaps }),
+                    });
                 }
             }
         }
@@ -120,13 +172,23 @@ internal static class TrendCommand
         }
         catch (HistoryException failure)
         {
-            cli.Error.WriteLine($"opanel: {failure.Message}");
+            // A damaged or foreign file: the chart has nothing to stand on, so it ends here and says so (exit 2).
+            return failure.Message;
         }
 
         if (!cli.IsTerminal && !cli.Json)
         {
-            console.Write(TrendRenderer.Render(await NextAsync()));
+            try
+            {
+                console.Write(TrendRenderer.Render(await NextAsync()));
+            }
+            catch (HistoryException failure)
+            {
+                return failure.Message;
+            }
         }
+
+        return null;
     }
 
     private sealed record TrendPlan(IReadOnlyList<NamedTag> Tags, TimeSpan Span, int Width, int Height);

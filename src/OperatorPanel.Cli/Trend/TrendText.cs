@@ -6,19 +6,20 @@ namespace OperatorPanel.Cli.Trend;
 /// <summary>
 /// Draws a trend's columns as rows of block characters (eighths of a cell: ▁▂▃▄▅▆▇█), the band from each column's lowest
 /// to highest value filled, scaled to the window's own range; a gap is a '·' on the bottom row. Plain text, so a pipe or a
-/// test reads exactly what the terminal shows.
+/// test reads exactly what the terminal shows. A window without a single good value has no range (null): 0 .. 0 would
+/// read as a value that was recorded.
 /// </summary>
 internal static class TrendText
 {
     private const string Eighths = " ▁▂▃▄▅▆▇█";
 
-    public static IReadOnlyList<string> Draw((double Low, double High)?[] columns, int height, out double min, out double max)
+    public static IReadOnlyList<string> Draw((double Low, double High)?[] columns, int height, out double? min, out double? max)
     {
         ArgumentNullException.ThrowIfNull(columns);
         var known = columns.Where(c => c is not null).Select(c => c!.Value).ToList();
-        min = known.Count > 0 ? known.Min(c => c.Low) : 0;
-        max = known.Count > 0 ? known.Max(c => c.High) : 0;
-        var span = max - min;
+        min = known.Count > 0 ? known.Min(c => c.Low) : null;
+        max = known.Count > 0 ? known.Max(c => c.High) : null;
+        var (low, span) = (min ?? 0, (max ?? 0) - (min ?? 0));
         var rows = Enumerable.Range(0, height).Select(_ => new StringBuilder()).ToArray();
         foreach (var column in columns)
         {
@@ -33,8 +34,8 @@ internal static class TrendText
             }
 
             // In eighths from the bottom: the band's top, and its bottom (at least one eighth high, so a flat line shows).
-            var top = span > 0 ? (int)Math.Round((c.High - min) / span * ((height * 8) - 1)) + 1 : (height * 4);
-            var bottom = span > 0 ? (int)Math.Round((c.Low - min) / span * ((height * 8) - 1)) : top - 1;
+            var top = span > 0 ? (int)Math.Round((c.High - low) / span * ((height * 8) - 1)) + 1 : (height * 4);
+            var bottom = span > 0 ? (int)Math.Round((c.Low - low) / span * ((height * 8) - 1)) : top - 1;
             for (var r = 0; r < height; r++)
             {
                 var cellBase = (height - 1 - r) * 8;

@@ -30,6 +30,7 @@ internal static class SnapshotBuilder
         var status = line.StatusOf(station.Address) ?? StationStatus.Initial(station.Address);
         var statistics = line.StatisticsFor(station.Address);
         PolledValue? Value(PlcAddress address) => line.TryGetValue(station.Address, address, out var v) && v.HasValue ? v : null;
+        PolledValue? Reading(PlcAddress address) => line.TryGetValue(station.Address, address, out var v) ? v : null;
         return new StationSnapshot(
             station.Name,
             station.Address.Address,
@@ -40,8 +41,8 @@ internal static class SnapshotBuilder
             status.NextTryAt is { } next ? Math.Max(0, (int)Math.Ceiling((next - now).TotalSeconds)) : null,
             session.HandlerCheckOf(station.Address),
             new LinkView(statistics.Requests, statistics.Replies, statistics.Retries, statistics.Timeouts, statistics.RoundTripAverage?.TotalMilliseconds),
-            Lamps(station.Inputs, Value),
-            Lamps(station.Outputs, Value),
+            Lamps(station.Inputs, Reading),
+            Lamps(station.Outputs, Reading),
             [.. station.Tags.Select(t => Tag(t, Value(t.Address), line, station.Address))],
             Alarms(station, line))
         {
@@ -56,32 +57,41 @@ internal static class SnapshotBuilder
             .Where(a => a.On != false)
             .Select(a => new AlarmRow(a.Alarm.Flag.ToString(), a.Alarm.Text, a.Alarm.Class.ToString().ToLowerInvariant(), a.On is null ? AlarmRow.Unknown : AlarmRow.Active))];
 
-    private static List<LampByte> Lamps(IEnumerable<IoSymbol> symbols, Func<PlcAddress, PolledValue?> value) =>
+    /// <summary>
+    /// The lamps of <paramref name="symbols"/> from each bit's reading (null: the line has none). A lamp is lit or dark
+    /// only on a good reading: a stale bit (station offline, port gone) or a bad one is <see cref="LampByte.Unknown"/>,
+    /// as a bit never read is, since one character cannot say "last known, not current" (JSON keeps the last reading
+    /// beside its quality, as a tag's value is kept beside its quality).
+    /// </summary>
+    internal static List<LampByte> Lamps(IEnumerable<IoSymbol> symbols, Func<PlcAddress, PolledValue?> reading) =>
         [.. symbols
             .GroupBy(s => s.Address.ByteOffset)
             .OrderBy(g => g.Key)
             .Select(g =>
             {
-                var bits = g.OrderBy(s => s.Address.Bit).Select(s => new LampBit(s.Address.ToString(), s.Symbol, value(s.Address)?.AsBit)).ToList();
+                var bits = g.OrderBy(s => s.Address.Bit).Select(s => Bit(s, reading(s.Address))).ToList();
                 var first = g.First().Address;
                 var lamps = new char[8];
                 for (var bit = 0; bit < 8; bit++)
                 {
                     var symbol = g.FirstOrDefault(s => s.Address.Bit == bit);
-                    lamps[bit] = symbol is null ? LampByte.Unused : value(symbol.Address)?.AsBit switch
-                    {
-                        true => LampByte.On,
-                        false => LampByte.Off,
-                        null => LampByte.Unknown,
-                    };
+                    lamps[bit] = symbol is null ? LampByte.Unused : reading(symbol.Address) is { Quality: ValueQuality.Good, AsBit: { } on }
+                        ? (on ? LampByte.On : LampByte.Off)
+                        : LampByte.Unknown;
                 }
 
                 return new LampByte(PlcAddress.ForBytes(first.Area, first.ByteOffset, AccessWidth.Byte).ToString(), new string(lamps), bits);
             })];
 
+    private static LampBit Bit(IoSymbol symbol, PolledValue? reading) =>
+        new(symbol.Address.ToString(), symbol.Symbol, reading?.AsBit, QualityOf(reading));
+
+    /// <summary>A reading's quality as watch prints it; no reading at all is "bad" (not usable), as for a tag.</summary>
+    private static string QualityOf(PolledValue? reading) => (reading?.Quality ?? ValueQuality.Bad).ToString().ToLowerInvariant();
+
     private static TagRow Tag(ProjectTag tag, PolledValue? value, ProjectLine line, Station station)
     {
-        var quality = line.TryGetValue(station, tag.Address, out var polled) ? polled.Quality.ToString().ToLowerInvariant() : "bad";
+        var quality = QualityOf(line.TryGetValue(station, tag.Address, out var polled) ? polled : null);
         var text = value is null ? "-" : TagValues.Format(tag, value.Raw.AsSpan());
         return new TagRow(tag.Symbol, tag.Address.ToString(), text, quality);
     }

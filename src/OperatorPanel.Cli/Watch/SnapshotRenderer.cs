@@ -95,7 +95,7 @@ internal static class SnapshotRenderer
             return;
         }
 
-        o.Add(ViewLine.Lamps, $"  {title} (bit 0 first; {LampByte.On} on, {LampByte.Off} off, {LampByte.Unknown} not read)");
+        o.Add(ViewLine.Lamps, $"  {title} (bit 0 first; {LampByte.On} on, {LampByte.Off} off, {LampByte.Unknown} unknown: not read, stale or bad)");
         foreach (var b in bytes)
         {
             var prefix = $"    {b.Byte,-5} {b.Lamps}  ";

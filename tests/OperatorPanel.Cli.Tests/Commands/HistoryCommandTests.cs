@@ -1,4 +1,6 @@
 using System.Text.Json;
+using System.Text.RegularExpressions;
+using OperatorPanel.Historian;
 
 namespace OperatorPanel.Cli.Tests.Commands;
 
@@ -92,6 +94,63 @@ public sealed class HistoryCommandTests : IDisposable
         run.Out.Should().Contain("Filler.TankLevel").And.Contain("Filler.LineSpeed");
         run.Out.Should().MatchRegex(@"range -?\d+ \.\. -?\d+");
         run.Out.Should().MatchRegex("[▁▂▃▄▅▆▇█]", "the values were drawn");
+    }
+
+    [Theory]
+    [InlineData("random", "not a history database")]
+    [InlineData("truncated", "damaged")]
+    public void Trend_HistoryDatabaseDamaged_ExitsTwoWithAPlainMessageAndNoStackTrace(string damage, string reason)
+    {
+        var database = new HistoryFolder(History).DatabaseFor(Sample, demo: true);
+        if (damage == "random")
+        {
+            Directory.CreateDirectory(History);
+            File.WriteAllBytes(database, [.. Enumerable.Range(0, 8192).Select(i => (byte)((i * 73) + 11))]);
+        }
+        else
+        {
+            CliRunner.Run("watch", Sample, "--demo", "--cycles", "2", "--history-dir", History).ExitCode.Should().Be(0);
+            using (var file = File.OpenWrite(database))
+            {
+                file.SetLength(8192);
+            }
+
+            File.Delete(database + "-wal");
+            File.Delete(database + "-shm");
+        }
+
+        var run = CliRunner.Run("trend", "TankLevel", "--project", Sample, "--demo", "--duration", "2", "--history-dir", History);
+
+        run.ExitCode.Should().Be(2, "trend's help: 2 when the history could not be read or recorded");
+        run.Error.Should().StartWith("opanel: no trend drawn").And.Contain($"The history database {database}: the file is {reason}")
+            .And.NotContain("Unhandled").And.NotContain("Exception").And.NotContain("   at ");
+    }
+
+    [Fact]
+    public void Trend_PortMissing_NamesThePortFailureAndShowsNoMadeUpRange()
+    {
+        var port = Path.Combine(_folder, "no-such-port");
+        var project = Path.Combine(_folder, "line.opproj");
+        File.WriteAllText(project, File.ReadAllText(Sample).Replace("\"COM3\"", $"\"{port}\"", StringComparison.Ordinal));
+        var failure = $"Filler offline, last error: station 2: serial port {port}: open failed";
+
+        var text = CliRunner.Run("trend", "TankLevel", "--project", project, "--duration", "1", "--width", "120", "--history-dir", History);
+        var json = CliRunner.Run("trend", "TankLevel", "--project", project, "--duration", "2", "--json", "--history-dir", History);
+
+        text.ExitCode.Should().Be(2);
+        text.Error.Should().StartWith($"opanel: {failure}");
+        // The console is as wide as the chart: a longer line wraps at a space.
+        Regex.Replace(text.Out, @"\s+", " ").Should().Contain(failure, "the chart says why it is empty")
+            .And.Contain("range none: no good value recorded in the window").And.NotContain("range 0 .. 0");
+        json.ExitCode.Should().Be(2);
+        var lines = json.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Select(l => JsonDocument.Parse(l).RootElement).ToList();
+        var frame = lines[0];
+        frame.GetProperty("stations")[0].GetProperty("state").GetString().Should().Be("offline");
+        frame.GetProperty("stations")[0].GetProperty("lastError").GetString().Should().StartWith($"station 2: serial port {port}: open failed");
+        var tag = frame.GetProperty("tags")[0];
+        (tag.GetProperty("min").ValueKind, tag.GetProperty("max").ValueKind).Should().Be((JsonValueKind.Null, JsonValueKind.Null));
+        lines[^1].GetProperty("ok").GetBoolean().Should().BeFalse();
+        lines[^1].GetProperty("error").GetString().Should().StartWith(failure);
     }
 
     [Fact]

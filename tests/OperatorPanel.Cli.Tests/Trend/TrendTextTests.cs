@@ -34,4 +34,21 @@ public sealed class TrendTextTests
         (min, max).Should().Be((0, 100));
         rows.Should().Equal(["  █", "▁· "], "a value is drawn where it is, not filled from below");
     }
+
+    [Fact]
+    public void Draw_NoValueInTheWindow_HasNoRangeAndTheRangeLineSaysSo()
+    {
+        var rows = TrendText.Draw([null, null, null], 2, out var min, out var max);
+
+        (min, max).Should().Be((null, null), "0 .. 0 would be a value nobody recorded");
+        rows.Should().Equal(["   ", "···"]);
+        TrendRenderer.Range(new TrendPanel("Filler.TankLevel", "-", "bad", min, max, rows, 1)).Should().Be("range none: no good value recorded in the window");
+    }
+
+    [Fact]
+    public void Range_Values_GivesTheWindowsLowestAndHighestAndTheGaps()
+    {
+        TrendRenderer.Range(new TrendPanel("Filler.TankLevel", "55.2 %", "good", 12.5, 55.2, [], 2))
+            .Should().Be("range 12.5 .. 55.2, 2 gap(s) (·: not recorded, stale or bad)");
+    }
 }

@@ -73,5 +73,5 @@ public sealed class WatchScreenTests
 
     private static List<LampByte> Lamps(string area) =>
         [.. Enumerable.Range(0, 2).Select(b => new LampByte($"{area}B{b}", "●○●○●○●○",
-            [.. Enumerable.Range(0, 8).Select(bit => new LampBit($"{area}{b}.{bit}", $"VeryLongSymbolName{b}{bit}", bit % 2 == 0))]))];
+            [.. Enumerable.Range(0, 8).Select(bit => new LampBit($"{area}{b}.{bit}", $"VeryLongSymbolName{b}{bit}", bit % 2 == 0, "good"))]))];
 }
