@@ -77,6 +77,28 @@ internal sealed record CliContext(TextWriter Out, TextWriter Error, bool Json, I
         return exitCode;
     }
 
+    /// <summary>
+    /// Reports a command line that could not be parsed: each problem on stderr ("opanel: --duration abc: give a number of
+    /// seconds") and where to read more, never the whole help text; with --json one object on stdout, as <see cref="FailAll"/>
+    /// writes it, plus the hint.
+    /// </summary>
+    public int FailCommandLine(IReadOnlyList<string> errors, string hint)
+    {
+        if (Json)
+        {
+            WriteJson(new { ok = false, error = errors.Count == 1 ? errors[0] : $"{errors.Count} problems on the command line", errors, hint });
+            return ExitCodes.BadInput;
+        }
+
+        foreach (var error in errors)
+        {
+            Error.WriteLine($"opanel: {error}");
+        }
+
+        Error.WriteLine($"opanel: {hint}");
+        return ExitCodes.BadInput;
+    }
+
     /// <summary>Reports bad input: a JSON object on stdout with --json, otherwise the message on stderr.</summary>
     public int Fail(int exitCode, string message)
     {

@@ -1,8 +1,10 @@
 using System.CommandLine;
+using System.CommandLine.Invocation;
 using OperatorPanel.Cli.Commands;
 using OperatorPanel.Cli.Logging;
 using OperatorPanel.Core.Audit;
 using OperatorPanel.Historian;
+using Serilog.Core;
 using Serilog.Events;
 
 namespace OperatorPanel.Cli;
@@ -22,6 +24,14 @@ internal static class OpanelApp
         }
 
         var parse = root.Parse(args);
+        if (parse.Action is ParseErrorAction)
+        {
+            // Our own report instead of System.CommandLine's (its messages name .NET types, then dump the help): the
+            // same for every verb, and JSON with --json. --help with a bad argument still shows the help (HelpAction).
+            var cli = new CliContext(output, error, options.IsJson(parse), Logger.None);
+            return cli.FailCommandLine(CommandLineErrors.Describe(parse), CommandLineErrors.Hint(parse));
+        }
+
         // Long-running verbs (simulate, watch) handle Ctrl+C and SIGTERM themselves (Hosting/StopSignals) to print a summary.
         var invocation = new InvocationConfiguration { Output = output, Error = error, ProcessTerminationTimeout = null };
         return parse.Invoke(invocation);
@@ -89,6 +99,17 @@ internal sealed class GlobalOptions
         root.Options.Add(_consoleLevel);
         root.Options.Add(_logDir);
     }
+
+    /// <summary>
+    /// Whether --json was given, even on a command line that did not parse: its report is JSON too. A --json whose own
+    /// value could not be read still asked for JSON.
+    /// </summary>
+    public bool IsJson(ParseResult parse) => parse.GetResult(_json) switch
+    {
+        null => false,
+        var json when json.Errors.Any() => true,
+        var json => json.GetValueOrDefault<bool>(),
+    };
 
     public CliContext CreateContext(ParseResult parse, TextWriter output, TextWriter error)
     {

@@ -31,7 +31,7 @@ internal static class SimulateCommand
         var serial = new SerialOptionSet(panelSide: false);
         var handler = new HandlerOptionSet();
         var noProcess = new Option<bool>("--no-process") { Description = "Do not run the demo bottling process: memory stays as the panel writes it" };
-        var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
+        var duration = new Option<double?>("--duration") { HelpName = "seconds", Description = "Stop after this many seconds (default: until Ctrl+C)" };
         var model = ModelOption.Create();
         var ppi = new Option<bool>("--ppi")
         {

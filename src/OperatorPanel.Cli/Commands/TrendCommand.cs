@@ -26,7 +26,7 @@ internal static class TrendCommand
         var demo = new Option<bool>("--demo") { Description = "Simulate every station in-process (the demo process) instead of opening the ports" };
         var model = ModelOption.Create();
         var span = new Option<string>("--span") { Description = "The window the chart shows, back from now: 90s, 10m, 2h (default 10m)", DefaultValueFactory = _ => "10m" };
-        var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
+        var duration = new Option<double?>("--duration") { HelpName = "seconds", Description = "Stop after this many seconds (default: until Ctrl+C)" };
         var width = new Option<int>("--width") { Description = "Chart columns (default 72)", DefaultValueFactory = _ => 72 };
         var height = new Option<int>("--height") { Description = "Chart rows per tag (default 6)", DefaultValueFactory = _ => 6 };
         var command = new Command(

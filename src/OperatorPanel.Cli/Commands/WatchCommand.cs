@@ -27,7 +27,7 @@ internal static class WatchCommand
         var demo = new Option<bool>("--demo") { Description = "Simulate every station in-process (its CPU, running the demo process) instead of opening the ports" };
         var once = new Option<bool>("--once") { Description = "One full refresh, print it and exit" };
         var cycles = new Option<int?>("--cycles") { Description = "Stop after this many full refreshes" };
-        var duration = new Option<double?>("--duration") { Description = "Stop after this many seconds (default: until Ctrl+C)" };
+        var duration = new Option<double?>("--duration") { HelpName = "seconds", Description = "Stop after this many seconds (default: until Ctrl+C)" };
         var ppi = new Option<bool>("--ppi")
         {
             Description = "Read every bus over PPI, the CPU's own protocol, with no handler (a station in STOP or at TERM answers): "
