@@ -40,10 +40,12 @@ internal sealed record IdentifyView(
 {
     public static IdentifyView From(LinkTarget target, IdentifyResponse r)
     {
-        var model = IdentityCpuCheck.GeneratedFor(r);
+        var model = IdentifyCheck.GeneratedFor(r);
         var revision = r.CpuRevisionCode == HandlerIdentity.CpuRevisionCode(CpuRevision.Early) ? CpuRevision.Early : CpuRevision.Current;
         var generatedFor = model is { } m2 ? $"{CpuModelNames.Format(m2)} ({revision})" : $"unknown CPU code {r.CpuModelCode}";
-        var smb6Means = IdentityCpuCheck.Smb6Means(r.Smb6);
+        var cpuId = (byte)(r.Smb6 & 0xF0);
+        var smb6Models = CpuProfiles.All.Where(p => p.CpuIdCode == cpuId).Select(p => CpuModelNames.Format(p.Model)).Distinct().ToList();
+        var smb6Means = smb6Models.Count == 0 ? "unknown CPU type" : string.Join(" or ", smb6Models);
         var areas = Enum.GetValues<ProtocolArea>().Where(a => (r.WriteMask & (1 << (int)a)) != 0).Select(a => a.ToString()).ToList();
         var v3 = r.V3Identity;
         var features = new[] { (v3?.HasList ?? false) ? "list" : null, r.StopEnabled ? "STOP" : null }.OfType<string>().ToList();
@@ -73,9 +75,8 @@ internal sealed record IdentifyView(
             r.MaxReadData,
             r.StopEnabled,
             target.Cpu?.DisplayName,
-            target.Cpu is null ? null : IdentityCpuCheck.Mismatch(target.Cpu, r));
+            target.Cpu is null ? null : IdentifyCheck.Mismatch(r, target.Cpu));
     }
-
 
     private static string Hex(byte value) => "16#" + value.ToString("X2", CultureInfo.InvariantCulture);
 

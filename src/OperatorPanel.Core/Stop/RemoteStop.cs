@@ -77,7 +77,7 @@ public sealed class RemoteStop(IPlcLink link, ILogger? logger = null, AuditConte
         return reply.Response switch
         {
             null => new StopOutcome.NotSent(station, reply.Failure!.Message),
-            IdentifyResponse identity when expectedCpu is not null && IdentityCpuCheck.Mismatch(expectedCpu, identity) is { } mismatch =>
+            IdentifyResponse identity when expectedCpu is not null && IdentifyCheck.Mismatch(identity, expectedCpu) is { } mismatch =>
                 new StopOutcome.WrongCpu(station, expectedCpu.Name, mismatch),
             IdentifyResponse { StopEnabled: true } => null,
             IdentifyResponse => new StopOutcome.NotInHandler(station),
