@@ -25,6 +25,12 @@ internal sealed record LinkFailure(string Error, PlcErrorKind? Kind, string? Hin
 
     public static string? HintFor(LinkTarget target, PlcErrorKind? kind)
     {
+        ArgumentNullException.ThrowIfNull(target);
+        if (target.Serial.Protocol == LinkProtocol.Ppi && PpiHintFor(target, kind) is { } ppi)
+        {
+            return ppi;
+        }
+
         var station = target.Station.Address;
         var line = target.Serial.LineText;
         return kind switch
@@ -43,6 +49,33 @@ internal sealed record LinkFailure(string Error, PlcErrorKind? Kind, string? Hin
                 "another PPI master (Micro/WIN, a TD 200, an HMI or a CPU in PPI master mode) is on the bus: the panel does not share "
                 + "the bus with another master; disconnect it or give the panel its own port",
             PlcErrorKind.NegativeReply or PlcErrorKind.HandlerOutdated or null => null,
+        };
+    }
+
+    /// <summary>
+    /// On a PPI bus no program of ours is in the CPU: the checks are the CPU's port settings (system block), the cable and
+    /// the bus, never the handler (docs/ppi.md sections 4 and 14). Null where the Freeport hint fits PPI as well (the port,
+    /// another master).
+    /// </summary>
+    private static string? PpiHintFor(LinkTarget target, PlcErrorKind? kind)
+    {
+        var station = target.Station.Address;
+        var baud = target.Serial.BaudRate;
+        return kind switch
+        {
+            PlcErrorKind.NoAnswer =>
+                $"nothing answers at PPI address {station}: check the CPU's port settings in its system block (PPI address {station}, "
+                + $"{baud} baud; PPI is always 8 data bits, even parity), the PC/PPI cable's baud switches, that no program holds the "
+                + "port in Freeport (with its mode switch at RUN a Freeport program's port does not speak PPI; in STOP or at TERM it "
+                + "does), and the cable",
+            PlcErrorKind.Timeout =>
+                $"the CPU at PPI address {station} took the job but its answer did not come within the time allowed: a CPU answers "
+                + "after its scan, so allow for a long scan with --scan-ms",
+            PlcErrorKind.FrameCorrupt =>
+                $"the answers were garbled or not the answer to this job: check that the CPU's port runs PPI at {baud} baud, that no "
+                + $"other station on the bus has PPI address {station}, and the RS-485 wiring; a ReferenceMismatch is a late answer "
+                + "to an earlier job, which a slow or busy line explains (try again, or a longer --scan-ms)",
+            _ => null,
         };
     }
 

@@ -9,10 +9,12 @@ using Serilog;
 namespace OperatorPanel.Core.Link;
 
 /// <summary>
-/// The link of a PPI bus (docs/ppi.md section 4): its port, opened before each job, and the <see cref="PpiMaster"/>s
-/// on it. Reads go through a master that repeats an unacknowledged request and a garbled poll; writes through one that
-/// sends each frame once (<see cref="PpiMasterOptions.Retries"/> 0), as the Freeport link never repeats a request that
-/// acts on the process: a write whose answer is lost is settled by a read-back, never sent again. After another master
+/// The link of a PPI bus (docs/ppi.md sections 4 and 14): its port, opened before each job, and the one
+/// <see cref="PpiMaster"/> on it, so every job on the port, read or write, takes the next PDU reference of one sequence
+/// (section 5.1: a late answer to the previous job is never taken for the pending one). Reads repeat an unacknowledged
+/// job; a write job goes out once, as the Freeport link never repeats a request that acts on the process (a write whose
+/// answer is lost is settled by a read-back, never sent again); polls without a sound answer are repeated for both,
+/// with the same frame count bit, which fetches the answer again without doing the job again. After another master
 /// was seen the link stays off the bus for <see cref="AnotherMasterRest"/> (every job fails at once, nothing is sent) and
 /// <see cref="Problem"/> says so. One job at a time: its bus (Line/Bus) is its one caller, through the bus's queue.
 /// </summary>
@@ -20,8 +22,7 @@ public sealed class PpiLink : IAsyncDisposable
 {
     private readonly ITransport _transport;
     private readonly TimeProvider _time;
-    private readonly PpiMaster _reads;
-    private readonly PpiMaster _writes;
+    private readonly PpiMaster _master;
     private readonly ConcurrentDictionary<Station, StationStatistics> _statistics = new();
     private DateTimeOffset? _anotherMasterAt;
     private string? _problem;
@@ -38,8 +39,7 @@ public sealed class PpiLink : IAsyncDisposable
         ArgumentNullException.ThrowIfNull(options);
         _transport = transport;
         _time = time ?? TimeProvider.System;
-        _reads = new PpiMaster(transport, options, _time, log);
-        _writes = new PpiMaster(transport, options with { Retries = 0 }, _time, log);
+        _master = new PpiMaster(transport, options, _time, log);
     }
 
     /// <summary>How long the link keeps off the bus after it saw another master. Not from a source: long enough not to disturb a programming session.</summary>
@@ -50,8 +50,8 @@ public sealed class PpiLink : IAsyncDisposable
     /// <summary>"another master on the bus ..." while the link keeps off the bus; null otherwise.</summary>
     public string? Problem => Volatile.Read(ref _problem);
 
-    /// <summary>Jobs answered, polls answered "no data yet", frames sent again: both masters together.</summary>
-    public PpiCounters Counters => new(_reads.Exchanges + _writes.Exchanges, _reads.EmptyPolls + _writes.EmptyPolls, _reads.Repeats + _writes.Repeats);
+    /// <summary>Jobs answered, polls answered "no data yet", frames sent again.</summary>
+    public PpiCounters Counters => new(_master.Exchanges, _master.EmptyPolls, _master.Repeats);
 
     /// <summary>Per station, as on a Freeport link: a job is a request; its repeats are retries; a silent job a time-out.</summary>
     public LinkStatistics StatisticsFor(Station station) =>
@@ -76,16 +76,17 @@ public sealed class PpiLink : IAsyncDisposable
     }
 
     public Task<ImmutableArray<S7ItemResult>> ReadAsync(Station station, IReadOnlyList<S7Item> items, CancellationToken cancellationToken) =>
-        RunAsync(station, master => master.ReadAsync(station, items, cancellationToken), _reads, cancellationToken);
+        RunAsync(station, master => master.ReadAsync(station, items, cancellationToken), cancellationToken);
 
-    /// <summary>A write job sent once; a failure after <see cref="EnsureReadyAsync"/> may have reached the CPU.</summary>
+    /// <summary>A write job sent once (its polls repeated); a failure after <see cref="EnsureReadyAsync"/> may have reached the CPU.</summary>
     public Task<ImmutableArray<S7ReturnCode>> WriteAsync(Station station, IReadOnlyList<S7WriteItem> items, CancellationToken cancellationToken) =>
-        RunAsync(station, master => master.WriteAsync(station, items, cancellationToken), _writes, cancellationToken);
+        RunAsync(station, master => master.WriteAsync(station, items, cancellationToken), cancellationToken);
 
     public async ValueTask DisposeAsync() => await _transport.DisposeAsync().ConfigureAwait(false);
 
-    private async Task<T> RunAsync<T>(Station station, Func<PpiMaster, Task<T>> job, PpiMaster master, CancellationToken cancellationToken)
+    private async Task<T> RunAsync<T>(Station station, Func<PpiMaster, Task<T>> job, CancellationToken cancellationToken)
     {
+        var master = _master;
         await EnsureReadyAsync(station, cancellationToken).ConfigureAwait(false);
         var statistics = _statistics.GetOrAdd(station, _ => new StationStatistics());
         var (started, repeats) = (_time.GetTimestamp(), master.Repeats);

@@ -11,14 +11,24 @@ public sealed partial class PpiMaster
     /// Sends <paramref name="job"/> to <paramref name="station"/> and returns the PDU it answers with, unchecked beyond
     /// the FDL layer. A request without acknowledge is sent again (the same frame: FCV = 0, so the CPU takes it as new);
     /// a poll without a sound answer is repeated with the same frame count bit, which asks the CPU to repeat its last
-    /// answer (PROFIBUS spec part 4 p. 131).
+    /// answer (PROFIBUS spec part 4 p. 131). For a job that acts on the process use the write path, which sends the job
+    /// once.
     /// </summary>
-    public async Task<byte[]> ExchangeAsync(Station station, byte[] job, CancellationToken cancellationToken)
+    public Task<byte[]> ExchangeAsync(Station station, byte[] job, CancellationToken cancellationToken) =>
+        ExchangeAsync(station, job, JobSending.RepeatUnacknowledged, cancellationToken);
+
+    /// <summary>
+    /// The exchange, with the job sent once (<see cref="JobSending.Once"/>) or repeated while unacknowledged. Only the
+    /// job's SD2 frame differs: a poll carries no job, so repeating it (same FCB: the CPU repeats its answer and does
+    /// nothing again) is safe for every job.
+    /// </summary>
+    private async Task<byte[]> ExchangeAsync(Station station, byte[] job, JobSending sending, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(job);
         var address = (byte)station.Address;
         var request = PpiFrameCodec.Encode(PpiFrame.Variable(address, Options.MasterAddress, PpiFunctionCode.FirstRequest, job));
-        var answer = await SendAsync(station, request, acknowledgeOnly: true, cancellationToken).ConfigureAwait(false);
+        var jobRetries = sending == JobSending.Once ? 0 : Options.Retries;
+        var answer = await SendAsync(station, request, acknowledgeOnly: true, jobRetries, cancellationToken).ConfigureAwait(false);
         var frameCount = false;
         var polled = false;
         var pollsUntil = _time.GetTimestamp() + Ticks(Options.AnswerTimeout);
@@ -36,7 +46,7 @@ public sealed partial class PpiMaster
             }
 
             var poll = PpiFrameCodec.Encode(PpiFrame.Fixed(address, Options.MasterAddress, PpiFunctionCode.Poll(frameCount)));
-            answer = await SendAsync(station, poll, acknowledgeOnly: false, cancellationToken).ConfigureAwait(false);
+            answer = await SendAsync(station, poll, acknowledgeOnly: false, Options.Retries, cancellationToken).ConfigureAwait(false);
             frameCount = !frameCount;
             polled = true;
             EmptyPolls += answer is null ? 1 : 0;
@@ -47,15 +57,15 @@ public sealed partial class PpiMaster
     }
 
     /// <summary>
-    /// Sends <paramref name="frame"/> (again, up to <see cref="PpiMasterOptions.Retries"/> times) until the station
-    /// answers soundly: null for 16#E5, or the data of its SD2 answer to us. With <paramref name="acknowledgeOnly"/>
-    /// 16#E5 is what is expected, but an immediate data answer is taken too.
+    /// Sends <paramref name="frame"/> (again, up to <paramref name="retries"/> times) until the station answers soundly:
+    /// null for 16#E5, or the data of its SD2 answer to us. With <paramref name="acknowledgeOnly"/> 16#E5 is what is
+    /// expected, but an immediate data answer is taken too.
     /// </summary>
-    private async Task<ImmutableArray<byte>?> SendAsync(Station station, byte[] frame, bool acknowledgeOnly, CancellationToken cancellationToken)
+    private async Task<ImmutableArray<byte>?> SendAsync(Station station, byte[] frame, bool acknowledgeOnly, int retries, CancellationToken cancellationToken)
     {
         var what = acknowledgeOnly ? "the job" : "a poll";
         string? garbled = null;
-        for (var attempt = 0; attempt <= Options.Retries; attempt++)
+        for (var attempt = 0; attempt <= retries; attempt++)
         {
             Repeats += attempt > 0 ? 1 : 0;
             _transport.DiscardInput();
@@ -81,7 +91,7 @@ public sealed partial class PpiMaster
 
         throw garbled is null
             ? new PlcCommunicationException(PlcErrorKind.NoAnswer, station,
-                $"{station} did not answer {what} ({Options.Retries + 1} tries): is a CPU at PPI address {station.Address} on the bus at this baud rate, 8 data bits, even parity?")
+                $"{station} did not answer {what} ({(retries == 0 ? "sent once" : $"{retries + 1} tries")}): is a CPU at PPI address {station.Address} on the bus at this baud rate, 8 data bits, even parity?")
             : new PlcCommunicationException(PlcErrorKind.FrameCorrupt, station, $"{station}: garbled answer to {what}: {garbled}");
     }
 
@@ -146,6 +156,15 @@ public sealed partial class PpiMaster
     }
 
     private long Ticks(TimeSpan span) => (long)(span.TotalSeconds * _time.TimestampFrequency);
+
+    private enum JobSending
+    {
+        /// <summary>Reads and set-up: a job without acknowledge is sent again (FCV = 0: the CPU takes it as new, and a read does nothing twice).</summary>
+        RepeatUnacknowledged,
+
+        /// <summary>Writes: a job without acknowledge may still have reached the CPU, and sent again it would be done again.</summary>
+        Once,
+    }
 
     private enum Outcome
     {

@@ -10,7 +10,8 @@ namespace OperatorPanel.Core.Ppi;
 /// A PPI master on an <see cref="ITransport"/>: the panel as the only master on the bus, reading and writing S7-200s
 /// without any program in them (docs/ppi.md section 4). One exchange: the job goes out in an SD2 request (FC 16#6C),
 /// the CPU acknowledges it with 16#E5, and the master polls with SD1 frames (FC 16#5C, 16#7C, alternating the frame
-/// count bit) until the CPU, having handled the job in its scan's communication phase, answers with the data. The
+/// count bit) until the CPU, having handled the job in its scan's communication phase, answers with the data. Reads
+/// repeat an unacknowledged job, writes send theirs once; both repeat a poll without a sound answer. The
 /// master never passes a token: seeing another master's frames ends the exchange with
 /// <see cref="PlcErrorKind.AnotherMaster"/>. Failures are <see cref="PlcCommunicationException"/>s. One exchange at
 /// a time: the bus owner serialises calls.
@@ -53,11 +54,15 @@ public sealed partial class PpiMaster
         return error == S7PduError.None ? results : throw AnswerFailure(station, "read", error, header);
     }
 
+    /// <summary>
+    /// A write job, sent once: without its acknowledge the CPU may have done it, and FCV = 0 would make it do it again.
+    /// Its polls are repeated as a read's (they carry no job). A lost answer is the caller's to settle by a read-back.
+    /// </summary>
     public async Task<ImmutableArray<S7ReturnCode>> WriteAsync(Station station, IReadOnlyList<S7WriteItem> items, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(items);
         var reference = NextReference();
-        var answer = await ExchangeAsync(station, S7JobCodec.Write(reference, items), cancellationToken).ConfigureAwait(false);
+        var answer = await ExchangeAsync(station, S7JobCodec.Write(reference, items), JobSending.Once, cancellationToken).ConfigureAwait(false);
         var error = S7AnswerDecoder.TryWrite(answer, reference, items.Count, out var header, out var codes);
         return error == S7PduError.None ? codes : throw AnswerFailure(station, "write", error, header);
     }
@@ -71,7 +76,11 @@ public sealed partial class PpiMaster
         return error == S7PduError.None ? agreed : throw AnswerFailure(station, "setup communication", error, header);
     }
 
-    /// <summary>The next PDU reference: 1, 2, ... 65535, 1 (0 is left to masters that do not number their jobs).</summary>
+    /// <summary>
+    /// The next PDU reference: 1, 2, ... 65535, 1 (0 is left to masters that do not number their jobs). One sequence for
+    /// every job this master sends, reads, writes and set-up alike, so an answer to the previous job never carries the
+    /// reference of the pending one (docs/ppi.md section 5.1): a link owns one master per port.
+    /// </summary>
     private ushort NextReference() => _reference = (ushort)(_reference == ushort.MaxValue ? 1 : _reference + 1);
 
     private static PlcCommunicationException AnswerFailure(Station station, string job, S7PduError error, S7Header header) => error switch

@@ -25,7 +25,10 @@ public sealed record PpiMasterOptions
     /// </summary>
     public TimeSpan AnswerTimeout { get; init; } = TimeSpan.FromMilliseconds(1000);
 
-    /// <summary>Repeats of a request without acknowledge, or of a poll without a sound answer (libnodave sends up to 3 times).</summary>
+    /// <summary>
+    /// Repeats of a read or set-up job without acknowledge, and of any poll without a sound answer (libnodave sends up
+    /// to 3 times). A write job is sent once whatever this says (<see cref="PpiMaster.WriteAsync"/>).
+    /// </summary>
     public int Retries { get; init; } = 2;
 
     /// <summary>

@@ -102,7 +102,7 @@ public sealed class SimulateCommandTests
         var readInStop = CliRunner.Run(["read", "VB100", "MW4", .. line]);
         var writeInStop = CliRunner.Run(["write", "MW4=7", .. line]);
 
-        write.ExitCode.Should().Be(0, write.Error);
+        write.ExitCode.Should().Be(0, write.Out + write.Error);
         // Each write is confirmed: straight from the CPU's answer or, when a stalled host missed that answer (seen at a
         // load average of 30), by the read-back that follows; either way once, with the value the CPU holds.
         write.Out.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Select(ConfirmedPart).Should().Equal(
@@ -115,7 +115,7 @@ public sealed class SimulateCommandTests
             .And.Contain("mode          unknown over PPI").And.Contain("cpu check     ok: matches CPU 224");
         readInStop.ExitCode.Should().Be(0, readInStop.Error);
         readInStop.Out.Should().Contain("MW4      4660        16#1234      good");
-        writeInStop.ExitCode.Should().Be(0, writeInStop.Error);
+        writeInStop.ExitCode.Should().Be(0, writeInStop.Out + writeInStop.Error);
         writeInStop.Out.Should().StartWith("MW4      4660 -> 7  confirmed");
         (await simulator).Should().Be(0);
     }

@@ -6,10 +6,15 @@ using OperatorPanel.TestKit;
 
 namespace OperatorPanel.Core.Tests.Ppi;
 
-/// <summary>The PPI bus's link: it opens its port, keeps off a bus another master uses, and sends writes once.</summary>
+/// <summary>
+/// The PPI bus's link: it opens its port, keeps off a bus another master uses, sends writes once, and numbers every job
+/// on its port from one sequence of PDU references.
+/// </summary>
 public sealed class PpiLinkTests
 {
     private const string Request = "> 68 1B 1B 68 02 00 6C  32 01 00 00 00 01 00 0E 00 00  04 01 12 0A 10 02 00 0C 00 01 84 00 09 60  DD 16 // read VB300 x12";
+    private const string ReadAnswer = "< 68 21 21 68 00 02 08  32 03 00 00 00 01 00 02 00 10 00 00  04 01 FF 04 00 60 43 6C 99 B2 43 15 80 0B 43 33 66 76  E9 16 // reference 1";
+    private const string Poll5C = "> 10 02 00 5C 5E 16";
     private static readonly S7Item Vb300 = S7Item.Bytes(S7Area.V, 300, 12);
     private static readonly Station Cpu = new(2);
 
@@ -44,5 +49,24 @@ public sealed class PpiLinkTests
 
         (await act.Should().ThrowAsync<PlcCommunicationException>()).Which.Kind.Should().Be(PlcErrorKind.NoAnswer);
         transport.Written.Should().HaveCount(1);
+    }
+
+    [Fact]
+    public async Task Write_AfterARead_TakesTheNextReferenceAndRefusesALateAnswerToTheRead()
+    {
+        var clock = new ManualTimeProvider();
+        var transport = new ScriptedTransport(string.Join('\n',
+            Request, "< E5", Poll5C, ReadAnswer,
+            "> 68 20 20 68 02 00 6C  32 01 00 00 00 02 00 0E 00 05  05 01 12 0A 10 02 00 01 00 00 83 00 00 20  00 04 00 08 2A  C4 16 // write MB4 := 2A, reference 2",
+            "< E5", Poll5C, ReadAnswer + ", the read's answer again: late, or repeated by a CPU"), clock);
+        var link = new PpiLink(transport, 9600, clock);
+        await link.ReadAsync(Cpu, [Vb300], default);
+
+        var act = () => link.WriteAsync(Cpu, [S7WriteItem.Of(S7Item.Bytes(S7Area.M, 4, 1), [0x2A])], default);
+
+        var failure = (await act.Should().ThrowAsync<PlcCommunicationException>()).Which;
+        failure.Kind.Should().Be(PlcErrorKind.FrameCorrupt);
+        failure.Message.Should().Be("station 2 answered the write with an unusable PDU: ReferenceMismatch");
+        transport.AssertComplete();
     }
 }

@@ -182,6 +182,45 @@ public sealed class PpiMasterTests
         transport.AssertComplete();
     }
 
+    [Fact]
+    public async Task Write_AnswerToAPollLost_RepeatsThePollNeverTheJob()
+    {
+        var clock = new ManualTimeProvider();
+        var transport = Script(
+            clock,
+            "> 68 20 20 68 02 00 6C  32 01 00 00 00 01 00 0E 00 05  05 01 12 0A 10 01 00 01 00 00 82 00 00 05  00 03 00 01 01  75 16 // Q0.5 := 1",
+            Acknowledge, Poll5C, "< no response", Poll5C,
+            "< 68 12 12 68 00 02 08  32 03 00 00 00 01 00 02 00 01 00 00  05 01 FF  48 16");
+        var master = new PpiMaster(transport, time: clock);
+        PpiAddressing.TryWrite(PlcAddress.Parse("Q0.5"), 1, out var item, out _);
+
+        var codes = await master.WriteAsync(Cpu, [item!], CancellationToken.None);
+
+        codes.Should().Equal(S7ReturnCode.Success);
+        master.Repeats.Should().Be(1, "the poll, with the same frame count bit: the CPU repeats its answer and writes nothing again");
+        transport.AssertComplete();
+    }
+
+    [Fact]
+    public async Task Write_NoAcknowledge_FailsWithoutSendingTheJobAgain()
+    {
+        var clock = new ManualTimeProvider();
+        var transport = Script(
+            clock,
+            "> 68 20 20 68 02 00 6C  32 01 00 00 00 01 00 0E 00 05  05 01 12 0A 10 01 00 01 00 00 82 00 00 05  00 03 00 01 01  75 16 // Q0.5 := 1",
+            "< no response");
+        var master = new PpiMaster(transport, time: clock);
+        PpiAddressing.TryWrite(PlcAddress.Parse("Q0.5"), 1, out var item, out _);
+
+        var act = () => master.WriteAsync(Cpu, [item!], CancellationToken.None);
+
+        var failure = (await act.Should().ThrowAsync<PlcCommunicationException>()).Which;
+        failure.Kind.Should().Be(PlcErrorKind.NoAnswer);
+        failure.Message.Should().StartWith("station 2 did not answer the job (sent once)");
+        master.Repeats.Should().Be(0);
+        transport.AssertComplete();
+    }
+
     private static ScriptedTransport Script(params string[] lines) => new(string.Join('\n', lines));
 
     private static ScriptedTransport Script(ManualTimeProvider clock, params string[] lines) => new(string.Join('\n', lines), clock);

@@ -143,6 +143,27 @@ public sealed class PpiBusTests
     }
 
     [Fact]
+    public async Task ReadsAndWrites_OnOneBus_NumberedFromOneSequenceOfReferences()
+    {
+        var (line, _) = Create();
+        var transport = new JobRecorder(new SimulatedLineTransport(line));
+        var plan = PpiPollPlanner.Build(((string[])["VB10", "Q0.1", "VW200", "VD300"]).Select(a => new WatchedItem(Cpu2, PlcAddress.Parse(a))));
+        await using var bus = Bus.StartPpi(new PpiLink(transport, 9600, transport.Inner.Clock), plan, BusSettings.OnDemand, transport.Inner.Clock);
+
+        await bus.RefreshAsync();
+        var byteWrite = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("VB10"), [0x05]));
+        var bitWrite = await bus.WriteAsync(WriteRequest.Bit(Cpu2, PlcAddress.Parse("Q0.1"), true));
+        var wordWrite = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("VW200"), [0x04, 0xD2]));
+        await bus.RefreshAsync();
+
+        byteWrite.Should().BeOfType<WriteOutcome.Confirmed>();
+        bitWrite.Should().BeOfType<WriteOutcome.Confirmed>();
+        wordWrite.Should().BeOfType<WriteOutcome.Confirmed>();
+        transport.Jobs.Should().Equal(
+            "read 1", "write 2", "read 3", "write 4", "read 5", "write 6", "read 7", "read 8");
+    }
+
+    [Fact]
     public async Task Write_AddressTheCpuRefuses_FailedWithTheCodesText()
     {
         var (line, _) = Create();
@@ -255,5 +276,43 @@ public sealed class PpiBusTests
     {
         bus.TryGetValue(Cpu2, PlcAddress.Parse(address), out var value).Should().BeTrue();
         return $"{Convert.ToHexString(value.Raw.AsSpan())} {value.Quality}";
+    }
+
+    /// <summary>The panel's side of the wire, noting each job it sends as "read 1", "write 2" (function and PDU reference).</summary>
+    private sealed class JobRecorder(SimulatedLineTransport inner) : ITransport
+    {
+        private readonly PpiFrameReader _reader = new();
+
+        public SimulatedLineTransport Inner => inner;
+
+        public List<string> Jobs { get; } = [];
+
+        public string Name => inner.Name;
+
+        public bool IsOpen => inner.IsOpen;
+
+        public Task OpenAsync(CancellationToken cancellationToken) => inner.OpenAsync(cancellationToken);
+
+        public Task WriteAsync(ReadOnlyMemory<byte> data, CancellationToken cancellationToken)
+        {
+            _reader.Append(data.Span);
+            while (_reader.TryTake(out var result))
+            {
+                if (result.Frame is { Kind: PpiFrameKind.Variable, Data: var pdu })
+                {
+                    var function = pdu[10] switch { 0x04 => "read", 0x05 => "write", var other => $"16#{other:X2}" };
+                    Jobs.Add($"{function} {(pdu[4] << 8) | pdu[5]}");
+                }
+            }
+
+            return inner.WriteAsync(data, cancellationToken);
+        }
+
+        public Task<int> ReadAsync(Memory<byte> buffer, TimeSpan timeout, CancellationToken cancellationToken) =>
+            inner.ReadAsync(buffer, timeout, cancellationToken);
+
+        public void DiscardInput() => inner.DiscardInput();
+
+        public ValueTask DisposeAsync() => inner.DisposeAsync();
     }
 }

@@ -64,6 +64,25 @@ public sealed class StlStationPpiTests
     }
 
     [Fact]
+    public async Task Read_LongestJobAtTheSlowestBaud_AcknowledgedWithinTheFirstWait()
+    {
+        // 19 items fill the 240-byte PDU: a 249-character SD2 telegram, 285 ms on the wire at 9600 baud. The simulated
+        // CPU takes it at the baud rate and acknowledges 11 bit times after its last character (288 ms after it was
+        // written); the master waits the telegram's own time plus its reply time-out (100 ms here, 300 in opanel).
+        var (line, _) = Create(EmptyProgram.Awl);
+        var master = Master(line, out _);
+        var items = Enumerable.Range(0, 19).Select(i => S7Item.Bytes(S7Area.M, i, 1)).ToArray();
+        var request = PpiFrameCodec.Encode(PpiFrame.Variable(2, 0, PpiFunctionCode.FirstRequest, S7JobCodec.Read(1, items)));
+
+        var results = await master.ReadAsync(Cpu, items, default);
+
+        request.Length.Should().Be(249);
+        results.Should().HaveCount(19).And.OnlyContain(r => r.Succeeded);
+        master.Repeats.Should().Be(0, "the acknowledge came within the first wait, so the job was not sent again");
+        (master.Options.Characters(249) + master.Options.ReplyTimeout).Should().BeGreaterThan(PpiLine.Bits((11L * 250) + 11));
+    }
+
+    [Fact]
     public async Task Read_LongScans_AnswerWaitsForTheCommunicationPhase()
     {
         var (line, station) = Create(EmptyProgram.Awl);
