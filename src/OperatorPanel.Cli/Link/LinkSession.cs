@@ -61,13 +61,12 @@ internal sealed class LinkSession : IAsyncDisposable
     public static LinkOptions OptionsFor(SerialSettings serial, TimeSpan? scanAllowance, bool demo)
     {
         var options = V3LinkOptions.For(serial);
-        options = scanAllowance is { } scan ? options with { ScanAllowance = scan } : options;
-
-        // Raised above the default for a long program: each of the handler's scans for a request may take that long too
-        // (docs/protocol.md section 7).
-        if (scanAllowance is { } slow && slow > V3LinkOptions.For(serial).ScanAllowance && slow > options.HandlerScanAllowance)
+        if (scanAllowance is { } scan)
         {
-            options = options with { HandlerScanAllowance = slow };
+            // Raised above the default for a long program: each of the handler's scans for a request may take that
+            // long too (docs/protocol.md section 7).
+            var perScan = scan > options.ScanAllowance && scan > options.HandlerScanAllowance ? scan : options.HandlerScanAllowance;
+            options = options with { ScanAllowance = scan, HandlerScanAllowance = perScan };
         }
 
         return demo ? options with { ScanAllowance = options.ScanAllowance + DemoLine.HostAllowance } : options;

@@ -47,12 +47,9 @@ public sealed class V3IdentifyStopTests
     [Fact]
     public async Task Identify_StationRunsAV2Handler_SaysRegenerateThePlcCode()
     {
-        var bus = new BusSimulator();
-        bus.Attach(new ReferencePlc(new HandlerConfig(Two, CpuProfiles.For(CpuModel.Cpu224))));
-        var transport = new SimulatedLineTransport(new ReferenceLine(bus, []));
-        var options = LinkOptions.For(new SerialSettings { PortName = "simulated", BaudRate = 9600 }) with { InterFrameGap = TimeSpan.Zero };
+        var (link, clock) = LinkToAV2Station();
         var plan = PollPlanner.Build([new WatchedItem(Two, PlcAddress.Parse("VB100"))], new Dictionary<Station, CpuProfile> { [Two] = CpuProfiles.For(CpuModel.Cpu224) });
-        await using var panel = Bus.StartV3(new V3Link(transport, options, transport.Clock), plan, BusSettings.OnDemand, transport.Clock);
+        await using var panel = Bus.StartV3(link, plan, BusSettings.OnDemand, clock);
 
         var reply = await panel.IdentifyAsync(Two);
 
@@ -63,11 +60,7 @@ public sealed class V3IdentifyStopTests
     [Fact]
     public async Task Read_StationRunsAV2Handler_SaysRegenerateThePlcCodeOnce()
     {
-        var bus = new BusSimulator();
-        bus.Attach(new ReferencePlc(new HandlerConfig(Two, CpuProfiles.For(CpuModel.Cpu224))));
-        var transport = new SimulatedLineTransport(new ReferenceLine(bus, []));
-        var options = LinkOptions.For(new SerialSettings { PortName = "simulated", BaudRate = 9600 }) with { InterFrameGap = TimeSpan.Zero };
-        var link = new V3Link(transport, options, transport.Clock);
+        var (link, _) = LinkToAV2Station();
 
         var first = await link.ExchangeAsync(new ReadRequest(Two, [new ReadItem(ProtocolArea.V, 100, 1)]), default);
         var second = await link.ExchangeAsync(new ReadRequest(Two, [new ReadItem(ProtocolArea.V, 100, 1)]), default);
@@ -132,5 +125,15 @@ public sealed class V3IdentifyStopTests
 
         rig.Value("VB100").Should().Be("42 Good");
         rig.Requests.Should().Equal(Command.Identify, Command.Read, Command.Read);
+    }
+
+    /// <summary>A v3 link to station 2 running the v2 reference handler, on a simulated line in simulated time.</summary>
+    private static (V3Link Link, TimeProvider Clock) LinkToAV2Station()
+    {
+        var bus = new BusSimulator();
+        bus.Attach(new ReferencePlc(new HandlerConfig(Two, CpuProfiles.For(CpuModel.Cpu224))));
+        var transport = new SimulatedLineTransport(new ReferenceLine(bus, []));
+        var options = LinkOptions.For(new SerialSettings { PortName = "simulated", BaudRate = 9600 }) with { InterFrameGap = TimeSpan.Zero };
+        return (new V3Link(transport, options, transport.Clock), transport.Clock);
     }
 }
