@@ -123,17 +123,116 @@ internal static class CommandLineErrors
     {
         var command = parse.CommandResult;
         var verb = CommandPath(command);
-        foreach (var token in parse.UnmatchedTokens)
+        var unmatched = parse.UnmatchedTokens.ToList();
+        var commands = command.Command.Subcommands.Where(c => !c.Hidden).Select(c => c.Name).ToList();
+        var optionNames = OptionNames(command).ToList();
+        var commandNamed = false;
+        for (var i = 0; i < unmatched.Count; i++)
         {
-            yield return token.StartsWith('-') ? $"{verb} has no option {token}" : $"{verb} takes no argument '{token}'";
+            var token = unmatched[i];
+            if (token.StartsWith('-'))
+            {
+                // A mistyped option's value would otherwise be a second problem ("takes no argument 'out'") that
+                // the user did not make: it is named with its option.
+                var value = i + 1 < unmatched.Count && !unmatched[i + 1].StartsWith('-') && FollowsInLine(parse, token, unmatched[i + 1])
+                    ? unmatched[++i]
+                    : null;
+                var given = value is null ? "" : $" (given '{value}')";
+                yield return $"{verb} has no option {token}{given}{Suggestion(token, optionNames)}";
+            }
+            else if (i == 0 && command.Command.Action is null && commands.Count > 0)
+            {
+                // What follows a mistyped command is its arguments and options: one problem, not several.
+                commandNamed = true;
+                yield return $"{verb} has no command '{token}'{Suggestion(token, commands)}";
+                yield break;
+            }
+            else
+            {
+                yield return $"{verb} takes no argument '{token}'";
+            }
         }
 
-        if (command.Command.Action is null && command.Command.Subcommands.Count > 0)
+        if (command.Command.Action is null && commands.Count > 0 && !commandNamed)
         {
-            var names = command.Command.Subcommands.Where(c => !c.Hidden).Select(c => c.Name).ToList();
-            var choice = names.Count == 1 ? names[0] : $"{string.Join(", ", names[..^1])} or {names[^1]}";
+            var choice = commands.Count == 1 ? commands[0] : $"{string.Join(", ", commands[..^1])} or {commands[^1]}";
             yield return $"{verb} needs a command: {choice}";
         }
+    }
+
+    /// <summary>Whether <paramref name="value"/> came right after <paramref name="option"/> on the command line.</summary>
+    private static bool FollowsInLine(ParseResult parse, string option, string value)
+    {
+        var tokens = parse.Tokens.Select(t => t.Value).ToList();
+        var at = tokens.IndexOf(option);
+        return at >= 0 && at + 1 < tokens.Count && tokens[at + 1] == value;
+    }
+
+    /// <summary>The options the command and its parents take (global ones too), by every name and alias.</summary>
+    private static IEnumerable<string> OptionNames(CommandResult command)
+    {
+        for (SymbolResult? result = command; result is CommandResult c; result = c.Parent)
+        {
+            foreach (var option in c.Command.Options.Where(o => !o.Hidden && (o.Recursive || ReferenceEquals(c, command))))
+            {
+                yield return option.Name;
+                foreach (var alias in option.Aliases)
+                {
+                    yield return alias;
+                }
+            }
+        }
+    }
+
+    /// <summary>": did you mean --output?" for a name within two edits of one the command takes (or one it begins); else nothing.</summary>
+    private static string Suggestion(string typed, IReadOnlyList<string> names)
+    {
+        var best = names
+            .Where(n => n.Length > 1)
+            .Select(n => (Name: n, Distance: EditDistance(typed.ToLowerInvariant(), n.ToLowerInvariant())))
+            .Where(c => c.Distance <= Math.Max(1, Math.Min(2, typed.Length / 3)) || (typed.Length >= 3 && c.Name.StartsWith(typed, StringComparison.OrdinalIgnoreCase)))
+            .OrderBy(c => c.Distance)
+            .ThenBy(c => c.Name, StringComparer.Ordinal)
+            .Select(c => c.Name)
+            .Distinct()
+            .Take(2)
+            .ToList();
+        return best.Count switch
+        {
+            0 => "",
+            1 => $": did you mean {best[0]}?",
+            _ => $": did you mean {best[0]} or {best[1]}?",
+        };
+    }
+
+    /// <summary>Levenshtein distance, a transposition counted as one edit ("wacth" is one from "watch").</summary>
+    private static int EditDistance(string a, string b)
+    {
+        var d = new int[a.Length + 1, b.Length + 1];
+        for (var i = 0; i <= a.Length; i++)
+        {
+            d[i, 0] = i;
+        }
+
+        for (var j = 0; j <= b.Length; j++)
+        {
+            d[0, j] = j;
+        }
+
+        for (var i = 1; i <= a.Length; i++)
+        {
+            for (var j = 1; j <= b.Length; j++)
+            {
+                var cost = a[i - 1] == b[j - 1] ? 0 : 1;
+                d[i, j] = Math.Min(Math.Min(d[i - 1, j] + 1, d[i, j - 1] + 1), d[i - 1, j - 1] + cost);
+                if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                {
+                    d[i, j] = Math.Min(d[i, j], d[i - 2, j - 2] + 1);
+                }
+            }
+        }
+
+        return d[a.Length, b.Length];
     }
 
     private static string Described(string? description) => description is { Length: > 0 } text ? $" ({text})" : "";

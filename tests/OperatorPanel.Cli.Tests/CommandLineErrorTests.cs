@@ -44,6 +44,12 @@ public sealed class CommandLineErrorTests
         { ["address", "VB1"], "opanel address needs --cpu (CPU model: 221, 222, 224, 224XP or 226)", "address" },
         { ["cpus", "extra"], "opanel cpus takes no argument 'extra'", "cpus" },
         { ["bench"], "opanel bench needs a command: link, stl, plan or history", "bench" },
+        { ["wach", "p.opproj", "--cycles", "3"], "opanel has no command 'wach': did you mean watch?", "" },
+        { ["bench", "lnk"], "opanel bench has no command 'lnk': did you mean link?", "bench" },
+        { ["project", "nwe", "--cpu", "224"], "opanel project has no command 'nwe': did you mean new?", "project" },
+        { ["project", "frobnicate"], "opanel project has no command 'frobnicate'", "project" },
+        { ["watch", "p.opproj", "--cyles", "3"], "opanel watch has no option --cyles (given '3'): did you mean --cycles?", "watch" },
+        { ["cpus", "--jsno"], "opanel cpus has no option --jsno: did you mean --json?", "cpus" },
     };
 
     [Theory]
@@ -54,7 +60,7 @@ public sealed class CommandLineErrorTests
 
         exit.Should().Be(1);
         output.Should().BeEmpty();
-        error.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal($"opanel: {message}", $"opanel: see opanel {verb} --help");
+        error.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal($"opanel: {message}", $"opanel: see {$"opanel {verb}".TrimEnd()} --help");
         error.Should().NotContain("System.").And.NotContain("OperatorPanel.").And.NotContain("Usage:");
     }
 
