@@ -77,11 +77,17 @@ public sealed partial class PpiMaster
     }
 
     /// <summary>
-    /// The next PDU reference: 1, 2, ... 65535, 1 (0 is left to masters that do not number their jobs). One sequence for
-    /// every job this master sends, reads, writes and set-up alike, so an answer to the previous job never carries the
-    /// reference of the pending one (docs/ppi.md section 5.1): a link owns one master per port.
+    /// The next PDU reference: from <see cref="PpiMasterOptions.FirstReference"/> on, ... 65535, 1 (0 is left to masters
+    /// that do not number their jobs). One sequence for every job this master sends, reads, writes and set-up alike, so
+    /// an answer to the previous job never carries the reference of the pending one (docs/ppi.md section 5.1): a link
+    /// owns one master per port.
     /// </summary>
-    private ushort NextReference() => _reference = (ushort)(_reference == ushort.MaxValue ? 1 : _reference + 1);
+    private ushort NextReference()
+    {
+        _reference = _reference == 0 ? Math.Max(Options.FirstReference, (ushort)1)
+            : (ushort)(_reference == ushort.MaxValue ? 1 : _reference + 1);
+        return _reference;
+    }
 
     private static PlcCommunicationException AnswerFailure(Station station, string job, S7PduError error, S7Header header) => error switch
     {

@@ -37,6 +37,13 @@ public sealed record PpiMasterOptions
     /// </summary>
     public TimeSpan PollPause { get; init; } = TimeSpan.Zero;
 
+    /// <summary>
+    /// The PDU reference of the master's first job. A random one for each link (each `opanel` run, each connect of the
+    /// app), because a CPU keeps an answer until it is polled: an answer left by a run that ended mid-exchange would
+    /// carry the new run's first reference if every run started at 1, and be taken for the new job's (docs/ppi.md 5.1).
+    /// </summary>
+    public ushort FirstReference { get; init; } = (ushort)Random.Shared.Next(1, ushort.MaxValue + 1);
+
     public static PpiMasterOptions ForBaud(int baud) =>
         new() { CharacterTime = TimeSpan.FromTicks(TimeSpan.TicksPerSecond * 11 / baud) };
 

@@ -1,5 +1,6 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Link;
+using OperatorPanel.Core.Ppi;
 using OperatorPanel.Core.Ppi.S7;
 using OperatorPanel.Core.Transport;
 using OperatorPanel.TestKit;
@@ -23,7 +24,7 @@ public sealed class PpiLinkTests
     {
         var clock = new ManualTimeProvider();
         var transport = new ScriptedTransport(string.Join('\n', Request, "< DC 04 01 // station 1 passes the token to station 4"), clock);
-        var link = new PpiLink(transport, 9600, clock);
+        var link = new PpiLink(transport, PpiMasterOptions.ForBaud(9600) with { FirstReference = 1 }, clock);
 
         var first = () => link.ReadAsync(Cpu, [Vb300], default);
         (await first.Should().ThrowAsync<PlcCommunicationException>()).Which.Kind.Should().Be(PlcErrorKind.AnotherMaster);
@@ -43,7 +44,7 @@ public sealed class PpiLinkTests
         var clock = new ManualTimeProvider();
         var write = "> 68 20 20 68 02 00 6C  32 01 00 00 00 01 00 0E 00 05  05 01 12 0A 10 02 00 01 00 00 83 00 00 20  00 04 00 08 2A  C3 16 // write MB4 := 2A (FCS = sum of DA..data mod 256)";
         var transport = new ScriptedTransport(string.Join('\n', write, "< no response"), clock);
-        var link = new PpiLink(transport, 9600, clock);
+        var link = new PpiLink(transport, PpiMasterOptions.ForBaud(9600) with { FirstReference = 1 }, clock);
 
         var act = () => link.WriteAsync(Cpu, [S7WriteItem.Of(S7Item.Bytes(S7Area.M, 4, 1), [0x2A])], default);
 
@@ -59,7 +60,7 @@ public sealed class PpiLinkTests
             Request, "< E5", Poll5C, ReadAnswer,
             "> 68 20 20 68 02 00 6C  32 01 00 00 00 02 00 0E 00 05  05 01 12 0A 10 02 00 01 00 00 83 00 00 20  00 04 00 08 2A  C4 16 // write MB4 := 2A, reference 2",
             "< E5", Poll5C, ReadAnswer + ", the read's answer again: late, or repeated by a CPU"), clock);
-        var link = new PpiLink(transport, 9600, clock);
+        var link = new PpiLink(transport, PpiMasterOptions.ForBaud(9600) with { FirstReference = 1 }, clock);
         await link.ReadAsync(Cpu, [Vb300], default);
 
         var act = () => link.WriteAsync(Cpu, [S7WriteItem.Of(S7Item.Bytes(S7Area.M, 4, 1), [0x2A])], default);

@@ -21,11 +21,40 @@ public sealed class PpiMasterTests
     private static readonly S7Item Vb300 = S7Item.Bytes(S7Area.V, 300, 12);
     private static readonly Station Cpu = new(2);
 
+    /// <summary>The captures here number the job 1; a real link starts at a random reference.</summary>
+    private static readonly PpiMasterOptions FromOne = new() { FirstReference = 1 };
+
+    [Fact]
+    public async Task Read_FirstJob_CarriesTheLinksFirstReferenceAndTakesOnlyItsAnswer()
+    {
+        var transport = Script(
+            "> 68 1B 1B 68 02 00 6C  32 01 00 00 26 58 00 0E 00 00  04 01 12 0A 10 02 00 0C 00 01 84 00 09 60  5A 16 // reference 16#2658",
+            Acknowledge,
+            Poll5C,
+            "< 68 21 21 68 00 02 08  32 03 00 00 26 58 00 02 00 10 00 00  04 01 FF 04 00 60 43 6C 99 B2 43 15 80 0B 43 33 66 76  66 16");
+        var master = new PpiMaster(transport, new PpiMasterOptions { FirstReference = 0x2658 });
+
+        var results = await master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
+
+        Hex.Format(results[0].Data.AsSpan()).Should().Be("43 6C 99 B2 43 15 80 0B 43 33 66 76");
+        transport.AssertComplete();
+    }
+
+    [Fact]
+    public void Options_EachLinkDrawsItsOwnFirstReference()
+    {
+        // An answer a killed run left in the CPU must not match the next run's first job: not every run starts at 1.
+        var firsts = Enumerable.Range(0, 6).Select(_ => new PpiMasterOptions().FirstReference).ToList();
+
+        firsts.Should().OnlyContain(r => r >= 1);
+        firsts.Distinct().Should().HaveCountGreaterThan(1);
+    }
+
     [Fact]
     public async Task Read_AcknowledgedThenPolled_ReturnsTheBytes()
     {
         var transport = Script(Request, Acknowledge, Poll5C, Answer);
-        var master = new PpiMaster(transport);
+        var master = new PpiMaster(transport, FromOne);
 
         var results = await master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -38,7 +67,7 @@ public sealed class PpiMasterTests
     public async Task Read_CpuNotReadyForTwoPolls_TogglesTheFrameCountBitUntilTheAnswer()
     {
         var transport = Script(Request, Acknowledge, Poll5C, "< E5 // not yet: its scan has not reached the communication phase", Poll7C, "< E5", Poll5C, Answer);
-        var master = new PpiMaster(transport);
+        var master = new PpiMaster(transport, FromOne);
 
         await master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -51,7 +80,7 @@ public sealed class PpiMasterTests
     {
         var clock = new ManualTimeProvider();
         var transport = Script(clock, Request, "< no response", Request, Acknowledge, Poll5C, Answer);
-        var master = new PpiMaster(transport, time: clock);
+        var master = new PpiMaster(transport, FromOne, clock);
 
         await master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -64,7 +93,7 @@ public sealed class PpiMasterTests
     {
         var clock = new ManualTimeProvider();
         var transport = Script(clock, Request, Acknowledge, Poll5C, "< no response", Poll5C, Answer);
-        var master = new PpiMaster(transport, time: clock);
+        var master = new PpiMaster(transport, FromOne, clock);
 
         await master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -76,7 +105,7 @@ public sealed class PpiMasterTests
     {
         var clock = new ManualTimeProvider();
         var transport = Script(clock, Request, "< no response", Request, "< no response", Request, "< no response");
-        var master = new PpiMaster(transport, time: clock);
+        var master = new PpiMaster(transport, FromOne, clock);
 
         var act = () => master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -91,7 +120,7 @@ public sealed class PpiMasterTests
     public async Task Read_TokenFrameOnTheBus_FailsWithAnotherMaster()
     {
         var transport = Script(Request, "< DC 04 01 // station 1 passes the token to station 4");
-        var master = new PpiMaster(transport);
+        var master = new PpiMaster(transport, FromOne);
 
         var act = () => master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -104,7 +133,7 @@ public sealed class PpiMasterTests
     public async Task Read_AnotherMastersRequestToOurCpu_FailsWithAnotherMaster()
     {
         var transport = Script(Request, "< 10 02 01 5C 5F 16 // station 1 polls our CPU");
-        var master = new PpiMaster(transport);
+        var master = new PpiMaster(transport, FromOne);
 
         var act = () => master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -117,7 +146,7 @@ public sealed class PpiMasterTests
         var transport = Script(
             Request, "< 68 1B 1B 68 02 00 6C 32 01 00 00 00 01 00 0E 00 00 04 01 12 0A 10 02 00 0C 00 01 84 00 09 60 DD 16 E5",
             Poll5C, "< 10 02 00 5C 5E 16", Answer);
-        var master = new PpiMaster(transport);
+        var master = new PpiMaster(transport, FromOne);
 
         var results = await master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -130,7 +159,7 @@ public sealed class PpiMasterTests
     {
         const string garbled = "< 68 21 21 68 00 02 08  32 03 00 00 00 01 00 02 00 10 00 00  04 01 FF 04 00 60 43 6C 99 B2 43 15 80 0B 43 33 66 76  E8 16";
         var transport = Script(Request, Acknowledge, Poll5C, garbled, Poll5C, garbled, Poll5C, garbled);
-        var master = new PpiMaster(transport);
+        var master = new PpiMaster(transport, FromOne);
 
         var act = () => master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -144,7 +173,7 @@ public sealed class PpiMasterTests
     public async Task Read_JobRefused_FailsWithNegativeReplyNamingTheError()
     {
         var transport = Script(Request, Acknowledge, Poll5C, "< 68 0F 0F 68 00 02 08  32 02 00 00 00 01 00 00 00 00 85 00  C4 16");
-        var master = new PpiMaster(transport);
+        var master = new PpiMaster(transport, FromOne);
 
         var act = () => master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -158,7 +187,7 @@ public sealed class PpiMasterTests
     {
         var clock = new ManualTimeProvider();
         var transport = Script(clock, Request, Acknowledge, Poll5C, "< no response", Poll5C, "< E5");
-        var master = new PpiMaster(transport, new PpiMasterOptions { AnswerTimeout = TimeSpan.FromMilliseconds(50) }, clock);
+        var master = new PpiMaster(transport, FromOne with { AnswerTimeout = TimeSpan.FromMilliseconds(50) }, clock);
 
         var act = () => master.ReadAsync(Cpu, [Vb300], CancellationToken.None);
 
@@ -173,7 +202,7 @@ public sealed class PpiMasterTests
             "> 68 20 20 68 02 00 6C  32 01 00 00 00 01 00 0E 00 05  05 01 12 0A 10 01 00 01 00 00 82 00 00 05  00 03 00 01 01  75 16 // Q0.5 := 1",
             Acknowledge, Poll5C,
             "< 68 12 12 68 00 02 08  32 03 00 00 00 01 00 02 00 01 00 00  05 01 FF  48 16");
-        var master = new PpiMaster(transport);
+        var master = new PpiMaster(transport, FromOne);
         PpiAddressing.TryWrite(PlcAddress.Parse("Q0.5"), 1, out var item, out _);
 
         var codes = await master.WriteAsync(Cpu, [item!], CancellationToken.None);
@@ -191,7 +220,7 @@ public sealed class PpiMasterTests
             "> 68 20 20 68 02 00 6C  32 01 00 00 00 01 00 0E 00 05  05 01 12 0A 10 01 00 01 00 00 82 00 00 05  00 03 00 01 01  75 16 // Q0.5 := 1",
             Acknowledge, Poll5C, "< no response", Poll5C,
             "< 68 12 12 68 00 02 08  32 03 00 00 00 01 00 02 00 01 00 00  05 01 FF  48 16");
-        var master = new PpiMaster(transport, time: clock);
+        var master = new PpiMaster(transport, FromOne, clock);
         PpiAddressing.TryWrite(PlcAddress.Parse("Q0.5"), 1, out var item, out _);
 
         var codes = await master.WriteAsync(Cpu, [item!], CancellationToken.None);
@@ -209,7 +238,7 @@ public sealed class PpiMasterTests
             clock,
             "> 68 20 20 68 02 00 6C  32 01 00 00 00 01 00 0E 00 05  05 01 12 0A 10 01 00 01 00 00 82 00 00 05  00 03 00 01 01  75 16 // Q0.5 := 1",
             "< no response");
-        var master = new PpiMaster(transport, time: clock);
+        var master = new PpiMaster(transport, FromOne, clock);
         PpiAddressing.TryWrite(PlcAddress.Parse("Q0.5"), 1, out var item, out _);
 
         var act = () => master.WriteAsync(Cpu, [item!], CancellationToken.None);

@@ -148,7 +148,7 @@ public sealed class PpiBusTests
         var (line, _) = Create();
         var transport = new JobRecorder(new SimulatedLineTransport(line));
         var plan = PpiPollPlanner.Build(((string[])["VB10", "Q0.1", "VW200", "VD300"]).Select(a => new WatchedItem(Cpu2, PlcAddress.Parse(a))));
-        await using var bus = Bus.StartPpi(new PpiLink(transport, 9600, transport.Inner.Clock), plan, BusSettings.OnDemand, transport.Inner.Clock);
+        await using var bus = Bus.StartPpi(new PpiLink(transport, PpiMasterOptions.ForBaud(9600) with { FirstReference = 1 }, transport.Inner.Clock), plan, BusSettings.OnDemand, transport.Inner.Clock);
 
         await bus.RefreshAsync();
         var byteWrite = await bus.WriteAsync(WriteRequest.Bytes(Cpu2, PlcAddress.Parse("VB10"), [0x05]));
@@ -269,7 +269,7 @@ public sealed class PpiBusTests
     {
         var transport = new SimulatedLineTransport(line);
         var plan = PpiPollPlanner.Build(addresses.Select(a => new WatchedItem(station, PlcAddress.Parse(a))));
-        return Bus.StartPpi(new PpiLink(transport, 9600, transport.Clock), plan, BusSettings.OnDemand, transport.Clock);
+        return Bus.StartPpi(new PpiLink(transport, PpiMasterOptions.ForBaud(9600) with { FirstReference = 1 }, transport.Clock), plan, BusSettings.OnDemand, transport.Clock);
     }
 
     private static string Value(Bus bus, string address)
