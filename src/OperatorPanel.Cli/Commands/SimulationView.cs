@@ -27,7 +27,11 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
         Compact = configs[0].Compact;
         EndTimeoutMs = Protocol == 3 ? configs[0].V3SetupFor(settings).EndTimeoutMs : 0;
         Stop = configs.Any(c => c.AllowStop && !(c.Protocol == 3 && c.Compact));
+        Handlers = [.. configs.Select(c => (c.Protocol == 3 && c.Compact ? "compact" : "full") + (c.AllowStop && !(c.Protocol == 3 && c.Compact) ? " with STOP" : string.Empty))];
     }
+
+    /// <summary>Each station's handler in station order: "full", "full with STOP", "compact".</summary>
+    public IReadOnlyList<string> Handlers { get; init; } = [];
 
     /// <summary>The handlers' protocol: 3 (what the panel speaks) or 2 (simulate --protocol 2).</summary>
     public int Protocol { get; init; }
@@ -58,8 +62,13 @@ internal sealed record SimulationView(string Cpu, IReadOnlyList<int> Stations, s
         var plcs = _cpus.Distinct().Count() > 1
             ? string.Join(", ", Stations.Select((s, i) => $"station {s} ({_cpus[i]})"))
             : $"{Cpu} at station{(Stations.Count == 1 ? string.Empty : "s")} {string.Join(", ", Stations)}";
+        // Stations of one project may differ (a compact CPU 221 beside a full CPU 226 with STOP): then each is named,
+        // so the banner never claims STOP or a handler shape for a station that does not have it.
+        var shapes = Handlers.Distinct().Count() > 1
+            ? $"handlers: {string.Join(", ", Stations.Select((s, i) => $"station {s} {Handlers[i]}"))}"
+            : $"{(Compact ? "compact" : "full")} handler";
         var timing = Protocol == 3
-            ? $"protocol 3 {(Compact ? "compact" : "full")} handler, END_TIMEOUT_MS {EndTimeoutMs}{(Stop ? ", STOP" : string.Empty)}"
+            ? $"protocol 3 {shapes}, END_TIMEOUT_MS {EndTimeoutMs}{(Stop && Handlers.Distinct().Count() == 1 ? ", STOP" : string.Empty)}"
             : $"protocol 2 handler, reply delay {ReplyDelayMs} ms";
         var handler = Ppi ? "no handler, PPI at the station addresses"
             : (PlcPort == 0 ? string.Empty : $"PLC port {PlcPort}, ") + timing;

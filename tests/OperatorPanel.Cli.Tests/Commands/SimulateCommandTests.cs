@@ -188,7 +188,7 @@ public sealed class SimulateCommandTests
         capper.Out.Should().Contain("generated for CPU 226 (Current)").And.Contain("STOP          not in the handler");
         (await simulator).Should().Be(0);
         Text(output, simulatorOut).Should().StartWith(
-            $"simulating station 2 (CPU 224), station 3 (CPU 226) on {pty.PathA} 9600 8N1, protocol 3 full handler, END_TIMEOUT_MS 4, STOP, model stl, demo process off");
+            $"simulating station 2 (CPU 224), station 3 (CPU 226) on {pty.PathA} 9600 8N1, protocol 3 handlers: station 2 full with STOP, station 3 full, END_TIMEOUT_MS 4, model stl, demo process off");
         File.Delete(project);
     }
 
