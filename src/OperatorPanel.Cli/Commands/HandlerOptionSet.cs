@@ -49,7 +49,7 @@ internal sealed class HandlerOptionSet
 
     public Option<int?> Subroutine { get; } = new("--sbr") { Description = "Subroutine number of the handler (default: the CPU's last)" };
 
-    public Option<int?> Interrupt { get; } = new("--int") { Description = "First of the handler's 3 interrupt routines (default 125)" };
+    public Option<int?> Interrupt { get; } = new("--int") { Description = "First of the handler's interrupt routines: 2 in protocol 3 (receive, transmit complete), 3 in protocol 2 (default 125)" };
 
     public Option<int> CopyBytes { get; } = new("--copy-bytes")
     {

@@ -38,7 +38,8 @@ internal sealed record LinkFailure(string Error, PlcErrorKind? Kind, string? Hin
             PlcErrorKind.NoAnswer or PlcErrorKind.Timeout =>
                 $"nothing answers as station {station}: check that the PLC is in RUN with its mode switch at RUN (at TERM or in STOP "
                 + $"its port speaks PPI to Micro/WIN, not to the panel), that its handler was generated for station {station} at {line} "
-                + $"(the top of the {target.NotesFile ?? "NAME-README.txt"} that opanel generate wrote beside the handler), that OB1 calls OP_PANEL every scan, and the cable or radio module",
+                + $"(the top of the {target.NotesFile ?? "NAME-README.txt"} that opanel generate wrote beside the handler), that OB1 calls OP_PANEL every scan, and the cable or radio module "
+                + "(a station still running a protocol v1 or v2 handler is silent behind radio modules: regenerate its PLC code)",
             PlcErrorKind.PortUnavailable =>
                 $"check the port name ({target.Serial.PortName}), that the cable or USB adapter is plugged in, and that no other "
                 + "program (Micro/WIN, another opanel) has the port open",

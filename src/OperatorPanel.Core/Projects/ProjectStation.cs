@@ -37,7 +37,7 @@ public sealed record ProjectStation(
 
     /// <summary>
     /// The station's handler is the compact protocol 3 handler (IDENTIFY, READ, WRITE, WRITE BITS; no list, no STOP:
-    /// 74 V bytes and about half the instructions, docs/protocol.md section 6), the choice for a CPU 221 or 222 whose
+    /// 178 V bytes and about half the instructions, docs/protocol.md section 6), the choice for a CPU 221 or 222 whose
     /// 4096 bytes of program memory the full handler would crowd. The panel reads such a station with READ; opanel
     /// generate and Generate PLC code honour it. Off by default, and old project files (without "compact") load unchanged.
     /// </summary>

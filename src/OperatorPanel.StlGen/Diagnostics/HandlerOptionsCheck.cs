@@ -109,9 +109,10 @@ public static partial class HandlerOptionsCheck
         }
 
         var first = options.EffectiveFirstInterrupt;
-        if (first < 0 || first + Handler.HandlerLayout.Interrupts > cpu.InterruptRoutines)
+        var count = options.InterruptRoutines;
+        if (first < 0 || first + count > cpu.InterruptRoutines)
         {
-            add(StlDiagnostics.InterruptOutOfRange, $"INT{first}-INT{first + Handler.HandlerLayout.Interrupts - 1} are not all inside INT0-INT{cpu.InterruptRoutines - 1}; the first INT may be 0-{cpu.InterruptRoutines - Handler.HandlerLayout.Interrupts}");
+            add(StlDiagnostics.InterruptOutOfRange, $"INT{first}-INT{first + count - 1} are not all inside INT0-INT{cpu.InterruptRoutines - 1}; the first INT may be 0-{cpu.InterruptRoutines - count}");
         }
 
         var names = options.Names.All.ToList();

@@ -18,6 +18,7 @@ internal sealed class HandlerFootprint
         Port = options.Port;
         Subroutine = options.EffectiveFirstSubroutine;
         FirstInterrupt = options.EffectiveFirstInterrupt;
+        LastInterrupt = FirstInterrupt + options.InterruptRoutines - 1;
         Names = [.. options.Names.All];
         UsesTimedInterrupt = options.Protocol != 3;
         ReceiveEvent = context.ReceiveEvent;
@@ -38,7 +39,7 @@ internal sealed class HandlerFootprint
 
     public int FirstInterrupt { get; }
 
-    public int LastInterrupt => FirstInterrupt + HandlerLayout.Interrupts - 1;
+    public int LastInterrupt { get; }
 
     public ImmutableArray<string> Names { get; }
 

@@ -46,7 +46,7 @@ public static class HandlerDefaults
         return cpu.Subroutines - HandlerLayout.Subroutines;
     }
 
-    /// <summary>INT125-INT127, the top three of the 128 interrupt routines, for the same reason as the subroutine.</summary>
+    /// <summary>INT125 on, for the same reason as the subroutine: protocol 2 takes INT125-INT127, protocol 3 INT125-INT126 and leaves INT127 free.</summary>
     public static int FirstInterrupt(CpuProfile cpu)
     {
         ArgumentNullException.ThrowIfNull(cpu);

@@ -46,7 +46,7 @@ public sealed record HandlerOptions
     /// <summary>The handler's one subroutine; null = <see cref="HandlerDefaults.FirstSubroutine"/>.</summary>
     public int? FirstSubroutine { get; init; }
 
-    /// <summary>The first of the handler's three interrupt routines; null = <see cref="HandlerDefaults.FirstInterrupt"/>.</summary>
+    /// <summary>The first of the handler's interrupt routines (<see cref="InterruptRoutines"/>); null = <see cref="HandlerDefaults.FirstInterrupt"/>.</summary>
     public int? FirstInterrupt { get; init; }
 
     public HandlerBlockNames Names { get; init; } = new();
@@ -135,4 +135,10 @@ public sealed record HandlerOptions
     public int EffectiveFirstSubroutine => FirstSubroutine ?? HandlerDefaults.FirstSubroutine(Cpu);
 
     public int EffectiveFirstInterrupt => FirstInterrupt ?? HandlerDefaults.FirstInterrupt(Cpu);
+
+    /// <summary>
+    /// How many interrupt routines the handler takes from <see cref="EffectiveFirstInterrupt"/> on: protocol 3 two
+    /// (receive complete, transmit complete), protocol 2 three (and its timed reply delay).
+    /// </summary>
+    public int InterruptRoutines => Protocol == 3 ? 2 : Handler.HandlerLayout.Interrupts;
 }

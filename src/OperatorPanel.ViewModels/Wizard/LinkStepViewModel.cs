@@ -84,7 +84,7 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
 
     /// <summary>Why the compact handler is offered first for a CPU 221 or 222, in one sentence for the step's page.</summary>
     public static string CompactHint =>
-        "The compact handler (read and write only: no change-only list, no remote STOP) needs 74 V bytes and about half the "
+        "The compact handler (read and write only: no change-only list, no remote STOP) needs 178 V bytes and about half the "
         + "program of the full one, so it is the default for a CPU 221 or 222, whose 4096 bytes of program memory the full "
         + "handler would crowd; the panel then reads 16 bytes per request instead of the whole list in one.";
 

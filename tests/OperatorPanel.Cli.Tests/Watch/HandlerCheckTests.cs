@@ -36,7 +36,7 @@ public sealed class HandlerCheckTests
     {
         var station = StationOf(CpuModel.Cpu224);
         var full = new Core.Protocol.V3.Identity(1, HandlerIdentity.CpuModelCode(CpuModel.Cpu224), 1, 0x1C, 0x03, 4, 0, 137, 16, 32, 128, 7586, 606, 0x20, 1, 3, 2, 9);
-        var compact = full with { Features = 0, MaxRequestBytes = 33, ListItems = 0, ListBytes = 0, VFirst = 8118, VBytes = 74, StatusFlags = 0 };
+        var compact = full with { Features = 0, MaxRequestBytes = 137, ListItems = 0, ListBytes = 0, VFirst = 8014, VBytes = 178, StatusFlags = 0 };
 
         HandlerCheck.Describe(station, V3Link.AsIdentifyResponse(Two, full)).Should().Be("ok: generated for CPU 224, protocol 3, full handler (list of 32 items, 128 bytes, STOP), mode switch RUN");
         HandlerCheck.Describe(station, V3Link.AsIdentifyResponse(Two, compact)).Should().Be("ok: generated for CPU 224, protocol 3, compact handler (no list: READs of 16 bytes), mode switch TERM");

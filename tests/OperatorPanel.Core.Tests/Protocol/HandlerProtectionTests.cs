@@ -8,9 +8,9 @@ namespace OperatorPanel.Core.Tests.Protocol;
 public sealed class HandlerProtectionTests
 {
     [Theory]
-    [InlineData(CpuModel.Cpu221, "VB1442", "VB1442-VB2047", "VB1974-VB2047")] // 2048 V bytes: full 606 from 1442, compact 74 from 1974
-    [InlineData(CpuModel.Cpu224, "VD8188", "VB7586-VB8191", "VB8118-VB8191")]
-    [InlineData(CpuModel.Cpu226, "VW9633", "VB9634-VB10239", "VB10166-VB10239")] // touches the first byte only
+    [InlineData(CpuModel.Cpu221, "VB1442", "VB1442-VB2047", "VB1870-VB2047")] // 2048 V bytes: full 606 from 1442, compact 178 from 1870
+    [InlineData(CpuModel.Cpu224, "VD8188", "VB7586-VB8191", "VB8014-VB8191")]
+    [InlineData(CpuModel.Cpu226, "VW9633", "VB9634-VB10239", "VB10062-VB10239")] // touches the first byte only
     public void Refusal_HandlersOwnVBytesAtTheTopOfV_NamesTheFullAndTheCompactRange(CpuModel model, string address, string full, string compact)
     {
         HandlerProtection.Refusal(PlcAddress.Parse(address), CpuProfiles.For(model)).Should().Be(

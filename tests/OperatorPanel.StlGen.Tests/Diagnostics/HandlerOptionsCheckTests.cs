@@ -23,6 +23,7 @@ public sealed class HandlerOptionsCheckTests
         { StlDiagnostics.CharTimeoutOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, CharTimeoutMs = -1 }, "-1 ms" },
         { StlDiagnostics.SubroutineOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, FirstSubroutine = 64 }, "SBR64" },
         { StlDiagnostics.InterruptOutOfRange, new HandlerOptions { Protocol = 2, Cpu = Cpu224, FirstInterrupt = 126 }, "INT126-INT128" },
+        { StlDiagnostics.InterruptOutOfRange, new HandlerOptions { Cpu = Cpu224, FirstInterrupt = 127 }, "INT127-INT128" },
         { StlDiagnostics.WriteMaskNotAllowed, new HandlerOptions { Protocol = 2, Cpu = Cpu224, WriteMask = 0x3E }, "16#3E" },
         { StlDiagnostics.BlockNameInvalid, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Names = new HandlerBlockNames { Receive = "1RX" } }, "'1RX'" },
         { StlDiagnostics.BlockNamesOverlap, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Names = new HandlerBlockNames { Delay = "OP_RX" } }, "'OP_RX'" },
@@ -80,5 +81,14 @@ public sealed class HandlerOptionsCheckTests
 
         options.EffectiveFirstSubroutine.Should().Be(sbr);
         options.EffectiveFirstInterrupt.Should().Be(125);
+    }
+
+    [Fact]
+    public void Check_Protocol3HandlerInTheLastTwoInterruptRoutines_IsAccepted()
+    {
+        var options = new HandlerOptions { Cpu = Cpu224, FirstInterrupt = 126 };
+
+        HandlerOptionsCheck.Check(options).Should().BeEmpty("protocol 3 takes two interrupt routines: INT126 and INT127");
+        HandlerGenerator.Generate(options).Stats!.Blocks.Select(b => b.NumberText).Should().Equal("SBR63", "INT126", "INT127");
     }
 }

@@ -176,6 +176,19 @@ public sealed class HandlerMergerCollisionTests
         result.Errors.Last().Message.Should().EndWith("move them with --int N (INT123-INT125 are free)");
     }
 
+    [Theory]
+    [InlineData(3, 127, false)] // protocol 3 takes INT125 (receive) and INT126 (transmit complete) only
+    [InlineData(3, 126, true)]
+    [InlineData(2, 127, true)] // protocol 2 also its reply-delay routine
+    public void Merge_UserInterruptRoutineAboveTheHandlers_CollidesOnlyWithAHandlerThatTakesIt(int protocol, int number, bool collides)
+    {
+        string[] blocks = [$"INTERRUPT_BLOCK ALARM:INT{number}", "BEGIN", "END_INTERRUPT_BLOCK"];
+
+        var result = HandlerMerger.Merge(UserProgram.WithBlocks(["LD     SM0.0"], blocks), UserProgram.Cpu224 with { Protocol = protocol });
+
+        result.Errors.Any(d => d.Id == StlDiagnostics.InterruptNumberInUse).Should().Be(collides);
+    }
+
     [Fact]
     public void Merge_UserProgramDoesNotParse_ReportsParserMessagesAndWritesNothing()
     {

@@ -41,6 +41,27 @@ public sealed class V3CompactTests
     }
 
     [Theory]
+    [InlineData(72)]
+    [InlineData(137)]
+    public void LongerFrameOnTheBus_WhoseTailIsAFrameForThisStation_GetsNoReply(int length)
+    {
+        // Another station's DEFINE LIST or list reply may carry any bytes; a compact handler whose receive ended at 33
+        // bytes restarted at once and answered such a tail as a request (two stations talking at once).
+        var station = Compact(CpuModel.Cpu221, 0, 3);
+        byte seq = 0;
+        var own = Codec.Encode(Request.Identify(station.Station, Next(ref seq)));
+        var frame = Enumerable.Repeat((byte)0x55, length).ToArray();
+        (frame[0], frame[1], frame[2], frame[3]) = (Limits.Start, (byte)length, 17, 0x05);
+        own.CopyTo(frame, length - own.Length);
+
+        var (stl, reference) = station.Exchange(frame);
+
+        stl.Should().BeEmpty("the frame is station 17's; its tail is only data");
+        reference.Should().BeEmpty();
+        Same(station, Request.Identify(station.Station, Next(ref seq))).Should().StartWith("3C2180", "the station still answers its own next request");
+    }
+
+    [Theory]
     [MemberData(nameof(Stations))]
     public void Reads_EveryAreaToItsEnd_AnswerLikeTheReference(CpuModel cpu, int port)
     {

@@ -33,10 +33,14 @@ public sealed record HandlerShape(int RequestBytes, int ListItems, int ListBytes
     public static HandlerShape Full { get; } = new(137, 32, 128);
 
     /// <summary>
-    /// The compact handler: IDENTIFY, READ, WRITE and WRITE BITS, no list, with a 33-byte buffer: the longest reply,
-    /// IDENTIFY's (a WRITE of MAX_DATA, the longest request, has 28 bytes).
+    /// The compact handler: IDENTIFY, READ, WRITE and WRITE BITS, no list, with the full handler's 137-byte buffer
+    /// although its own frames have at most 33 bytes (IDENTIFY's reply; a WRITE of MAX_DATA, its longest request, has
+    /// 28). The buffer is also the receive's maximum count (SMB94), and a receive ended by its count starts again at
+    /// once: with 33 a '&lt;' in byte 34 or later of a longer frame on a shared bus (another station's DEFINE LIST, a list
+    /// reply) started a receive of its tail, and a tail that was a frame for this station was answered, colliding with
+    /// the addressed station's reply. At 137 no frame of the bus has a tail: 104 V bytes, no instruction.
     /// </summary>
-    public static HandlerShape Compact { get; } = new(33, 0, 0);
+    public static HandlerShape Compact { get; } = new(137, 0, 0);
 
     public bool HasList => ListItems > 0;
 
