@@ -18,8 +18,10 @@ internal static class WriteCommand
         + "Every write is logged with old and new value. Every bad assignment is reported, and then nothing is written. "
         + "VALUE notation: a bit takes 0/1, true/false, on/off; 16#FF or 0xFF is hex, 2#1010 binary, 'AB' or \"AB\" ASCII of exactly "
         + "the width's length, a number with '.' or an exponent a REAL (double words only), a leading '-' a signed number, anything else unsigned. "
-        + "Exit codes: 0 all confirmed; 1 bad input (address, value) or refused by the PLC (not writable, out of range), nothing written "
-        + "for bad input; 2 not applied (nothing sent, or the old value read back after a lost reply) or read back differently; "
+        + "A REAL is written as the nearest REAL and confirmed against it; one the PLC cannot hold (0 or ±1.175495E-38 to ±3.402823E+38: "
+        + "1.5e-50 would be stored as 0) is bad input, as are the handler's own V bytes and, with --project, any byte of a tag it marks read-only. "
+        + "Exit codes: 0 all confirmed; 1 bad input (address, value, refused by the panel's write rules) or refused by the PLC (not writable, "
+        + "out of range), nothing written for bad input; 2 not applied (nothing sent, or the old value read back after a lost reply) or read back differently; "
         + "3 unknown whether applied (3 wins over 2, 2 over 1); 130 interrupted by Ctrl+C or SIGTERM: the write on the wire is finished and "
         + "read back, every outcome is printed, the writes after it are not sent (3 wins over 130). Each write's intent is in the write "
         + "journal before its frame leaves, and its outcome after; a write cut short by a kill is settled at the next start";
@@ -29,7 +31,7 @@ internal static class WriteCommand
         var assignments = new Argument<string[]>("assignment")
         {
             Description = "ADDR=VALUE, e.g. VW200=1234 Q0.1=on VD120=12.5 VB110=16#2A VD130='AB12'; with --project also SYMBOL=VALUE "
-                + "in the tag's units (RecipeNumber=3, TankLevel=55.2), and a tag's min/max hold however the cell is named",
+                + "in the tag's units (RecipeNumber=3, TankLevel=55.2), and a tag's min/max and read-only flag hold however the cell is named",
             Arity = ArgumentArity.OneOrMore,
         };
         var link = new LinkOptionSet();

@@ -10,7 +10,7 @@ namespace OperatorPanel.Cli.Commands;
 /// <summary>
 /// One <c>ADDR=VALUE</c> or, with --project, <c>SYMBOL=VALUE</c> of <c>opanel write</c>, checked: the address, the value
 /// in the notation it is typed in (a symbol's value in its tag's units: RecipeNumber=3, TankLevel=55.2), the tag's
-/// range whichever way the cell is named, the request. <see cref="Tag"/> is set when values show in the tag's format.
+/// range and the read-only tags whichever way the cell is named, the handler's own V bytes, the request. <see cref="Tag"/> is set when values show in the tag's format.
 /// </summary>
 internal sealed record WriteItem(PlcAddress Address, DisplayFormat Format, WriteRequest Request, ProjectTag? Tag = null)
 {
@@ -35,8 +35,15 @@ internal sealed record WriteItem(PlcAddress Address, DisplayFormat Format, Write
         var address = named.Address;
         if (named is { BySymbol: true, Tag.Writable: false })
         {
-            // Named as the operator names it, the cell keeps the project's word on it; its address stays a technician's override.
             error = $"{address}: the project marks {named.Tag.Symbol} read-only";
+            return false;
+        }
+
+        // However the cell is named, the project's read-only tags and the handler's own V bytes are refused here, before
+        // anything is read or sent (Core's WriteRules, as the Memory window's): the PLC would refuse the handler's with 83.
+        if (WriteRules.Refusal(address, target.Serial.Protocol, target.Cpu, station) is { } refused)
+        {
+            error = refused;
             return false;
         }
 

@@ -157,7 +157,10 @@ internal sealed class LinkOptionSet
         cpu ??= projectStation?.Cpu;
 
         var notes = projectStation is null ? null : HandlerPackage.FileStem(projectStation) + "-README.txt";
-        target = new LinkTarget(station, serial, cpu, demo, TimeSpan.FromMilliseconds(scanMs), parse.GetValue(Model), notes);
+        target = new LinkTarget(station, serial, cpu, demo, TimeSpan.FromMilliseconds(scanMs), parse.GetValue(Model), notes)
+        {
+            Compact = projectStation?.Compact ?? false,
+        };
         error = null;
         return true;
     }

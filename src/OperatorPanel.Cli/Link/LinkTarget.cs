@@ -16,5 +16,11 @@ namespace OperatorPanel.Cli.Link;
 internal sealed record LinkTarget(
     Station Station, SerialSettings Serial, CpuProfile? Cpu, bool Demo, TimeSpan ScanAllowance, SimulationModel Model = SimulationModel.Stl, string? NotesFile = null)
 {
+    /// <summary>
+    /// With --project, the station's "compact": its handler is the compact one, whose own V bytes a write may not touch
+    /// and which a --demo simulates (as the panel's demo line does).
+    /// </summary>
+    public bool Compact { get; init; }
+
     public string Describe() => $"{Station} on {Serial.PortName}";
 }

@@ -68,7 +68,7 @@ public static class TagValues
             : Math.Round(raw, MidpointRounding.AwayFromZero).ToString("0", CultureInfo.InvariantCulture);
         if (!ValueParser.TryParse(rawText, tag.Address, tag.Format, out bytes, out var rawError))
         {
-            error = tag.Scale is null ? rawError : new ValueError(rawError.Kind, $"{name}: {TagScale.Number(value)}{Unit(tag)} is raw {rawText}, more than {tag.Address} holds ({rawError.Message})");
+            error = tag.Scale is null ? rawError : new ValueError(rawError.Kind, $"{name}: {TagScale.Number(value)}{Unit(tag)} is raw {rawText}, which {tag.Address} cannot hold ({rawError.Message})");
             return false;
         }
 

@@ -9,7 +9,10 @@ public enum ValueErrorKind
     /// <summary>Not written in the notation the format reads (e.g. letters in a decimal number).</summary>
     Malformed,
 
-    /// <summary>A number outside what the address's width holds in that format.</summary>
+    /// <summary>
+    /// A number outside what the address's width holds in that format; for a REAL, one too large or so close to 0 that
+    /// single precision would store it as 0 or as a denormal (ValueParser.Real.cs).
+    /// </summary>
     OutOfRange,
 
     /// <summary>ASCII text that is not exactly as long as the address is wide.</summary>
@@ -18,7 +21,7 @@ public enum ValueErrorKind
     /// <summary>ASCII text with a character outside printable ASCII (space to ~).</summary>
     NotAscii,
 
-    /// <summary>A REAL that is infinite or not a number once stored as IEEE 754 single precision.</summary>
+    /// <summary>NaN or Infinity typed for a REAL: no number at all.</summary>
     NotFinite,
 
     /// <summary>The format cannot hold a value of the address's width (Float on a word, Bool on a byte).</summary>

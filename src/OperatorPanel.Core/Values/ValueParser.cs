@@ -1,7 +1,5 @@
-using System.Buffers.Binary;
 using System.Collections.Immutable;
 using System.Diagnostics.CodeAnalysis;
-using System.Globalization;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Projects;
 
@@ -73,27 +71,6 @@ public static partial class ValueParser
 
         error = new ValueError(ValueErrorKind.Malformed, $"{address}: '{input}' is not a bit value; write 0/1, true/false or on/off");
         return null;
-    }
-
-    private static ImmutableArray<byte>? ParseFloat(string input, PlcAddress address, out ValueError? error)
-    {
-        error = null;
-        if (!double.TryParse(input, NumberStyles.Float, CultureInfo.InvariantCulture, out var number))
-        {
-            error = new ValueError(ValueErrorKind.Malformed, $"{address}: '{input}' is not a REAL number; write e.g. 12.5, -0.25 or 1.5e3");
-            return null;
-        }
-
-        var single = (float)number;
-        if (!float.IsFinite(single))
-        {
-            error = new ValueError(ValueErrorKind.NotFinite, $"{address}: {input} does not fit a REAL (finite, at most ±{float.MaxValue.ToString(CultureInfo.InvariantCulture)})");
-            return null;
-        }
-
-        var bytes = new byte[4];
-        BinaryPrimitives.WriteUInt32BigEndian(bytes, BitConverter.SingleToUInt32Bits(single));
-        return [.. bytes];
     }
 
     private static ImmutableArray<byte>? ParseAscii(string input, PlcAddress address, WidthRange range, out ValueError? error)

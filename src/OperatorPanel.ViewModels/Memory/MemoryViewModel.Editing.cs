@@ -9,9 +9,10 @@ namespace OperatorPanel.ViewModels.Memory;
 public sealed partial class MemoryViewModel
 {
     /// <summary>
-    /// Checks the typed text in the cell's units against its type and range (TagValues: RecipeNumber takes 1..8) and the
-    /// address for the station's CPU (AddressRules), then writes it; a bad value is refused with a message and nothing
-    /// goes on the wire. The bus logs the write and puts it on record.
+    /// Checks the typed text in the cell's units against its type and range (TagValues: RecipeNumber takes 1..8; a REAL
+    /// inside the REAL's range), the address for the station's CPU (AddressRules) and the project's write rules
+    /// (WriteRules: no byte of a read-only tag, none of the handler's own V bytes), then writes it; a bad value is refused
+    /// with a message and nothing goes on the wire. The bus logs the write and puts it on record.
     /// </summary>
     internal async Task CommitAsync(MemoryCellViewModel cell)
     {
@@ -28,7 +29,8 @@ public sealed partial class MemoryViewModel
             return;
         }
 
-        if (LinkAreas.Refusal(address, cell.Station.Link.Protocol, cell.Station.Cpu, AddressUse.Write) is { } addressError)
+        if ((LinkAreas.Refusal(address, cell.Station.Link.Protocol, cell.Station.Cpu, AddressUse.Write)
+            ?? WriteRules.Refusal(address, cell.Station)) is { } addressError)
         {
             Refuse(cell, addressError);
             return;

@@ -46,6 +46,31 @@ public sealed class TagArgumentTests
         run.Out.Should().BeEmpty();
     }
 
+    [Theory]
+    [InlineData("VW150=5", "opanel: VW150 is part of tag TankLevel, which the project marks read-only; nothing written")]
+    [InlineData("VB151=5", "opanel: VB151 is part of tag TankLevel (VW150), which the project marks read-only; nothing written")]
+    [InlineData("V150.3=1", "opanel: V150.3 is part of tag TankLevel (VW150), which the project marks read-only; nothing written")]
+    [InlineData("VD148=5", "opanel: VD148 overlaps tag TankLevel (VW150), which the project marks read-only; nothing written")]
+    public void Write_AddressOfAReadOnlyTagsByte_RefusedNamingTheTagAndNothingWritten(string assignment, string message)
+    {
+        // TankLevel=50 is refused by its symbol; its address, or any of its bytes, is refused the same way.
+        var run = CliRunner.Run("write", assignment, "--project", Sample, "--demo");
+
+        run.ExitCode.Should().Be(1);
+        run.Error.Should().Be(message + Environment.NewLine);
+        run.Out.Should().BeEmpty();
+    }
+
+    [Fact]
+    public void Write_ReadOnlyTagsBytesWithoutProject_AreAnyOtherBytes()
+    {
+        var run = CliRunner.Run("write", "VW150=5", "--demo");
+
+        // Sent and judged by its read-back (the demo's tank may move it again at once: confirmed or mismatch).
+        run.Error.Should().NotContain("read-only");
+        run.Out.Should().MatchRegex(@"^VW150    \d+ -> 5  (confirmed|mismatch)");
+    }
+
     [Fact]
     public void Write_SymbolInsideItsRange_WritesTheRawValueAndShowsItInTheTagsUnits()
     {

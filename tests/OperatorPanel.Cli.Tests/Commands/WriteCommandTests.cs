@@ -54,13 +54,42 @@ public sealed class WriteCommandTests
     }
 
     [Fact]
-    public void Write_TheHandlersOwnVBytes_AreRefusedByThePlcWithExitOne()
+    public void Write_TheHandlersOwnVBytes_AreRefusedBeforeAnythingIsSent()
     {
-        // VB8000 is inside the demo CPU 224's full handler (VB7586-VB8191): the PLC refuses it, 83.
-        var run = CliRunner.Run("write", "VB8000=9", "--demo");
+        // VB8000 is inside the demo CPU 224's full handler (VB7586-VB8191): the PLC would refuse it with 83 once sent.
+        var run = CliRunner.Run("write", "VW200=1", "VB8000=9", "--demo");
 
         run.ExitCode.Should().Be(1);
-        run.Out.Should().Contain("VB8000   0 -> 9  failed: station 2 refused the write: 83: the PLC refuses writes there (inputs, SM, an area the handler's write mask leaves out, or the handler's own V bytes)");
+        run.Out.Should().BeEmpty("nothing is written when one assignment is refused");
+        run.Error.Should().Be("opanel: VB8000 is in the handler's own V bytes VB7586-VB8191 (where generate puts the full handler's buffer, "
+            + "work bytes and list by default; IDENTIFY says where a station's are); nothing written" + Environment.NewLine);
+    }
+
+    [Theory]
+    [InlineData("VD100=1.5e-50", "opanel: VD100: 1.5e-50 is too close to 0 for a REAL (a REAL holds 0 and numbers from ±1.175495E-38 to ±3.402823E+38): "
+        + "it would be stored as 0; write 0 or a number inside that range; nothing written")]
+    [InlineData("VD100=-2e39", "opanel: VD100: -2e39 is too large for a REAL (a REAL holds 0 and numbers from ±1.175495E-38 to ±3.402823E+38); "
+        + "write a number inside that range; nothing written")]
+    [InlineData("VD100=-1e-40", "opanel: VD100: -1e-40 is too close to 0 for a REAL (a REAL holds 0 and numbers from ±1.175495E-38 to ±3.402823E+38): "
+        + "it would be stored as -1E-40; write 0 or a number inside that range; nothing written")] // a denormal, outside the manual's range
+    public void Write_RealTheS7200CannotHold_IsRefusedBeforeAnythingIsSent(string assignment, string message)
+    {
+        var run = CliRunner.Run("write", assignment, "--demo");
+
+        run.ExitCode.Should().Be(1, "bad input");
+        run.Out.Should().BeEmpty();
+        run.Error.Should().Be(message + Environment.NewLine);
+    }
+
+    [Fact]
+    public void Write_RealThatOnlyLosesPrecision_IsConfirmedAsTheRealThePlcHolds()
+    {
+        var run = CliRunner.Run("write", "VD300=1.23456789", "VD304=-0.0", "--demo");
+
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            "VD300    0 -> 1.2345679  confirmed",
+            "VD304    0 -> -0  confirmed");
     }
 
     [Theory]

@@ -27,4 +27,29 @@ public sealed class HandlerProtectionTests
     {
         HandlerProtection.Refusal(PlcAddress.Parse(address), CpuProfiles.For(CpuModel.Cpu226)).Should().BeNull();
     }
+
+    [Theory]
+    [InlineData(CpuModel.Cpu226, false, "VB9634", "VB9634-VB10239", "the full handler's buffer, work bytes and list")]
+    [InlineData(CpuModel.Cpu226, true, "VD10236", "VB10062-VB10239", "the compact handler's buffer and work bytes")] // 178 bytes
+    [InlineData(CpuModel.Cpu221, true, "V1870.0", "VB1870-VB2047", "the compact handler's buffer and work bytes")]
+    public void Refusal_StationsHandler_NamesThatHandlersRangeOnly(CpuModel model, bool compact, string address, string range, string what)
+    {
+        HandlerProtection.Refusal(PlcAddress.Parse(address), CpuProfiles.For(model), compact).Should().Be(
+            $"{address} is in the handler's own V bytes {range} (where generate puts {what} by default; IDENTIFY says where a station's are)");
+    }
+
+    [Fact]
+    public void Refusal_CompactStation_LeavesTheFullHandlersBytesBelowItsOwnWritable()
+    {
+        // VB9634-VB10165 belong to the full handler only: a compact station keeps the program's bytes there.
+        HandlerProtection.Refusal(PlcAddress.Parse("VW10164"), CpuProfiles.For(CpuModel.Cpu226), compact: true).Should().BeNull();
+        HandlerProtection.Refusal(PlcAddress.Parse("VW10164"), CpuProfiles.For(CpuModel.Cpu226), compact: false).Should().NotBeNull();
+    }
+
+    [Fact]
+    public void OwnVBytes_FullAndCompact_AreTheTopOfVOnAnEvenByte()
+    {
+        HandlerProtection.OwnVBytes(CpuProfiles.For(CpuModel.Cpu224), compact: false).Should().Be((7586, 8191));
+        HandlerProtection.OwnVBytes(CpuProfiles.For(CpuModel.Cpu224), compact: true).Should().Be((8118, 8191));
+    }
 }

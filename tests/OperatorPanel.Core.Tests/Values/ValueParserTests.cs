@@ -41,6 +41,13 @@ public sealed class ValueParserTests
     [InlineData("VD120", "-0.25", DisplayFormat.Float, "BE800000")]
     [InlineData("VD120", "1", DisplayFormat.Float, "3F800000")]
     [InlineData("VD120", "1.5e3", DisplayFormat.Float, "44BB8000")]
+    [InlineData("VD120", "0.1", DisplayFormat.Float, "3DCCCCCD")] //         the nearest REAL: precision lost, the number kept
+    [InlineData("VD120", "0", DisplayFormat.Float, "00000000")]
+    [InlineData("VD120", "-0", DisplayFormat.Float, "80000000")]
+    [InlineData("VD120", "0.0e-50", DisplayFormat.Float, "00000000")] //     a zero in any notation is 0
+    [InlineData("VD120", "3.4028235e38", DisplayFormat.Float, "7F7FFFFF")] // the largest REAL (the manual: 3.402823E+38)
+    [InlineData("VD120", "1.1754944e-38", DisplayFormat.Float, "00800000")] // the smallest normal REAL (the manual: 1.175495E-38)
+    [InlineData("VD120", "-1.175495e-38", DisplayFormat.Float, "80800005")]
     [InlineData("VD130", "AB12", DisplayFormat.Ascii, "41423132")]
     [InlineData("VD130", "\"a b!\"", DisplayFormat.Ascii, "61206221")]
     public void TryParse_ValidText_GivesBigEndianBytes(string address, string text, DisplayFormat format, string expected)
@@ -69,8 +76,17 @@ public sealed class ValueParserTests
     [InlineData("VD100", "99999999999999999999999", DisplayFormat.Unsigned, ValueErrorKind.OutOfRange, "is outside 0..4294967295")]
     [InlineData("VD100", "2147483648", DisplayFormat.Signed, ValueErrorKind.OutOfRange, "VD100: 2147483648 is outside -2147483648..2147483647, the range of a signed double word")]
     [InlineData("VD120", "abc", DisplayFormat.Float, ValueErrorKind.Malformed, "VD120: 'abc' is not a REAL number")]
-    [InlineData("VD120", "1e39", DisplayFormat.Float, ValueErrorKind.NotFinite, "VD120: 1e39 does not fit a REAL")]
-    [InlineData("VD120", "Infinity", DisplayFormat.Float, ValueErrorKind.NotFinite, "does not fit a REAL")]
+    [InlineData("VD120", "1e39", DisplayFormat.Float, ValueErrorKind.OutOfRange,
+        "VD120: 1e39 is too large for a REAL (a REAL holds 0 and numbers from ±1.175495E-38 to ±3.402823E+38); write a number inside that range")]
+    [InlineData("VD120", "-1e400", DisplayFormat.Float, ValueErrorKind.OutOfRange, "VD120: -1e400 is too large for a REAL")]
+    [InlineData("VD120", "Infinity", DisplayFormat.Float, ValueErrorKind.NotFinite,
+        "VD120: Infinity is not a number a REAL can hold (a REAL holds 0 and numbers from ±1.175495E-38 to ±3.402823E+38)")]
+    [InlineData("VD120", "NaN", DisplayFormat.Float, ValueErrorKind.NotFinite, "VD120: NaN is not a number a REAL can hold")]
+    [InlineData("VD120", "1.5e-50", DisplayFormat.Float, ValueErrorKind.OutOfRange,
+        "VD120: 1.5e-50 is too close to 0 for a REAL (a REAL holds 0 and numbers from ±1.175495E-38 to ±3.402823E+38): it would be stored as 0; write 0 or a number inside that range")]
+    [InlineData("VD120", "-1e-400", DisplayFormat.Float, ValueErrorKind.OutOfRange, "VD120: -1e-400 is too close to 0 for a REAL")] // 0 already as a double
+    [InlineData("VD120", "1e-40", DisplayFormat.Float, ValueErrorKind.OutOfRange, "it would be stored as 1E-40")] //               a denormal, below the manual's range
+    [InlineData("VD120", "1.1754942e-38", DisplayFormat.Float, ValueErrorKind.OutOfRange, "VD120: 1.1754942e-38 is too close to 0 for a REAL")] // the largest denormal
     [InlineData("VW104", "1.5", DisplayFormat.Float, ValueErrorKind.FormatDoesNotFit, "VW104: a REAL (Float) needs a double word such as VD100")]
     [InlineData("VB110", "1", DisplayFormat.Bool, ValueErrorKind.FormatDoesNotFit, "VB110: Bool takes a bit address, not a byte")]
     [InlineData("M0.0", "1", DisplayFormat.Unsigned, ValueErrorKind.FormatDoesNotFit, "M0.0: Unsigned needs a byte, word or double word, not a bit")]
