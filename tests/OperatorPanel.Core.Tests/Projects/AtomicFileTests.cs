@@ -140,10 +140,10 @@ public sealed class AtomicFileTests
         {
             AtomicFile.TryWrite(path, [2], out var error).Should().BeFalse();
 
+            File.ReadAllBytes(path + ".bak").Should().Equal([0], "before, the .bak was renewed and then the rename failed");
+            File.ReadAllBytes(path).Should().Equal(1);
             error.Should().Be("cannot save the file: the system refuses to open it for writing (its permissions, or on Linux an immutable "
                 + "or append-only attribute: lsattr shows i or a): nothing written");
-            File.ReadAllBytes(path).Should().Equal(1);
-            File.ReadAllBytes(path + ".bak").Should().Equal([0], "before, the .bak was renewed and then the rename failed");
             Directory.GetFiles(folder.Path).Should().HaveCount(2, "no temporary file is left");
         }
         finally
