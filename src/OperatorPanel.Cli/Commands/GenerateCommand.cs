@@ -87,7 +87,7 @@ internal static class GenerateCommand
             var package = HandlerPackage.Generate(options, HandlerPackage.FileStem(chosen), userProgram, table);
             if (!package.Handler.Ok)
             {
-                GenerateView.WriteRefused(cli, package.Handler.Diagnostics);
+                GenerateView.WriteRefused(cli, CompactStopOptions.Reword(package.Handler.Diagnostics, handler, parse, HandlerOptions.For(chosen), CompactStop.Who(chosen)));
                 return ExitCodes.GeneratorRefused;
             }
 

@@ -20,6 +20,10 @@ internal static class GenerateView
         {
             cli.Error.WriteLine($"opanel: {diagnostic.Id}: {diagnostic.Message}");
         }
+
+        cli.Error.WriteLine(diagnostics.Length == 1
+            ? "opanel: nothing written: the handler settings above are impossible"
+            : $"opanel: nothing written: {diagnostics.Length} handler settings above are impossible");
     }
 
     /// <summary><paramref name="warnings"/>: the merge's warnings as JSON objects (printed on stderr already in text mode).</summary>

@@ -23,7 +23,8 @@ internal sealed class HandlerOptionSet
     {
         Description = "The compact handler of protocol 3 (IDENTIFY, READ, WRITE, WRITE BITS; no list, no STOP): the choice for a CPU 221 or 222 "
             + "(default: the station's \"compact\" in the project, which opanel project new and the wizard set for those CPUs; "
-            + "--compact false gives such a station the full handler, as does --protocol 2)",
+            + "--compact false gives such a station the full handler, as does --protocol 2; with STOP allowed, by --allow-stop or the project's \"allowStop\", "
+            + "it is refused, STL031: the compact handler has no STOP)",
     };
 
     public Option<int> PlcPort { get; } = new("--plc-port") { Description = "The PLC's port 0 or 1 (port 1 on CPU 224XP and 226)" };
@@ -60,7 +61,7 @@ internal sealed class HandlerOptionSet
     public Option<bool> AllowStop { get; } = new("--allow-stop")
     {
         Description = "Include STOP (08 in protocol 3, 07 in 2): the panel may put the CPU in STOP (default: the station's \"allowStop\" in the "
-            + "project, off unless set; off = no STOP code, the command is refused: 85 in protocol 3, error 05 in 2)",
+            + "project, off unless set; off = no STOP code, the command is refused: 85 in protocol 3, error 05 in 2; refused with a compact handler, STL031)",
     };
 
     private Option[] All => [Protocol, Compact, PlcPort, Buffer, ReplyDelay, Writable, CharTimeout, Subroutine, Interrupt, CopyBytes, AllowStop];

@@ -1,3 +1,4 @@
+using System.Collections.Immutable;
 using System.CommandLine;
 using OperatorPanel.Core.Projects;
 
@@ -5,7 +6,9 @@ namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
 /// <c>opanel project check FILE</c>: loads a project and prints every problem as <c>FILE: location: message</c>,
-/// or a summary of the line when there is none. Exit code 1 when there is any problem.
+/// or a summary of the line when there is none. Exit code 1 when there is any problem. Besides what stops the file from
+/// loading, a problem is a station whose settings contradict each other though the file loads (Core CompactStop: a
+/// compact handler with STOP): the panel opens such a project, generate refuses it.
 /// </summary>
 internal static class ProjectCheckCommand
 {
@@ -18,33 +21,34 @@ internal static class ProjectCheckCommand
             var cli = context(parse);
             var path = parse.GetValue(file)!;
             var result = ProjectFile.Load(path);
-            var summary = result.Ok ? ProjectSummaryView.From(result.Project) : null;
-            var problems = result.Errors.Select(e => new ProblemView(e.Location, e.Message)).ToList();
+            var errors = result.Ok ? CompactStop.Problems(result.Project) : result.Errors;
+            var summary = result.Ok && errors.IsEmpty ? ProjectSummaryView.From(result.Project) : null;
+            var problems = errors.Select(e => new ProblemView(e.Location, e.Message)).ToList();
             if (cli.Json)
             {
-                cli.WriteJson(new { ok = result.Ok, file = path, problems, project = summary });
+                cli.WriteJson(new { ok = summary is not null, file = path, problems, project = summary });
             }
             else
             {
-                WriteText(cli.Out, path, result, summary);
+                WriteText(cli.Out, path, result, errors, summary);
             }
 
             cli.Log.Information("Checked {File}: {Count} problems", path, problems.Count);
-            return result.Ok ? ExitCodes.Ok : ExitCodes.BadInput;
+            return summary is not null ? ExitCodes.Ok : ExitCodes.BadInput;
         });
         return command;
     }
 
-    private static void WriteText(TextWriter o, string path, ProjectLoadResult result, ProjectSummaryView? summary)
+    private static void WriteText(TextWriter o, string path, ProjectLoadResult result, ImmutableArray<ProjectFileError> errors, ProjectSummaryView? summary)
     {
-        foreach (var problem in result.Errors)
+        foreach (var problem in errors)
         {
             o.WriteLine($"{path}: {problem.Location}: {problem.Message}");
         }
 
         if (summary is null)
         {
-            o.WriteLine($"{path}: {ProjectProblemsView.Count(result)}");
+            o.WriteLine($"{path}: {(result.Ok ? ProjectProblemsView.Count(errors.Length) : ProjectProblemsView.Count(result))}");
             return;
         }
 

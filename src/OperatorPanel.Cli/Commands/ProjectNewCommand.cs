@@ -53,12 +53,19 @@ internal static class ProjectNewCommand
                 return cli.Fail(ExitCodes.BadInput, $"{file} already exists; add --force to replace it (the old file is kept as {file}.bak)");
             }
 
+            var project = StarterProject.Create(parse.GetValue(name) ?? Path.GetFileNameWithoutExtension(file), profile, address, portName);
+            // --name, --port and the file's name go into the project as they are: what check would refuse is not written.
+            var problems = ProjectFile.Check(project);
+            if (!problems.IsEmpty)
+            {
+                return cli.FailAll(ExitCodes.BadInput, [.. problems.Select(p => p.Message)], $"{file} not written");
+            }
+
             if (!TryCreateFolder(file, out var folderError))
             {
                 return cli.Fail(ExitCodes.BadInput, folderError);
             }
 
-            var project = StarterProject.Create(parse.GetValue(name) ?? Path.GetFileNameWithoutExtension(file), profile, address, portName);
             if (!ProjectFile.TrySave(project, file, out var saveError))
             {
                 return cli.Fail(ExitCodes.BadInput, $"{file}: {saveError}");

@@ -28,9 +28,9 @@ internal static class ProjectProblemsView
     }
 
     /// <summary>"1 problem", "7 problems", or "more than 100 problems" when the loader stopped listing them (not the lines listed).</summary>
-    public static string Count(ProjectLoadResult loaded)
-    {
-        var n = loaded.Errors.Length;
-        return loaded.ProblemsCut ? $"more than {ProjectLoadResult.ProblemLimit} problems" : n == 1 ? "1 problem" : $"{n} problems";
-    }
+    public static string Count(ProjectLoadResult loaded) =>
+        loaded.ProblemsCut ? $"more than {ProjectLoadResult.ProblemLimit} problems" : Count(loaded.Errors.Length);
+
+    /// <summary>"1 problem", "7 problems".</summary>
+    public static string Count(int problems) => problems == 1 ? "1 problem" : $"{problems} problems";
 }

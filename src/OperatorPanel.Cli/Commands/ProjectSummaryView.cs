@@ -1,3 +1,4 @@
+using OperatorPanel.Core.Messages;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
@@ -13,13 +14,17 @@ internal sealed record ProjectSummaryView(string Name, string Refresh, int Minim
         (int)project.Refresh.MinimumPeriod.TotalMilliseconds,
         project.Stations.Select(StationSummaryView.From).ToList());
 
+    /// <summary>
+    /// Names and ports pass through <see cref="QuotedText.OneLine"/>: a project that loaded has none with control
+    /// characters (TextRule), so this only guards the terminal should one ever reach here another way.
+    /// </summary>
     public void WriteText(TextWriter o)
     {
         var refresh = Refresh == "continuous" ? $"continuous refresh, at least {MinimumPeriodMs} ms apart" : "triggered refresh";
-        o.WriteLine($"project   \"{Name}\", {Count(Stations.Count, "station")}, {refresh}");
+        o.WriteLine($"project   \"{QuotedText.OneLine(Name)}\", {Count(Stations.Count, "station")}, {refresh}");
         foreach (var s in Stations)
         {
-            o.WriteLine($"station   {s.Address} \"{s.Name}\": {s.Cpu} on {s.Port} {s.Line}{(s.Handler == "none" ? "" : $", {s.Handler} handler")}; "
+            o.WriteLine($"station   {s.Address} \"{QuotedText.OneLine(s.Name)}\": {s.Cpu} on {QuotedText.OneLine(s.Port)} {s.Line}{(s.Handler == "none" ? "" : $", {s.Handler} handler")}; "
                 + $"{Count(s.Inputs, "input")}, {Count(s.Outputs, "output")}, {Count(s.Tags, "tag")}, {Count(s.Alarms, "alarm")}");
         }
     }

@@ -1,5 +1,6 @@
 using OperatorPanel.Cli.Link;
 using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Messages;
 using OperatorPanel.Core.Polling;
 using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Values;
@@ -45,8 +46,9 @@ internal sealed record ReadValueView(string Address, ulong? Value, string? Hex, 
     /// </param>
     public void WriteText(TextWriter o, int valueWidth)
     {
-        var error = Error is null ? string.Empty : "  " + Error;
-        var symbol = Symbol is null ? string.Empty : "  " + Symbol;
+        // The symbol is the project's (no control characters once loaded) and the error ours; shown so whatever they hold.
+        var error = Error is null ? string.Empty : "  " + QuotedText.OneLine(Error);
+        var symbol = Symbol is null ? string.Empty : "  " + QuotedText.OneLine(Symbol);
         o.WriteLine($"{Address,-8} {ValueText().PadRight(valueWidth)} {Hex ?? string.Empty,-12} {Quality}{symbol}{error}");
     }
 }

@@ -59,7 +59,8 @@ internal static class SimulatedStations
 
             if (HandlerOptionsCheck.Check(options) is { IsEmpty: false } problems)
             {
-                error = $"station {options.Station}: the handler cannot be generated: {string.Join("; ", problems)}";
+                var who = $"station {options.Station}";
+                error = $"{who}: the handler cannot be generated: {string.Join("; ", CompactStopOptions.Reword(problems, handler, parse, station, who))}";
                 return false;
             }
 

@@ -1,4 +1,5 @@
 using System.Globalization;
+using OperatorPanel.Core.Messages;
 
 namespace OperatorPanel.Cli.Watch;
 
@@ -125,11 +126,15 @@ internal static class SnapshotRenderer
         }
     }
 
-    /// <summary>The lines being built.</summary>
+    /// <summary>
+    /// The lines being built. Each passes through <see cref="QuotedText.OneLine"/>: a loaded project's names and texts have
+    /// no control characters (TextRule), but a line also carries errors and values, and one ESC in a live view redrawn
+    /// in place would move the cursor or clear the screen.
+    /// </summary>
     private sealed class LineList
     {
         public List<ViewLine> Items { get; } = [];
 
-        public void Add(int priority, string text, ViewLineKind kind = ViewLineKind.Plain) => Items.Add(new ViewLine(text, priority, kind));
+        public void Add(int priority, string text, ViewLineKind kind = ViewLineKind.Plain) => Items.Add(new ViewLine(QuotedText.OneLine(text), priority, kind));
     }
 }

@@ -24,20 +24,35 @@ public static partial class QuotedText
             var shown = new StringBuilder(message.Length + 16);
             foreach (var c in message)
             {
-                if (IsHidden(c))
-                {
-                    shown.Append(CultureInfo.InvariantCulture, $"<16#{(int)c:X2}>");
-                }
-                else
-                {
-                    shown.Append(c);
-                }
+                Append(shown, c, IsHidden(c));
             }
 
             message = shown.ToString();
         }
 
         return LongWord().Replace(message, m => Cut(m.Value));
+    }
+
+    /// <summary>
+    /// <paramref name="text"/> with every control character shown as its code (<c>&lt;16#1B&gt;</c>), tab and line feed
+    /// included: a name printed on one line of a terminal can then neither move the cursor, change colours (ESC [ 31 m)
+    /// nor break the line. Nothing is cut; text without control characters comes back as it is.
+    /// </summary>
+    public static string OneLine(string text)
+    {
+        ArgumentNullException.ThrowIfNull(text);
+        if (!text.Any(char.IsControl))
+        {
+            return text;
+        }
+
+        var shown = new StringBuilder(text.Length + 16);
+        foreach (var c in text)
+        {
+            Append(shown, c, char.IsControl(c));
+        }
+
+        return shown.ToString();
     }
 
     /// <summary>
@@ -53,6 +68,18 @@ public static partial class QuotedText
         }
 
         return end <= MaxWordChars ? word : word[..MaxWordChars] + "..." + word[end..];
+    }
+
+    private static void Append(StringBuilder shown, char c, bool asCode)
+    {
+        if (asCode)
+        {
+            shown.Append(CultureInfo.InvariantCulture, $"<16#{(int)c:X2}>");
+        }
+        else
+        {
+            shown.Append(c);
+        }
     }
 
     /// <summary>Tab and line feed lay a message out; every other control character is data the reader cannot see.</summary>

@@ -19,7 +19,7 @@ internal static class AlarmReader
                 flag = null;
             }
 
-            var text = entry.String("text");
+            var text = TextRule.AlarmText.Read(entry, "text");
             if (text is not null && string.IsNullOrWhiteSpace(text))
             {
                 entry.Problem("text", "the alarm text is empty; the operator would see a blank message");

@@ -47,6 +47,13 @@ public static class AtomicFile
         }
     }
 
+    /// <summary>
+    /// Writes <paramref name="content"/> to <paramref name="path"/> atomically, keeping an existing file's previous
+    /// content as <c>path.bak</c>. Everything that would stop the replacement is checked before the .bak is touched (a
+    /// read-only target or folder, a target that cannot be opened for writing: immutable, locked, not ours), so a refused
+    /// save leaves the target and its .bak as they were. The new file keeps the old one's permissions (on Linux its
+    /// mode: a project kept 0600 stays private).
+    /// </summary>
     public static bool TryWrite(string path, byte[] content, [NotNullWhen(false)] out string? error)
     {
         string? temporary = null;
@@ -56,27 +63,24 @@ public static class AtomicFile
         {
             target = Path.GetFullPath(path);
             var folder = Path.GetDirectoryName(target) ?? ".";
-            if (!Directory.Exists(folder))
+            error = ReplaceProblem(folder, target);
+            if (error is not null)
             {
-                // Said in our words: the exception would name the hidden temporary file, not the folder.
-                error = $"cannot save the file: the folder {folder} does not exist";
                 return false;
             }
 
-            if (Directory.Exists(target))
-            {
-                error = $"cannot save the file: {target} is a folder";
-                return false;
-            }
-
+            // The temporary file is also the test that the folder takes a new file (and so the final rename).
             temporary = WriteTemporary(folder, target, content);
             RemoveLeftovers(folder, target, temporary);
 
             if (File.Exists(target))
             {
+                KeepMode(target, temporary);
+
                 // The .bak is made from a complete copy and renamed into place, so at every instant it is a whole
                 // earlier version (File.Replace on Linux unlinks the old .bak before linking the new one).
                 backupCopy = WriteTemporary(folder, target, File.ReadAllBytes(target));
+                KeepMode(target, backupCopy);
                 File.Move(backupCopy, target + ".bak", overwrite: true);
                 backupCopy = null;
             }
@@ -88,7 +92,7 @@ public static class AtomicFile
         }
         catch (Exception ex) when (IsEnvironmental(ex))
         {
-            error = "cannot save the file: " + WithoutTemporaryNames(ex.Message, target, temporary, backupCopy);
+            error = "cannot save the file: " + WithoutTemporaryNames(FileProblemText.Describe(ex, target, FileAction.Write), target, temporary, backupCopy);
             return false;
         }
         finally
@@ -100,6 +104,70 @@ public static class AtomicFile
                     TryDelete(leftover);
                 }
             }
+        }
+    }
+
+    /// <summary>
+    /// Why <paramref name="target"/> cannot be replaced, found before anything is written; null when it can. Read-only is
+    /// judged by the permissions (FileAttributes.ReadOnly: on Linux the write bit that applies to the user), not by
+    /// trying: root may write a file or folder marked read-only, and a user who marked it so meant it to stay.
+    /// </summary>
+    private static string? ReplaceProblem(string folder, string target)
+    {
+        if (!Directory.Exists(folder))
+        {
+            // Said in our words: the exception would name the hidden temporary file, not the folder.
+            return $"cannot save the file: the folder {folder} does not exist";
+        }
+
+        if (Directory.Exists(target))
+        {
+            return $"cannot save the file: {target} is a folder";
+        }
+
+        // Windows ignores a folder's Read-only attribute for what is inside (Explorer uses it to mark customised
+        // folders), so only Linux and macOS folders are judged by it.
+        if (!OperatingSystem.IsWindows() && File.GetAttributes(folder).HasFlag(FileAttributes.ReadOnly))
+        {
+            return $"cannot save the file: the folder {folder} is read-only: nothing written; make it writable (chmod u+w), or save elsewhere";
+        }
+
+        if (!File.Exists(target))
+        {
+            return null;
+        }
+
+        if (File.GetAttributes(target).HasFlag(FileAttributes.ReadOnly))
+        {
+            return $"cannot save the file: {target} is read-only: nothing written; make it writable to replace it "
+                + "(chmod u+w on Linux, clear Read-only in its Properties on Windows), or save elsewhere";
+        }
+
+        try
+        {
+            // Opened for writing and closed at once, nothing written: an immutable file (chattr +i), one another
+            // program holds locked, or one of another user fails here, before the .bak is renewed.
+            using var probe = new FileStream(target, FileMode.Open, FileAccess.Write, FileShare.ReadWrite | FileShare.Delete);
+            return null;
+        }
+        catch (UnauthorizedAccessException)
+        {
+            // EACCES and EPERM alike: its permissions or ACL, or (root included) Linux's immutable or append-only attribute.
+            return "cannot save the file: the system refuses to open it for writing (its permissions, or on Linux an immutable "
+                + "or append-only attribute: lsattr shows i or a): nothing written";
+        }
+        catch (Exception ex) when (IsEnvironmental(ex))
+        {
+            return $"cannot save the file: {FileProblemText.Describe(ex, target, FileAction.Write)}: nothing written";
+        }
+    }
+
+    /// <summary>The new version keeps the old one's Linux mode (a temporary file gets 0666 less the umask).</summary>
+    private static void KeepMode(string target, string copy)
+    {
+        if (!OperatingSystem.IsWindows())
+        {
+            File.SetUnixFileMode(copy, File.GetUnixFileMode(target));
         }
     }
 

@@ -14,7 +14,7 @@ internal sealed class EntryRegistry
     /// <summary>Reads the entry's "symbol"; null when missing, blank or already used.</summary>
     public string? ClaimSymbol(JsonFields entry)
     {
-        var symbol = entry.String("symbol");
+        var symbol = TextRule.Symbol.Read(entry, "symbol");
         if (symbol is null)
         {
             return null;

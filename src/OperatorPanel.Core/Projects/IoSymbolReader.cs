@@ -15,7 +15,7 @@ internal static class IoSymbolReader
             entry.ReportUnknown("symbol", "address", "description");
             var symbol = registry.ClaimSymbol(entry);
             var address = AddressReader.Read(entry, "address", cpu, a => a.Area == area && a.Width == AccessWidth.Bit ? null : $"{noun}, not {a}");
-            var description = entry.String("description", string.Empty);
+            var description = TextRule.Description.Read(entry, "description", string.Empty);
             if (address is { } a && !registry.ClaimAddress(entry, "address", list, a))
             {
                 address = null;

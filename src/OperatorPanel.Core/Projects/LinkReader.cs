@@ -20,7 +20,7 @@ internal static class LinkReader
         }
 
         fields.ReportUnknown("port", "baud", "parity", "dataBits", "stopBits", "kind", "protocol");
-        var port = fields.String("port");
+        var port = TextRule.Port.Read(fields, "port");
         if (port is not null && string.IsNullOrWhiteSpace(port))
         {
             fields.Problem("port", "the serial port name is empty; write e.g. COM3 or /dev/ttyUSB0");

@@ -87,7 +87,8 @@ public static class ProjectFile
     /// <summary>
     /// Writes <paramref name="project"/> to <paramref name="path"/> atomically: a temporary file in the same folder is
     /// written and flushed to disk, then replaces the target, whose previous content is kept as <c>path.bak</c>.
-    /// A failure (no such folder, access denied, disk full) leaves the target as it was.
+    /// A failure (no such folder, access denied, disk full) leaves the target as it was; a read-only target or folder,
+    /// or a target that cannot be opened for writing, is refused before anything is written, its .bak untouched.
     /// </summary>
     public static bool TrySave(PanelProject project, string path, [NotNullWhen(false)] out string? error)
     {

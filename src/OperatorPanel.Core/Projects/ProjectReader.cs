@@ -26,7 +26,7 @@ internal static class ProjectReader
         }
 
         fields.ReportUnknown("schemaVersion", "name", "refresh", "history", "alarmSound", "stations");
-        var name = fields.String("name", fallback: string.Empty);
+        var name = TextRule.ProjectName.Read(fields, "name", fallback: string.Empty);
         var refresh = ReadRefresh(fields.Object("refresh"));
         var history = HistorySettingsReader.Read(fields);
         var alarmSound = fields.Bool("alarmSound", fallback: true);

@@ -31,7 +31,8 @@ public sealed record ProjectStation(
 {
     /// <summary>
     /// The station's handler is generated with 07 STOP (HandlerOptions.AllowStop) and the panel offers Stop for it. Off
-    /// by default: a remote STOP halts the line (docs/protocol-v2.md, "07 STOP").
+    /// by default: a remote STOP halts the line (docs/protocol-v2.md, "07 STOP"). Not with <see cref="Compact"/>: the
+    /// compact handler has no STOP (<see cref="CompactStop"/>).
     /// </summary>
     public bool AllowStop { get; init; }
 

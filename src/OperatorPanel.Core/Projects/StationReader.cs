@@ -61,7 +61,7 @@ internal static class StationReader
         }
 
         fields.ReportUnknown("name", "address", "cpu", "link", "allowStop", "compact", "inputs", "outputs", "tags", "alarms");
-        var name = fields.String("name");
+        var name = TextRule.StationName.Read(fields, "name");
         if (name is not null && string.IsNullOrWhiteSpace(name))
         {
             fields.Problem("name", "the station name is empty");

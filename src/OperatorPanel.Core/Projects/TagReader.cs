@@ -32,7 +32,7 @@ internal static class TagReader
             format = null;
         }
 
-        var description = entry.String("description", string.Empty);
+        var description = TextRule.Description.Read(entry, "description", string.Empty);
         var recorded = entry.Bool("record", fallback: true);
         var deadbandOk = entry.TryNullableNumber("deadband", out var deadband);
         if (deadband is < 0)

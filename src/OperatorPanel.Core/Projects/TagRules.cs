@@ -12,6 +12,9 @@ public static class TagRules
     /// <summary>A unit is a short word shown after the value ("%", "bottles/min").</summary>
     public const int MaxUnitChars = 16;
 
+    /// <summary>The unit's control characters; its length has the message above, which also says what a unit looks like.</summary>
+    private static readonly TextRule UnitText = new("the unit", MaxUnitChars, "it is a short word shown after the value");
+
     /// <summary>The first problem and the file property it belongs to ("unit", "scale", "min", "max"); null when the tag is fine.</summary>
     public static (string Property, string Message)? Problem(ProjectTag tag)
     {
@@ -19,6 +22,11 @@ public static class TagRules
         if (tag.Unit is { } unit && (unit.Trim().Length == 0 || unit.Length > MaxUnitChars || unit != unit.Trim()))
         {
             return ("unit", $"a unit is 1-{MaxUnitChars} characters without spaces around (\"%\", \"ml\", \"bottles/min\"); leave it out for none");
+        }
+
+        if (tag.Unit is { } shown && UnitText.Problem(shown) is { } hidden)
+        {
+            return ("unit", hidden);
         }
 
         if ((tag.Scale is not null || tag.Range is not null) && !TagValues.IsNumeric(tag.Format))

@@ -1,5 +1,6 @@
 using System.Collections.Immutable;
 using System.Text.RegularExpressions;
+using OperatorPanel.Core.Projects;
 using OperatorPanel.StlGen.Options;
 
 namespace OperatorPanel.StlGen.Diagnostics;
@@ -62,6 +63,11 @@ public static partial class HandlerOptionsCheck
         }
 
         CheckBlocks(options, Add);
+
+        if (options.Protocol == 3 && CompactStop.Contradicts(options.Compact, options.AllowStop))
+        {
+            Add(StlDiagnostics.CompactHandlerHasNoStop, CompactStop.Describe($"station {options.Station}", CompactStopWords.File));
+        }
 
         if ((options.WriteMask & ~HandlerDefaults.WriteMask) != 0)
         {

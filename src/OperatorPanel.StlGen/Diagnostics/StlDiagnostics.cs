@@ -90,6 +90,12 @@ public static class StlDiagnostics
     /// <summary>READ CHANGES copy bytes outside 0-255 (COPY_BYTES is one byte in IDENTIFY, and the copies are indexed by a byte).</summary>
     public const string CopyBytesOutOfRange = "STL030";
 
+    /// <summary>
+    /// A compact protocol 3 handler asked to carry STOP: the compact handler has none, so the STOP allowed would be left
+    /// out silently (Core CompactStop: the project's "compact" with "allowStop", or --compact with --allow-stop).
+    /// </summary>
+    public const string CompactHandlerHasNoStop = "STL031";
+
     /// <summary>Merge warning: a user block exported without body (a password-protected POU): nothing of it can be checked (Stl AWL015).</summary>
     public const string UserBlockWithoutBody = "STL041";
 

@@ -63,7 +63,7 @@ public sealed partial class GenerateCodeViewModel
 
         if (!result.Ok)
         {
-            Message = "These settings are impossible on this CPU; nothing was generated.";
+            Message = "These settings are impossible (the list of messages says why); nothing was generated.";
             return;
         }
 

@@ -79,7 +79,9 @@ public sealed partial class GenerateCodeViewModel : ObservableObject
     public bool WriteV { get => _writeV; set => Change(ref _writeV, value); }
 
     /// <summary>Whether the handler gets 08 STOP: the station's "allowStop" in the project decides (File > Edit project).</summary>
-    public string StopText => Station.AllowStop
+    public string StopText => CompactStop.Contradicts(Station.Compact, Station.AllowStop)
+        ? "allowed, but the station's handler is compact, which has none: Generate refuses (STL031); clear one of the two in File > Edit project"
+        : Station.AllowStop
         ? "included: the project allows the panel to put this CPU into STOP"
         : "not included (allow remote STOP for the station in File > Edit project)";
 

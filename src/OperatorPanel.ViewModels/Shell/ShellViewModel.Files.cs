@@ -119,7 +119,17 @@ public sealed partial class ShellViewModel
         // The path first: the Alarms window made for the new project keeps its history beside this file.
         (ProjectPath, IsDemo) = (path, demo);
         Session.Load(project);
-        StatusLine.Show($"Opened {ProjectName}");
+
+        // A compact station with "allowStop" loads (it reads and writes as any other) but its Stop PLC can never work:
+        // said at once, as project check says it, rather than found when Generate PLC code refuses.
+        if (CompactStop.Problems(project) is [var contradiction, ..])
+        {
+            StatusLine.ShowError($"Opened {ProjectName}; {contradiction.Message} (File > Edit project)");
+        }
+        else
+        {
+            StatusLine.Show($"Opened {ProjectName}");
+        }
     }
 
     /// <summary>SaveCommand; true when saved (false: cancelled or failed, the project stays unsaved).</summary>

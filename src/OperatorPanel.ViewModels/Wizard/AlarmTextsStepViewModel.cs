@@ -3,6 +3,7 @@ using System.Collections.ObjectModel;
 using CommunityToolkit.Mvvm.Input;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Alarms;
+using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
@@ -49,6 +50,7 @@ public sealed partial class AlarmTextsStepViewModel : WizardStepViewModel
             var error = WizardAddress.Check(row.Flag, context, AddressUse.Read, Shape, out var flag);
             error ??= flags.Add(flag) ? null : $"{flag} already has an alarm";
             error ??= string.IsNullOrWhiteSpace(row.Text) ? "the alarm text is empty; the operator would see a blank message" : null;
+            error ??= WizardText.Check(TextRule.AlarmText, row.Text);
             row.Error = error;
             if (error is not null)
             {

@@ -1,6 +1,7 @@
 using System.Globalization;
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
+using OperatorPanel.Core.Projects;
 
 namespace OperatorPanel.ViewModels.Wizard;
 
@@ -68,9 +69,18 @@ public sealed class CpuStepViewModel : WizardStepViewModel
 
     internal override IEnumerable<string> Check(WizardContext context)
     {
+        if (WizardText.Check(TextRule.ProjectName, ProjectName) is { } projectName)
+        {
+            yield return WizardText.Sentence(projectName);
+        }
+
         if (string.IsNullOrWhiteSpace(StationName))
         {
             yield return "The station needs a name, e.g. \"Filler\".";
+        }
+        else if (WizardText.Check(TextRule.StationName, StationName) is { } stationName)
+        {
+            yield return WizardText.Sentence(stationName);
         }
 
         if (!int.TryParse(StationAddress.Trim(), NumberStyles.Integer, CultureInfo.InvariantCulture, out var number))

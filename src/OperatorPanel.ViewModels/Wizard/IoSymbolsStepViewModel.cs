@@ -98,6 +98,7 @@ public sealed partial class IoSymbolsStepViewModel : WizardStepViewModel
             var error = WizardAddress.Check(row.Address, context, AddressUse.Read, a => WizardAddress.IsBitOf(a, area) ? null : $"{kind}, not {a}", out var address);
             error ??= addresses.Add(address) ? null : $"{address} is listed twice";
             error ??= string.IsNullOrWhiteSpace(row.Symbol) ? "the symbol is empty" : null;
+            error ??= WizardText.Check(TextRule.Symbol, row.Symbol) ?? WizardText.Check(TextRule.Description, row.Description);
             error ??= symbols.Add(row.Symbol.Trim()) ? null : $"symbol '{row.Symbol.Trim()}' is used twice";
             row.Error = error;
             if (error is not null)

@@ -1,6 +1,7 @@
 using System.Collections.ObjectModel;
 using System.Globalization;
 using CommunityToolkit.Mvvm.Input;
+using OperatorPanel.Core.Projects;
 using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.ViewModels.Wizard;
@@ -12,6 +13,10 @@ namespace OperatorPanel.ViewModels.Wizard;
 /// </summary>
 public sealed partial class LinkStepViewModel : WizardStepViewModel
 {
+    /// <summary>The wizard's words for the two settings: its check boxes.</summary>
+    private static readonly CompactStopWords StopWords = new(
+        "\"Compact handler\" ticked", "\"Allow remote STOP\" ticked on step 1", "clear \"Compact handler\"", "clear \"Allow remote STOP\" on step 1");
+
     private readonly CpuStepViewModel _cpuStep;
     private readonly ISerialPortCatalog _catalog;
     private readonly IConnectionTester _tester;
@@ -142,6 +147,10 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
         {
             yield return "Choose a serial port, or type one such as COM3 or /dev/ttyUSB0.";
         }
+        else if (WizardText.Check(TextRule.Port, PortName) is { } port)
+        {
+            yield return WizardText.Sentence(port);
+        }
 
         if (Protocol == LinkProtocol.Ppi)
         {
@@ -163,7 +172,18 @@ public sealed partial class LinkStepViewModel : WizardStepViewModel
         {
             yield return string.Create(CultureInfo.InvariantCulture, $"{DataBits} data bits: a Freeport character has 7 or 8 (SMB30 bit 5).");
         }
+
+        // Core's rule, as project check and generate apply it: step 1's "Allow remote STOP" and this page's "Compact
+        // handler" together would give a handler without STOP. Flagged here, where Finish is, so step 1 stays passable.
+        if (CompactStop.Contradicts(Compact, _cpuStep.AllowStop))
+        {
+            yield return WizardText.Sentence(CompactStop.Describe(StationWho(), StopWords));
+        }
     }
+
+    private string StationWho() => _cpuStep.Station is { } station
+        ? string.Create(CultureInfo.InvariantCulture, $"{_cpuStep.StationName.Trim()} (station {station.Address})")
+        : _cpuStep.StationName.Trim();
 
     private IEnumerable<string> CheckPpi()
     {

@@ -83,6 +83,7 @@ public sealed partial class MemoryCellsStepViewModel : WizardStepViewModel
             }
 
             error ??= string.IsNullOrWhiteSpace(row.Symbol) ? "the symbol is empty" : null;
+            error ??= WizardText.Check(TextRule.Symbol, row.Symbol) ?? WizardText.Check(TextRule.Description, row.Description);
             error ??= symbols.Add(row.Symbol.Trim()) ? null : $"symbol '{row.Symbol.Trim()}' is already used";
             row.Error = error;
             if (error is not null)

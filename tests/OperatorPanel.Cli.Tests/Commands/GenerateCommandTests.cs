@@ -70,6 +70,43 @@ public sealed class GenerateCommandTests : IDisposable
     }
 
     [Fact]
+    public void Generate_ProjectCompactWithAllowStop_RefusedAsImpossibleInCheckWordsAndNothingWritten()
+    {
+        var project = NewProject("224", "2");
+        var root = JsonNode.Parse(File.ReadAllText(project))!;
+        (root["stations"]![0]!["name"], root["stations"]![0]!["compact"], root["stations"]![0]!["allowStop"]) = ("Filler", true, true);
+        File.WriteAllText(project, root.ToJsonString());
+
+        var run = CliRunner.Run("generate", project, "-o", Out);
+        var check = CliRunner.Run("project", "check", project);
+
+        run.ExitCode.Should().Be(2, "impossible handler settings, as every STLnnn");
+        run.Error.Split(Environment.NewLine, StringSplitOptions.RemoveEmptyEntries).Should().Equal(
+            "opanel: STL031: " + CompactWithStop,
+            "opanel: nothing written: the handler settings above are impossible");
+        Directory.Exists(Out).Should().BeFalse();
+        check.Out.Should().Contain($"{project}: $.stations[0]: {CompactWithStop}\n", "project check says it in the same words");
+    }
+
+    [Theory]
+    [InlineData(false, new[] { "--compact", "--allow-stop" }, "has --compact and --allow-stop, but", "leave out --compact for the full handler with STOP, or leave out --allow-stop for")]
+    [InlineData(true, new[] { "--allow-stop" }, "has \"compact\": true and --allow-stop, but", "give --compact false (or set \"compact\": false) for the full handler with STOP, or leave out --allow-stop for")]
+    [InlineData(false, new[] { "--compact", "--allow-stop", "--stats" }, "has --compact and --allow-stop, but", "leave out --compact for")]
+    public void Generate_CompactAndAllowStopFromTheCommandLine_RefusedNamingWhereEachCameFrom(bool projectCompact, string[] options, string settings, string waysOut)
+    {
+        var project = NewProject("224", "2");
+        var root = JsonNode.Parse(File.ReadAllText(project))!;
+        root["stations"]![0]!["compact"] = projectCompact;
+        File.WriteAllText(project, root.ToJsonString());
+
+        var run = CliRunner.Run(["generate", project, "-o", Out, .. options]);
+
+        run.ExitCode.Should().Be(2);
+        run.Error.Should().StartWith($"opanel: STL031: PLC 2 (station 2) {settings} a compact handler has no STOP").And.Contain(waysOut);
+        Directory.Exists(Out).Should().BeFalse();
+    }
+
+    [Fact]
     public void Generate_Stats_PrintsTheHandlersFigures()
     {
         var project = NewProject("224", "2");
@@ -237,6 +274,10 @@ public sealed class GenerateCommandTests : IDisposable
     }
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);
+
+    private const string CompactWithStop = "Filler (station 2) has \"compact\": true and \"allowStop\": true, but a compact handler has no STOP: it would be generated "
+        + "without the STOP that is allowed; set \"compact\": false for the full handler with STOP, or set \"allowStop\": false for the "
+        + "compact handler without it";
 
     private string Out => Path.Combine(_folder, "out");
 

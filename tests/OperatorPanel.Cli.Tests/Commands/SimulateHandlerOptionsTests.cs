@@ -85,6 +85,9 @@ public sealed class SimulateHandlerOptionsTests
     [InlineData("--writable", "X", "opanel: --writable: 'X' is not an area; use a comma-separated list of Q, M, V, SM")]
     [InlineData("--buffer", "MB10", "opanel: --buffer MB10: give the handler's first V byte, e.g. VB1000")]
     [InlineData("--sbr", "64", "opanel: station 2: the handler cannot be generated: STL009")]
+    [InlineData("--compact", "--allow-stop", "opanel: station 2: the handler cannot be generated: STL031: station 2 has --compact and --allow-stop, "
+        + "but a compact handler has no STOP: it would be generated without the STOP that is allowed; leave out --compact for the full handler "
+        + "with STOP, or leave out --allow-stop for the compact handler without it")]
     public void Simulate_ImpossibleHandlerOption_RefusedAsGenerateRefusesIt(string option, string value, string message)
     {
         var run = CliRunner.Run("simulate", "--cpu", "224", "--station", "2", "--device", "/dev/null", option, value);

@@ -24,6 +24,17 @@ public sealed class SnapshotRendererTests
         text.Should().Contain($"  last error: {PortGone}").And.NotContain("handler");
     }
 
+    [Fact]
+    public void Render_NameAndErrorWithControlCharacters_PrintsTheirCodesNeverTheCharacters()
+    {
+        var station = Station("offline", "no answer from \u001b[2Jstation 2", handler: null) with { Name = "Fil\u001b[31mler" };
+
+        var text = SnapshotRenderer.Render(Snapshot(station));
+
+        text.Should().NotContain("\u001b");
+        text.Should().Contain("Fil<16#1B>[31mler  station 2").And.Contain("  last error: no answer from <16#1B>[2Jstation 2");
+    }
+
     private static WatchSnapshot Snapshot(StationSnapshot station) =>
         new("Line", "continuous, at least 100 ms apart", 3, new DateTimeOffset(2026, 11, 25, 5, 0, 0, TimeSpan.Zero), [station]);
 

@@ -9,5 +9,18 @@ internal sealed class TempFolder : IDisposable
 
     public string File(string name) => System.IO.Path.Combine(Path, name);
 
-    public void Dispose() => Directory.Delete(Path, recursive: true);
+    /// <summary>
+    /// Read-only marks are cleared first (outermost first, as the enumeration lists a folder before its content): tests
+    /// make files and folders read-only, and a user who is not root may not delete from a read-only folder, nor anyone
+    /// a read-only file on Windows.
+    /// </summary>
+    public void Dispose()
+    {
+        foreach (var entry in Directory.EnumerateFileSystemEntries(Path, "*", SearchOption.AllDirectories).Prepend(Path))
+        {
+            System.IO.File.SetAttributes(entry, System.IO.File.GetAttributes(entry) & ~FileAttributes.ReadOnly);
+        }
+
+        Directory.Delete(Path, recursive: true);
+    }
 }

@@ -28,6 +28,10 @@ public sealed class HandlerOptionsCheckTests
         { StlDiagnostics.BlockNameInvalid, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Names = new HandlerBlockNames { Receive = "1RX" } }, "'1RX'" },
         { StlDiagnostics.BlockNamesOverlap, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Names = new HandlerBlockNames { Delay = "OP_RX" } }, "'OP_RX'" },
         { StlDiagnostics.ParityNotAllowed, new HandlerOptions { Protocol = 2, Cpu = Cpu224, Parity = (Parity)7 }, "parity 7" },
+        {
+            StlDiagnostics.CompactHandlerHasNoStop, new HandlerOptions { Protocol = 3, Cpu = Cpu224, Compact = true, AllowStop = true },
+            "station 1 has \"compact\": true and \"allowStop\": true, but a compact handler has no STOP"
+        },
     };
 
     [Theory]

@@ -37,7 +37,7 @@ public sealed class TechnicianNotesTests
     [Fact]
     public void Write_Compact_SaysWhatItLeavesOutAndThatStopIsNotInIt()
     {
-        var notes = Lines(HandlerGoldenTests.Cpu224Port0Station2 with { Protocol = 3, Compact = true, AllowStop = true });
+        var notes = Lines(HandlerGoldenTests.Cpu224Port0Station2 with { Protocol = 3, Compact = true });
 
         notes.Should().Contain("The compact handler");
         notes.Should().Contain("  It answers IDENTIFY, READ, WRITE and WRITE BITS only, to fit a small CPU. It leaves out the list (DEFINE");

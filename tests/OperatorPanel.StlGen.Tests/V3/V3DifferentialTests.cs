@@ -1,6 +1,7 @@
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Protocol;
 using OperatorPanel.Core.Protocol.V3;
+using OperatorPanel.StlGen.Diagnostics;
 using OperatorPanel.StlGen.Options;
 
 namespace OperatorPanel.StlGen.Tests.V3;
@@ -157,9 +158,18 @@ public sealed class V3DifferentialTests
     }
 
     [Fact]
-    public void Compact_StopAllowedInTheProject_IsUnknownAndLeavesNoStopCode()
+    public void Compact_StopAllowed_RefusedAsImpossibleInsteadOfLeftOutSilently()
     {
-        var station = new V3Station(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu222), Station = 5, Compact = true, AllowStop = true }, new Random(6));
+        var result = HandlerGenerator.Generate(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu222), Station = 5, Compact = true, AllowStop = true });
+
+        result.Ok.Should().BeFalse("a compact handler has no STOP: generating it would drop the STOP that was allowed");
+        result.Diagnostics.Select(d => d.Id).Should().Equal(StlDiagnostics.CompactHandlerHasNoStop);
+    }
+
+    [Fact]
+    public void Compact_Stop_IsUnknownAndLeavesNoStopCode()
+    {
+        var station = new V3Station(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu222), Station = 5, Compact = true }, new Random(6));
 
         Same(station, Request.Stop(station.Station, 1)).Substring(4, 2).Should().Be("85", "the compact handler has no 08 STOP");
         station.Plc.Mode.Should().Be(Simulator.Reference.OperatingMode.Run);

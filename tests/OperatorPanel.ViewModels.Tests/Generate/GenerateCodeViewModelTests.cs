@@ -119,6 +119,20 @@ public sealed class GenerateCodeViewModelTests : IDisposable
     }
 
     [Fact]
+    public void Generate_CompactStationWithAllowStop_RefusedWithStl031AndTheStopLineSaysWhy()
+    {
+        var project = PanelFixture.Project(cpu: CpuProfiles.For(CpuModel.Cpu224));
+        var generate = new GenerateCodeViewModel(project with { Stations = [project.Stations[0] with { Compact = true, AllowStop = true }] }, 0, _files);
+
+        generate.GenerateCommand.Execute(null);
+
+        generate.Diagnostics.Should().ContainSingle().Which.Id.Should().Be("STL031");
+        generate.Preview.Should().BeEmpty();
+        generate.SaveCommand.CanExecute(null).Should().BeFalse();
+        generate.StopText.Should().StartWith("allowed, but the station's handler is compact, which has none");
+    }
+
+    [Fact]
     public void Save_SettingChangedAfterGenerate_DisabledUntilGeneratedAgain()
     {
         var generate = Create(CpuProfiles.For(CpuModel.Cpu224));

@@ -192,6 +192,23 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task Open_CompactStationWithAllowStop_OpensAndSaysWhyStopCannotWork()
+    {
+        var path = Path.Combine(_folder, "compact-stop.opproj");
+        var project = PanelFixture.Project();
+        ProjectFile.TrySave(project with { Stations = [project.Stations[0] with { Compact = true, AllowStop = true }] }, path, out _).Should().BeTrue();
+        _panel.Files.FileToOpen = path;
+
+        await _shell.OpenCommand.ExecuteAsync(null).Guarded();
+
+        _shell.ProjectPath.Should().Be(path, "the panel reads and writes such a station as any other");
+        _panel.Dialogs.Errors.Should().BeEmpty();
+        _panel.Session.StatusLine.IsError.Should().BeTrue();
+        _panel.Session.StatusLine.Text.Should().StartWith($"Opened {_shell.ProjectName}; {project.Stations[0].Name} (station 2) has \"compact\": true and \"allowStop\": true, but a compact handler has no STOP")
+            .And.EndWith("for the compact handler without it (File > Edit project)");
+    }
+
+    [Fact]
     public async Task Demo_SampleProject_OpensOnTheSimulatedLineWithLiveValues()
     {
         await _shell.DemoCommand.ExecuteAsync(null).Guarded();

@@ -171,6 +171,75 @@ public sealed class ProjectWizardViewModelTests
     }
 
     [Fact]
+    public void ChooseCpu222WithAllowStop_LinkPageFlagsTheCompactHandlerWithoutStopAndFinishIsRefused()
+    {
+        var wizard = new ProjectWizardViewModel(AlarmProject.Create(), 0, new FakeConnectionTester(), new FakePortCatalog());
+        wizard.CpuStep.AllowStop = true;
+        wizard.CpuStep.Cpu = CpuProfiles.For(CpuModel.Cpu222);
+
+        wizard.FinishCommand.Execute(null);
+
+        wizard.IsFinished.Should().BeFalse("before, the station got a compact handler and the STOP allowed was silently left out");
+        wizard.CurrentStep.Should().BeSameAs(wizard.LinkStep);
+        wizard.Message.Should().Be("Step 5 (Link) needs attention: Filler (station 2) has \"Compact handler\" ticked and \"Allow remote STOP\" ticked on "
+            + "step 1, but a compact handler has no STOP: it would be generated without the STOP that is allowed; clear \"Compact handler\" "
+            + "for the full handler with STOP, or clear \"Allow remote STOP\" on step 1 for the compact handler without it.");
+    }
+
+    [Theory]
+    [InlineData(true)]
+    [InlineData(false)]
+    public void Edit_CompactStationWithAllowStop_FinishesOnceEitherIsCleared(bool clearCompact)
+    {
+        var original = AlarmProject.Create();
+        original = original with { Stations = [original.Stations[0] with { Compact = true, AllowStop = true }] };
+        var wizard = new ProjectWizardViewModel(original, 0, new FakeConnectionTester(), new FakePortCatalog());
+        wizard.CurrentIndex = 4;
+        wizard.FinishCommand.CanExecute(null).Should().BeFalse(wizard.Message);
+
+        if (clearCompact)
+        {
+            wizard.LinkStep.Compact = false;
+        }
+        else
+        {
+            wizard.CpuStep.AllowStop = false;
+        }
+
+        wizard.FinishCommand.Execute(null);
+
+        var station = wizard.Result!.Stations[0];
+        (station.Compact, station.AllowStop).Should().Be((!clearCompact, clearCompact));
+    }
+
+    [Theory]
+    [InlineData("Fil\u001bler", "Step 1 (CPU and station) needs attention: The station name 'Fil<16#1B>ler' holds control characters (16#1B), which a screen does not show or takes as commands; remove them.")]
+    [InlineData("FFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFF", "Step 1 (CPU and station) needs attention: The station name 'FFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFF...' is 65 characters long; at most 64: generate names its files after it (NAME-handler.awl), and their path must fit in Windows' 260 characters.")]
+    public void Finish_StationNameTheFileWouldRefuse_StepOneShowsTheFilesMessage(string name, string message)
+    {
+        var wizard = new ProjectWizardViewModel(AlarmProject.Create(), 0, new FakeConnectionTester(), new FakePortCatalog());
+        wizard.CurrentIndex = 4;
+        wizard.CpuStep.StationName = name;
+
+        wizard.FinishCommand.Execute(null);
+
+        wizard.IsFinished.Should().BeFalse();
+        wizard.Message.Should().Be(message);
+    }
+
+    [Fact]
+    public void AlarmText_WithAnEscape_RefusedWithTheFilesMessage()
+    {
+        var wizard = new ProjectWizardViewModel(AlarmProject.Create(), 0, new FakeConnectionTester(), new FakePortCatalog());
+        wizard.CurrentIndex = 3;
+
+        wizard.AlarmStep.Alarms[0].Text = "Jam\u001b[2J";
+
+        wizard.NextCommand.CanExecute(null).Should().BeFalse();
+        wizard.Message.Should().Be("Alarm 1 (M0.0): the alarm text 'Jam<16#1B>[2J' holds control characters (16#1B), which a screen does not show or takes as commands; remove them.");
+    }
+
+    [Fact]
     public void Finish_EarlierStepBrokenAfterLeavingIt_GoesBackThereWithAMessage()
     {
         var wizard = new ProjectWizardViewModel(AlarmProject.Create(), 0, new FakeConnectionTester(), new FakePortCatalog());
