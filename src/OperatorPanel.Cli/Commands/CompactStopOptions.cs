@@ -20,13 +20,13 @@ internal static class CompactStopOptions
         [.. diagnostics.Select(d => d.Id == StlDiagnostics.CompactHandlerHasNoStop ? d with { Message = CompactStop.Describe(who, Words(set, parse, station)) } : d)];
 
     /// <summary>
-    /// <paramref name="station"/>: the settings the project gave. --compact wins over the project's "compact"; --allow-stop
-    /// adds STOP to a project without it and cannot take away the project's (HandlerOptionSet.TryApply).
+    /// <paramref name="station"/>: the settings the project gave. --compact wins over the project's "compact", and
+    /// --allow-stop over its "allowStop" (--allow-stop false takes STOP away; HandlerOptionSet.TryApply).
     /// </summary>
     private static CompactStopWords Words(HandlerOptionSet set, ParseResult parse, HandlerOptions station)
     {
         var compactOption = parse.GetResult(set.Compact) is { Implicit: false };
-        var stopOption = parse.GetValue(set.AllowStop);
+        var stopOption = parse.GetResult(set.AllowStop) is { Implicit: false } && parse.GetValue(set.AllowStop);
         if (!compactOption && !stopOption)
         {
             return CompactStopWords.File;
@@ -37,8 +37,8 @@ internal static class CompactStopOptions
             : ("\"compact\": true", "give --compact false (or set \"compact\": false)");
         var (stop, stopOff) = (station.AllowStop, stopOption) switch
         {
-            (true, true) => ("\"allowStop\": true (--allow-stop too)", "set \"allowStop\": false and leave out --allow-stop"),
-            (true, false) => ("\"allowStop\": true", "set \"allowStop\": false"),
+            (true, true) => ("\"allowStop\": true (--allow-stop too)", "give --allow-stop false"),
+            (true, false) => ("\"allowStop\": true", "give --allow-stop false (or set \"allowStop\": false)"),
             _ => ("--allow-stop", "leave out --allow-stop"),
         };
         return new CompactStopWords(compact, stop, compactOff, stopOff);

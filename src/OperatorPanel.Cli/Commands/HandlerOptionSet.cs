@@ -61,7 +61,7 @@ internal sealed class HandlerOptionSet
     public Option<bool> AllowStop { get; } = new("--allow-stop")
     {
         Description = "Include STOP (08 in protocol 3, 07 in 2): the panel may put the CPU in STOP (default: the station's \"allowStop\" in the "
-            + "project, off unless set; off = no STOP code, the command is refused: 85 in protocol 3, error 05 in 2; refused with a compact handler, STL031)",
+            + "project, off unless set; --allow-stop false leaves it out of a station whose project allows it; off = no STOP code, the command is refused: 85 in protocol 3, error 05 in 2; refused with a compact handler, STL031)",
     };
 
     private Option[] All => [Protocol, Compact, PlcPort, Buffer, ReplyDelay, Writable, CharTimeout, Subroutine, Interrupt, CopyBytes, AllowStop];
@@ -140,7 +140,7 @@ internal sealed class HandlerOptionSet
             FirstSubroutine = parse.GetValue(Subroutine),
             FirstInterrupt = parse.GetValue(Interrupt),
             CopyBytes = parse.GetValue(CopyBytes),
-            AllowStop = station.AllowStop || parse.GetValue(AllowStop),
+            AllowStop = parse.GetResult(AllowStop) is { Implicit: false } ? parse.GetValue(AllowStop) : station.AllowStop,
         };
         return true;
     }

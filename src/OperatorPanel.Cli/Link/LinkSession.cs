@@ -94,7 +94,7 @@ internal sealed class LinkSession : IAsyncDisposable
     /// for a project's compact station the compact handler (which has no STOP), so the demo keeps the V bytes the write
     /// rules keep.
     /// </summary>
-    private static HandlerConfig DemoStation(LinkTarget target) => new(target.Station, target.Cpu!, allowStop: true) { Compact = target.Compact };
+    private static HandlerConfig DemoStation(LinkTarget target) => new(target.Station, target.Cpu!, allowStop: !target.Compact) { Compact = target.Compact };
 
     /// <summary>
     /// Settles the writes and STOPs that earlier programs left cut short on this port (through the bus's queue,

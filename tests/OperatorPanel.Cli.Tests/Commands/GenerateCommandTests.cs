@@ -107,6 +107,24 @@ public sealed class GenerateCommandTests : IDisposable
     }
 
     [Fact]
+    public void Generate_CompactWithAllowStopFalse_LeavesTheProjectsStopOut()
+    {
+        // The project allows STOP; --compact false gives the full handler, --allow-stop false the compact one without STOP.
+        var project = NewProject("224", "2");
+        var root = JsonNode.Parse(File.ReadAllText(project))!;
+        root["stations"]![0]!["allowStop"] = true;
+        File.WriteAllText(project, root.ToJsonString());
+
+        var refused = CliRunner.Run("generate", project, "-o", Out, "--compact");
+        var run = CliRunner.Run("generate", project, "-o", Out, "--compact", "--allow-stop", "false", "--stats");
+
+        refused.ExitCode.Should().Be(2);
+        refused.Error.Should().Contain("has --compact and \"allowStop\": true, but").And.Contain("give --allow-stop false (or set \"allowStop\": false)");
+        run.ExitCode.Should().Be(0, run.Error);
+        run.Out.Should().Contain("STOP command:           not included");
+    }
+
+    [Fact]
     public void Generate_Stats_PrintsTheHandlersFigures()
     {
         var project = NewProject("224", "2");

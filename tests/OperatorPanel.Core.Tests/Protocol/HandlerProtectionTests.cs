@@ -41,15 +41,15 @@ public sealed class HandlerProtectionTests
     [Fact]
     public void Refusal_CompactStation_LeavesTheFullHandlersBytesBelowItsOwnWritable()
     {
-        // VB9634-VB10165 belong to the full handler only: a compact station keeps the program's bytes there.
-        HandlerProtection.Refusal(PlcAddress.Parse("VW10164"), CpuProfiles.For(CpuModel.Cpu226), compact: true).Should().BeNull();
-        HandlerProtection.Refusal(PlcAddress.Parse("VW10164"), CpuProfiles.For(CpuModel.Cpu226), compact: false).Should().NotBeNull();
+        // VB9634-VB10061 belong to the full handler only: a compact station keeps the program's bytes there.
+        HandlerProtection.Refusal(PlcAddress.Parse("VW10060"), CpuProfiles.For(CpuModel.Cpu226), compact: true).Should().BeNull();
+        HandlerProtection.Refusal(PlcAddress.Parse("VW10060"), CpuProfiles.For(CpuModel.Cpu226), compact: false).Should().NotBeNull();
     }
 
     [Fact]
     public void OwnVBytes_FullAndCompact_AreTheTopOfVOnAnEvenByte()
     {
         HandlerProtection.OwnVBytes(CpuProfiles.For(CpuModel.Cpu224), compact: false).Should().Be((7586, 8191));
-        HandlerProtection.OwnVBytes(CpuProfiles.For(CpuModel.Cpu224), compact: true).Should().Be((8118, 8191));
+        HandlerProtection.OwnVBytes(CpuProfiles.For(CpuModel.Cpu224), compact: true).Should().Be((8014, 8191));
     }
 }
