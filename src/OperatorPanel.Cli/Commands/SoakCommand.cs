@@ -15,8 +15,9 @@ namespace OperatorPanel.Cli.Commands;
 
 /// <summary>
 /// <c>opanel soak [--minutes N] [--profile flips|mixed|clean] [--seed N] [--baud B] [--lines N] [--model stl|reference] [--scan-ms M]</c>: the long soak of docs/soak.md.
-/// The panel stack works against the generated CPU 226 handler in the STL interpreter (or the reference model) through a noisy-line proxy
-/// between two socat pty pairs, and the judge prints the figures per profile (both noisy profiles unless one is
+/// The panel stack watches and writes the ends of every area Freeport reaches (<see cref="SoakRegion.AreaEnds"/>) of the generated
+/// CPU 226 handler in the STL interpreter (or the reference model) through a noisy-line proxy between two socat pty pairs, while the
+/// field changes the last I and SM bytes, and the judge prints the figures per profile (both noisy profiles unless one is
 /// named). Exit 0 when the must-be-0 figures are 0, 2 when one is not, 1 for a bad option or a missing socat.
 /// </summary>
 internal static class SoakCommand
@@ -136,6 +137,7 @@ internal static class SoakCommand
                 Line = plc.Line,
                 Memory = plc.Memory,
                 HandlerFirstByte = plc.HandlerFirstByte,
+                Inputs = plc.Inputs,
             },
             TimeProvider.System,
             cli.Log,
@@ -143,7 +145,7 @@ internal static class SoakCommand
     }
 
     /// <summary>Station 2 on a line of its own: the generated handler in the interpreter, or the reference model.</summary>
-    private static bool TryCreatePlc(SimulationModel model, int baud, TimeSpan userProgram, out (ISimulatedLine Line, PlcMemory Memory, int HandlerFirstByte) plc, out string error)
+    private static bool TryCreatePlc(SimulationModel model, int baud, TimeSpan userProgram, out (ISimulatedLine Line, PlcMemory Memory, int HandlerFirstByte, byte[] Inputs) plc, out string error)
     {
         plc = default;
         error = string.Empty;
@@ -152,7 +154,8 @@ internal static class SoakCommand
         {
             var reference = new ReferenceHandler(new HandlerSetup(
                 new Station(2), Cpu, endTimeoutMs: (byte)options.EffectiveEndTimeoutMs, vFirst: options.EffectiveV3First));
-            plc = (new V3ReferenceLine([reference]), reference.Memory, reference.Setup.VFirst);
+            // The reference model reads I itself: the field sets it there.
+            plc = (new V3ReferenceLine([reference]), reference.Memory, reference.Setup.VFirst, reference.Memory.I);
             return true;
         }
 
@@ -174,7 +177,8 @@ internal static class SoakCommand
         station.Plc.UserProgramTime = userProgram;
         var line = new StlLine(settings);
         line.Attach(station, runProcess: false);
-        plc = (line, station.Memory, options.EffectiveV3First);
+        // The interpreter's CPU copies its physical inputs into I at each scan: the field sets those.
+        plc = (line, station.Memory, options.EffectiveV3First, station.Plc.InputImage);
         return true;
     }
 }

@@ -7,8 +7,11 @@ namespace OperatorPanel.Simulator.Soak;
 /// The soak judge's view into the simulated PLC: wraps a line, runs it in steps of <see cref="StlLine.Slice"/> and
 /// after every step (and every delivery, where the reference model acts) compares the <see cref="WatchedBytes"/> with
 /// the copy it kept, recording each difference as a <see cref="MemoryChange"/>, in order. A step is shorter than any
-/// frame, and the handler copies a WRITE's data with one instruction (BMB), so one change is one executed write.
-/// A write that stores what is already there changes nothing and is not seen: the soak never writes a value twice.
+/// frame, and the handler copies a WRITE's data with one instruction (BMB), so one change of Q, M or V is one executed
+/// write; WRITE BITS stores its byte twice (AND, then OR), and a 1 written over a 1 may show as the bit cleared and set
+/// again (<see cref="ChangeAttribution.RewriteOf"/>). A change of I or SM is the field's (<see cref="SoakField"/>), which
+/// the judge holds against what the field set. A write that stores what is already there changes nothing and is not
+/// seen: words and double words are never written twice with one value, bytes and bits can be (the judge says so).
 /// </summary>
 public sealed class ExecutedWriteObserver : ISimulatedLine
 {
@@ -18,6 +21,7 @@ public sealed class ExecutedWriteObserver : ISimulatedLine
     private readonly TimeProvider _time;
     private readonly List<MemoryChange> _changes = [];
     private readonly Lock _lock = new();
+    private readonly MemoryImage _initial;
 
     public ExecutedWriteObserver(ISimulatedLine inner, PlcMemory memory, IEnumerable<WatchedBytes> watched, TimeProvider time)
     {
@@ -27,7 +31,11 @@ public sealed class ExecutedWriteObserver : ISimulatedLine
         ArgumentNullException.ThrowIfNull(time);
         (_inner, _memory, _time) = (inner, memory, time);
         _watched = [.. watched.Select(w => (w, memory.Area(w.Area).AsSpan(w.First, w.Count).ToArray()))];
+        _initial = new MemoryImage(_watched);
     }
+
+    /// <summary>The watched bytes as they were when the observer started: the judge's starting point.</summary>
+    public MemoryImage Initial => _initial.Copy();
 
     public TimeSpan Now => _inner.Now;
 

@@ -4,74 +4,108 @@ using OperatorPanel.Core.Writes;
 namespace OperatorPanel.Simulator.Soak;
 
 /// <summary>
-/// Holds the panel's claims (values shown as good, writes confirmed) against the PLC's executed writes as the
-/// <see cref="ExecutedWriteObserver"/> saw them. The soak writes double words into a region of V, each value once
-/// in the whole run, so a change of the region names the write it executed: its value is in exactly one write.
+/// Holds the panel's claims (values shown as good, writes confirmed) against what the PLC did as the
+/// <see cref="ExecutedWriteObserver"/> saw it, from the watched bytes as they were at the start (<c>initial</c>):
+/// every change is named (<see cref="ChangeAttribution"/>), and every address's values over the run
+/// (<see cref="ItemHistory"/>) are what a good value shown and a confirmation are checked against. Limits: a byte or
+/// bit value recurs, so a wrong byte or bit shown good that equals a value the address held in the same step, and a
+/// late byte or bit write equal to the one in flight, pass; words and double words never recur.
 /// </summary>
-public sealed class SoakJudge(SoakRegion region, ReadOnlyMemory<byte> initial)
+public sealed class SoakJudge(SoakRegion region, MemoryImage initial)
 {
     /// <summary>Findings kept for the report: enough to see what went wrong, not a log.</summary>
     private const int FindingsKept = 10;
 
-    public SoakJudgement Judge(IReadOnlyList<SoakWrite> writes, IReadOnlyList<ShownValue> shown, IReadOnlyList<MemoryChange> changes)
+    /// <summary>
+    /// The judgement of a run: <paramref name="changes"/> as the observer saw them, <paramref name="fieldSettings"/> as
+    /// the field made them (<see cref="SoakField.Settings"/>; none when nothing drives I and SM).
+    /// </summary>
+    public SoakJudgement Judge(
+        IReadOnlyList<SoakWrite> writes, IReadOnlyList<ShownValue> shown, IReadOnlyList<MemoryChange> changes, IReadOnlyList<MemoryChange> fieldSettings)
     {
         ArgumentNullException.ThrowIfNull(writes);
         ArgumentNullException.ThrowIfNull(shown);
         ArgumentNullException.ThrowIfNull(changes);
-        var byValue = writes.ToDictionary(w => w.Value);
-        var timelines = region.Slots.ToDictionary(s => s, s => new List<(long At, uint Value)> { (long.MinValue, region.Read(initial.Span, s)) });
-        var bytes = initial.ToArray();
+        ArgumentNullException.ThrowIfNull(fieldSettings);
+        var image = initial.Copy();
+        var history = new ItemHistory([.. region.Items, .. writes.Select(w => w.Address), .. shown.Select(v => v.Address)], image);
         var executed = new HashSet<int>();
-        var (outOfOrder, neverSent, latest) = (0, 0, 0);
+        var (outOfOrder, unexplained, latest, byField) = (0, 0, 0, 0);
         var findings = new List<string>();
-        foreach (var change in changes)
+        var restores = new HashSet<int>();
+        for (var i = 0; i < changes.Count; i++)
         {
-            var inside = region.Apply(change, bytes);
-            var touched = region.Slots.Where(s => s <= change.Last && s + 3 >= change.First).ToList();
-            foreach (var slot in touched)
+            var change = changes[i];
+            image.Apply(change);
+            history.Record(change, image);
+            if (restores.Contains(i))
             {
-                timelines[slot].Add((change.Timestamp, region.Read(bytes, slot)));
+                continue;
             }
 
-            if (inside && touched is [var only] && byValue.TryGetValue(region.Read(bytes, only), out var write) && write.Offset == only
-                && change.First >= only && change.Last <= only + 3)
+            if (ChangeAttribution.IsFieldArea(change.Area))
             {
-                executed.Add(write.Number);
-                if (write.Number < latest)
+                if (ChangeAttribution.IsFields(fieldSettings, change))
                 {
-                    outOfOrder++;
-                    findings.Add($"write {write.Number} (VD{write.Offset}) executed after write {latest}");
+                    byField++;
+                }
+                else
+                {
+                    unexplained++;
+                    findings.Add($"{Describe(change)}: not what the field set");
                 }
 
-                latest = Math.Max(latest, write.Number);
+                continue;
             }
-            else
+
+            var rewrite = ChangeAttribution.RewriteOf(writes, changes, i, out var restore);
+            if (rewrite is not null)
             {
-                neverSent++;
-                findings.Add($"{change.Area} bytes {change.First}-{change.Last} changed {Convert.ToHexString(change.Before.AsSpan())} -> "
-                    + $"{Convert.ToHexString(change.After.AsSpan())}: no panel write explains it");
+                restores.Add(restore);
             }
+
+            if ((rewrite ?? ChangeAttribution.WriteOf(writes, change, image)) is not { } write)
+            {
+                unexplained++;
+                findings.Add($"{Describe(change)}: no panel write explains it");
+                continue;
+            }
+
+            if (write.Number < latest)
+            {
+                outOfOrder++;
+                findings.Add($"write {write.Number} ({write.Address}) executed after write {latest}");
+            }
+
+            executed.Add(write.Number);
+            latest = Math.Max(latest, write.Number);
         }
 
-        var wrong = shown.Where(v => !WasHeld(timelines[v.Offset], v)).ToList();
-        findings.AddRange(wrong.Select(v => $"VD{v.Offset} shown as good 16#{v.Value:X8}, which it did not hold then"));
+        var wrong = shown.Where(v => !history.WasHeld(v.Address, v.Value, v.From, v.Until)).ToList();
+        findings.AddRange(wrong.Select(v => $"{v.Address} shown as good 16#{Convert.ToHexString(v.Value.AsSpan())}, which it did not hold then"));
 
         var confirmed = writes.Where(w => IsConfirmed(w.Outcome)).ToList();
         var notConfirmed = writes.Where(w => !IsConfirmed(w.Outcome)).ToList();
-        var falselyConfirmed = confirmed.Where(w => !executed.Contains(w.Number)).ToList();
-        findings.AddRange(falselyConfirmed.Select(w => $"write {w.Number} VD{w.Offset} := 16#{w.Value:X8} reported {Describe(w.Outcome)}, not executed as sent"));
+        var unseen = confirmed.Where(w => !executed.Contains(w.Number)).ToList();
+        var alreadyHeld = unseen.Where(w => history.HeldThroughout(w.Address, w.Value, w.Sent, w.Reported)).ToList();
+        var falselyConfirmed = unseen.Except(alreadyHeld).ToList();
+        findings.AddRange(falselyConfirmed.Select(w => $"write {w.Number} {w.Address} := 16#{Convert.ToHexString(w.Value.AsSpan())} reported {Describe(w.Outcome)}, not executed as sent"));
         return new SoakJudgement(
             ValuesShownGood: shown.Count,
             WrongValuesShownGood: wrong.Count,
             WritesSent: writes.Count,
             WritesConfirmed: confirmed.Count,
             ConfirmedByReadBack: confirmed.Count(w => w.Outcome is WriteOutcome.ConfirmedByReadBack),
+            ConfirmedAlreadyHeld: alreadyHeld.Count,
             FalseConfirmations: falselyConfirmed.Count,
             WritesOutOfOrder: outOfOrder,
             WritesNotConfirmed: notConfirmed.GroupBy(w => Describe(w.Outcome)).ToImmutableSortedDictionary(g => g.Key, g => g.Count()),
             NotConfirmedButExecuted: notConfirmed.Count(w => executed.Contains(w.Number)),
             FalseNotApplied: notConfirmed.Count(w => (w.Outcome is WriteOutcome.NotApplied or WriteOutcome.Failed) && executed.Contains(w.Number)),
-            ExecutedNeverSent: neverSent,
+            ExecutedNeverSent: unexplained,
+            FieldChanges: byField,
+            ShownGoodByItem: Count(shown.Select(v => v.Address)),
+            ConfirmedByItem: Count(confirmed.Select(w => w.Address)),
             Findings: [.. findings.Take(FindingsKept)]);
     }
 
@@ -98,18 +132,9 @@ public sealed class SoakJudge(SoakRegion region, ReadOnlyMemory<byte> initial)
         _ => throw new ArgumentOutOfRangeException(nameof(outcome), outcome, "a write outcome the soak does not know"),
     };
 
-    /// <summary>True when the slot held the value for some moment between the shown value's bounds.</summary>
-    private static bool WasHeld(List<(long At, uint Value)> timeline, ShownValue shown)
-    {
-        for (var i = 0; i < timeline.Count; i++)
-        {
-            var ends = i + 1 < timeline.Count ? timeline[i + 1].At : long.MaxValue;
-            if (timeline[i].Value == shown.Value && timeline[i].At <= shown.Until && ends > shown.From)
-            {
-                return true;
-            }
-        }
+    private static string Describe(MemoryChange change) =>
+        $"{change.Area} bytes {change.First}-{change.Last} changed {Convert.ToHexString(change.Before.AsSpan())} -> {Convert.ToHexString(change.After.AsSpan())}";
 
-        return false;
-    }
+    private static ImmutableSortedDictionary<string, int> Count(IEnumerable<Core.Addressing.PlcAddress> addresses) =>
+        addresses.GroupBy(a => a.ToString()).ToImmutableSortedDictionary(g => g.Key, g => g.Count(), StringComparer.Ordinal);
 }

@@ -1,46 +1,70 @@
-using System.Buffers.Binary;
+using System.Collections.Immutable;
+using OperatorPanel.Core.Addressing;
+using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Protocol;
+using OperatorPanel.Core.Transport;
 
 namespace OperatorPanel.Simulator.Soak;
 
 /// <summary>
-/// The double words of V the soak writes and reads: VD<see cref="First"/>, VD<see cref="First"/>+4, ... <see cref="Count"/>
-/// of them, away from the handler's own bytes. Values are big-endian, as the S7-200 stores them.
+/// The addresses the soak watches, and writes where the Freeport link writes (<see cref="LinkAreas.Writes"/>: Q, M and V;
+/// I and SM are read only). Words and double words are big-endian, as the S7-200 stores them.
 /// </summary>
-public sealed record SoakRegion(int First, int Count)
+public sealed record SoakRegion(ImmutableArray<PlcAddress> Items)
 {
-    /// <summary>
-    /// VD1000 and VD1004, below the handler's buffer on every CPU with that much V. Small on purpose: at 1% of bits
-    /// flipped a frame of n characters arrives whole with probability 0.99^(8n), 6.5% for the 34-character v2 READ
-    /// reply of these 8 bytes, 0.001% for the 146 characters of 64 bytes.
-    /// </summary>
-    public static SoakRegion Default { get; } = new(1000, 2);
+    /// <summary>VD1000 and VD1004: the soak's region until it reached the area ends, away from every area's end.</summary>
+    public static SoakRegion MiddleOfV { get; } = new([DoubleWord(MemoryArea.V, 1000), DoubleWord(MemoryArea.V, 1004)]);
 
-    public int Bytes => Count * 4;
-
-    public IReadOnlyList<int> Slots => [.. Enumerable.Range(0, Count).Select(i => First + (4 * i))];
-
-    public uint Read(ReadOnlySpan<byte> regionBytes, int slot) => BinaryPrimitives.ReadUInt32BigEndian(regionBytes[(slot - First)..]);
+    /// <summary>The items of <see cref="Items"/> the Freeport link writes, in order.</summary>
+    public ImmutableArray<PlcAddress> Written => [.. Items.Where(a => LinkAreas.Writes(LinkProtocol.Freeport, a.Area))];
 
     /// <summary>
-    /// Applies the part of a change that falls in the region to the region's copy; false when any of the change lies
-    /// outside the region (another area, or V bytes the soak never writes).
+    /// <see cref="MiddleOfV"/> and items of every width at the end of each area the Freeport link reaches on
+    /// <paramref name="cpu"/>, so that the ranges a list holds end there: the panel widens a range shorter than a list
+    /// item's 4-byte window backward when the window would pass its area's end (Protocol/V3/ListPlan), which is where
+    /// QW14, MW30 and MB31 were shown good with the wrong bytes. On a CPU 226 with the handler at VB9634:
+    /// <list type="bullet">
+    /// <item>V: VD9630, VW9632, VB9633, V9633.0, one range ending at the last byte below the handler's own (the
+    /// highest V the panel may write; V itself ends in the handler's bytes, which change with every frame);</item>
+    /// <item>Q: QW14, QB15, Q15.7, a 2-byte range widened to QB12-QB15;</item>
+    /// <item>M: MD20 and MB29, MW30, M31.7, a 3-byte range widened to MB28-MB31 beside a double word of its own in the
+    /// same frame (MB24-MB28 between: too many bytes for the planner to read over);</item>
+    /// <item>I (read only): IB15, I15.0, a 1-byte range widened to IB12-IB15;</item>
+    /// <item>SM (read only): SMW548, SM549.7, the last SM bytes, a 2-byte range widened to SMB546-SMB549.</item>
+    /// </list>
     /// </summary>
-    public bool Apply(MemoryChange change, Span<byte> regionBytes)
+    public static SoakRegion AreaEnds(CpuProfile cpu, int handlerFirstByte)
     {
-        ArgumentNullException.ThrowIfNull(change);
-        if (change.Area != ProtocolArea.V)
-        {
-            return false;
-        }
-
-        var from = Math.Max(change.First, First);
-        var to = Math.Min(change.Last, First + Bytes - 1);
-        if (from <= to)
-        {
-            change.After.AsSpan(from - change.First, to - from + 1).CopyTo(regionBytes[(from - First)..]);
-        }
-
-        return change.First >= First && change.Last < First + Bytes;
+        ArgumentNullException.ThrowIfNull(cpu);
+        var q = Bytes(cpu, MemoryArea.Q);
+        var m = Bytes(cpu, MemoryArea.M);
+        var i = Bytes(cpu, MemoryArea.I);
+        var sm = Bytes(cpu, MemoryArea.SM);
+        var v = handlerFirstByte;
+        return new(
+        [
+            .. MiddleOfV.Items,
+            DoubleWord(MemoryArea.V, v - 4), Word(MemoryArea.V, v - 2), Byte(MemoryArea.V, v - 1), PlcAddress.ForBit(MemoryArea.V, v - 1, 0),
+            Word(MemoryArea.Q, q - 2), Byte(MemoryArea.Q, q - 1), PlcAddress.ForBit(MemoryArea.Q, q - 1, 7),
+            DoubleWord(MemoryArea.M, m - 12), Byte(MemoryArea.M, m - 3), Word(MemoryArea.M, m - 2), PlcAddress.ForBit(MemoryArea.M, m - 1, 7),
+            Byte(MemoryArea.I, i - 1), PlcAddress.ForBit(MemoryArea.I, i - 1, 0),
+            Word(MemoryArea.SM, sm - 2), PlcAddress.ForBit(MemoryArea.SM, sm - 1, 7),
+        ]);
     }
+
+    /// <summary>The addresses in the order given, as the figures print them: "VD1000 VD1004 ...".</summary>
+    public override string ToString() => string.Join(" ", Items);
+
+    private static int Bytes(CpuProfile cpu, MemoryArea area) =>
+        cpu.TryGetArea(area, out var range) ? range.ByteCount : throw new ArgumentException($"{cpu.DisplayName} has no {area}", nameof(cpu));
+
+    private static PlcAddress Byte(MemoryArea area, int offset) => PlcAddress.ForBytes(area, offset, AccessWidth.Byte);
+
+    private static PlcAddress Word(MemoryArea area, int offset) => PlcAddress.ForBytes(area, offset, AccessWidth.Word);
+
+    private static PlcAddress DoubleWord(MemoryArea area, int offset) => PlcAddress.ForBytes(area, offset, AccessWidth.DoubleWord);
+
+    /// <summary>The protocol's area of <paramref name="address"/>: every soak item is in one the Freeport link reads.</summary>
+    internal static ProtocolArea AreaOf(PlcAddress address) =>
+        ProtocolAreaExtensions.FromMemoryArea(address.Area) ?? throw new ArgumentException($"{address}: not an area the Freeport link reads", nameof(address));
 }

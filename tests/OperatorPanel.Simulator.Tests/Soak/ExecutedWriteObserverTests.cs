@@ -1,6 +1,5 @@
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Core.Protocol;
-using OperatorPanel.Simulator.Hosting;
 using OperatorPanel.Simulator.Reference;
 using OperatorPanel.Simulator.Soak;
 using OperatorPanel.TestKit;
@@ -40,31 +39,22 @@ public sealed class ExecutedWriteObserverTests
         observer.Changes.Should().BeEmpty();
     }
 
-    /// <summary>A line that writes given V bytes when it runs past given times, as an executed WRITE would.</summary>
-    private sealed class ScriptedLine(PlcMemory memory, params (TimeSpan At, int Offset, byte[] Bytes)[] writes) : ISimulatedLine
+    /// <summary>The field's I setting reaches I through the CPU's copy (here the line's own I) and its SM setting at once; the observer sees both.</summary>
+    [Fact]
+    public void RunUntil_FieldSetsTheLastInputAndSmBytes_RecordsEachChangeAfterItsSetting()
     {
-        public TimeSpan Now { get; private set; }
+        var field = new SoakField(new ScriptedLine(_memory), _memory.I, _memory, [new WatchedBytes(ProtocolArea.I, 12, 4), new WatchedBytes(ProtocolArea.SM, 546, 4)], _time);
+        var observer = new ExecutedWriteObserver(
+            field, _memory, [new WatchedBytes(ProtocolArea.I, 0, 16), new WatchedBytes(ProtocolArea.SM, 546, 4)], _time);
 
-        public int FramesReceived => 0;
+        _time.Advance(TimeSpan.FromSeconds(1));
+        observer.RunUntil(SoakField.Period + TimeSpan.FromMilliseconds(2));
 
-        public int Replies => 0;
-
-        public TimeSpan? NextOutput => null;
-
-        public void RunUntil(TimeSpan until)
-        {
-            foreach (var (at, offset, bytes) in writes.Where(w => w.At > Now && w.At <= until))
-            {
-                bytes.CopyTo(memory.V, offset);
-            }
-
-            Now = until;
-        }
-
-        public void Deliver(ReadOnlySpan<byte> characters)
-        {
-        }
-
-        public byte[] TakeTransmitted() => [];
+        byte[] first = [SoakField.Pattern(1, 12), SoakField.Pattern(1, 13), SoakField.Pattern(1, 14), SoakField.Pattern(1, 15)];
+        field.Settings.Select(s => (s.Area, s.First)).Should().Equal((ProtocolArea.I, 12), (ProtocolArea.SM, 546));
+        field.Settings[0].After.Should().Equal(first);
+        observer.Changes.Select(c => (c.Area, c.First)).Should().Equal((ProtocolArea.I, 12), (ProtocolArea.SM, 546));
+        observer.Changes[0].After.Should().Equal(first);
+        observer.Changes[0].Timestamp.Should().BeGreaterThanOrEqualTo(field.Settings[0].Timestamp);
     }
 }
