@@ -110,9 +110,11 @@ internal static class ItemPart
             .Op("LDB=", l.B(l.Cmd), Dec(Command.Write)).Op("BMB", l.B(9), target, Length(l)).Build();
         yield return DispatchPart.ToReply(c, "READ, WRITE: the data", "BMB the target to the reply's payload (byte 6); P = LENGTH.",
             Op("LDB<>", l.B(l.Cmd), Dec(Command.WriteBits)), Op("BMB", target, l.B(6), Length(l)), Op("BTI", Length(l), l.W(l.Temp)));
-        yield return DispatchPart.ToReply(c, "WRITE BITS: AND, OR, read back", "The byte AND NOT MASK, OR (VALUE AND MASK); the whole byte back; P = 1.",
-            Op("LD", "SM0.0"), Op("MOVB", l.B(8), "AC0"), Op("INVB", "AC0"), Op("ANDB", "AC0", target), Op("MOVB", l.B(9), "AC0"), Op("ANDB", l.B(8), "AC0"),
-            Op("ORB", "AC0", target), Op("MOVB", target, l.B(6)), Op("MOVW", "1", l.W(l.Temp)));
+        // One store into the target, old XOR ((old XOR VALUE) AND MASK): an AND then an OR stored twice, and a bit set
+        // over a set bit was 0 between the two for an interrupt routine of the user's program (found by the soak's judge).
+        yield return DispatchPart.ToReply(c, "WRITE BITS: one store, read back", "The byte XOR ((byte XOR VALUE) AND MASK), stored once; the whole byte back; P = 1.",
+            Op("LD", "SM0.0"), Op("MOVB", target, "AC0"), Op("XORB", l.B(9), "AC0"), Op("ANDB", l.B(8), "AC0"),
+            Op("XORB", "AC0", target), Op("MOVB", target, l.B(6)), Op("MOVW", "1", l.W(l.Temp)));
     }
 
     private static int AreaBytes(Context c, int code) => code switch
