@@ -111,7 +111,7 @@ public sealed class HandlerMergerCollisionTests
 
     [Theory]
     [InlineData("MOVB   16#09, SMB30")]
-    [InlineData("MOVW   0, SMW29")]
+    [InlineData("MOVW   0, SMW85")]
     [InlineData("S      SM30.0, 1")]
     [InlineData("=      SM87.7")]
     [InlineData("MOVB   16#3C, SMB88")]
