@@ -93,6 +93,9 @@ public static class StlDiagnostics
     /// <summary>Merge warning: a user block exported without body (a password-protected POU): nothing of it can be checked (Stl AWL015).</summary>
     public const string UserBlockWithoutBody = "STL041";
 
+    /// <summary>Merge warning: DISI in the user's program holds back the handler's interrupts until ENI (the handler answers late).</summary>
+    public const string InterruptsDisabled = "STL043";
+
     /// <summary>Merge with a symbol table: a symbolic operand the table does not hold (named with its line); nothing is written.</summary>
     public const string SymbolNotInTable = "STL042";
 
