@@ -39,8 +39,15 @@ public sealed record AwlBlock(
     public bool HasName { get; init; } = true;
 
     /// <summary>
-    /// True for a block with BEGIN and no network at all: Micro/WIN writes at least <c>Network 1</c> for an empty block,
-    /// and exports a password-protected POU without its body (docs/awl-exports.md, "Protected POUs").
+    /// True for a password-protected POU as Micro/WIN exports it: one network titled <see cref="ProtectedTitle"/> and no
+    /// instruction (the Siemens libraries' MBUS_INIT, MBUS_SLAVE and the motion wizard's blocks in Sebaasu/xk335b-scada
+    /// 1_Transporte/4_Traduccion_Ladder.awl), or BEGIN with no network at all (inferred before that export was seen;
+    /// Micro/WIN writes at least <c>Network 1</c> for an empty block). docs/awl-exports.md, "A protected POU".
     /// </summary>
-    public bool HasNoBody => Networks.IsEmpty;
+    public bool IsPasswordProtected => Networks.IsEmpty
+        || (Networks.Length == 1 && Networks[0].Instructions.IsEmpty
+            && Networks[0].Title.Contains(ProtectedTitle, StringComparison.OrdinalIgnoreCase));
+
+    /// <summary>The network title Micro/WIN exports in place of a protected POU's body (without its final full stop).</summary>
+    public const string ProtectedTitle = "This POU is password-protected";
 }

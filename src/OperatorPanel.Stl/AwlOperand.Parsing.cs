@@ -18,6 +18,12 @@ public sealed partial record AwlOperand
             return false;
         }
 
+        var colon = input.IndexOf(':', StringComparison.Ordinal);
+        if (colon > 0 && input[0] is not ('\'' or '"'))
+        {
+            return TrySymbolWithAddress(input, colon, out operand, out error);
+        }
+
         switch (input[0])
         {
             case '#':
@@ -33,6 +39,36 @@ public sealed partial record AwlOperand
             default:
                 return TryAddressOrSymbol(input, out operand, out error);
         }
+    }
+
+    /// <summary>
+    /// NAME:ADDRESS, the symbol with its address as Micro/WIN exports it when the editor shows both
+    /// (<c>A P13a_Rot_Des:M2.0</c>, Sebaasu/xk335b-scada 1_Transporte/4_Traduccion_Ladder.awl line 474; the papers' listings
+    /// print <c>#XORCODE:LB6</c> and <c>RCV BUFFER:VB60,0</c>, seeds 003 and 004): the address is the operand, the name
+    /// is kept for messages. A pointer or indirect access puts its &amp; or * before the name (&amp;Buffer:VB100).
+    /// </summary>
+    private static bool TrySymbolWithAddress(string input, int colon, out AwlOperand? operand, out string? error)
+    {
+        operand = null;
+        var prefix = input[0] is '&' or '*' ? input[..1] : string.Empty;
+        var name = input[prefix.Length..colon].Trim();
+        var address = input[(colon + 1)..].Trim();
+        var bareName = name.StartsWith('#') ? name[1..] : name;
+        if (!IsIdentifier(bareName))
+        {
+            error = $"'{input}': the symbol before ':' is written with letters, digits and _ (NAME:VB100)";
+            return false;
+        }
+
+        if (!TryParse(prefix + address, out var target, out error) || target.Kind is not (AwlOperandKind.Address or AwlOperandKind.Pointer or AwlOperandKind.Indirect))
+        {
+            error = $"'{input}': after the symbol '{name}:' an address is expected ({error ?? $"'{address}' is not one"})";
+            operand = null;
+            return false;
+        }
+
+        operand = target with { Text = input, SymbolName = name };
+        return true;
     }
 
     private static bool TryLocal(string input, out AwlOperand? operand, out string? error)

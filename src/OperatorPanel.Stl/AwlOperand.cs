@@ -35,5 +35,8 @@ public sealed partial record AwlOperand
     /// <summary>Name of a local (without #) or of a symbol; characters of a string constant.</summary>
     public string Name { get; init; } = string.Empty;
 
+    /// <summary>The symbol written before the address in the NAME:ADDRESS form (<c>P13a_Rot_Des</c> of <c>P13a_Rot_Des:M2.0</c>); null otherwise.</summary>
+    public string? SymbolName { get; init; }
+
     public override string ToString() => Text;
 }

@@ -12,7 +12,8 @@ internal static class StlLocalLayout
     public static Dictionary<string, (StlLoc Loc, int Bytes, bool IsBit)> Place(
         StlBlock block, int lBytes, ICollection<AwlDiagnostic> diagnostics)
     {
-        var locals = new Dictionary<string, (StlLoc, int, bool)>(StringComparer.OrdinalIgnoreCase);
+        // Case-sensitive: the Siemens motion wizard's Q0_0_Home declares tmp_b:BOOL and tmp_B:BYTE (docs/awl-exports.md).
+        var locals = new Dictionary<string, (StlLoc, int, bool)>(StringComparer.Ordinal);
         var offset = 0;
         var bitByte = -1;
         var bit = 8;

@@ -1,6 +1,7 @@
 using OperatorPanel.Core.Addressing;
 using OperatorPanel.Core.Cpu;
 using OperatorPanel.Stl;
+using OperatorPanel.Stl.Checks;
 
 namespace OperatorPanel.Simulator.Stl;
 
@@ -138,18 +139,10 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
             return false;
         }
 
-        var address = bytes == 0
-            ? PlcAddress.ForBit(operand.Area, operand.ByteOffset, operand.Bit!.Value)
-            : PlcAddress.ForBytes(operand.Area, operand.ByteOffset, operand.Width);
-        if (AddressRules.Check(address, cpu) is { } refusal)
+        // The program check refuses the same (its line wins, StlProgramLoader); CALL's parameters reach only here.
+        if (AwlCpuRanges.Check(operand, output, cpu) is { } refusal)
         {
-            error = $"'{operand.Text}' is outside the CPU's ranges: {refusal.Message}";
-            return false;
-        }
-
-        if (output && (operand.Area == MemoryArea.AI || (operand.Area == MemoryArea.SM && operand.ByteOffset < cpu.ReadOnlySmBytes)))
-        {
-            error = $"'{operand.Text}' is read-only (SMB0-SMB{cpu.ReadOnlySmBytes - 1}, AIW)";
+            error = refusal.Message;
             return false;
         }
 
@@ -204,9 +197,9 @@ internal sealed class StlOperandResolver(CpuProfile cpu)
             return false;
         }
 
-        if (AddressRules.Check(PlcAddress.ForBytes(operand.Area, operand.ByteOffset, AccessWidth.Byte), cpu) is { } refusal)
+        if (AwlCpuRanges.Check(operand, written: false, cpu) is { } refusal)
         {
-            error = $"'{operand.Text}' is outside the CPU's ranges: {refusal.Message}";
+            error = refusal.Message;
             return false;
         }
 

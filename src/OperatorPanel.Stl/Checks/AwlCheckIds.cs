@@ -45,6 +45,6 @@ public static class AwlCheckIds
     /// <summary>Two blocks of one kind with the same number, or two blocks with the same name.</summary>
     public const string BlockDefinedTwice = "AWL014";
 
-    /// <summary>Warning, not a refusal: a block exported without a body (a password-protected POU).</summary>
+    /// <summary>Warning, not a refusal: a password-protected POU, exported without its code (<see cref="AwlBlock.IsPasswordProtected"/>).</summary>
     public const string ProtectedBlock = "AWL015";
 }

@@ -5,8 +5,8 @@ namespace OperatorPanel.Stl.Checks;
 /// <summary>
 /// What Micro/WIN's import refuses in the structure of a file, beyond each instruction (<see cref="AwlProgramCheck"/>):
 /// a block header without its name, a CALL or ATCH to a block the file does not hold, a block number or name defined
-/// twice (docs/awl-exports.md, "What Micro/WIN refuses"). And what it exports but cannot be checked: a block without a
-/// body, which is how a password-protected POU comes out of an export (a warning).
+/// twice (docs/awl-exports.md, "What Micro/WIN refuses"). And what it exports but cannot be checked: a password-protected
+/// POU, exported without its code (<see cref="AwlBlock.IsPasswordProtected"/>; a warning).
 /// </summary>
 public static class AwlExportCheck
 {
@@ -34,10 +34,10 @@ public static class AwlExportCheck
                 refusals.Add(Finding(AwlCheckIds.BlockDefinedTwice, block.StartLine, $"block name {block.Name} is used twice in the file"));
             }
 
-            if (block.HasNoBody)
+            if (block.IsPasswordProtected)
             {
                 warnings.Add(Finding(AwlCheckIds.ProtectedBlock, block.StartLine,
-                    $"{block.Name} ({block.DefaultName}) has no network: Micro/WIN exports a password-protected POU without its body, so nothing of it can be checked or run here; export it unprotected to include it"));
+                    $"{block.Name} ({block.NumberName}) is password-protected: Micro/WIN exports it without its code, so nothing of it can be checked or run here; export it unprotected to include it"));
             }
         }
 

@@ -3,7 +3,7 @@ using OperatorPanel.Stl.Instructions;
 
 namespace OperatorPanel.Stl.Checks;
 
-/// <summary>The operands of one instruction against its table entry and the CPU: count, kinds, ranges, events, ports.</summary>
+/// <summary>The operands of one instruction against its table entry and the CPU: count, kinds, ranges, events, ports, memory on the CPU (<see cref="AwlCpuRanges"/>).</summary>
 internal static class StlInstructionOperandsCheck
 {
     public static IEnumerable<AwlDiagnostic> Check(AwlInstruction instruction, StlInstructionSpec spec, AwlBlock block, CpuProfile cpu)
@@ -50,7 +50,8 @@ internal static class StlInstructionOperandsCheck
                 : (refusal.Kind == StlRefusalKind.Kind ? AwlCheckIds.OperandKind : AwlCheckIds.OutOfRange, refusal.Reason);
         }
 
-        return operand is { Kind: AwlOperandKind.Constant, ConstantKind: AwlConstantKind.Integer } ? CheckCpuNumber(operandSpec, operand, cpu) : null;
+        return operand is { Kind: AwlOperandKind.Constant, ConstantKind: AwlConstantKind.Integer } ? CheckCpuNumber(operandSpec, operand, cpu)
+            : AwlCpuRanges.Check(operand, operandSpec.IsWritten, cpu);
     }
 
     private static (string Id, string Message)? CheckCpuNumber(StlOperandSpec spec, AwlOperand operand, CpuProfile cpu)

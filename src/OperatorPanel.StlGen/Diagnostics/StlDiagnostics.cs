@@ -96,8 +96,14 @@ public static class StlDiagnostics
     /// </summary>
     public const string CompactHandlerHasNoStop = "STL031";
 
-    /// <summary>Merge warning: a user block exported without body (a password-protected POU): nothing of it can be checked (Stl AWL015).</summary>
+    /// <summary>Merge warning: a password-protected user block, exported without its code: the handler's port, events and V bytes cannot be checked against it (Stl AWL015).</summary>
     public const string UserBlockWithoutBody = "STL041";
+
+    /// <summary>Merge warning: DISI in the user's program holds back the handler's interrupts until ENI (the handler answers late).</summary>
+    public const string InterruptsDisabled = "STL043";
+
+    /// <summary>Merge warning: a password-protected block named as a Siemens library POU that runs Freeport on the handler's port (MBUS_INIT, MBUS_SLAVE on port 0).</summary>
+    public const string LibraryTakesHandlerPort = "STL044";
 
     /// <summary>Merge with a symbol table: a symbolic operand the table does not hold (named with its line); nothing is written.</summary>
     public const string SymbolNotInTable = "STL042";

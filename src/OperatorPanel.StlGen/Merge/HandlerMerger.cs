@@ -66,8 +66,8 @@ public static class HandlerMerger
         var export = AwlExportCheck.Check(program);
         found.AddRange(export.Refusals.Concat(AwlProgramCheck.Check(program, cpu)).Select(d => new MergeDiagnostic(
             StlDiagnostics.UserProgramRefused, MergeSeverity.Error, d.Line, $"Micro/WIN refuses the user's program here ({d.Id}): {d.Message}")));
-        found.AddRange(export.Warnings.Select(d => new MergeDiagnostic(StlDiagnostics.UserBlockWithoutBody, MergeSeverity.Warning, d.Line, d.Message)));
         var handler = new HandlerFootprint(options);
+        found.AddRange(ProtectedBlocks.Find(program, handler, cpu.CommunicationPorts));
         found.AddRange(BlockCollisions.Find(program, handler, cpu.Subroutines, cpu.InterruptRoutines));
         found.AddRange(new InstructionCollisions(program, handler, cpu.CommunicationPorts, HandlerDefaults.VBytes(cpu)).Find());
         var ordered = found.OrderBy(d => d.Line).ThenBy(d => d.Id, StringComparer.Ordinal).ToImmutableArray();

@@ -21,6 +21,7 @@ internal sealed class InstructionCollisions(AwlProgram user, HandlerFootprint ha
         {
             CheckEvents(instruction);
             CheckPort(instruction);
+            CheckInterruptsDisabled(instruction);
             foreach (var use in InstructionOperands.Uses(instruction, user))
             {
                 CheckOperand(use);
@@ -52,13 +53,15 @@ internal sealed class InstructionCollisions(AwlProgram user, HandlerFootprint ha
 
     private void CheckEvents(AwlInstruction instruction)
     {
-        var eventIndex = instruction.Mnemonic switch { "ATCH" => 1, "DTCH" => 0, _ => -1 };
+        // CEVNT clears the event's queued interrupts (no page found, [U]: docs/stl-instructions.md lists it unsourced);
+        // on the handler's events it would lose a request or a transmit-complete, as DTCH loses them all.
+        var eventIndex = instruction.Mnemonic switch { "ATCH" => 1, "DTCH" or "CEVNT" => 0, _ => -1 };
         if (eventIndex < 0 || !TryConstant(instruction, eventIndex, out var number))
         {
             return;
         }
 
-        var verb = instruction.Mnemonic == "ATCH" ? "attaches" : "detaches";
+        var verb = instruction.Mnemonic switch { "ATCH" => "attaches", "DTCH" => "detaches", _ => "clears the queued interrupts of" };
         if (handler.Events.Contains((int)number))
         {
             var advice = number == 10
@@ -74,9 +77,24 @@ internal sealed class InstructionCollisions(AwlProgram user, HandlerFootprint ha
 
     private void CheckPort(AwlInstruction instruction)
     {
-        if (instruction.Mnemonic is "RCV" or "XMT" && TryConstant(instruction, 1, out var port) && port == handler.Port)
+        // NETR/NETW run only on a port in PPI master mode (seed 002 Table C-11, SMB30/SMB130 mm = 10): on the handler's
+        // port they would need the port taken out of Freeport, as XMT/RCV would take its wire.
+        if (instruction.Mnemonic is "RCV" or "XMT" or "NETR" or "NETW" && TryConstant(instruction, 1, out var port) && port == handler.Port)
         {
             Error(StlDiagnostics.PortInUse, instruction.Line, $"{instruction.Mnemonic} uses port {port}, the handler's port; {OtherPort("the panel needs a port of its own")}");
+        }
+    }
+
+    /// <summary>
+    /// DISI holds back every interrupt, the handler's receive and transmit events too, until ENI: a program may do so
+    /// briefly (around a multi-word copy) and the handler then answers late, or never when ENI does not follow. The text
+    /// alone cannot tell which, so a warning naming the line, not a refusal.
+    /// </summary>
+    private void CheckInterruptsDisabled(AwlInstruction instruction)
+    {
+        if (instruction.Mnemonic == "DISI")
+        {
+            Warning(StlDiagnostics.InterruptsDisabled, instruction.Line, $"DISI holds back the handler's interrupts (events {string.Join(", ", handler.Events)}) until the next ENI: the handler answers the panel only after it, or never if no ENI follows; keep the DISI-ENI stretch short");
         }
     }
 

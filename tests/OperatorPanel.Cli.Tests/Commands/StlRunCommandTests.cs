@@ -163,7 +163,7 @@ public sealed class StlRunCommandTests
         var (exit, _, error) = CliRunner.Run("stl", "run", Corpus("ProtectedPou.awl"), "--cpu", "224", "--print", "Q0.1");
 
         exit.Should().Be(0);
-        error.Should().Contain("ProtectedPou.awl:16: warning: PWM_INIT (SBR_0) has no network: Micro/WIN exports a password-protected POU without its body");
+        error.Should().Contain("ProtectedPou.awl:16: warning: PWM_INIT (SBR0) is password-protected: Micro/WIN exports it without its code");
     }
 
     [Fact]

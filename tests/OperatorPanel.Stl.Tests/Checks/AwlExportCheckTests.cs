@@ -53,6 +53,24 @@ public sealed class AwlExportCheckTests
         var found = Check($"ORGANIZATION_BLOCK MAIN:OB1\r\n{Empty}END_ORGANIZATION_BLOCK\r\nSUBROUTINE_BLOCK PWM_INIT:SBR3\r\nBEGIN\r\nEND_SUBROUTINE_BLOCK\r\n");
 
         found.Refusals.Should().BeEmpty();
-        found.Warnings.Should().ContainSingle().Which.ToString().Should().StartWith("line 5: AWL015 PWM_INIT (SBR_3) has no network: Micro/WIN exports a password-protected POU without its body");
+        found.Warnings.Should().ContainSingle().Which.ToString().Should().StartWith("line 5: AWL015 PWM_INIT (SBR3) is password-protected: Micro/WIN exports it without its code");
+    }
+
+    [Fact]
+    public void Check_BlockAsMicroWinExportsAProtectedPou_WarnedAsProtected()
+    {
+        // The form of Sebaasu/xk335b-scada 1_Transporte/4_Traduccion_Ladder.awl (MBUS_INIT, MBUS_SLAVE, Q0_0_Home ...).
+        var found = Check($"ORGANIZATION_BLOCK MAIN:OB1\r\n{Empty}END_ORGANIZATION_BLOCK\r\nSUBROUTINE_BLOCK MBUS_INIT:SBR7\r\nVAR_INPUT\r\nMode:BYTE;\r\nEND_VAR\r\nBEGIN\r\n"
+            + "Network 1 // This POU is password-protected against editing and viewing.\r\n\r\nEND_SUBROUTINE_BLOCK\r\n");
+
+        found.Warnings.Should().ContainSingle().Which.ToString().Should().StartWith("line 5: AWL015 MBUS_INIT (SBR7) is password-protected");
+    }
+
+    [Fact]
+    public void Check_EmptyNetworkWithOtherTitle_IsNotProtected()
+    {
+        var found = Check($"ORGANIZATION_BLOCK MAIN:OB1\r\n{Empty}END_ORGANIZATION_BLOCK\r\nSUBROUTINE_BLOCK SPARE:SBR3\r\nBEGIN\r\nNetwork 1 // Network Title\r\nEND_SUBROUTINE_BLOCK\r\n");
+
+        found.Warnings.Should().BeEmpty();
     }
 }

@@ -70,6 +70,9 @@ public sealed class HandlerMergerCollisionTests
     [InlineData("ATCH   MY_TX, 9", 9)]
     [InlineData("ATCH   MY_TICK, 10", 10)]
     [InlineData("DTCH   23", 23)]
+    [InlineData("CEVNT  9", 9)]
+    [InlineData("CEVNT  23", 23)]
+    [InlineData("CEVNT  10", 10)]
     public void Merge_UserUsesHandlerEvent_ReportsEventInUse(string instruction, int number)
     {
         var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.1", instruction), UserProgram.Cpu224);
@@ -97,8 +100,32 @@ public sealed class HandlerMergerCollisionTests
     }
 
     [Theory]
+    [InlineData("CEVNT  11")]
+    [InlineData("NETR   VB100, 1")]
+    public void Merge_UserClearsOtherEventOrUsesOtherPort_NoCollision(string instruction)
+    {
+        var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.1", instruction), UserProgram.Cpu226);
+
+        result.Diagnostics.Should().BeEmpty();
+    }
+
+    [Fact]
+    public void Merge_UserDisablesInterrupts_WarnsAtTheLineAndMerges()
+    {
+        var result = HandlerMerger.Merge(UserProgram.Ob1("LD     SM0.0", "DISI", "MOVD   VD0, VD4", "ENI"), UserProgram.Cpu224);
+
+        result.Ok.Should().BeTrue();
+        result.MergedText.Should().Contain("DISI");
+        var warning = result.Warnings.Should().ContainSingle().Which;
+        warning.Should().Match<MergeDiagnostic>(d => d.Id == StlDiagnostics.InterruptsDisabled && d.Line == Line + 1);
+        warning.Message.Should().StartWith("DISI holds back the handler's interrupts (events 23, 10, 9) until the next ENI");
+    }
+
+    [Theory]
     [InlineData("RCV    VB100, 0")]
     [InlineData("XMT    VB100, 0")]
+    [InlineData("NETR   VB100, 0")]
+    [InlineData("NETW   VB100, 0")]
     [InlineData("ATCH   MY_CHAR, 8")]
     public void Merge_UserTalksOnHandlerPort_ReportsPortInUse(string instruction)
     {
@@ -111,7 +138,7 @@ public sealed class HandlerMergerCollisionTests
 
     [Theory]
     [InlineData("MOVB   16#09, SMB30")]
-    [InlineData("MOVW   0, SMW29")]
+    [InlineData("MOVW   0, SMW85")]
     [InlineData("S      SM30.0, 1")]
     [InlineData("=      SM87.7")]
     [InlineData("MOVB   16#3C, SMB88")]

@@ -36,7 +36,7 @@ public sealed class HandlerMergerExportFormTests
 
         result.Ok.Should().BeTrue();
         result.Warnings.Should().ContainSingle().Which.Should().Match<MergeDiagnostic>(d =>
-            d.Id == StlDiagnostics.UserBlockWithoutBody && d.Line == 16 && d.Message.StartsWith("PWM_INIT (SBR_0) has no network", StringComparison.Ordinal));
+            d.Id == StlDiagnostics.UserBlockWithoutBody && d.Line == 16 && d.Message.StartsWith("PWM_INIT (SBR0, line 16) is password-protected: the export holds none of its code, so the handler's port 0, interrupt events 23, 10, 9 and VB7764-VB8191 cannot be checked against it", StringComparison.Ordinal));
     }
 
     [Theory]

@@ -19,7 +19,7 @@ public sealed class ExportFormCorpusTests
 
         load.Succeeded.Should().BeTrue();
         load.Warnings.Should().ContainSingle().Which.ToString().Should().StartWith(
-            "line 16: AWL015 PWM_INIT (SBR_0) has no network: Micro/WIN exports a password-protected POU without its body");
+            "line 16: AWL015 PWM_INIT (SBR0) is password-protected: Micro/WIN exports it without its code");
         var run = CorpusProgram.Run("ProtectedPou.awl", 1, "I0.0=1");
         (run.Value("Q0.0"), run.Value("Q0.1")).Should().Be((1, 0));
     }
