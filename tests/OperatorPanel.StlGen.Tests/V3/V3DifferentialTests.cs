@@ -157,6 +157,23 @@ public sealed class V3DifferentialTests
         Same(station, Request.Write(station.Station, 5, ProtocolArea.M, 0, [1, 2, 3, 4]));
     }
 
+    [Theory]
+    [InlineData(false)]
+    [InlineData(true)]
+    public void WriteBits_StoresTheTargetByteOnce(bool compact)
+    {
+        // An AND then an OR into the target stored it twice: a bit written 1 over a 1 was 0 between the two stores for
+        // an interrupt routine of the user's program. Every other instruction of the network only reads the target.
+        var awl = HandlerGenerator.Generate(new HandlerOptions { Cpu = CpuProfiles.For(CpuModel.Cpu224), Station = 5, Compact = compact }).AwlText;
+        var network = awl[awl.IndexOf("// WRITE BITS: one store", StringComparison.Ordinal)..];
+        network = network[..network.IndexOf("Network", StringComparison.Ordinal)];
+        var lines = network.Split('\n').Select(l => l.Trim()).Where(l => l.Length > 0 && !l.StartsWith("//", StringComparison.Ordinal)).ToList();
+
+        var stores = lines.Where(l => System.Text.RegularExpressions.Regex.IsMatch(l, @"^(MOVB|ANDB|ORB|XORB|INVB)\s.*\*VD\d+$")).ToList();
+
+        stores.Should().ContainSingle().Which.Should().StartWith("XORB   AC0, *VD");
+    }
+
     [Fact]
     public void Compact_StopAllowed_RefusedAsImpossibleInsteadOfLeftOutSilently()
     {
