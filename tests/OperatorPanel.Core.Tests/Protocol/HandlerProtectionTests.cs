@@ -43,7 +43,8 @@ public sealed class HandlerProtectionTests
     {
         // VB9634-VB10061 belong to the full handler only: a compact station keeps the program's bytes there.
         HandlerProtection.Refusal(PlcAddress.Parse("VW10060"), CpuProfiles.For(CpuModel.Cpu226), compact: true).Should().BeNull();
-        HandlerProtection.Refusal(PlcAddress.Parse("VW10060"), CpuProfiles.For(CpuModel.Cpu226), compact: false).Should().NotBeNull();
+        HandlerProtection.Refusal(PlcAddress.Parse("VW10060"), CpuProfiles.For(CpuModel.Cpu226), compact: false)
+            .Should().StartWith("VW10060 is in the handler's own V bytes VB9634-VB10239 ");
     }
 
     [Fact]
