@@ -84,8 +84,8 @@ public sealed class AddressCommandTests
         json.RootElement.GetProperty("area").GetString().Should().Be("SM");
         json.RootElement.GetProperty("byteOffset").GetInt32().Should().Be(30);
         json.RootElement.GetProperty("width").GetString().Should().Be("Byte");
-        json.RootElement.GetProperty("writable").GetBoolean().Should().BeFalse("the Freeport handler never writes SM");
-        json.RootElement.GetProperty("notWritableBecause").GetString().Should().StartWith("SMB30: the Freeport handler never writes SM (it refuses with 83");
+        json.RootElement.GetProperty("writable").GetBoolean().Should().BeFalse("the Freeport handler does not serve SM");
+        json.RootElement.GetProperty("notWritableBecause").GetString().Should().StartWith("SMB30: the Freeport handler does not serve SM (no S7-200 manual page found says a pointer reaches it); write a V byte");
         json.RootElement.GetProperty("writableOverPpi").GetBoolean().Should().BeTrue("PPI writes SMB30 and up");
     }
 

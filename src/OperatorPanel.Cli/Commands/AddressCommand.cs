@@ -20,7 +20,7 @@ internal static class AddressCommand
         var command = new Command(
             "address",
             "Check an address against a CPU: canonical form, area, byte, bit, width, what the Freeport and the PPI link do with it, and whether the "
-            + "panel may write it (the CPU's read-only bytes, SM, which the handler never writes, and the V bytes a handler generated with the default settings keeps for itself)")
+            + "panel may write it (the CPU's read-only bytes, SM, which the Freeport handler does not serve, and the V bytes a handler generated with the default settings keeps for itself)")
         {
             text, cpu, revision,
         };

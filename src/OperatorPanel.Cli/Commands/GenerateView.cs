@@ -61,7 +61,7 @@ internal static class GenerateView
             : "leaves in chunks meanwhile, from the first pass of its check on):");
         if (stats.Protocol == 3)
         {
-            cli.Out.WriteLine("READ, WRITE and WRITE BITS are run on an item in each of I, Q, M, V and SM; their rows show the slowest, named.");
+            cli.Out.WriteLine("READ, WRITE and WRITE BITS are run on an item in each of I, Q, M and V (SM is not served); their rows show the slowest, named.");
         }
 
         var width = measured.Max(m => m.Name.Length);

@@ -17,7 +17,7 @@ namespace OperatorPanel.Cli.Commands;
 /// <c>opanel soak [--minutes N] [--profile flips|mixed|clean] [--seed N] [--baud B] [--lines N] [--model stl|reference] [--scan-ms M]</c>: the long soak of docs/soak.md.
 /// The panel stack watches and writes the ends of every area Freeport reaches (<see cref="SoakRegion.AreaEnds"/>) of the generated
 /// CPU 226 handler in the STL interpreter (or the reference model) through a noisy-line proxy between two socat pty pairs, while the
-/// field changes the last I and SM bytes, and the judge prints the figures per profile (both noisy profiles unless one is
+/// field changes the last I bytes, and the judge prints the figures per profile (both noisy profiles unless one is
 /// named). Exit 0 when the must-be-0 figures are 0, 2 when one is not, 1 for a bad option or a missing socat.
 /// </summary>
 internal static class SoakCommand

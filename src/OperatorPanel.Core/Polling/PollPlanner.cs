@@ -107,9 +107,9 @@ public static class PollPlanner
 
     private static string? RejectionReason(WatchedItem item, ImmutableDictionary<Station, CpuProfile> cpus)
     {
-        if (ProtocolAreaExtensions.FromMemoryArea(item.Address.Area) is null)
+        if (LinkAreas.ReadRefusal(item.Address, LinkProtocol.Freeport) is { } notServed)
         {
-            return LinkAreas.ReadRefusal(item.Address, LinkProtocol.Freeport);
+            return notServed;
         }
 
         return cpus.TryGetValue(item.Station, out var cpu) ? AddressRules.Check(item.Address, cpu)?.Message : null;

@@ -77,7 +77,7 @@ public static class V3Measurement
         yield return ("IDENTIFY", Request.Identify(s, next()), null);
 
         // READ, WRITE and WRITE BITS in every area: the item check finds the area by tests in turn and the write checks
-        // refuse I and SM, so each area takes its own time; the row keeps the slowest (Slowest).
+        // refuse I, so each area takes its own time; the row keeps the slowest (Slowest). An SM item is refused, 82.
         foreach (var area in Areas)
         {
             yield return (AreaVariant($"READ {HandlerShape.MaxData} bytes", area, 0), Request.Read(s, next(), new ReadItem(area, 0, HandlerShape.MaxData)), null);
@@ -100,8 +100,8 @@ public static class V3Measurement
             yield break;
         }
 
-        // The slowest item check (SM, the last area tried), then the longest list: every slot a 4-byte item.
-        yield return ($"DEFINE LIST {shape.ListItems} SM items", Request.DefineList(s, next(), Enumerable.Repeat(new ReadItem(ProtocolArea.SM, 0, HandlerShape.ItemBytes), shape.ListItems)), null);
+        // The slowest item check (Q, the last area tried), then the longest list: every slot a 4-byte item.
+        yield return ($"DEFINE LIST {shape.ListItems} Q items", Request.DefineList(s, next(), Enumerable.Repeat(new ReadItem(ProtocolArea.Q, 0, HandlerShape.ItemBytes), shape.ListItems)), null);
         var longest = Enumerable.Range(0, shape.ListItems).Select(i => new ReadItem(ProtocolArea.V, 200 + (i * 5), HandlerShape.ItemBytes)).ToArray();
         ListPlan.TryMake(longest, shape, areaBytes, out var plan);
         yield return ($"DEFINE LIST {plan.Items.Length} items", plan.Request(s, next()), null);
@@ -121,7 +121,8 @@ public static class V3Measurement
         yield return (IdleRefreshName, Request.ReadList(s, next()), null);
     }
 
-    private static readonly ProtocolArea[] Areas = [ProtocolArea.I, ProtocolArea.Q, ProtocolArea.M, ProtocolArea.V, ProtocolArea.SM];
+    /// <summary>The areas the handler serves (no SM: docs/protocol.md section 1.3).</summary>
+    private static readonly ProtocolArea[] Areas = [ProtocolArea.I, ProtocolArea.Q, ProtocolArea.M, ProtocolArea.V];
 
     /// <summary>Separates a row's name from the area it was measured in, until <see cref="Slowest"/> keeps one per row.</summary>
     private const char AreaMark = '|';
@@ -130,7 +131,7 @@ public static class V3Measurement
 
     /// <summary>
     /// One row per request kind: of the area variants (<see cref="AreaVariant"/>) the one that adds most to a scan (then
-    /// the longest in all), named "READ 16 bytes, SMB0", in the place of the first.
+    /// the longest in all), named "READ 16 bytes, QB0", in the place of the first.
     /// </summary>
     private static ImmutableArray<MeasuredRequest> Slowest(IEnumerable<MeasuredRequest> measured)
     {

@@ -8,7 +8,7 @@ namespace OperatorPanel.Simulator.Soak;
 
 /// <summary>
 /// The addresses the soak watches, and writes where the Freeport link writes (<see cref="LinkAreas.Writes"/>: Q, M and V;
-/// I and SM are read only). Words and double words are big-endian, as the S7-200 stores them.
+/// I is read only; SM the handler does not serve, docs/protocol.md section 1.3). Words and double words are big-endian, as the S7-200 stores them.
 /// </summary>
 public sealed record SoakRegion(ImmutableArray<PlcAddress> Items)
 {
@@ -29,8 +29,7 @@ public sealed record SoakRegion(ImmutableArray<PlcAddress> Items)
     /// <item>Q: QW14, QB15, Q15.7, a 2-byte range widened to QB12-QB15;</item>
     /// <item>M: MD20 and MB29, MW30, M31.7, a 3-byte range widened to MB28-MB31 beside a double word of its own in the
     /// same frame (MB24-MB28 between: too many bytes for the planner to read over);</item>
-    /// <item>I (read only): IB15, I15.0, a 1-byte range widened to IB12-IB15;</item>
-    /// <item>SM (read only): SMW548, SM549.7, the last SM bytes, a 2-byte range widened to SMB546-SMB549.</item>
+    /// <item>I (read only): IB15, I15.0, a 1-byte range widened to IB12-IB15 (the window of the list's filler items, too).</item>
     /// </list>
     /// </summary>
     public static SoakRegion AreaEnds(CpuProfile cpu, int handlerFirstByte)
@@ -39,7 +38,6 @@ public sealed record SoakRegion(ImmutableArray<PlcAddress> Items)
         var q = Bytes(cpu, MemoryArea.Q);
         var m = Bytes(cpu, MemoryArea.M);
         var i = Bytes(cpu, MemoryArea.I);
-        var sm = Bytes(cpu, MemoryArea.SM);
         var v = handlerFirstByte;
         return new(
         [
@@ -48,7 +46,6 @@ public sealed record SoakRegion(ImmutableArray<PlcAddress> Items)
             Word(MemoryArea.Q, q - 2), Byte(MemoryArea.Q, q - 1), PlcAddress.ForBit(MemoryArea.Q, q - 1, 7),
             DoubleWord(MemoryArea.M, m - 12), Byte(MemoryArea.M, m - 3), Word(MemoryArea.M, m - 2), PlcAddress.ForBit(MemoryArea.M, m - 1, 7),
             Byte(MemoryArea.I, i - 1), PlcAddress.ForBit(MemoryArea.I, i - 1, 0),
-            Word(MemoryArea.SM, sm - 2), PlcAddress.ForBit(MemoryArea.SM, sm - 1, 7),
         ]);
     }
 

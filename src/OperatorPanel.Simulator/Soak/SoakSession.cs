@@ -111,22 +111,17 @@ public static class SoakSession
 
     private static SerialSettings Serial(SoakSetup setup, string port) => new() { PortName = port, BaudRate = setup.Baud };
 
-    /// <summary>
-    /// V below the handler's bytes, all of M, Q and I, and the last list window of SM: everything a panel write may
-    /// change, and what the field sets. Not SM below (the CPU writes SMB0, SMW22-SMW26 and the handler its port's bytes).
-    /// </summary>
+    /// <summary>V below the handler's bytes, all of M, Q and I: everything a panel write may change, and what the field sets.</summary>
     private static IEnumerable<WatchedBytes> Watched(SoakSetup setup) =>
     [
         new(ProtocolArea.V, 0, setup.HandlerFirstByte),
         new(ProtocolArea.M, 0, setup.Memory.M.Length),
         new(ProtocolArea.Q, 0, setup.Memory.Q.Length),
         new(ProtocolArea.I, 0, setup.Memory.I.Length),
-        EndWindow(ProtocolArea.SM, setup.Memory.SM.Length),
     ];
 
-    /// <summary>The 4-byte windows at the end of I and SM: a list item there is widened to them, so the handler compares all four.</summary>
-    private static IEnumerable<WatchedBytes> FieldDriven(SoakSetup setup) =>
-        [EndWindow(ProtocolArea.I, setup.Memory.I.Length), EndWindow(ProtocolArea.SM, setup.Memory.SM.Length)];
+    /// <summary>The 4-byte window at the end of I: a list item there is widened to it, so the handler compares all four.</summary>
+    private static IEnumerable<WatchedBytes> FieldDriven(SoakSetup setup) => [EndWindow(ProtocolArea.I, setup.Memory.I.Length)];
 
     private static WatchedBytes EndWindow(ProtocolArea area, int areaBytes) => new(area, areaBytes - HandlerShape.ItemBytes, HandlerShape.ItemBytes);
 

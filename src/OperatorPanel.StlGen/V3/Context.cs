@@ -15,7 +15,6 @@ internal sealed class Context
         Shape = options.Compact ? HandlerShape.Compact : HandlerShape.Full;
         Layout = new Layout(options.EffectiveV3First, Shape);
         VBytes = options.Cpu.TryGetArea(MemoryArea.V, out var v) ? v.ByteCount : 0;
-        SmBytes = options.Cpu.TryGetArea(MemoryArea.SM, out var sm) ? sm.ByteCount : 0;
     }
 
     public HandlerOptions Options { get; }
@@ -25,8 +24,6 @@ internal sealed class Context
     public Layout Layout { get; }
 
     public int VBytes { get; }
-
-    public int SmBytes { get; }
 
     public HandlerBlockNames Names => Options.Names;
 

@@ -7,13 +7,15 @@ namespace OperatorPanel.StlGen.V3;
 
 /// <summary>
 /// 02 READ, 03 WRITE, 04 WRITE BITS and the item check they share with DEFINE LIST (docs/protocol.md section 4): the
-/// request's item AREA OFFSET LENGTH sits at byte 5; LENGTH 0 -&gt; 84, unknown AREA -&gt; 82, OFFSET + LENGTH past the
+/// request's item AREA OFFSET LENGTH sits at byte 5; LENGTH 0 -&gt; 84, unknown AREA (SM, 05, included) -&gt; 82, OFFSET + LENGTH past the
 /// area -&gt; 82. <see cref="Commands"/> ends in <see cref="Check"/> (WRITE BITS falls through). In: AC2 at AREA, the length in TEMP's second word. Out: AC3 = the item's first byte; on by CMD. The
 /// checks run in the dispatch's scan; the data moves in the next (phase Move), the reply in the one after.
 /// </summary>
 internal static class ItemPart
 {
-    private static readonly (int Code, string Pointer)[] Areas = [(4, "&VB0"), (3, "&MB0"), (1, "&IB0"), (2, "&QB0"), (5, "&SMB0")];
+    // No SM: no S7-200 source found says a pointer reaches SM (docs/sources/s7200-facts.md section 13), so the handler
+    // builds no &SMB pointer, and an SM item, area 05, is an unknown AREA: 82.
+    private static readonly (int Code, string Pointer)[] Areas = [(4, "&VB0"), (3, "&MB0"), (1, "&IB0"), (2, "&QB0")];
 
     /// <summary>OFFSET's high byte 16#28 or more: OFFSET 10240 or more, past every area of every CPU (and never negative as a word).</summary>
     private const string PastEveryArea = "16#28";
@@ -72,14 +74,14 @@ internal static class ItemPart
         yield return Always("WRITE BITS: check the byte", "A one-byte item; the item check follows.", Op("MOVW", "1", LengthWord(l)));
     }
 
-    /// <summary>Phase Move for WRITE and WRITE BITS, first: 83 for I, SM, areas outside the mask, the handler's V bytes.</summary>
+    /// <summary>Phase Move for WRITE and WRITE BITS, first: 83 for I, areas outside the mask, the handler's V bytes.</summary>
     private static IEnumerable<StlNetwork> Writable(Context c)
     {
         var l = c.Layout;
         yield return JumpIf("Phase Move: READ", "Phase Move, the only one left after the tests above, starts here (no test, no label). READ needs no write checks.", Labels.MoveData, Op("LDB=", l.B(l.Cmd), Dec(Command.Read)));
         var area = l.B(5);
-        var locked = new[] { (1, "I"), (2, "Q"), (3, "M"), (4, "V"), (5, "SM") }.Where(a => !c.MayWrite(a.Item1)).ToList();
-        var net = new NetworkBuilder($"Writable: not {string.Join(", ", locked.Select(a => a.Item2))}", "I and SM never, the rest as the write mask says: 83.");
+        var locked = new[] { (1, "I"), (2, "Q"), (3, "M"), (4, "V") }.Where(a => !c.MayWrite(a.Item1)).ToList();
+        var net = new NetworkBuilder($"Writable: not {string.Join(", ", locked.Select(a => a.Item2))}", "I never, the rest as the write mask says: 83 (an SM item was refused by the item check, 82).");
         foreach (var (code, _) in locked)
         {
             net.Op(code == locked[0].Item1 ? "LDB=" : "OB=", area, Dec(code));
@@ -120,7 +122,6 @@ internal static class ItemPart
     private static int AreaBytes(Context c, int code) => code switch
     {
         4 => c.VBytes,
-        5 => c.SmBytes,
         3 => Bytes(c, Core.Addressing.MemoryArea.M),
         1 => Bytes(c, Core.Addressing.MemoryArea.I),
         _ => Bytes(c, Core.Addressing.MemoryArea.Q),

@@ -9,7 +9,7 @@ namespace OperatorPanel.ViewModels.Wizard;
 
 /// <summary>
 /// Step 3: the memory cells the PLC memory window watches (seed 000 §7: any bit, byte, word or double word of M and V;
-/// I, Q and SM as the project file allows; on a PPI link (step 5) also S, AIW, AQW, T and C). Each address is checked
+/// I and Q as the project file allows; on a PPI link (step 5) also SM, S, AIW, AQW, T and C). Each address is checked
 /// against the link and the CPU, for writing when writable.
 /// </summary>
 public sealed partial class MemoryCellsStepViewModel : WizardStepViewModel

@@ -8,13 +8,13 @@ public sealed class ReadCommandTests
     [Fact]
     public void Read_Demo_PrintsCanonicalAddressValueHexAndQuality()
     {
-        var run = CliRunner.Run("read", "vw200", "I0.4", "SMB6", "--demo");
+        var run = CliRunner.Run("read", "vw200", "I0.4", "VB0", "--demo");
 
         run.ExitCode.Should().Be(0, run.Error);
         run.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
             "VW200    0           16#0000      good",
             "I0.4     1                        good", //    demo process: mode selector in AUTO, always on
-            "SMB6     32          16#20        good"); //   CPU 224 identifies as 16#20
+            "VB0      0           16#00        good");
     }
 
     [Fact]
@@ -35,21 +35,22 @@ public sealed class ReadCommandTests
     [Fact]
     public void Read_DemoJson_PrintsAnArray()
     {
-        var run = CliRunner.Run("read", "SMB6", "Q0.0", "--demo", "--cpu", "226", "--json");
+        var run = CliRunner.Run("read", "VD120", "Q0.0", "--demo", "--cpu", "226", "--json");
 
         using var json = JsonDocument.Parse(run.Out);
         json.RootElement.GetArrayLength().Should().Be(2);
-        json.RootElement[0].GetProperty("address").GetString().Should().Be("SMB6");
-        json.RootElement[0].GetProperty("value").GetInt32().Should().Be(0x90);
-        json.RootElement[0].GetProperty("hex").GetString().Should().Be("16#90");
+        json.RootElement[0].GetProperty("address").GetString().Should().Be("VD120");
+        json.RootElement[0].GetProperty("value").GetInt64().Should().Be(0x43FA0000, "the demo's fill setpoint, a REAL of 500 ml");
+        json.RootElement[0].GetProperty("hex").GetString().Should().Be("16#43FA0000");
         json.RootElement[1].GetProperty("quality").GetString().Should().Be("good");
     }
 
     [Theory]
     [InlineData("VB99999", "byte number")]
-    [InlineData("AIW0", "AIW0: the Freeport link reads only I, Q, M, V and SM: its handler reaches memory through pointers, and an S7-200 pointer cannot reach analog values; copy the analog value to V in the PLC program (MOVW AIW0, VW100)")]
-    [InlineData("T37", "T37: the Freeport link reads only I, Q, M, V and SM: its handler leaves timers out to stay small; copy the current value to V in the PLC program (MOVW T37, VW100) and watch that, or read the station over PPI")]
+    [InlineData("AIW0", "AIW0: the Freeport link reads only I, Q, M and V: its handler reaches memory through pointers, and an S7-200 pointer cannot reach analog values; copy the analog value to V in the PLC program (MOVW AIW0, VW100)")]
+    [InlineData("T37", "T37: the Freeport link reads only I, Q, M and V: its handler leaves timers out to stay small; copy the current value to V in the PLC program (MOVW T37, VW100) and watch that, or read the station over PPI")]
     [InlineData("VB8192", "VB8192")]
+    [InlineData("SMB6", "SMB6: the Freeport link reads only I, Q, M and V: its handler reaches memory through pointers, and no S7-200 manual page found says a pointer reaches SM; copy the SM bytes to V in the PLC program (MOVB SMB6, VB100) and watch that, or read the station over PPI")]
     public void Read_BadAddress_ExitsOneWithTheMessage(string address, string message)
     {
         var run = CliRunner.Run("read", address, "--demo");
@@ -104,13 +105,13 @@ public sealed class ReadCommandTests
             }
             """);
 
-        var capper = CliRunner.Run("read", "SMB6", "--project", project, "--station", "capper", "--demo");
+        var capper = CliRunner.Run("read", "VB9000", "--project", project, "--station", "capper", "--demo");
         var filler = CliRunner.Run("read", "VB9000", "--project", project, "--station", "Filler", "--demo");
-        var neither = CliRunner.Run("read", "SMB6", "--project", project, "--demo");
+        var neither = CliRunner.Run("read", "VB0", "--project", project, "--demo");
         File.Delete(project);
 
         capper.ExitCode.Should().Be(0, capper.Error);
-        capper.Out.Should().Be($"SMB6     144         16#90        good{Environment.NewLine}", "the demo simulates the project's CPU 226");
+        capper.Out.Should().Be($"VB9000   0           16#00        good{Environment.NewLine}", "the demo simulates the project's CPU 226, whose V reaches VB10239");
         filler.ExitCode.Should().Be(1);
         filler.Error.Should().Be($"opanel: VB9000 is past the last V byte VB8191 of CPU 224; nothing read{Environment.NewLine}");
         neither.ExitCode.Should().Be(1);
@@ -131,12 +132,12 @@ public sealed class ReadCommandTests
     [Fact]
     public void Read_AddressWithFormat_ShowsTheValueSoInTextAndJson()
     {
-        var text = CliRunner.Run("read", "SMB6:binary", "VD120:real", "--demo");
+        var text = CliRunner.Run("read", "VB0:binary", "VD120:real", "--demo");
         var json = CliRunner.Run("read", "VD120:real", "--demo", "--json");
 
         text.ExitCode.Should().Be(0, text.Error);
         text.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
-            "SMB6     2#0010_0000 16#20        good",
+            "VB0      2#0000_0000 16#00        good",
             "VD120    500         16#43FA0000  good"); // the demo's fill setpoint, a REAL of 500 ml
         using var doc = JsonDocument.Parse(json.Out);
         doc.RootElement[0].GetProperty("value").GetUInt64().Should().Be(0x43FA0000, "the unsigned value stays for scripts");

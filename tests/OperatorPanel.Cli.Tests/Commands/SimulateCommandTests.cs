@@ -34,7 +34,7 @@ public sealed class SimulateCommandTests
 
         var identify = CliRunner.Run(["identify", "--station", "4", "--cpu", "224", .. line]);
         var write = CliRunner.Run(["write", "VW200=4660", "Q1.1=on", "--station", "3", .. line]);
-        var read = CliRunner.Run(["read", "VW200", "SMB6", "Q1.1", "--station", "3", .. line]);
+        var read = CliRunner.Run(["read", "VW200", "VB9000", "Q1.1", "--station", "3", "--cpu", "226", .. line]);
         var silent = CliRunner.Run(["read", "VB0", "--station", "9", "--device", pty.PathB, "--baud", "19200"]);
 
         identify.ExitCode.Should().Be(1, identify.Error); // a CPU 226 asked for as 224: mismatch
@@ -46,7 +46,7 @@ public sealed class SimulateCommandTests
         read.ExitCode.Should().Be(0, read.Error);
         read.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
             "VW200    4660        16#1234      good",
-            "SMB6     144         16#90        good",
+            "VB9000   0           16#00        good", // past a CPU 224's V: station 3 is the CPU 226
             "Q1.1     1                        good"); // the panel owns Q1.1 now; the demo process leaves it alone
         silent.ExitCode.Should().Be(2);
         silent.Error.Should().StartWith($"opanel: station 9 on {pty.PathB}: no valid reply to v3 Read after ")

@@ -28,7 +28,7 @@ public sealed class TagArgumentTests
         run.Out.Should().BeEmpty();
         run.Error.Split('\n', StringSplitOptions.RemoveEmptyEntries).Should().Equal(
             "opanel: 'BottleCoutn': no tag, input or output of Filler has this symbol, and it is no address ('BottleCoutn': unknown memory area; an address starts with I, Q, M, V, SM, S, AIW, AQW, T or C)",
-            "opanel: AIW0: the Freeport link reads only I, Q, M, V and SM: its handler reaches memory through pointers, and an S7-200 pointer cannot reach analog values; copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads analog values",
+            "opanel: AIW0: the Freeport link reads only I, Q, M and V: its handler reaches memory through pointers, and an S7-200 pointer cannot reach analog values; copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads analog values",
             "opanel: 'VB99999': byte number 99999 is larger than 65535",
             "opanel: 3 arguments are wrong; nothing read");
     }
@@ -93,8 +93,8 @@ public sealed class TagArgumentTests
     }
 
     [Theory]
-    [InlineData("SMB30", "224", "writable  no: SMB30: the Freeport handler never writes SM (it refuses with 83")]
-    [InlineData("SMB40", "224", "writable  no: SMB40: the Freeport handler never writes SM (it refuses with 83")]
+    [InlineData("SMB30", "224", "writable  no: SMB30: the Freeport handler does not serve SM")]
+    [InlineData("SMB40", "224", "writable  no: SMB40: the Freeport handler does not serve SM")]
     [InlineData("VB9634", "226", "writable  no: VB9634 is in the handler's own V bytes VB9634-VB10239 (where generate puts the full handler's")]
     [InlineData("VW9633", "226", "writable  no: VW9633 is in the handler's own V bytes VB9634-VB10239")]
     [InlineData("VB9633", "226", "writable  yes")]
@@ -114,10 +114,10 @@ public sealed class TagArgumentTests
         var timer = CliRunner.Run("address", "T37", "--cpu", "224");
         var address = CliRunner.Run("address", "AIW0", "--cpu", "224");
 
-        read.Error.Should().Contain("the Freeport link reads only I, Q, M, V and SM");
-        timer.Out.Should().Contain("link      not read by the Freeport link (it reads I, Q, M, V and SM)")
+        read.Error.Should().Contain("the Freeport link reads only I, Q, M and V");
+        timer.Out.Should().Contain("link      not read by the Freeport link (it reads I, Q, M and V)")
             .And.Contain("ppi       read by the PPI link (it reads I, Q, M, V, SM, S, AIW, AQW, T and C); writable over PPI no: T37: the panel reads timer current values but never writes them");
-        address.Out.Should().Contain("link      not read by the Freeport link (it reads I, Q, M, V and SM)")
+        address.Out.Should().Contain("link      not read by the Freeport link (it reads I, Q, M and V)")
             .And.Contain("writable over PPI no: AIW0: analog inputs are read-only");
     }
 

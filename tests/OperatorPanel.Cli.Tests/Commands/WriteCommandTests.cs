@@ -45,12 +45,12 @@ public sealed class WriteCommandTests
     [Fact]
     public void Write_SmOverFreeport_IsRefusedBeforeAnythingIsSent()
     {
-        // The protocol 3 handler never writes SM (docs/protocol.md section 3, 83): the panel says so without asking it.
+        // The protocol 3 handler does not serve SM (docs/protocol.md section 1.3, 82): the panel says so without asking it.
         var run = CliRunner.Run("write", "SMB34=9", "--demo");
 
         run.ExitCode.Should().Be(1);
         run.Out.Should().BeEmpty();
-        run.Error.Should().Contain("SMB34: the Freeport handler never writes SM (it refuses with 83").And.Contain("nothing written");
+        run.Error.Should().Contain("SMB34: the Freeport handler does not serve SM").And.Contain("nothing written");
     }
 
     [Fact]

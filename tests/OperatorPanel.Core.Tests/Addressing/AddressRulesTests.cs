@@ -96,8 +96,8 @@ public sealed class AddressRulesTests
     [InlineData("AIW0", "analog inputs are read-only")]
     [InlineData("AQW0", "the Freeport link writes only Q, M and V")]
     [InlineData("S0.0", "the Freeport link writes only Q, M and V")]
-    [InlineData("SMB30", "the Freeport handler never writes SM (it refuses with 83")]
-    [InlineData("SMD546", "the Freeport handler never writes SM")]
+    [InlineData("SMB30", "the Freeport handler does not serve SM (no S7-200 manual page found says a pointer reaches it); write a V byte")]
+    [InlineData("SMD546", "the Freeport handler does not serve SM")]
     public void Check_WriteToReadOnlyPlace_IsRefused(string text, string messagePart)
     {
         var error = AddressRules.Check(PlcAddress.Parse(text), CpuProfiles.For(CpuModel.Cpu224), AddressUse.Write);

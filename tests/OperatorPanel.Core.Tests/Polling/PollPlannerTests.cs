@@ -41,9 +41,9 @@ public sealed class PollPlannerTests
     [Fact]
     public void Build_DifferentAreas_ShareOneFrameButNeverOneBlock()
     {
-        var plan = PollPlanner.Build(Items(One, "SMB0", "VB0", "MB0", "QB0", "IB0"));
+        var plan = PollPlanner.Build(Items(One, "VB0", "MB0", "QB0", "IB0"));
 
-        Frames(plan).Should().Equal("1: I0+1 Q0+1 M0+1 V0+1 SM0+1");
+        Frames(plan).Should().Equal("1: I0+1 Q0+1 M0+1 V0+1");
     }
 
     [Fact]
@@ -147,10 +147,11 @@ public sealed class PollPlannerTests
     [Fact]
     public void Build_AreaNotServedByTheLink_IsRejectedWithReason()
     {
-        var plan = PollPlanner.Build(Items(One, "AIW0", "VB0", "T37"));
+        var plan = PollPlanner.Build(Items(One, "AIW0", "VB0", "T37", "SMW22"));
 
-        plan.Rejected.Should().Equal(new PlanRejection(Item(One, "AIW0"), "AIW0: the Freeport link reads only I, Q, M, V and SM: its handler reaches memory through pointers, and an S7-200 pointer cannot reach analog values; copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads analog values"),
-            new PlanRejection(Item(One, "T37"), "T37: the Freeport link reads only I, Q, M, V and SM: its handler leaves timers out to stay small; copy the current value to V in the PLC program (MOVW T37, VW100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads timers"));
+        plan.Rejected.Should().Equal(new PlanRejection(Item(One, "AIW0"), "AIW0: the Freeport link reads only I, Q, M and V: its handler reaches memory through pointers, and an S7-200 pointer cannot reach analog values; copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads analog values"),
+            new PlanRejection(Item(One, "T37"), "T37: the Freeport link reads only I, Q, M and V: its handler leaves timers out to stay small; copy the current value to V in the PLC program (MOVW T37, VW100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads timers"),
+            new PlanRejection(Item(One, "SMW22"), "SMW22: the Freeport link reads only I, Q, M and V: its handler reaches memory through pointers, and no S7-200 manual page found says a pointer reaches SM; copy the SM bytes to V in the PLC program (MOVW SMW22, VW100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads SM"));
         Frames(plan).Should().Equal("1: V0+1");
     }
 

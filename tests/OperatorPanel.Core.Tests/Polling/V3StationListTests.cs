@@ -61,8 +61,8 @@ public sealed class V3StationListTests
     {
         var cpu = CpuProfiles.For(model);
         var areaBytes = ListPlan.AreaBytesOf(cpu);
-        ProtocolArea[] areas = [ProtocolArea.I, ProtocolArea.Q, ProtocolArea.M, ProtocolArea.V, ProtocolArea.SM];
-        string[] prefixes = ["I", "Q", "M", "V", "SM"];
+        ProtocolArea[] areas = [ProtocolArea.I, ProtocolArea.Q, ProtocolArea.M, ProtocolArea.V];
+        string[] prefixes = ["I", "Q", "M", "V"];
         var checkedFrames = 0;
         for (var seed = 0; seed < 150; seed++)
         {

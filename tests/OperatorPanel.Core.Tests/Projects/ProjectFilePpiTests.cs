@@ -96,7 +96,7 @@ public sealed class ProjectFilePpiTests
 
         var problem = BadFile.SingleProblem(tree.ToJsonString());
 
-        problem.Message.Should().Be("AIW0: the Freeport link reads only I, Q, M, V and SM: its handler reaches memory through pointers, and an S7-200 "
+        problem.Message.Should().Be("AIW0: the Freeport link reads only I, Q, M and V: its handler reaches memory through pointers, and an S7-200 "
             + "pointer cannot reach analog values; copy the analog value to V in the PLC program (MOVW AIW0, VW100) and watch that, or read the "
             + "station over PPI (\"protocol\": \"ppi\"), which reads analog values");
     }

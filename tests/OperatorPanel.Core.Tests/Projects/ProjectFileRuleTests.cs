@@ -70,7 +70,7 @@ public sealed class ProjectFileRuleTests
     [Fact]
     public void Parse_TagOnSequenceRelays_SaysTheLinkDoesNotServeIt()
     {
-        BadFile.Expect(t => t.Station()["tags"]![0]!["address"] = "SD0", "$.stations[0].tags[0].address", "SD0: the Freeport link reads only I, Q, M, V and SM: its handler leaves S bits out to stay small; copy the S bits to V in the PLC program (MOVB SB0, VB100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads S bits");
+        BadFile.Expect(t => t.Station()["tags"]![0]!["address"] = "SD0", "$.stations[0].tags[0].address", "SD0: the Freeport link reads only I, Q, M and V: its handler leaves S bits out to stay small; copy the S bits to V in the PLC program (MOVB SB0, VB100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads S bits");
     }
 
     [Theory]

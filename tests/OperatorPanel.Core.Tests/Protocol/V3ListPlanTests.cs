@@ -15,7 +15,16 @@ public sealed class V3ListPlanTests
         ListPlan.TryMake([new ReadItem(ProtocolArea.M, 22, 10)], HandlerShape.Full, Cpu224, out var plan).Should().BeTrue();
 
         plan.Items.Take(3).Should().Equal(new ReadItem(ProtocolArea.M, 22, 2), new ReadItem(ProtocolArea.M, 24, 4), new ReadItem(ProtocolArea.M, 28, 4));
-        (plan.Places[0], plan.DataBytes).Should().Be((0, 10 + 5), "the range's bytes in order, then 5 SMB6 fillers to a group of 8");
+        (plan.Places[0], plan.DataBytes).Should().Be((0, 10 + 5), "the range's bytes in order, then 5 fillers to a group of 8");
+    }
+
+    [Fact]
+    public void TryMake_GroupFilledUp_WithOneByteItemsOfIB12ThatTheHandlerServes()
+    {
+        ListPlan.TryMake([new ReadItem(ProtocolArea.V, 100, 4)], HandlerShape.Full, Cpu224, out var plan).Should().BeTrue();
+
+        plan.Items.Skip(1).Should().Equal(Enumerable.Repeat(new ReadItem(ProtocolArea.I, 12, 1), 7),
+            "the handler serves no SM (the fillers read SMB6 before): IB12's window IB12-IB15 ends at the input image's end");
     }
 
     [Fact]

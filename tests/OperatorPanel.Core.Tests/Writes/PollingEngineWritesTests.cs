@@ -133,7 +133,7 @@ public sealed class PollingEngineWritesTests
     [Theory]
     [InlineData("IB0", "IB0: inputs are read from the field; the panel never writes them")]
     [InlineData("SB0", "SB0: the Freeport link writes only Q, M and V")]
-    [InlineData("SMB34", "SMB34: the Freeport handler never writes SM (it refuses with 83")]
+    [InlineData("SMB34", "SMB34: the Freeport handler does not serve SM")]
     public async Task Write_AreaTheLinkNeverWrites_FailsWithoutSending(string address, string reason)
     {
         var engine = Engine(Items(One, "VB0"));

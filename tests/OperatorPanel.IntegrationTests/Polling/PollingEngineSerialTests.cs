@@ -17,8 +17,8 @@ public sealed class PollingEngineSerialTests
         var plc = SerialLineRig.Plc(2);
         var m = plc.Memory;
         (m.I[0], m.I[1], m.Q[0], m.Q[1], m.M[3], m.M[10], m.M[11]) = (0xA5, 0x3C, 0x81, 0x7E, 0x42, 0x12, 0x34);
-        (m.V[100], m.V[101], m.V[102], m.V[103], m.V[2000], m.V[2001], m.V[3000], m.SM[28]) = (0xDE, 0xAD, 0xBE, 0xEF, 0x0B, 0xB8, 0x20, 0x99);
-        await using var rig = await SerialLineRig.StartAsync([plc], ["IB0", "IB1", "QW0", "MB3", "MW10", "VD100", "VW2000", "V3000.5", "V3000.4", "SMB28"]);
+        (m.V[100], m.V[101], m.V[102], m.V[103], m.V[2000], m.V[2001], m.V[3000], m.Q[15]) = (0xDE, 0xAD, 0xBE, 0xEF, 0x0B, 0xB8, 0x20, 0x99);
+        await using var rig = await SerialLineRig.StartAsync([plc], ["IB0", "IB1", "QW0", "MB3", "MW10", "VD100", "VW2000", "V3000.5", "V3000.4", "QB15"]);
 
         var result = await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
 
@@ -32,7 +32,7 @@ public sealed class PollingEngineSerialTests
         rig.Value(plc, "VW2000").Raw.Should().Equal(0x0B, 0xB8);
         rig.Value(plc, "V3000.5").AsBit.Should().BeTrue();
         rig.Value(plc, "V3000.4").AsBit.Should().BeFalse();
-        rig.Value(plc, "SMB28").Raw.Should().Equal(0x99);
+        rig.Value(plc, "QB15").Raw.Should().Equal(0x99);
         rig.Value(plc, "VD100").Quality.Should().Be(ValueQuality.Good);
 
         m.WriteDoubleWord(ProtocolArea.V, 100, 1_000_000);

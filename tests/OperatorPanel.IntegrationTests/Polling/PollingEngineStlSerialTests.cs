@@ -25,15 +25,15 @@ public sealed class PollingEngineStlSerialTests
     public async Task Refresh_GeneratedHandler_ReturnsThePlcBytes()
     {
         var (line, station) = Line(2);
-        (station.Memory.V[100], station.Memory.V[101], station.Memory.M[3]) = (0xBE, 0xEF, 0x42);
-        await using var rig = await SerialLineRig.StartAsync(line, [(new Station(2), Cpu)], ["VW100", "MB3", "SMB6"], Baud);
+        (station.Memory.V[100], station.Memory.V[101], station.Memory.M[3], station.Memory.Q[15]) = (0xBE, 0xEF, 0x42, 0x5A);
+        await using var rig = await SerialLineRig.StartAsync(line, [(new Station(2), Cpu)], ["VW100", "MB3", "QB15"], Baud);
 
         var result = await rig.RefreshUntilAsync(r => r.FramesFailed == 0);
 
         result.FramesFailed.Should().Be(0);
         rig.Value(new Station(2), "VW100").Raw.Should().Equal(0xBE, 0xEF);
         rig.Value(new Station(2), "MB3").Raw.Should().Equal(0x42);
-        rig.Value(new Station(2), "SMB6").Raw.Should().Equal(Cpu.CpuIdCode);
+        rig.Value(new Station(2), "QB15").Raw.Should().Equal(0x5A);
     }
 
     [Fact]

@@ -62,7 +62,7 @@ public sealed class V3BusTests
     }
 
     /// <summary>
-    /// Ranges that end their area (QW14, MW30, SMB549 on a CPU 224) are widened backward to the 4-byte item ending with
+    /// Ranges that end their area (QW14, MW30, IB15 on a CPU 224) are widened backward to the 4-byte item ending with
     /// them, so in the list data each sits at the end of its item, not right after the range before it (found by a
     /// stranger's handler written from docs/protocol.md: MW30 was shown good with MB28-MB29's bytes).
     /// </summary>
@@ -70,18 +70,18 @@ public sealed class V3BusTests
     public async Task Refresh_RangesAtTheEndOfTheirAreas_EachShowsItsOwnBytes()
     {
         var station = V3Rig.Handler(2);
-        var (q, m, sm) = (station.Memory.Q, station.Memory.M, station.Memory.SM);
+        var (q, m, i) = (station.Memory.Q, station.Memory.M, station.Memory.I);
         (q[12], q[13], q[14], q[15]) = (0x12, 0x13, 0x14, 0x15);
         (m[28], m[29], m[30], m[31]) = (0x28, 0x29, 0x30, 0x31);
-        (sm[546], sm[547], sm[548], sm[549]) = (0x46, 0x47, 0x48, 0x49);
+        (i[12], i[13], i[14], i[15]) = (0x46, 0x47, 0x48, 0x49);
         station.Memory.V[100] = 0x42;
-        await using var rig = V3Rig.Start([station], "QW14", "MW30", "SMB549", "VB100", "MB31");
+        await using var rig = V3Rig.Start([station], "QW14", "MW30", "IB15", "VB100", "MB31");
 
         await rig.Bus.RefreshAsync();
         rig.Value("QW14").Should().Be("1415 Good");
         rig.Value("MW30").Should().Be("3031 Good");
         rig.Value("MB31").Should().Be("31 Good");
-        rig.Value("SMB549").Should().Be("49 Good");
+        rig.Value("IB15").Should().Be("49 Good");
         rig.Value("VB100").Should().Be("42 Good");
 
         (m[29], m[31], q[15]) = (0x99, 0x77, 0x55);
@@ -91,7 +91,7 @@ public sealed class V3BusTests
         rig.Value("MW30").Should().Be("3077 Good", "MB29 changed too, but it is not MW30's");
         rig.Value("MB31").Should().Be("77 Good");
         rig.Value("QW14").Should().Be("1455 Good");
-        rig.Value("SMB549").Should().Be("49 Good");
+        rig.Value("IB15").Should().Be("49 Good");
     }
 
     [Fact]

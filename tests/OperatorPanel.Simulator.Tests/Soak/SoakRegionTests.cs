@@ -15,13 +15,14 @@ public sealed class SoakRegionTests
     private static readonly int HandlerFirst = HandlerShape.Full.DefaultVFirst(10240);
 
     [Fact]
-    public void AreaEnds_Cpu226_WatchesEveryWidthAtTheEndOfIQMSmAndBelowTheHandler()
+    public void AreaEnds_Cpu226_WatchesEveryWidthAtTheEndOfIQMAndBelowTheHandler()
     {
         var region = SoakRegion.AreaEnds(Cpu, HandlerFirst);
 
         HandlerFirst.Should().Be(9634);
         region.ToString().Should().Be(
-            "VD1000 VD1004 VD9630 VW9632 VB9633 V9633.0 QW14 QB15 Q15.7 MD20 MB29 MW30 M31.7 IB15 I15.0 SMW548 SM549.7");
+            "VD1000 VD1004 VD9630 VW9632 VB9633 V9633.0 QW14 QB15 Q15.7 MD20 MB29 MW30 M31.7 IB15 I15.0",
+            "the handler serves no SM (docs/protocol.md section 1.3)");
     }
 
     [Fact]
@@ -37,11 +38,11 @@ public sealed class SoakRegionTests
 
     /// <summary>
     /// What the panel's list holds for the region (the plan's frames in order, as V3StationList lays them out): one list of
-    /// 8 slots, the ranges at the ends of Q, M, I and SM each widened backward to the area's last 4 bytes, one of them
+    /// 8 slots, the ranges at the ends of Q, M and I each widened backward to the area's last 4 bytes, one of them
     /// behind another range of its frame.
     /// </summary>
     [Fact]
-    public void AreaEnds_Cpu226_OneListWhoseRangesAtTheEndsOfQMIAndSmAreWidened()
+    public void AreaEnds_Cpu226_OneListWhoseRangesAtTheEndsOfQMAndIAreWidened()
     {
         var region = SoakRegion.AreaEnds(Cpu, HandlerFirst);
         var station = new Station(2);
@@ -57,7 +58,7 @@ public sealed class SoakRegionTests
         list.Items.Should().Contain(
         [
             new ReadItem(ProtocolArea.Q, 12, 4), new ReadItem(ProtocolArea.M, 28, 4), new ReadItem(ProtocolArea.I, 12, 4),
-            new ReadItem(ProtocolArea.SM, 546, 4), new ReadItem(ProtocolArea.M, 20, 4), new ReadItem(ProtocolArea.V, 9630, 4),
+            new ReadItem(ProtocolArea.M, 20, 4), new ReadItem(ProtocolArea.V, 9630, 4),
         ]);
     }
 }

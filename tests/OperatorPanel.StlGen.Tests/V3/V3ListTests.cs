@@ -17,7 +17,7 @@ public sealed class V3ListTests
     [
         new(ProtocolArea.I, 0, 3), new(ProtocolArea.Q, 0, 2), new(ProtocolArea.V, 100, 2), new(ProtocolArea.V, 104, 4),
         new(ProtocolArea.M, 0, 18), new(ProtocolArea.M, 29, 3), new(ProtocolArea.Q, 13, 3), new(ProtocolArea.V, 8189, 3),
-        new(ProtocolArea.SM, 28, 2), new(ProtocolArea.V, 400, 9),
+        new(ProtocolArea.I, 14, 2), new(ProtocolArea.V, 400, 9),
     ];
 
     [Fact]
@@ -54,7 +54,7 @@ public sealed class V3ListTests
         var (station, pc) = Defined(Ranges);
         pc.Read();
 
-        foreach (var range in Ranges.Where(r => r.Area != ProtocolArea.SM))
+        foreach (var range in Ranges)
         {
             station.Poke(range.Area, range.Offset, [.. station.Reference.Memory.Area(range.Area).AsSpan(range.Offset, range.Length).ToArray().Select(b => (byte)~b)]);
         }
@@ -179,7 +179,7 @@ public sealed class V3ListTests
         pc.Plan = plan;
     }
 
-    /// <summary>The list data as the memory holds it now: the plan's items' bytes (the ranges, then the SMB6 fillers).</summary>
+    /// <summary>The list data as the memory holds it now: the plan's items' bytes (the ranges, then the IB12 fillers).</summary>
     private static byte[] Memory(V3Station station, ListPc pc) =>
         [.. pc.Plan.Items.SelectMany(r => station.Reference.Memory.Area(r.Area).AsSpan(r.Offset, r.Length).ToArray())];
 

@@ -133,8 +133,8 @@ public sealed class MemoryViewModelTests : IAsyncDisposable
     [Theory]
     [InlineData("VW8191", "Late", "VW8191")]
     [InlineData("QB0", "Out", "QB0: the Memory window holds M and V cells (and over PPI S, AIW, AQW, T and C); inputs and outputs have their own windows")]
-    [InlineData("AIW0", "Level", "AIW0: the Freeport link reads only I, Q, M, V and SM: its handler reaches memory through pointers")]
-    [InlineData("T37", "Timer", "T37: the Freeport link reads only I, Q, M, V and SM: its handler leaves timers out to stay small")]
+    [InlineData("AIW0", "Level", "AIW0: the Freeport link reads only I, Q, M and V: its handler reaches memory through pointers")]
+    [InlineData("T37", "Timer", "T37: the Freeport link reads only I, Q, M and V: its handler leaves timers out to stay small")]
     [InlineData("VW12", "speed", "speed: Filler already has a symbol of that name")]
     [InlineData("VW12", " ", "VW12: give the cell a symbol")]
     public async Task AddCell_Refused_MessageAndProjectUnchanged(string address, string symbol, string expectedStart)

@@ -12,7 +12,7 @@ public sealed class StepValidationTests
     [InlineData("VW8191", false, "Cell 1 (VW8191): VW8191 ends at VB8192, past the last V byte VB8191 of CPU 224.")]
     [InlineData("SMB5", true, "Cell 1 (SMB5): SMB5: SMB0-SMB29 are read-only system status bytes.")]
     [InlineData("IB0", true, "Cell 1 (IB0): IB0: inputs are read from the field; the panel never writes them.")]
-    [InlineData("SB0", false, "Cell 1 (SB0): SB0: the Freeport link reads only I, Q, M, V and SM: its handler leaves S bits out to stay small; copy the S bits to V in the PLC program (MOVB SB0, VB100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads S bits (choose PPI in step 5, Link).")]
+    [InlineData("SB0", false, "Cell 1 (SB0): SB0: the Freeport link reads only I, Q, M and V: its handler leaves S bits out to stay small; copy the S bits to V in the PLC program (MOVB SB0, VB100) and watch that, or read the station over PPI (\"protocol\": \"ppi\"), which reads S bits (choose PPI in step 5, Link).")]
     [InlineData("VW1O0", false, null)]
     public void MemoryCell_AddressRefused_NamesTheCellAndTheRule(string address, bool writable, string? message)
     {

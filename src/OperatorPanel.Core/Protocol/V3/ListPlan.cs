@@ -9,14 +9,19 @@ namespace OperatorPanel.Core.Protocol.V3;
 /// are cut from its end (4, 4, ... and the short piece first), so every window but a lone short range's lies inside the
 /// range; a short range whose window would pass its area's end (by the area sizes given; without them nothing is
 /// widened, and the handler refuses such an item with 82) is widened backward to a 4-byte item that ends at the range's end. The last group of 8 slots is filled with 1-byte
-/// items of SMB6 (the CPU's type, readable on every S7-200). <see cref="Places"/> says where each range's first byte
+/// items of IB12 (<see cref="Filler"/>). <see cref="Places"/> says where each range's first byte
 /// lies in the data, <see cref="Starts"/> where each item's. False from TryMake when the ranges need more
 /// slots or bytes than the handler has (or none).
 /// </summary>
 public sealed record ListPlan(ImmutableArray<ReadItem> Items, int DataBytes, ImmutableArray<int> Places)
 {
-    /// <summary>The byte a filler item reads: SMB6 (its window SMB6-SMB9).</summary>
-    public static readonly ReadItem Filler = new(ProtocolArea.SM, 6, 1);
+    /// <summary>
+    /// The byte a filler item reads: IB12, its window IB12-IB15, the input image's last 4 bytes (16 on every S7-200),
+    /// which only a CPU whose expansion modules fill the image to its end drives. Any byte the handler serves would do
+    /// (the PC ignores a filler's data); a window that does not change brings no CHANGES entries. Not SMB6, as before:
+    /// the handler no longer serves SM (docs/sources/s7200-facts.md section 13).
+    /// </summary>
+    public static readonly ReadItem Filler = new(ProtocolArea.I, 12, 1);
 
     /// <summary>Where each item's bytes start in the list data.</summary>
     public ImmutableArray<int> Starts { get; } = [.. Items.Select((item, k) => Items.Take(k).Sum(i => i.Length))];

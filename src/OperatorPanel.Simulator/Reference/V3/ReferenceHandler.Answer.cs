@@ -148,10 +148,13 @@ public sealed partial class ReferenceHandler
     /// <summary>Each slot's window: the 4 bytes from its item's OFFSET.</summary>
     private byte[] Windows() => [.. List.Items.SelectMany(i => Memory.Area(i.Area).AsSpan(i.Offset, HandlerShape.ItemBytes).ToArray())];
 
-    /// <summary>Area known (82), then OFFSET + LENGTH within it (82); LENGTH (1 or more) checked before.</summary>
+    /// <summary>
+    /// Area I, Q, M or V (82: SM, 05, is not served, docs/protocol.md section 1.3), then OFFSET + LENGTH within it (82);
+    /// LENGTH (1 or more) checked before.
+    /// </summary>
     private ReplyStatus CheckItem(ReadItem item)
     {
-        if (!Enum.IsDefined(item.Area))
+        if (item.Area is not (ProtocolArea.I or ProtocolArea.Q or ProtocolArea.M or ProtocolArea.V))
         {
             return ReplyStatus.AddressOutOfRange;
         }
