@@ -9,8 +9,9 @@ namespace OperatorPanel.Simulator.Soak;
 /// write's value, or for a bit, whose byte changed in that bit alone, to the write's value. Words and double words carry
 /// a value no other write of the run has, so such a change names its write whenever it came; a byte or bit value
 /// recurs, so a late byte or bit write that stores what the write in flight also stores is taken for that one.
-/// One write may show as two changes: WRITE BITS clears the bit (ANDB) and then ORs its value in (ORB), and when the
-/// bit already held 1 and a step of the observer ended between the two, the bit goes to 0 and back (<see cref="RewriteOf"/>).
+/// One write is one change: WRITE stores its data with one BMB and WRITE BITS its byte with one XORB (since
+/// 2026-11-28; the AND-then-OR form stored it twice), so a bit seen cleared and set again is two changes, each judged
+/// on its own, and a 0 no write carried is a change nothing explains.
 /// A change of I or SM is the field's (<see cref="SoakField"/>) when it leaves the bytes the field's latest setting
 /// before it put there.
 /// </summary>
@@ -28,34 +29,6 @@ internal static class ChangeAttribution
         }
 
         return null;
-    }
-
-    /// <summary>
-    /// The bit write in flight when <paramref name="changes"/>[<paramref name="index"/>] cleared one bit of one byte, if
-    /// it sets that bit and the next change of that area (<paramref name="restore"/>) puts the byte back as it was: the
-    /// handler's AND and OR with a step of the observer between them, the write storing the 1 that was there. Null
-    /// otherwise.
-    /// </summary>
-    public static SoakWrite? RewriteOf(IReadOnlyList<SoakWrite> writes, IReadOnlyList<MemoryChange> changes, int index, out int restore)
-    {
-        var cleared = changes[index];
-        restore = -1;
-        for (var j = index + 1; j < changes.Count && restore < 0; j++)
-        {
-            restore = changes[j].Area == cleared.Area ? j : -1;
-        }
-
-        var inFlight = writes.LastOrDefault(w => w.Sent <= cleared.Timestamp);
-        if (restore < 0 || inFlight is not { Address.Bit: { } bit } || cleared.First != cleared.Last || cleared.First != inFlight.Address.ByteOffset
-            || SoakRegion.AreaOf(inFlight.Address) != cleared.Area || inFlight.Value[0] != 1)
-        {
-            return null;
-        }
-
-        var back = changes[restore];
-        var clearsTheBit = cleared.After[0] == (cleared.Before[0] & ~(1 << bit)) && cleared.After[0] != cleared.Before[0];
-        var putsItBack = back.First == cleared.First && back.Last == cleared.Last && back.Before[0] == cleared.After[0] && back.After[0] == cleared.Before[0];
-        return clearsTheBit && putsItBack ? inFlight : null;
     }
 
     /// <summary>True when the field's latest setting of the change's area before it left exactly the changed bytes.</summary>

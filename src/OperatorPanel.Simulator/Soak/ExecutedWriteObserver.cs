@@ -7,9 +7,8 @@ namespace OperatorPanel.Simulator.Soak;
 /// The soak judge's view into the simulated PLC: wraps a line, runs it in steps of <see cref="StlLine.Slice"/> and
 /// after every step (and every delivery, where the reference model acts) compares the <see cref="WatchedBytes"/> with
 /// the copy it kept, recording each difference as a <see cref="MemoryChange"/>, in order. A step is shorter than any
-/// frame, and the handler copies a WRITE's data with one instruction (BMB), so one change of Q, M or V is one executed
-/// write; WRITE BITS stores its byte twice (AND, then OR), and a 1 written over a 1 may show as the bit cleared and set
-/// again (<see cref="ChangeAttribution.RewriteOf"/>). A change of I or SM is the field's (<see cref="SoakField"/>), which
+/// frame, and the handler stores a WRITE's data with one instruction (BMB) and a WRITE BITS byte with one (XORB), so one
+/// change of Q, M or V is one executed write. A change of I or SM is the field's (<see cref="SoakField"/>), which
 /// the judge holds against what the field set. A write that stores what is already there changes nothing and is not
 /// seen: words and double words are never written twice with one value, bytes and bits can be (the judge says so).
 /// </summary>

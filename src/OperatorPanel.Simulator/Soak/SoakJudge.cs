@@ -32,17 +32,10 @@ public sealed class SoakJudge(SoakRegion region, MemoryImage initial)
         var executed = new HashSet<int>();
         var (outOfOrder, unexplained, latest, byField) = (0, 0, 0, 0);
         var findings = new List<string>();
-        var restores = new HashSet<int>();
-        for (var i = 0; i < changes.Count; i++)
+        foreach (var change in changes)
         {
-            var change = changes[i];
             image.Apply(change);
             history.Record(change, image);
-            if (restores.Contains(i))
-            {
-                continue;
-            }
-
             if (ChangeAttribution.IsFieldArea(change.Area))
             {
                 if (ChangeAttribution.IsFields(fieldSettings, change))
@@ -58,13 +51,7 @@ public sealed class SoakJudge(SoakRegion region, MemoryImage initial)
                 continue;
             }
 
-            var rewrite = ChangeAttribution.RewriteOf(writes, changes, i, out var restore);
-            if (rewrite is not null)
-            {
-                restores.Add(restore);
-            }
-
-            if ((rewrite ?? ChangeAttribution.WriteOf(writes, change, image)) is not { } write)
+            if (ChangeAttribution.WriteOf(writes, change, image) is not { } write)
             {
                 unexplained++;
                 findings.Add($"{Describe(change)}: no panel write explains it");

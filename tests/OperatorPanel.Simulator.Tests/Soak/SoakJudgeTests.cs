@@ -122,22 +122,70 @@ public sealed class SoakJudgeTests
     }
 
     /// <summary>
-    /// The handler's WRITE BITS is AND NOT MASK then OR VALUE: a 1 written over a 1 clears the bit for a few microseconds,
-    /// and an observer step ending between the two shows a 0 that write 1 (:= 0) would explain. Seen on a clean line
-    /// as "write 43 (M31.7) executed after write 55".
+    /// WRITE BITS stores its byte once (XORB, since 2026-11-28): a 1 written over a 1 is no change at all. A byte seen
+    /// cleared and set again is two stores, and the cleared one, a 0 no write carried, is a change nothing explains; the
+    /// judge once took the pair for the write in flight, which the AND-then-OR handler made.
     /// </summary>
     [Fact]
-    public void Judge_BitWriteOfAOneOverAOneSeenClearedAndSetAgain_IsThatWriteExecutedNotAnEarlierOneOutOfOrder()
+    public void Judge_BitWriteOfAOneOverAOneSeenClearedAndSetAgain_CountsTheClearingAsAChangeNothingExplains()
+    {
+        var writes = new[] { Write(1, "MB31", [0x80], Confirmed, sent: 0), Write(2, "M31.7", [1], Confirmed, sent: 10) };
+        var changes = new[] { Change(2, ProtocolArea.M, 31, [0x00], [0x80]), Change(12, ProtocolArea.M, 31, [0x80], [0x00]), Change(13, ProtocolArea.M, 31, [0x00], [0x80]) };
+
+        var result = Judge(writes, [], changes);
+
+        result.ExecutedNeverSent.Should().Be(1);
+        result.Findings.Should().Equal("M bytes 31-31 changed 80 -> 00: no panel write explains it");
+        result.WritesOutOfOrder.Should().Be(0);
+        result.FalseConfirmations.Should().Be(0, "the setting again is write 2's bit alone, to its value");
+    }
+
+    /// <summary>The one store of a WRITE BITS that changes its bit is one change, named for that write.</summary>
+    [Fact]
+    public void Judge_BitWriteStoredOnce_IsAttributedToThatWrite()
+    {
+        var writes = new[] { Write(1, "MB31", [0x01], Confirmed, sent: 0), Write(2, "M31.7", [1], Unknown, sent: 10) };
+        var changes = new[] { Change(2, ProtocolArea.M, 31, [0x00], [0x01]), Change(12, ProtocolArea.M, 31, [0x01], [0x81]) };
+
+        var result = Judge(writes, [], changes);
+
+        result.ExecutedNeverSent.Should().Be(0);
+        result.NotConfirmedButExecuted.Should().Be(1, "write 2, reported unknown, made the second change");
+        result.WritesOutOfOrder.Should().Be(0);
+        result.FalseConfirmations.Should().Be(0);
+        result.Findings.Should().BeEmpty();
+    }
+
+    /// <summary>The one store of a 1 over a 1 leaves nothing to see: the write is confirmed with the value already there.</summary>
+    [Fact]
+    public void Judge_BitWriteOfAOneOverAOneStoredOnce_IsConfirmedWithTheValueAlreadyThere()
+    {
+        var writes = new[] { Write(1, "MB31", [0x80], Confirmed, sent: 0), Write(2, "M31.7", [1], Confirmed, sent: 10) };
+
+        var result = Judge(writes, [], [Change(2, ProtocolArea.M, 31, [0x00], [0x80])]);
+
+        result.ExecutedNeverSent.Should().Be(0);
+        result.FalseConfirmations.Should().Be(0);
+        result.ConfirmedAlreadyHeld.Should().Be(1);
+        result.Findings.Should().BeEmpty();
+    }
+
+    /// <summary>
+    /// The pair that made the judge tolerate two stores ("write 43 (M31.7) executed after write 55" on a clean line):
+    /// with one store per WRITE BITS, a 0 that an earlier bit write carried is that write executed late.
+    /// </summary>
+    [Fact]
+    public void Judge_BitClearedAndSetAgainWhileAnEarlierWriteOfZeroToItWasSent_IsThatWriteOutOfOrder()
     {
         var writes = new[] { Write(1, "M31.7", [0], Confirmed, sent: 0), Write(2, "MB31", [0x80], Confirmed, sent: 10), Write(3, "M31.7", [1], Confirmed, sent: 20) };
         var changes = new[] { Change(12, ProtocolArea.M, 31, [0x00], [0x80]), Change(22, ProtocolArea.M, 31, [0x80], [0x00]), Change(23, ProtocolArea.M, 31, [0x00], [0x80]) };
 
         var result = Judge(writes, [], changes);
 
-        result.WritesOutOfOrder.Should().Be(0);
+        result.WritesOutOfOrder.Should().Be(1);
+        result.Findings.Should().Equal("write 1 (M31.7) executed after write 2");
         result.ExecutedNeverSent.Should().Be(0);
         result.FalseConfirmations.Should().Be(0);
-        result.ConfirmedAlreadyHeld.Should().Be(1, "write 1 stored the 0 that was there");
     }
 
     /// <summary>A byte value recurs: with the value already there the PLC's execution leaves nothing to see, and the PLC holds what the panel says.</summary>

@@ -69,7 +69,8 @@ public sealed partial class ReferenceHandler
             return Refuse(status);
         }
 
-        // AND / OR on the byte itself: the bits outside MASK stay as the program left them.
+        // The bits outside MASK stay as the program left them; the byte is stored once, as the handler's XORB does, so
+        // the soak's observer sees one change for one WRITE BITS here too.
         var area = Memory.Area(item.Area);
         area[item.Offset] = (byte)((area[item.Offset] & ~p[3]) | (p[4] & p[3]));
         return (ReplyStatus.Ok, [area[item.Offset]]);
