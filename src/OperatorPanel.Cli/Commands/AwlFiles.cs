@@ -42,7 +42,7 @@ internal static class AwlFiles
 
         if (table.Count == 0)
         {
-            (table, error) = (null, $"{path}: no symbol found; export the symbol table from Micro/WIN as text (symbol, address, comment, separated by tabs)");
+            (table, error) = (null, $"{path}: no symbol found; export the symbol table from Micro/WIN as text (symbol, address, comment, separated by tabs; a CSV file separated by semicolons or commas is read too)");
             return false;
         }
 

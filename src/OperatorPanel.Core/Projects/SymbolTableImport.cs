@@ -5,7 +5,7 @@ namespace OperatorPanel.Core.Projects;
 
 /// <summary>
 /// Input and output symbols read from a Micro/WIN symbol table pasted as text (copied from the grid or exported):
-/// tab-separated, one symbol per line, the symbol in the last non-empty column before the address and the comment in the
+/// tab-separated (or the same table saved as CSV: <see cref="SymbolTableColumns"/>), one symbol per line, the symbol in the last non-empty column before the address and the comment in the
 /// first non-empty column after it. Extra columns (Micro/WIN's icon columns) and a header line are tolerated. Only I and
 /// Q bits are kept; every other line with content is rejected with its number and the reason. The CPU's ranges are the
 /// caller's to check, as for rows typed by hand.
@@ -24,7 +24,7 @@ public sealed record SymbolTableImport(
         var contentSeen = false;
         for (var i = 0; i < lines.Length; i++)
         {
-            var columns = lines[i].Split('\t').Select(Unquote).ToArray();
+            var columns = SymbolTableColumns.Split(lines[i]);
             if (columns.All(c => c.Length == 0))
             {
                 continue;
@@ -55,7 +55,7 @@ public sealed record SymbolTableImport(
         return new SymbolTableImport(inputs.ToImmutable(), outputs.ToImmutable(), rejected.ToImmutable());
     }
 
-    private const string NoAddress = "no address found; a line holds a symbol, an address such as I0.0 and a comment, separated by tabs";
+    private const string NoAddress = "no address found; a line holds a symbol, an address such as I0.0 and a comment, separated by tabs (or by semicolons or commas)";
 
     private static string? Read(string[] columns, out IoSymbol? symbol)
     {
@@ -84,13 +84,4 @@ public sealed record SymbolTableImport(
 
     private static string? Repeat(Dictionary<string, int> seen, string key, int lineNumber) =>
         seen.TryAdd(key, lineNumber) ? null : $"{key} is already on line {seen[key]}";
-
-    /// <summary>Spreadsheets quote a cell holding quotes or tabs: "a ""b""" is a "b".</summary>
-    private static string Unquote(string cell)
-    {
-        var trimmed = cell.Trim();
-        return trimmed.Length >= 2 && trimmed[0] == '"' && trimmed[^1] == '"'
-            ? trimmed[1..^1].Replace("\"\"", "\"", StringComparison.Ordinal).Trim()
-            : trimmed;
-    }
 }

@@ -5,7 +5,8 @@ using System.Diagnostics.CodeAnalysis;
 namespace OperatorPanel.Stl.Symbols;
 
 /// <summary>
-/// A symbol table exported from Micro/WIN (copied from its grid or exported as text): tab-separated, one symbol per line,
+/// A symbol table exported from Micro/WIN (copied from its grid or exported as text): tab-separated, or the same table
+/// saved as CSV (Core SymbolTableColumns), one symbol per line,
 /// the symbol in the last non-empty column before the address and the comment after it; a header line and Micro/WIN's
 /// icon columns are tolerated. The same format the project wizard's symbol import reads (Core SymbolTableImport), here
 /// for every address an STL operand can name (V10.0, VW100, SMB30, T37, C5, AIW0, ...), not only I and Q bits.
@@ -37,7 +38,7 @@ public sealed class AwlSymbolTable
         var contentSeen = false;
         for (var i = 0; i < lines.Length; i++)
         {
-            var columns = lines[i].Split('\t').Select(c => c.Trim().Trim('"').Trim()).ToArray();
+            var columns = Core.Projects.SymbolTableColumns.Split(lines[i]);
             if (columns.All(c => c.Length == 0))
             {
                 continue;
@@ -52,7 +53,7 @@ public sealed class AwlSymbolTable
                 // A first line without an address is the header ("Symbol  Address  Comment").
                 if (!(first && at < 0))
                 {
-                    rejected.Add(new AwlDiagnostic(i + 1, at < 0 ? "no address on the line; a line holds a symbol, an address such as VW100 and a comment, separated by tabs" : $"{columns[at]} has no symbol before it"));
+                    rejected.Add(new AwlDiagnostic(i + 1, at < 0 ? "no address on the line; a line holds a symbol, an address such as VW100 and a comment, separated by tabs (or by semicolons or commas)" : $"{columns[at]} has no symbol before it"));
                 }
 
                 continue;
