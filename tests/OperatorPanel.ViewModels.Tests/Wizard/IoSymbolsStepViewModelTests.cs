@@ -31,7 +31,7 @@ public sealed class IoSymbolsStepViewModelTests
         step.RejectedLines.Should().Equal(
             "line 5: VW100 is not an input or output bit; only I and Q bits such as I0.0 or Q1.7 are imported here",
             "line 6: M0.0 is not an input or output bit; only I and Q bits such as I0.0 or Q1.7 are imported here",
-            "line 8: no address found; a line holds a symbol, an address such as I0.0 and a comment, separated by tabs",
+            "line 8: no address found; a line holds a symbol, an address such as I0.0 and a comment, separated by tabs (or by semicolons or commas)",
             "line 9: I0.0 is already on line 2",
             "line 10: I0.2 has no symbol before it");
         step.PasteReport.Should().Be("Pasted 2 inputs and 1 output; 5 lines rejected.");
