@@ -31,7 +31,8 @@ internal sealed class HandlerOptionSet
 
     public Option<string?> Buffer { get; } = new("--buffer")
     {
-        Description = "First V byte of the handler's bytes (buffer, work bytes, copies), e.g. VB1000 (default: the top of V memory)",
+        Description = "First V byte of the handler's bytes (buffer, work bytes, copies), e.g. VB1000 (default: the station's \"handlerVFirst\" "
+            + "in the project, else the top of V memory; record a --buffer there so the panel's write rules keep off the handler's bytes)",
     };
 
     public Option<int> ReplyDelay { get; } = new("--reply-delay") { Description = "Protocol 2 only: reply delay in ms, 1-255 (default 5)", DefaultValueFactory = _ => 5 };
@@ -78,7 +79,7 @@ internal sealed class HandlerOptionSet
     public string? Given(ParseResult parse) => All.FirstOrDefault(o => parse.GetResult(o) is { Implicit: false })?.Name;
 
     /// <summary>
-    /// <paramref name="station"/> (CPU, address, line settings, "allowStop" and "compact" from the project or --cpu/--station)
+    /// <paramref name="station"/> (CPU, address, line settings, "allowStop", "compact" and "handlerVFirst" from the project or --cpu/--station)
     /// with the options given; --allow-stop adds STOP and does not remove a project's. --compact (true or false) wins over
     /// the project's "compact", which a CPU 221 or 222 gets by default; --compact implies protocol 3, and an explicit
     /// --protocol 2 leaves the project's "compact" aside (protocol 2 has one shape). The options only protocol 2 has are
@@ -117,7 +118,9 @@ internal sealed class HandlerOptionSet
             return false;
         }
 
-        int? start = null;
+        // --buffer wins over the project's "handlerVFirst" (in station.BufferStart), which wins over the top of V; the
+        // project's place is its protocol 3 handler's, so protocol 2 (another layout) leaves it aside as it does "compact".
+        var start = protocol == 3 ? station.BufferStart : null;
         if (parse.GetValue(Buffer) is { } bufferText)
         {
             if (!GenerateSettings.TryParseBuffer(bufferText, out var at, out error))

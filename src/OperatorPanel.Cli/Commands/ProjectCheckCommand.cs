@@ -7,8 +7,9 @@ namespace OperatorPanel.Cli.Commands;
 /// <summary>
 /// <c>opanel project check FILE</c>: loads a project and prints every problem as <c>FILE: location: message</c>,
 /// or a summary of the line when there is none. Exit code 1 when there is any problem. Besides what stops the file from
-/// loading, a problem is a station whose settings contradict each other though the file loads (Core CompactStop: a
-/// compact handler with STOP): the panel opens such a project, generate refuses it.
+/// loading, a problem is a setting that contradicts another though the file loads (Core ProjectChecks: a compact
+/// handler with STOP, a writable tag in the handler's own V bytes or sharing bytes with a read-only tag): the panel opens
+/// such a project and refuses what cannot work when it is tried.
 /// </summary>
 internal static class ProjectCheckCommand
 {
@@ -21,7 +22,7 @@ internal static class ProjectCheckCommand
             var cli = context(parse);
             var path = parse.GetValue(file)!;
             var result = ProjectFile.Load(path);
-            var errors = result.Ok ? CompactStop.Problems(result.Project) : result.Errors;
+            var errors = result.Ok ? ProjectChecks.Problems(result.Project) : result.Errors;
             var summary = result.Ok && errors.IsEmpty ? ProjectSummaryView.From(result.Project) : null;
             var problems = errors.Select(e => new ProblemView(e.Location, e.Message)).ToList();
             if (cli.Json)

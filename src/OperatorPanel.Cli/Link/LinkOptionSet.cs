@@ -160,6 +160,7 @@ internal sealed class LinkOptionSet
         target = new LinkTarget(station, serial, cpu, demo, TimeSpan.FromMilliseconds(scanMs), parse.GetValue(Model), notes)
         {
             Compact = projectStation?.Compact ?? false,
+            HandlerVFirst = projectStation?.HandlerVFirst,
         };
         error = null;
         return true;

@@ -92,9 +92,10 @@ internal sealed class LinkSession : IAsyncDisposable
     /// <summary>
     /// The --demo PLC: the target's station and CPU, its handler with STOP so <c>opanel stop --demo</c> can be tried, or
     /// for a project's compact station the compact handler (which has no STOP), so the demo keeps the V bytes the write
-    /// rules keep.
+    /// rules keep; at the project's "handlerVFirst" when it has one.
     /// </summary>
-    private static HandlerConfig DemoStation(LinkTarget target) => new(target.Station, target.Cpu!, allowStop: !target.Compact) { Compact = target.Compact };
+    private static HandlerConfig DemoStation(LinkTarget target) =>
+        new(target.Station, target.Cpu!, allowStop: !target.Compact) { Compact = target.Compact, V3First = target.HandlerVFirst };
 
     /// <summary>
     /// Settles the writes and STOPs that earlier programs left cut short on this port (through the bus's queue,

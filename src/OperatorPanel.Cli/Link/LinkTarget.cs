@@ -22,5 +22,8 @@ internal sealed record LinkTarget(
     /// </summary>
     public bool Compact { get; init; }
 
+    /// <summary>With --project, the station's "handlerVFirst": where its handler's V bytes start (null: the top of V), which a --demo simulates too.</summary>
+    public int? HandlerVFirst { get; init; }
+
     public string Describe() => $"{Station} on {Serial.PortName}";
 }

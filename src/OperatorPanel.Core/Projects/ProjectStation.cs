@@ -17,7 +17,8 @@ namespace OperatorPanel.Core.Projects;
 /// <param name="Alarms">Flag bits whose rising state shows a message.</param>
 /// <remarks>
 /// <see cref="AllowStop"/> ("allowStop" in the file, default false) and <see cref="Compact"/> ("compact", default false)
-/// are init properties so the many stations built in code keep their shape.
+/// are init properties so the many stations built in code keep their shape; so is <see cref="HandlerVFirst"/>
+/// ("handlerVFirst", absent by default).
 /// </remarks>
 public sealed record ProjectStation(
     string Name,
@@ -43,6 +44,15 @@ public sealed record ProjectStation(
     /// generate and Generate PLC code honour it. Off by default, and old project files (without "compact") load unchanged.
     /// </summary>
     public bool Compact { get; init; }
+
+    /// <summary>
+    /// V_FIRST: the first V byte of the station's handler when it was generated somewhere other than the default place
+    /// (<c>opanel generate --buffer VB1000</c> records nothing in the PLC's program that the panel could read before it
+    /// sends); null = the default place, the top of V (<see cref="Protocol.V3.HandlerShape.DefaultVFirst"/>). The write
+    /// rules keep off the handler's bytes from here, and generate, simulate and the demo line put the handler here.
+    /// The project file's reader checks it with the generator's rule (<see cref="Protocol.V3.HandlerPlace"/>).
+    /// </summary>
+    public int? HandlerVFirst { get; init; }
 
     /// <summary>The symbol the project gives <paramref name="address"/> (an output, input or tag; the first tag of several); null if none.</summary>
     public string? SymbolOf(PlcAddress address) =>

@@ -80,6 +80,12 @@ internal static class ProjectWriter
             json.WriteBoolean("compact", true);
         }
 
+        if (station.HandlerVFirst is { } vFirst)
+        {
+            // Written only when set: absent is the default place, and files without it stay as they were.
+            json.WriteNumber(HandlerVFirstReader.Name, vFirst);
+        }
+
         WriteSymbols(json, "inputs", station.Inputs);
         WriteSymbols(json, "outputs", station.Outputs);
         json.WriteStartArray("tags");

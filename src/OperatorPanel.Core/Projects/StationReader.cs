@@ -60,7 +60,7 @@ internal static class StationReader
             return null;
         }
 
-        fields.ReportUnknown("name", "address", "cpu", "link", "allowStop", "compact", "inputs", "outputs", "tags", "alarms");
+        fields.ReportUnknown("name", "address", "cpu", "link", "allowStop", "compact", "handlerVFirst", "inputs", "outputs", "tags", "alarms");
         var name = TextRule.StationName.Read(fields, "name");
         if (name is not null && string.IsNullOrWhiteSpace(name))
         {
@@ -73,6 +73,7 @@ internal static class StationReader
         var link = LinkReader.Read(fields.Object("link"), cpu);
         var allowStop = fields.Bool("allowStop", fallback: false);
         var compact = fields.Bool("compact", fallback: false);
+        var vFirstOk = HandlerVFirstReader.TryRead(fields, cpu, compact, out var vFirst);
         keys = new StationKeys(fields, name, address, link);
 
         var registry = new EntryRegistry();
@@ -80,12 +81,17 @@ internal static class StationReader
         var outputs = IoSymbolReader.ReadAll(fields, "outputs", MemoryArea.Q, cpu, registry);
         var tags = TagReader.ReadAll(fields, cpu, link?.Protocol, registry);
         var alarms = AlarmReader.ReadAll(fields, cpu, link?.Protocol, registry);
-        if (name is null || address is null || cpu is null || link is null || allowStop is null || compact is null || inputs is null || outputs is null || tags is null || alarms is null)
+        if (name is null || address is null || cpu is null || link is null || allowStop is null || compact is null || inputs is null || outputs is null || tags is null || alarms is null || !vFirstOk)
         {
             return null;
         }
 
-        return new ProjectStation(name, address.Value, cpu, link, inputs.Value, outputs.Value, tags.Value, alarms.Value) { AllowStop = allowStop.Value, Compact = compact.Value };
+        return new ProjectStation(name, address.Value, cpu, link, inputs.Value, outputs.Value, tags.Value, alarms.Value)
+        {
+            AllowStop = allowStop.Value,
+            Compact = compact.Value,
+            HandlerVFirst = vFirst,
+        };
     }
 
     private static Station? ReadAddress(JsonFields fields)

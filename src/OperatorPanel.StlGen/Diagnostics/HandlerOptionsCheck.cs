@@ -1,6 +1,7 @@
 using System.Collections.Immutable;
 using System.Text.RegularExpressions;
 using OperatorPanel.Core.Projects;
+using OperatorPanel.Core.Protocol.V3;
 using OperatorPanel.StlGen.Options;
 
 namespace OperatorPanel.StlGen.Diagnostics;
@@ -79,29 +80,34 @@ public static partial class HandlerOptionsCheck
 
     private static void CheckBuffer(HandlerOptions options, Action<string, string> add)
     {
-        var vBytes = HandlerDefaults.VBytes(options.Cpu);
-        var start = options.EffectiveBufferStart;
         if (options.CopyBytes is < 0 or > 255)
         {
             add(StlDiagnostics.CopyBytesOutOfRange, $"{options.CopyBytes} copy bytes for READ CHANGES is outside 0 (none) to 255");
             return;
         }
 
-        // Protocol 3 keeps V_BYTES of its full or compact shape from V_FIRST; protocol 2 its buffer, work bytes and copies.
-        var bytes = options.Protocol == 3
-            ? (options.Compact ? Core.Protocol.V3.HandlerShape.Compact : Core.Protocol.V3.HandlerShape.Full).VBytes
-            : HandlerDefaults.FootprintBytes(options.CopyBytes);
-        start = options.Protocol == 3 ? options.EffectiveV3First : start;
-        var end = start + bytes - 1;
-
-        // The protocol 3 check walks from a pointer 3 bytes before the buffer (&VB(V_FIRST - 3) + the byte count), and
-        // an S7-200 address has no negative byte.
-        var lowest = options.Protocol == 3 ? 3 : 0;
-        if (start < lowest || end >= vBytes)
+        var vBytes = HandlerDefaults.VBytes(options.Cpu);
+        if (options.Protocol == 3)
         {
-            add(StlDiagnostics.BufferOutsideV, $"the handler needs VB{start}-VB{end} ({bytes} bytes) but the {options.Cpu.DisplayName} has VB0-VB{vBytes - 1}"
-                + $"{(start >= 0 && start < lowest ? " and a protocol 3 handler starts at VB3 or later (its frame check points 3 bytes before its V bytes)" : string.Empty)}; "
-                + $"allowed buffer start: VB{lowest}-VB{vBytes - bytes}");
+            // Protocol 3 keeps V_BYTES of its full or compact shape from V_FIRST: Core's rule, which a project's
+            // "handlerVFirst" passes too.
+            var shape = HandlerShape.Of(options.Compact);
+            if (HandlerPlace.Problem(options.EffectiveV3First, shape, options.Cpu) is { } problem)
+            {
+                add(StlDiagnostics.BufferOutsideV, $"{problem}; allowed buffer start: VB{HandlerPlace.LowestVFirst}-VB{HandlerPlace.HighestVFirst(shape, vBytes)}");
+            }
+
+            return;
+        }
+
+        // Protocol 2 keeps its buffer, work bytes and copies.
+        var start = options.EffectiveBufferStart;
+        var bytes = HandlerDefaults.FootprintBytes(options.CopyBytes);
+        var end = start + bytes - 1;
+        if (start < 0 || end >= vBytes)
+        {
+            add(StlDiagnostics.BufferOutsideV, $"the handler needs VB{start}-VB{end} ({bytes} bytes) but the {options.Cpu.DisplayName} has VB0-VB{vBytes - 1}; "
+                + $"allowed buffer start: VB0-VB{vBytes - bytes}");
         }
     }
 

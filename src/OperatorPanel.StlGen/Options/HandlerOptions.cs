@@ -70,7 +70,10 @@ public sealed record HandlerOptions
     /// <summary>Version 3 only: the compact handler (IDENTIFY, READ, WRITE, WRITE BIT; no list, no STOP).</summary>
     public bool Compact { get; init; }
 
-    /// <summary>The settings a project fixes for one station: protocol 3, CPU, station address, baud, parity, data and stop bits, STOP, compact.</summary>
+    /// <summary>
+    /// The settings a project fixes for one station: protocol 3, CPU, station address, baud, parity, data and stop bits,
+    /// STOP, compact, and V_FIRST when the project records one ("handlerVFirst"; else the top of V).
+    /// </summary>
     public static HandlerOptions For(ProjectStation station)
     {
         ArgumentNullException.ThrowIfNull(station);
@@ -85,6 +88,7 @@ public sealed record HandlerOptions
             StopBits = station.Link.StopBits,
             AllowStop = station.AllowStop,
             Compact = station.Compact,
+            BufferStart = station.HandlerVFirst,
         };
     }
 

@@ -93,7 +93,8 @@ public sealed partial class GenerateCodeViewModel : ObservableObject
         var cpu = Station.Cpu;
         Ports = [.. Enumerable.Range(0, cpu.CommunicationPorts)];
         _port = 0;
-        _bufferStart = string.Create(CultureInfo.InvariantCulture, $"VB{HandlerDefaults.V3First(cpu, Station.Compact)}"); // V_FIRST of the project's protocol 3 handler
+        // V_FIRST of the project's protocol 3 handler: where the station's "handlerVFirst" says, else the top of V.
+        _bufferStart = string.Create(CultureInfo.InvariantCulture, $"VB{Station.HandlerVFirst ?? HandlerDefaults.V3First(cpu, Station.Compact)}");
         _firstSubroutine = HandlerDefaults.FirstSubroutine(cpu).ToString(CultureInfo.InvariantCulture);
         _firstInterrupt = HandlerDefaults.FirstInterrupt(cpu).ToString(CultureInfo.InvariantCulture);
         var defaults = new HandlerOptions { Cpu = cpu };

@@ -120,9 +120,10 @@ public sealed partial class ShellViewModel
         (ProjectPath, IsDemo) = (path, demo);
         Session.Load(project);
 
-        // A compact station with "allowStop" loads (it reads and writes as any other) but its Stop PLC can never work:
-        // said at once, as project check says it, rather than found when Generate PLC code refuses.
-        if (CompactStop.Problems(project) is [var contradiction, ..])
+        // A compact station with "allowStop" loads (it reads and writes as any other) but its Stop PLC can never work, and
+        // a writable tag the write rules refuse can never be written: said at once, as project check says it, rather than
+        // found when Generate PLC code or the write refuses.
+        if (ProjectChecks.Problems(project) is [var contradiction, ..])
         {
             StatusLine.ShowError($"Opened {ProjectName}; {contradiction.Message} (File > Edit project)");
         }

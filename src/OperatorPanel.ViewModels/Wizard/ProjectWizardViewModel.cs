@@ -167,9 +167,13 @@ public sealed partial class ProjectWizardViewModel : ObservableObject
         {
             AllowStop = CpuStep.AllowStop,
             Compact = LinkStep.Compact && LinkStep.Protocol == LinkProtocol.Freeport,
+
+            // The wizard has no field for it: an edited station keeps where its handler was generated (the file's check
+            // below says so if the CPU or "compact" chosen no longer holds it there).
+            HandlerVFirst = _original.Stations[_stationIndex].HandlerVFirst,
         };
         var project = _original with { Name = CpuStep.ProjectName.Trim(), Stations = _original.Stations.SetItem(_stationIndex, station) };
-        var problems = ProjectFile.Check(project);
+        var problems = ProjectFile.Check(project) is { IsEmpty: false } invalid ? invalid : ProjectChecks.Problems(project);
         if (!problems.IsEmpty)
         {
             _finishMessage = "The project cannot be saved yet: " + string.Join("; ", problems.Select(p => p.ToString()));

@@ -192,6 +192,33 @@ public sealed class SimulateCommandTests
         File.Delete(project);
     }
 
+    [Fact]
+    public async Task Simulate_ProjectHandlerVFirst_RunsTheHandlerWhereTheProjectSays()
+    {
+        using var pty = await SocatPtyPair.StartAsync();
+        var project = Path.Combine(Path.GetTempPath(), $"opanel-simulate-{Guid.NewGuid():N}.opproj");
+        File.WriteAllText(project, $$"""
+            {
+              "schemaVersion": 1,
+              "name": "Moved handler",
+              "refresh": { "mode": "continuous", "minimumPeriodMs": 100 },
+              "stations": [ { "name": "Filler", "address": 2, "cpu": { "model": "224" }, "link": { "port": "{{pty.PathB}}" }, "handlerVFirst": 1000 } ]
+            }
+            """);
+        using var simulatorOut = new StringWriter();
+        var output = TextWriter.Synchronized(simulatorOut);
+        string[] args = ["simulate", "--project", project, "--device", pty.PathA, "--duration", "3", "--no-process", "--log-dir", LogDir];
+        var simulator = Task.Run(() => OpanelApp.Run(args, output, TextWriter.Null));
+        await WaitForAsync(() => Text(output, simulatorOut).Contains("simulating", StringComparison.Ordinal));
+
+        var identify = CliRunner.Run(["identify", "--station", "2", "--cpu", "224", "--device", pty.PathB, "--scan-ms", "1000"]);
+
+        identify.ExitCode.Should().Be(0, identify.Error);
+        identify.Out.Should().Contain("handler V     VB1000-VB1605 (606 bytes");
+        (await simulator).Should().Be(0);
+        File.Delete(project);
+    }
+
     [Theory]
     [InlineData("--cpu", "224", "with --project each station's CPU and the bus's line settings come from the project; leave out --cpu")]
     [InlineData("--baud", "19200", "with --project each station's CPU and the bus's line settings come from the project; leave out --baud")]

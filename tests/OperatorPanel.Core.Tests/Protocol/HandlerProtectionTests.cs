@@ -53,4 +53,30 @@ public sealed class HandlerProtectionTests
         HandlerProtection.OwnVBytes(CpuProfiles.For(CpuModel.Cpu224), compact: false).Should().Be((7586, 8191));
         HandlerProtection.OwnVBytes(CpuProfiles.For(CpuModel.Cpu224), compact: true).Should().Be((8014, 8191));
     }
+
+    [Theory]
+    [InlineData(false, "VB1000", "VB1000-VB1605", "the full handler's buffer, work bytes and list")]
+    [InlineData(false, "VW1604", "VB1000-VB1605", "the full handler's buffer, work bytes and list")]
+    [InlineData(true, "VD1176", "VB1000-VB1177", "the compact handler's buffer and work bytes")] // touches the last byte only
+    public void Refusal_HandlerTheProjectMoved_NamesItsRangeAndThatTheProjectSaysSo(bool compact, string address, string range, string what)
+    {
+        HandlerProtection.Refusal(PlcAddress.Parse(address), CpuProfiles.For(CpuModel.Cpu224), compact, vFirst: 1000).Should().Be(
+            $"{address} is in the handler's own V bytes {range} (where the project's \"handlerVFirst\" puts {what}; IDENTIFY says where a station's are)");
+    }
+
+    [Theory]
+    [InlineData("VB999")]
+    [InlineData("VB1606")]
+    [InlineData("VB8000")] // the default place's bytes are the program's when the handler is elsewhere
+    public void Refusal_HandlerTheProjectMoved_LeavesEveryOtherVByteWritable(string address)
+    {
+        HandlerProtection.Refusal(PlcAddress.Parse(address), CpuProfiles.For(CpuModel.Cpu224), compact: false, vFirst: 1000).Should().BeNull();
+    }
+
+    [Fact]
+    public void OwnVBytes_HandlerTheProjectMoved_StartsThereForItsShapesBytes()
+    {
+        HandlerProtection.OwnVBytes(CpuProfiles.For(CpuModel.Cpu224), compact: false, vFirst: 1000).Should().Be((1000, 1605));
+        HandlerProtection.OwnVBytes(CpuProfiles.For(CpuModel.Cpu224), compact: true, vFirst: 1000).Should().Be((1000, 1177));
+    }
 }

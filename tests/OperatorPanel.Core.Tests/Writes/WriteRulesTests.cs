@@ -77,6 +77,78 @@ public sealed class WriteRulesTests
         WriteRules.Refusal(PlcAddress.Parse("VB8000"), LinkProtocol.Freeport, cpu: null, station: null).Should().BeNull("without a CPU the size of V is unknown");
     }
 
+    [Fact]
+    public void Refusal_HandlerTheProjectMoved_WritesTheTopOfVAndRefusesTheMovedBytes()
+    {
+        var moved = Filler with { HandlerVFirst = 1000 };
+
+        WriteRules.Refusal(PlcAddress.Parse("VB8000"), moved).Should().BeNull("the handler is not at the top of V: those bytes are the program's");
+        WriteRules.Refusal(PlcAddress.Parse("VW1000"), moved).Should().Be(
+            "VW1000 is in the handler's own V bytes VB1000-VB1605 (where the project's \"handlerVFirst\" puts the full handler's buffer, "
+            + "work bytes and list; IDENTIFY says where a station's are)");
+    }
+
+    [Fact]
+    public void Refusal_StationGivenApartFromItsLink_TakesTheHandlerWhereTheProjectPutsIt()
+    {
+        // opanel write --project --cpu: the CPU given, the station's handler place from the project.
+        var moved = Filler with { HandlerVFirst = 1000 };
+
+        WriteRules.Refusal(PlcAddress.Parse("VB1605"), LinkProtocol.Freeport, Some.Cpu(CpuModel.Cpu224), moved).Should().StartWith("VB1605 is in the handler's own V bytes VB1000-VB1605 ");
+        WriteRules.Refusal(PlcAddress.Parse("VB7586"), LinkProtocol.Freeport, Some.Cpu(CpuModel.Cpu224), moved).Should().BeNull();
+    }
+
+    [Theory]
+    [InlineData("Speed", "VW150", "tag Speed (VW150) is writable, but its bytes VB150-VB151 are also in tag TankLevel (VW150)")]
+    [InlineData("Speed", "VD148", "tag Speed (VD148) is writable, but its bytes VB150-VB151 are also in tag TankLevel (VW150)")]
+    [InlineData("Speed", "VW151", "tag Speed (VW151) is writable, but its byte VB151 is also in tag TankLevel (VW150)")]
+    [InlineData("Flag", "V151.0", "tag Flag (V151.0) is writable, but its byte VB151 is also in tag TankLevel (VW150)")]
+    [InlineData("Flag", "V160.2", "tag Flag (V160.2) is writable, but its bit V160.2 is also in tag Running (V160.2)")]
+    public void TagProblem_WritableTagSharingBytesWithAReadOnlyTag_NamesBothTagsAndTheSharedBytes(string symbol, string address, string start)
+    {
+        var tag = Tag(symbol, address, writable: true);
+        var station = Filler with { Tags = Filler.Tags.Add(tag) };
+
+        WriteRules.TagProblem(tag, station).Should().StartWith(start).And.EndWith(
+            ", which the project marks read-only: the panel refuses every write to it; set \"writable\": false on one of them, or move one");
+    }
+
+    [Theory]
+    [InlineData(null, "VW8000", "VW8000 is in the handler's own V bytes VB7586-VB8191 (where generate puts the full handler's buffer, work bytes and list by default")]
+    [InlineData(1000, "VW1000", "VW1000 is in the handler's own V bytes VB1000-VB1605 (where the project's \"handlerVFirst\" puts the full handler's buffer, work bytes and list")]
+    public void TagProblem_WritableTagInTheHandlersOwnVBytes_NamesTheTagAndTheRange(int? vFirst, string address, string reason)
+    {
+        var tag = Tag("Speed", address, writable: true);
+        var station = Filler with { Tags = Filler.Tags.Add(tag), HandlerVFirst = vFirst };
+
+        WriteRules.TagProblem(tag, station).Should().Be(
+            $"tag Speed ({address}) is writable, but {reason}; IDENTIFY says where a station's are): the panel refuses every write to it; "
+            + "set \"writable\": false, move the tag, or move the handler (generate --buffer, recorded as the station's \"handlerVFirst\")");
+    }
+
+    [Theory]
+    [InlineData("VW152", false, null)] //    beside TankLevel
+    [InlineData("V160.3", false, null)] //   another bit of Running's byte: WRITE BITS leaves Running's bit alone
+    [InlineData("VW8000", false, 1000)] //   the top of V with the handler moved to VB1000
+    [InlineData("VW8000", true, null)] //    a PPI station has no handler
+    public void TagProblem_WritableTagTheRulesLetBeWritten_IsNull(string address, bool ppi, int? vFirst)
+    {
+        var tag = Tag("Speed", address, writable: true);
+        var link = Filler.Link with { Protocol = ppi ? LinkProtocol.Ppi : LinkProtocol.Freeport };
+        var station = Filler with { Tags = Filler.Tags.Add(tag), Link = link, HandlerVFirst = vFirst };
+
+        WriteRules.TagProblem(tag, station).Should().BeNull();
+    }
+
+    [Fact]
+    public void TagProblem_ReadOnlyTagInTheHandlersBytes_IsNull()
+    {
+        // Reading the handler's bytes is allowed (a technician may watch its step byte); only a write would be refused.
+        var tag = Tag("Step", "VB8000", writable: false);
+
+        WriteRules.TagProblem(tag, Filler with { Tags = Filler.Tags.Add(tag) }).Should().BeNull();
+    }
+
     private static ProjectStation Station(ImmutableArray<ProjectTag> tags, ImmutableArray<IoSymbol> outputs) =>
         new("Filler", new Station(2), Some.Cpu(CpuModel.Cpu224), Some.SerialSettings(), [], outputs, tags, []);
 

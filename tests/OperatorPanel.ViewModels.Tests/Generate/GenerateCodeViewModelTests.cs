@@ -38,6 +38,15 @@ public sealed class GenerateCodeViewModelTests : IDisposable
     }
 
     [Fact]
+    public void Defaults_StationWithHandlerVFirst_BufferStartIsTheProjects()
+    {
+        var project = PanelFixture.Project(cpu: CpuProfiles.For(CpuModel.Cpu224));
+        var generate = new GenerateCodeViewModel(project with { Stations = [project.Stations[0] with { HandlerVFirst = 1000 }] }, 0, _files);
+
+        generate.BufferStart.Should().Be("VB1000", "the project records where the station's handler was generated");
+    }
+
+    [Fact]
     public void Generate_PortOneOnCpu224_ShowsTheStlDiagnosticAndSaveDisabled()
     {
         var generate = Create(CpuProfiles.For(CpuModel.Cpu224));

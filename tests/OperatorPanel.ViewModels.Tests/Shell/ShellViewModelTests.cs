@@ -209,6 +209,24 @@ public sealed class ShellViewModelTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task Open_WritableTagInTheHandlersOwnVBytes_OpensAndSaysItsWritesWillBeRefused()
+    {
+        var path = Path.Combine(_folder, "tag-in-handler.opproj");
+        var project = PanelFixture.Project();
+        var spare = new ProjectTag("Spare", Core.Addressing.PlcAddress.Parse("VW8000"), DisplayFormat.Unsigned, true, string.Empty);
+        var station = project.Stations[0] with { Tags = project.Stations[0].Tags.Add(spare) };
+        ProjectFile.TrySave(project with { Stations = [station] }, path, out _).Should().BeTrue();
+        _panel.Files.FileToOpen = path;
+
+        await _shell.OpenCommand.ExecuteAsync(null).Guarded();
+
+        _shell.ProjectPath.Should().Be(path, "the panel opens the project and refuses the tag's writes when they are tried");
+        _panel.Session.StatusLine.IsError.Should().BeTrue();
+        _panel.Session.StatusLine.Text.Should().StartWith($"Opened {_shell.ProjectName}; tag Spare (VW8000) is writable, but VW8000 is in the handler's own V bytes VB7586-VB8191")
+            .And.EndWith("(File > Edit project)");
+    }
+
+    [Fact]
     public async Task Demo_SampleProject_OpensOnTheSimulatedLineWithLiveValues()
     {
         await _shell.DemoCommand.ExecuteAsync(null).Guarded();

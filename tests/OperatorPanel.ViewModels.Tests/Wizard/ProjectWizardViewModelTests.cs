@@ -171,6 +171,33 @@ public sealed class ProjectWizardViewModelTests
     }
 
     [Fact]
+    public void Edit_StationWithHandlerVFirst_KeptThroughTheWizard()
+    {
+        var original = AlarmProject.Create();
+        original = original with { Stations = [original.Stations[0] with { HandlerVFirst = 1000 }] };
+        var wizard = new ProjectWizardViewModel(original, 0, new FakeConnectionTester(), new FakePortCatalog());
+
+        wizard.FinishCommand.Execute(null);
+
+        wizard.Result!.Stations[0].HandlerVFirst.Should().Be(1000, "the wizard has no field for it, and editing never drops where the handler was generated");
+    }
+
+    [Fact]
+    public void Finish_WritableCellInTheHandlersOwnVBytes_RefusedNamingTheCellAndTheRange()
+    {
+        var wizard = NewWizard();
+        wizard.MemoryStep.Cells.Add(new MemoryCellRowViewModel("Speed", "VW8000") { Writable = true });
+        var index = wizard.MemoryStep.Cells.Count - 1;
+        wizard.CurrentIndex = 4;
+
+        wizard.FinishCommand.Execute(null);
+
+        wizard.IsFinished.Should().BeFalse();
+        wizard.Message.Should().StartWith($"The project cannot be saved yet: $.stations[0].tags[{index}]: tag Speed (VW8000) is writable, "
+            + "but VW8000 is in the handler's own V bytes VB7586-VB8191");
+    }
+
+    [Fact]
     public void ChooseCpu222WithAllowStop_LinkPageFlagsTheCompactHandlerWithoutStopAndFinishIsRefused()
     {
         var wizard = new ProjectWizardViewModel(AlarmProject.Create(), 0, new FakeConnectionTester(), new FakePortCatalog());

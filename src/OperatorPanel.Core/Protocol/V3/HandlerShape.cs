@@ -44,6 +44,9 @@ public sealed record HandlerShape(int RequestBytes, int ListItems, int ListBytes
 
     public bool HasList => ListItems > 0;
 
+    /// <summary>The <see cref="Compact"/> or the <see cref="Full"/> shape, as a station's "compact" chooses.</summary>
+    public static HandlerShape Of(bool compact) => compact ? Compact : Full;
+
     /// <summary>
     /// MAX_DATA: the data of one READ reply or WRITE request. 16 bytes: a WRITE's data and its read-back (two BMB of 16
     /// bytes, 0.7 ms) and the write checks stay within a scan's share; bulk reading is the list's job.
