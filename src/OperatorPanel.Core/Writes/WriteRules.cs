@@ -68,7 +68,7 @@ public static class WriteRules
         return station.Link.Protocol == LinkProtocol.Freeport
             && HandlerProtection.Refusal(tag.Address, station.Cpu, station.Compact, station.HandlerVFirst) is { } own
             ? $"{name} {own}: the panel refuses every write to it; set \"writable\": false, move the tag, or move the handler "
-                + "(generate --buffer, recorded as the station's \"handlerVFirst\")"
+                + "(the station's \"handlerVFirst\", which generate uses, then regenerate)"
             : null;
     }
 

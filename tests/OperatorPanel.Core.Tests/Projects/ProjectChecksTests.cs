@@ -28,7 +28,7 @@ public sealed class ProjectChecksTests
             $"$.stations[0].tags[{tags.Count - 1}]",
             "tag Spare (VW8000) is writable, but VW8000 is in the handler's own V bytes VB7586-VB8191 (where generate puts the full handler's "
             + "buffer, work bytes and list by default; IDENTIFY says where a station's are): the panel refuses every write to it; set \"writable\": false, "
-            + "move the tag, or move the handler (generate --buffer, recorded as the station's \"handlerVFirst\")"));
+            + "move the tag, or move the handler (the station's \"handlerVFirst\", which generate uses, then regenerate)"));
     }
 
     [Fact]
@@ -44,7 +44,7 @@ public sealed class ProjectChecksTests
             $"$.stations[0].tags[{tags.Count - 1}]",
             "tag Moved (VW1604) is writable, but VW1604 is in the handler's own V bytes VB1000-VB1605 (where the project's \"handlerVFirst\" puts "
             + "the full handler's buffer, work bytes and list; IDENTIFY says where a station's are): the panel refuses every write to it; "
-            + "set \"writable\": false, move the tag, or move the handler (generate --buffer, recorded as the station's \"handlerVFirst\")"));
+            + "set \"writable\": false, move the tag, or move the handler (the station's \"handlerVFirst\", which generate uses, then regenerate)"));
     }
 
     [Fact]

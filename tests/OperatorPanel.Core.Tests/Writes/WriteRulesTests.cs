@@ -123,7 +123,7 @@ public sealed class WriteRulesTests
 
         WriteRules.TagProblem(tag, station).Should().Be(
             $"tag Speed ({address}) is writable, but {reason}; IDENTIFY says where a station's are): the panel refuses every write to it; "
-            + "set \"writable\": false, move the tag, or move the handler (generate --buffer, recorded as the station's \"handlerVFirst\")");
+            + "set \"writable\": false, move the tag, or move the handler (the station's \"handlerVFirst\", which generate uses, then regenerate)");
     }
 
     [Theory]
