@@ -39,8 +39,34 @@ public sealed class HandlerCheckTests
         var compact = full with { Features = 0, MaxRequestBytes = 137, ListItems = 0, ListBytes = 0, VFirst = 8014, VBytes = 178, StatusFlags = 0 };
 
         HandlerCheck.Describe(station, V3Link.AsIdentifyResponse(Two, full)).Should().Be("ok: generated for CPU 224, protocol 3, full handler (list of 32 items, 128 bytes, STOP), mode switch RUN");
-        HandlerCheck.Describe(station, V3Link.AsIdentifyResponse(Two, compact)).Should().Be("ok: generated for CPU 224, protocol 3, compact handler (no list: READs of 16 bytes), mode switch TERM");
+        HandlerCheck.Describe(station with { Compact = true }, V3Link.AsIdentifyResponse(Two, compact)).Should().Be("ok: generated for CPU 224, protocol 3, compact handler (no list: READs of 16 bytes), mode switch TERM");
     }
+
+    [Fact]
+    public void Describe_CompactHandlerInAProjectSayingFull_NamesBothRangesAndTheFix()
+    {
+        var compact = Full with { Features = 0, ListItems = 0, ListBytes = 0, VFirst = 8014, VBytes = 178 };
+
+        HandlerCheck.Describe(StationOf(CpuModel.Cpu224), V3Link.AsIdentifyResponse(Two, compact)).Should().Be(
+            "ok: generated for CPU 224, protocol 3, compact handler (no list: READs of 16 bytes), mode switch RUN; but its V bytes are "
+            + "VB8014-VB8191 and the project's VB7586-VB8191 (the bytes the panel refuses to write): set \"handlerVFirst\": 8014 and "
+            + "\"compact\": true in the project, or regenerate the handler from it");
+    }
+
+    [Fact]
+    public void Describe_HandlerGeneratedAtVB1000_WithoutTheProjectSayingSo_NamesTheProperty()
+    {
+        var moved = Full with { VFirst = 1000 };
+
+        HandlerCheck.Describe(StationOf(CpuModel.Cpu224), V3Link.AsIdentifyResponse(Two, moved)).Should().EndWith(
+            "; but its V bytes are VB1000-VB1605 and the project's VB7586-VB8191 (the bytes the panel refuses to write): "
+            + "set \"handlerVFirst\": 1000 in the project, or regenerate the handler from it");
+        HandlerCheck.Describe(StationOf(CpuModel.Cpu224) with { HandlerVFirst = 1000 }, V3Link.AsIdentifyResponse(Two, moved)).Should().Be(
+            "ok: generated for CPU 224, protocol 3, full handler (list of 32 items, 128 bytes, STOP), mode switch RUN", "the project says where it is");
+    }
+
+    private static readonly Core.Protocol.V3.Identity Full =
+        new(1, HandlerIdentity.CpuModelCode(CpuModel.Cpu224), 1, 0x1C, 0x03, 4, 0, 137, 16, 32, 128, 7586, 606, 0x20, 1, 3, 2, 9);
 
     [Fact]
     public void Describe_ErrorReplyToIdentify_SaysRegenerate()
