@@ -36,7 +36,7 @@ public static class SymbolTableColumns
             }
             else if (c == separator && !quoted)
             {
-                columns.Add(Unquote(cell.ToString()));
+                columns.Add(Cell(cell.ToString(), separator));
                 cell.Clear();
             }
             else
@@ -45,11 +45,16 @@ public static class SymbolTableColumns
             }
         }
 
-        columns.Add(Unquote(cell.ToString()));
+        columns.Add(Cell(cell.ToString(), separator));
         return [.. columns];
     }
 
-    /// <summary>Micro/WIN's text puts no quotes in; a tab-separated cell copied through a spreadsheet may have them.</summary>
+    /// <summary>
+    /// A CSV cell's quotes were taken out while splitting; Micro/WIN's tab text has none, but a tab-separated cell copied
+    /// through a spreadsheet may be quoted whole.
+    /// </summary>
+    private static string Cell(string cell, char separator) => separator == '\t' ? Unquote(cell) : cell.Trim();
+
     private static string Unquote(string cell)
     {
         var trimmed = cell.Trim();

@@ -16,9 +16,11 @@ namespace OperatorPanel.Core.Protocol.V3;
 public sealed record ListPlan(ImmutableArray<ReadItem> Items, int DataBytes, ImmutableArray<int> Places)
 {
     /// <summary>
-    /// The byte a filler item reads: IB12, its window IB12-IB15, the input image's last 4 bytes (16 on every S7-200),
-    /// which only a CPU whose expansion modules fill the image to its end drives. Any byte the handler serves would do
-    /// (the PC ignores a filler's data); a window that does not change brings no CHANGES entries. Not SMB6, as before:
+    /// The byte a filler item reads: IB12, its window IB12-IB15, the input image's last 4 bytes (IB0-IB15 on every
+    /// S7-200: seed 002 Table 1-1, "Digital I/O image size 256 (128 In/128 Out)", docs/cpu-profiles.md), far from the
+    /// local inputs; whether they change depends on the expansion modules fitted (not in a page found). Any byte the
+    /// handler serves would do: the PC ignores a filler's data, and a window that changes only brings CHANGES entries
+    /// the PC ignores. Not SMB6, as before:
     /// the handler no longer serves SM (docs/sources/s7200-facts.md section 13).
     /// </summary>
     public static readonly ReadItem Filler = new(ProtocolArea.I, 12, 1);
